@@ -1,0 +1,21 @@
+#include "mesh/scene_checks.hpp"
+
+#include <glm/geometric.hpp>
+
+namespace umbra {
+
+void require_lights_outside_spheres(const Scene& scene) {
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    const Light& light = scene.lights[i];
+    for (const Sphere& s : scene.spheres) {
+      const glm::dvec3 lc = s.center - light.position;
+      // spec 2.2 needs LC^2 - R^2 > 0 for the tangent circle to exist.
+      if (glm::dot(lc, lc) - s.radius * s.radius <= 0.0)
+        throw InputError(s.where, "light " + std::to_string(i + 1) + " (line " + std::to_string(light.where.line) +
+                                      ") is inside or on this sphere, which then has no shadow volume; "
+                                      "move the light outside the sphere");
+    }
+  }
+}
+
+}  // namespace umbra

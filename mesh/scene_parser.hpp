@@ -1,0 +1,17 @@
+#pragma once
+// Parses a scene file (scene-format.md) into a validated Scene. Every error is
+// an InputError located at FILE:LINE:COL; nothing is returned half-built.
+
+#include <string>
+
+#include "mesh/scene.hpp"
+
+namespace umbra {
+
+// Reads and parses the file at `path`; throws InputError.
+Scene parse_scene_file(const std::string& path);
+
+// Parses scene text; `name` is the file name used in messages.
+Scene parse_scene_text(const std::string& text, const std::string& name);
+
+}  // namespace umbra

@@ -1,0 +1,30 @@
+#pragma once
+// The camera's matrices and pixel rays, in double precision (no GL here).
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "mesh/scene.hpp"
+
+namespace umbra {
+
+// The near plane distance; the far plane is at infinity.
+constexpr double kNearPlane = 0.05;
+
+// Everitt and Kilgard: with the far plane at infinity, a vertex at infinity
+// lands exactly on the far plane and rounding may clip it. Scaling depth by
+// (1 - eps) keeps it inside; 2^-22 is the value Lengyel derives for a 24-bit
+// depth buffer ("Projection Matrix Tricks", GDC 2007).
+constexpr double kInfiniteFarEpsilon = 1.0 / (1 << 22);
+
+glm::dmat4 view_matrix(const Camera& camera);
+
+// Perspective projection whose far plane is at infinity (seed 002, eq. 2 with
+// A = -(1 - eps), B = -(2 - eps) near).
+glm::dmat4 infinite_perspective(double fovy_deg, double aspect, double near);
+
+// The world-space ray through the centre of pixel (px, py) of a width x height
+// image whose row 0 is the top row. Returns the unit direction; it starts at the eye.
+glm::dvec3 pixel_ray_direction(const Camera& camera, int width, int height, double px, double py);
+
+}  // namespace umbra

@@ -1,0 +1,34 @@
+#pragma once
+// The CPU reference: eye rays and exact shadow rays in double precision
+// against true spheres and triangles. It answers, per pixel, what the shadow
+// mask must be; tests compare the GL renderer's mask with it.
+
+#include <optional>
+
+#include <glm/vec3.hpp>
+
+#include "mesh/scene.hpp"
+#include "render/image.hpp"
+
+namespace umbra {
+
+struct RayHit {
+  double t = 0.0;         // distance along the (unit) ray
+  glm::dvec3 point{0.0};
+  glm::dvec3 normal{0.0};  // unit; the outward normal for spheres, either side for triangles
+  int object = -1;         // spheres first, then triangles, in file order
+};
+
+// The nearest hit with t > 0, skipping object `skip` (-1: none).
+std::optional<RayHit> nearest_hit(const Scene& scene, const glm::dvec3& origin, const glm::dvec3& direction,
+                                  int skip = -1);
+
+// True when anything lies strictly between `point` (on object `self`) and the light.
+bool shadow_ray_blocked(const Scene& scene, const glm::dvec3& point, int self, const glm::dvec3& light);
+
+// The mask value for the ray through image point (px, py) (pixel centre at
+// integer + 0.5 offsets handled by the caller: px = x gives the centre of
+// column x) for light `light`, with the same rule as ShadowRenderer::render_mask.
+uint8_t reference_mask_value(const Scene& scene, int width, int height, double px, double py, size_t light);
+
+}  // namespace umbra

@@ -1,0 +1,78 @@
+#include "render/render_plan.hpp"
+
+#include <iomanip>
+
+#include "mesh/orientation.hpp"
+#include "render/camera_transform.hpp"
+#include "silhouette/sphere_volume.hpp"
+#include "silhouette/triangle_volume.hpp"
+
+namespace umbra {
+namespace {
+
+std::ostream& operator<<(std::ostream& out, const glm::dvec3& v) {
+  return out << "(" << v.x << ", " << v.y << ", " << v.z << ")";
+}
+
+CasterEntry sphere_entry(const Sphere& s, const Light& light, int segments) {
+  CasterEntry e{"sphere", s.where, "", sphere_volume(s.center, s.radius, light.position, segments)};
+  e.method = "tangent-circle " + std::to_string(segments) + "-gon (spec 2.2)";
+  return e;
+}
+
+CasterEntry triangle_entry(const Triangle& t, const Light& light) {
+  CasterEntry e{"triangle", t.where, "", {}};
+  if (collinear(t.a, t.b, t.c)) {
+    e.method = "none: degenerate (collinear vertices)";
+  } else if (auto volume = triangle_volume(t.a, t.b, t.c, light.position)) {
+    e.volume = std::move(*volume);
+    e.method = "three side quads (spec 2.1)";
+  } else {
+    e.method = "none: its plane contains the light, so it is seen edge-on";
+  }
+  return e;
+}
+
+}  // namespace
+
+RenderPlan make_render_plan(const Scene& scene, const RenderSettings& settings) {
+  RenderPlan plan;
+  plan.settings = settings;
+  plan.camera = scene.camera;
+  plan.camera_is_spec_default = !scene.camera_from.has_value();
+  for (const Light& light : scene.lights) {
+    LightPlan lp;
+    for (const Sphere& s : scene.spheres) lp.casters.push_back(sphere_entry(s, light, settings.sphere_segments));
+    for (const Triangle& t : scene.triangles) lp.casters.push_back(triangle_entry(t, light));
+    for (const CasterEntry& e : lp.casters) append_volume(lp.all_volumes, e.volume);
+    plan.lights.push_back(std::move(lp));
+  }
+  return plan;
+}
+
+void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& plan) {
+  const Camera& c = plan.camera;
+  out << "render plan for " << scene.path << "\n";
+  out << "  image: " << plan.settings.width << "x" << plan.settings.height << "\n";
+  out << "  camera: eye " << c.eye << " target " << c.target << " up " << c.up << " fovy " << c.fovy_deg
+      << " deg" << (plan.camera_is_spec_default ? " (the spec's default view)" : " (from the scene file)") << "\n";
+  out << "  projection: perspective, near " << kNearPlane << ", far plane at infinity (epsilon 2^-22)\n";
+  out << "  stencil method: z-fail with light and dark caps, two-sided stencil with wrapping;\n"
+         "    correct wherever the eye is, inside a shadow volume or not\n";
+  for (size_t i = 0; i < plan.lights.size(); ++i) {
+    const Light& light = scene.lights[i];
+    const LightPlan& lp = plan.lights[i];
+    out << "  light " << i + 1 << " at " << light.position << " (line " << light.where.line << "): "
+        << lp.all_volumes.side_quads << " side quads, " << lp.all_volumes.light_cap_triangles << " light-cap and "
+        << lp.all_volumes.dark_cap_triangles << " dark-cap triangles\n";
+    for (const CasterEntry& e : lp.casters) {
+      out << "    " << e.kind << " (line " << e.where.line << "): " << e.method;
+      if (!e.volume.triangles.empty())
+        out << ", " << e.volume.side_quads << " quads + " << e.volume.light_cap_triangles + e.volume.dark_cap_triangles
+            << " cap triangles";
+      out << "\n";
+    }
+  }
+}
+
+}  // namespace umbra

@@ -1,0 +1,120 @@
+#pragma once
+// GLSL sources. Every surface is drawn by the same program in every pass, and
+// gl_Position is invariant, so the depth a pass compares with GL_EQUAL is the
+// depth the first pass wrote, bit for bit.
+
+namespace umbra::shaders {
+
+// What a surface pass writes (uniform `pass`).
+enum SurfacePass { kAmbient = 0, kDirect = 1, kMaskSurface = 2, kMaskLit = 3 };
+
+// Phong shading shared by triangles and spheres; `n` is the unit normal on the
+// side facing the camera, so a triangle's visible side is lit only when the
+// light is on the camera's side of its plane.
+inline constexpr const char* kShading = R"(
+uniform int pass;
+uniform vec3 eye;
+uniform vec3 ambient_sum;      // sum over lights of their ambient intensity
+uniform vec3 light_position;
+uniform vec3 light_color;
+uniform vec3 material_ambient;
+uniform vec3 material_diffuse;
+uniform vec3 material_specular;
+uniform float material_shininess;
+out vec4 frag_color;
+
+void shade(vec3 p, vec3 n) {
+  if (dot(n, eye - p) < 0.0) n = -n;
+  vec3 l = normalize(light_position - p);
+  float n_dot_l = dot(n, l);
+  if (pass == 0) {
+    frag_color = vec4(ambient_sum * material_ambient, 1.0);
+  } else if (pass == 1) {
+    if (n_dot_l <= 0.0) discard;
+    vec3 v = normalize(eye - p);
+    vec3 r = reflect(-l, n);
+    float s = material_shininess > 0.0 ? pow(max(dot(r, v), 0.0), material_shininess) : 1.0;
+    frag_color = vec4(light_color * (material_diffuse * n_dot_l + material_specular * s), 1.0);
+  } else if (pass == 2) {
+    frag_color = vec4(0.0, 0.0, 0.0, 1.0);
+  } else {
+    if (n_dot_l <= 0.0) discard;
+    frag_color = vec4(1.0);
+  }
+}
+)";
+
+inline constexpr const char* kTriangleVertex = R"(#version 330 core
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+uniform mat4 view_projection;
+out vec3 world_position;
+out vec3 world_normal;
+invariant gl_Position;
+void main() {
+  world_position = position;
+  world_normal = normal;
+  gl_Position = view_projection * vec4(position, 1.0);
+}
+)";
+
+inline constexpr const char* kTriangleFragmentMain = R"(
+in vec3 world_position;
+in vec3 world_normal;
+void main() { shade(world_position, normalize(world_normal)); }
+)";
+
+// Spheres are exact: a box around the sphere is rasterised (back faces, so it
+// covers the sphere from outside and inside) and each fragment intersects its
+// eye ray with the true sphere, writing the hit's depth.
+inline constexpr const char* kSphereVertex = R"(#version 330 core
+layout(location = 0) in vec3 corner;   // of the cube [-1,1]^3
+uniform mat4 view_projection;
+uniform vec3 sphere_center;
+uniform float sphere_radius;
+out vec3 world_position;
+invariant gl_Position;
+void main() {
+  // 1% margin so the box's own rasterisation never trims the silhouette.
+  world_position = sphere_center + corner * sphere_radius * 1.01;
+  gl_Position = view_projection * vec4(world_position, 1.0);
+}
+)";
+
+inline constexpr const char* kSphereFragmentMain = R"(
+in vec3 world_position;
+uniform mat4 view_projection;
+uniform vec3 sphere_center;
+uniform float sphere_radius;
+void main() {
+  vec3 d = normalize(world_position - eye);
+  vec3 oc = eye - sphere_center;
+  float b = dot(oc, d);
+  vec3 closest = oc - b * d;  // h = R^2 - |oc - b d|^2 avoids b^2 - c cancellation
+  float h = sphere_radius * sphere_radius - dot(closest, closest);
+  if (h < 0.0) discard;
+  float s = sqrt(h);
+  float t = -b - s;
+  if (t <= 0.0) t = -b + s;  // the eye is inside the sphere
+  if (t <= 0.0) discard;
+  vec3 p = eye + t * d;
+  vec4 clip = view_projection * vec4(p, 1.0);
+  gl_FragDepth = 0.5 * (clip.z / clip.w) + 0.5;
+  shade(p, (p - sphere_center) / sphere_radius);
+}
+)";
+
+inline constexpr const char* kVolumeVertex = R"(#version 330 core
+layout(location = 0) in vec4 position;  // w = 0: at infinity
+uniform mat4 view_projection;
+invariant gl_Position;
+void main() { gl_Position = view_projection * position; }
+)";
+
+inline constexpr const char* kVolumeFragment = R"(#version 330 core
+uniform vec4 tint;
+out vec4 frag_color;
+void main() { frag_color = tint; }
+)";
+
+}  // namespace umbra::shaders

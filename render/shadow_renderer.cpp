@@ -1,0 +1,187 @@
+#include "render/shadow_renderer.hpp"
+
+#include <string>
+
+#include "render/camera_transform.hpp"
+#include "render/gl.hpp"
+#include "render/shader_program.hpp"
+#include "render/shaders.hpp"
+#include "render/surface_buffers.hpp"
+
+namespace umbra {
+namespace {
+
+glm::vec3 f(const glm::dvec3& v) { return glm::vec3(v); }
+
+std::string fragment_source(const char* main) { return std::string("#version 330 core\n") + shaders::kShading + main; }
+
+// The state every pass starts from and returns to.
+void baseline_state() {
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDisable(GL_STENCIL_TEST);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+}  // namespace
+
+ShadowRenderer::ShadowRenderer(const Scene& scene, const RenderPlan& plan) : scene_(scene), plan_(plan) {
+  triangle_program_ = std::make_unique<ShaderProgram>("triangle", shaders::kTriangleVertex,
+                                                      fragment_source(shaders::kTriangleFragmentMain));
+  sphere_program_ = std::make_unique<ShaderProgram>("sphere", shaders::kSphereVertex,
+                                                    fragment_source(shaders::kSphereFragmentMain));
+  volume_program_ = std::make_unique<ShaderProgram>("volume", shaders::kVolumeVertex, shaders::kVolumeFragment);
+  surfaces_ = std::make_unique<SurfaceBuffers>(scene);
+  volumes_ = std::make_unique<VolumeBuffer>();
+
+  const RenderSettings& s = plan.settings;
+  const glm::mat4 view_projection(infinite_perspective(plan.camera.fovy_deg, double(s.width) / s.height, kNearPlane) *
+                                  view_matrix(plan.camera));
+  glm::dvec3 ambient_sum(0.0);
+  for (const Light& light : scene.lights) ambient_sum += light.ambient;
+  for (ShaderProgram* p : {triangle_program_.get(), sphere_program_.get()}) {
+    p->use();
+    p->set("view_projection", view_projection);
+    p->set("eye", f(plan.camera.eye));
+    p->set("ambient_sum", f(ambient_sum));
+  }
+  volume_program_->use();
+  volume_program_->set("view_projection", view_projection);
+  glViewport(0, 0, s.width, s.height);
+}
+
+ShadowRenderer::~ShadowRenderer() = default;
+
+void ShadowRenderer::draw_surfaces(int pass, size_t light) {
+  const Light& l = scene_.lights[light];
+  const auto set_material = [&](ShaderProgram& p, int index) {
+    const Material& m = scene_.materials[size_t(index)];
+    p.set("material_ambient", f(m.ambient));
+    p.set("material_diffuse", f(m.diffuse));
+    p.set("material_specular", f(m.specular));
+    p.set("material_shininess", float(m.shininess));
+  };
+  for (ShaderProgram* p : {triangle_program_.get(), sphere_program_.get()}) {
+    p->use();
+    p->set("pass", pass);
+    p->set("light_position", f(l.position));
+    p->set("light_color", f(l.color));
+  }
+  triangle_program_->use();
+  for (const SurfaceBuffers::TriangleGroup& group : surfaces_->triangle_groups()) {
+    set_material(*triangle_program_, group.material);
+    surfaces_->draw_triangle_group(group);
+  }
+  sphere_program_->use();
+  for (const Sphere& sphere : scene_.spheres) {
+    set_material(*sphere_program_, sphere.material);
+    sphere_program_->set("sphere_center", f(sphere.center));
+    sphere_program_->set("sphere_radius", float(sphere.radius));
+    surfaces_->draw_sphere_box();
+  }
+}
+
+void ShadowRenderer::depth_and_ambient_pass() {
+  baseline_state();
+  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  draw_surfaces(shaders::kAmbient, 0);
+}
+
+void ShadowRenderer::count_shadow_volumes(size_t light) {
+  glClearStencil(0);
+  glClear(GL_STENCIL_BUFFER_BIT);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glDepthMask(GL_FALSE);
+  glDepthFunc(GL_LESS);  // a volume face level with a surface counts as behind it
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_ALWAYS, 0, 0xFF);
+  // z-fail (seed 002): back faces increment, front faces decrement where the
+  // depth test fails; wrapping keeps counts beyond 255 correct modulo 256.
+  glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+  glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+  // A triangle's light cap is the triangle itself: push volumes a few depth
+  // units back so the cap reliably counts as behind its own surface, which
+  // leaves the surface lit, whatever the rasteriser's rounding.
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(0.0f, 4.0f);
+  volumes_->upload(plan_.lights[light].all_volumes);
+  volume_program_->use();
+  volumes_->draw();
+  baseline_state();
+}
+
+void ShadowRenderer::direct_light_pass(size_t light) {
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_EQUAL, 0, 0xFF);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glDepthFunc(GL_EQUAL);
+  glDepthMask(GL_FALSE);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  draw_surfaces(shaders::kDirect, light);
+  baseline_state();
+}
+
+void ShadowRenderer::show_volumes_pass() {
+  static const glm::vec4 tints[] = {{1.0f, 0.85f, 0.1f, 0.3f}, {0.2f, 0.8f, 1.0f, 0.3f}, {1.0f, 0.3f, 0.8f, 0.3f}};
+  glDepthMask(GL_FALSE);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glEnable(GL_CULL_FACE);  // front faces only: a wrongly oriented quad shows as missing
+  glCullFace(GL_BACK);
+  volume_program_->use();
+  for (size_t i = 0; i < plan_.lights.size(); ++i) {
+    volume_program_->set("tint", tints[i % 3]);
+    volumes_->upload(plan_.lights[i].all_volumes);
+    volumes_->draw();
+  }
+  baseline_state();
+}
+
+Image ShadowRenderer::render_image(bool show_volumes) {
+  depth_and_ambient_pass();
+  for (size_t i = 0; i < scene_.lights.size(); ++i) {
+    count_shadow_volumes(i);
+    direct_light_pass(i);
+  }
+  if (show_volumes) show_volumes_pass();
+  return read_pixels(3);
+}
+
+Image ShadowRenderer::render_mask(size_t light) {
+  depth_and_ambient_pass();
+  count_shadow_volumes(light);
+  // Every visible surface starts unlit, then lit where it faces the light and
+  // the stencil count is zero.
+  glClearColor(kMaskNoSurface / 255.0f, kMaskNoSurface / 255.0f, kMaskNoSurface / 255.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDepthFunc(GL_EQUAL);
+  glDepthMask(GL_FALSE);
+  draw_surfaces(shaders::kMaskSurface, light);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_EQUAL, 0, 0xFF);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  draw_surfaces(shaders::kMaskLit, light);
+  baseline_state();
+  return read_pixels(1);
+}
+
+Image ShadowRenderer::read_pixels(int channels) const {
+  const int w = plan_.settings.width, h = plan_.settings.height;
+  std::vector<uint8_t> rgba(size_t(w) * h * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  Image image(w, h, channels);
+  for (int y = 0; y < h; ++y)  // GL's row 0 is the bottom
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < channels; ++c) image.at(x, y, c) = rgba[(size_t(h - 1 - y) * w + x) * 4 + size_t(c)];
+  return image;
+}
+
+}  // namespace umbra

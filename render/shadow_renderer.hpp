@@ -1,0 +1,54 @@
+#pragma once
+// Draws a scene with capped z-fail stencil shadow volumes (seed 002) into the
+// current GL context's default framebuffer:
+//   1. depth + ambient for every surface;
+//   2. per light: clear the stencil; draw that light's volumes with colour and
+//      depth writes off, back faces incrementing and front faces decrementing
+//      (with wrapping) where the depth test fails; then add the light's
+//      diffuse + specular term where the stencil is zero.
+
+#include <memory>
+
+#include "mesh/scene.hpp"
+#include "render/image.hpp"
+#include "render/render_plan.hpp"
+
+namespace umbra {
+
+class ShaderProgram;
+class SurfaceBuffers;
+class VolumeBuffer;
+
+class ShadowRenderer {
+ public:
+  // Requires a current GL 3.3 core context whose default framebuffer is
+  // plan.settings.width x height with a stencil buffer.
+  ShadowRenderer(const Scene& scene, const RenderPlan& plan);
+  ~ShadowRenderer();
+
+  // The shaded image (RGB). With show_volumes, every light's volumes are
+  // drawn over it translucently, front faces only (the spec's debugging view).
+  Image render_image(bool show_volumes);
+
+  // Light `light`'s shadow mask (grey): kMaskNoSurface where no surface is
+  // seen, kMaskLit where the visible point faces the light and is outside its
+  // shadow, kMaskUnlit elsewhere.
+  Image render_mask(size_t light);
+
+ private:
+  void depth_and_ambient_pass();
+  void count_shadow_volumes(size_t light);
+  void direct_light_pass(size_t light);
+  void show_volumes_pass();
+  void mask_pass();
+  void draw_surfaces(int pass, size_t light);
+  Image read_pixels(int channels) const;
+
+  const Scene& scene_;
+  const RenderPlan& plan_;
+  std::unique_ptr<ShaderProgram> triangle_program_, sphere_program_, volume_program_;
+  std::unique_ptr<SurfaceBuffers> surfaces_;
+  std::unique_ptr<VolumeBuffer> volumes_;
+};
+
+}  // namespace umbra

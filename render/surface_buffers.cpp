@@ -1,0 +1,110 @@
+#include "render/surface_buffers.hpp"
+
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
+#include "render/gl.hpp"
+
+namespace umbra {
+
+SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
+  // Triangles sorted by material so each material is one draw call.
+  std::vector<const Triangle*> sorted;
+  for (const Triangle& t : scene.triangles) sorted.push_back(&t);
+  std::stable_sort(sorted.begin(), sorted.end(),
+                   [](const Triangle* a, const Triangle* b) { return a->material < b->material; });
+  std::vector<float> data;  // position xyz, normal xyz
+  for (const Triangle* t : sorted) {
+    const glm::dvec3 n = glm::cross(t->b - t->a, t->c - t->a);  // flipped toward the eye in the shader
+    for (const glm::dvec3& p : {t->a, t->b, t->c})
+      data.insert(data.end(), {float(p.x), float(p.y), float(p.z), float(n.x), float(n.y), float(n.z)});
+    if (groups_.empty() || groups_.back().material != t->material)
+      groups_.push_back({t->material, int(data.size() / 6) - 3, 0});
+    groups_.back().vertex_count += 3;
+  }
+  glGenVertexArrays(1, &triangle_vao_);
+  glGenBuffers(1, &triangle_vbo_);
+  glBindVertexArray(triangle_vao_);
+  glBindBuffer(GL_ARRAY_BUFFER, triangle_vbo_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(), GL_STATIC_DRAW);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), reinterpret_cast<void*>(3 * sizeof(float)));
+  glEnableVertexAttribArray(0);
+  glEnableVertexAttribArray(1);
+
+  const float corners[] = {-1, -1, -1, 1, -1, -1, 1, 1, -1, -1, 1, -1, -1, -1, 1, 1, -1, 1, 1, 1, 1, -1, 1, 1};
+  const unsigned faces[] = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
+                            3, 6, 2, 3, 7, 6, 0, 4, 7, 0, 7, 3, 1, 2, 6, 1, 6, 5};  // outward
+  glGenVertexArrays(1, &box_vao_);
+  glGenBuffers(1, &box_vbo_);
+  glGenBuffers(1, &box_ibo_);
+  glBindVertexArray(box_vao_);
+  glBindBuffer(GL_ARRAY_BUFFER, box_vbo_);
+  glBufferData(GL_ARRAY_BUFFER, sizeof corners, corners, GL_STATIC_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, box_ibo_);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, sizeof faces, faces, GL_STATIC_DRAW);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+  glEnableVertexAttribArray(0);
+  glBindVertexArray(0);
+}
+
+SurfaceBuffers::~SurfaceBuffers() {
+  const GLuint buffers[] = {triangle_vbo_, box_vbo_, box_ibo_};
+  glDeleteBuffers(3, buffers);
+  const GLuint arrays[] = {triangle_vao_, box_vao_};
+  glDeleteVertexArrays(2, arrays);
+}
+
+void SurfaceBuffers::draw_triangle_group(const TriangleGroup& group) const {
+  glBindVertexArray(triangle_vao_);
+  glDrawArrays(GL_TRIANGLES, group.first_vertex, group.vertex_count);
+}
+
+void SurfaceBuffers::draw_sphere_box() const {
+  // Back faces only: they cover the sphere whether the eye is outside the box or in it.
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_FRONT);
+  glBindVertexArray(box_vao_);
+  glDrawElements(GL_TRIANGLES, 36, GL_UNSIGNED_INT, nullptr);
+  glDisable(GL_CULL_FACE);
+}
+
+VolumeBuffer::VolumeBuffer() {
+  glGenVertexArrays(1, &vao_);
+  glGenBuffers(1, &vbo_);
+  glGenBuffers(1, &ibo_);
+  glBindVertexArray(vao_);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ibo_);
+  glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 4 * sizeof(float), nullptr);
+  glEnableVertexAttribArray(0);
+  glBindVertexArray(0);
+}
+
+VolumeBuffer::~VolumeBuffer() {
+  const GLuint buffers[] = {vbo_, ibo_};
+  glDeleteBuffers(2, buffers);
+  glDeleteVertexArrays(1, &vao_);
+}
+
+void VolumeBuffer::upload(const ShadowVolume& volume) {
+  std::vector<float> vertices;
+  vertices.reserve(volume.vertices.size() * 4);
+  for (const glm::dvec4& v : volume.vertices) vertices.insert(vertices.end(), {float(v.x), float(v.y), float(v.z), float(v.w)});
+  glBindVertexArray(vao_);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data(), GL_STREAM_DRAW);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(volume.triangles.size() * sizeof(volume.triangles[0])),
+               volume.triangles.data(), GL_STREAM_DRAW);
+  glBindVertexArray(0);
+  index_count_ = int(volume.triangles.size() * 3);
+}
+
+void VolumeBuffer::draw() const {
+  if (index_count_ == 0) return;
+  glBindVertexArray(vao_);
+  glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
+}
+
+}  // namespace umbra

@@ -1,0 +1,14 @@
+#include "silhouette/shadow_volume.hpp"
+
+namespace umbra {
+
+void append_volume(ShadowVolume& all, const ShadowVolume& part) {
+  const uint32_t base = uint32_t(all.vertices.size());
+  all.vertices.insert(all.vertices.end(), part.vertices.begin(), part.vertices.end());
+  for (const auto& t : part.triangles) all.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  all.side_quads += part.side_quads;
+  all.light_cap_triangles += part.light_cap_triangles;
+  all.dark_cap_triangles += part.dark_cap_triangles;
+}
+
+}  // namespace umbra

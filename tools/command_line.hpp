@@ -1,0 +1,35 @@
+#pragma once
+// Small helpers for reading command-line arguments with clear errors.
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace umbra {
+
+// A mistake in how the command was called; printed with a hint to --help, exit 2.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Walks the arguments of one command.
+class Arguments {
+ public:
+  explicit Arguments(std::vector<std::string> args) : args_(std::move(args)) {}
+  bool done() const { return next_ >= args_.size(); }
+  const std::string& take() { return args_[next_++]; }
+  // The value after option `option`; UsageError when there is none.
+  const std::string& value_of(const std::string& option);
+
+ private:
+  std::vector<std::string> args_;
+  size_t next_ = 0;
+};
+
+double parse_finite_number(const std::string& option, const std::string& text);
+int parse_int_in(const std::string& option, const std::string& text, int lowest, int highest);
+// "WxH", each between 1 and `largest`.
+void parse_size(const std::string& option, const std::string& text, int largest, int& width, int& height);
+
+}  // namespace umbra

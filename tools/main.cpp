@@ -1,0 +1,35 @@
+// umbra: exact hard shadows with stencil shadow volumes.
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "tools/render_command.hpp"
+
+namespace {
+
+const char* const kUsage = R"(usage: umbra COMMAND [options]
+
+Renders exact hard shadows with stencil shadow volumes.
+
+commands:
+  render SCENE -o OUT.png   render a scene headless to a PNG (see umbra render --help)
+
+  umbra --help, umbra --version
+)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "-h" || args[0] == "--help" || args[0] == "help") {
+    std::cout << kUsage;
+    return args.empty() ? 2 : 0;
+  }
+  if (args[0] == "--version") {
+    std::cout << "umbra " << UMBRA_VERSION << "\n";
+    return 0;
+  }
+  if (args[0] == "render") return umbra::run_render_command({args.begin() + 1, args.end()});
+  std::cerr << "umbra: unknown command \"" << args[0] << "\"\n" << kUsage;
+  return 2;
+}
