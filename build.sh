@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# umbra's whole set-up on a fresh Debian 12 machine: installs the Debian
+# packages it needs (only those missing), configures and builds, then
+#   ./build.sh demo   renders scenes/demo.scene to build/demo.png
+#   ./build.sh test   runs the whole test suite (CTest)
+#   ./build.sh        only builds
+set -euo pipefail
+cd "$(dirname "$0")"
+
+packages=(
+  cmake make g++ pkg-config          # toolchain
+  python3-glad                       # generates the OpenGL loader at build time
+  libglm-dev libpng-dev              # vectors and matrices, PNG output
+  libosmesa6-dev                     # headless OpenGL (Mesa llvmpipe)
+  libcgal-dev libgmp-dev libmpfr-dev # exact predicates
+  libgtest-dev                       # tests
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo=sudo
+  echo "installing: ${missing[*]}"
+  $sudo apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo
+cmake --build build -j"$(nproc)"
+
+case "${1:-}" in
+  demo)
+    ./build/umbra render scenes/demo.scene -o build/demo.png --mask build/demo-mask.png --explain
+    echo "the demo image is at $(pwd)/build/demo.png"
+    ;;
+  test)
+    cd build && ctest --output-on-failure -j"$(nproc)"
+    ;;
+  "") ;;
+  *) echo "usage: ./build.sh [demo|test]" >&2; exit 2 ;;
+esac

@@ -1,0 +1,203 @@
+#include "mesh/scene_parser.hpp"
+
+#include <gtest/gtest.h>
+
+namespace umbra {
+namespace {
+
+// The exact message a scene text fails with ("" when it parses).
+std::string error_of(const std::string& text) {
+  try {
+    parse_scene_text(text, "t.scene");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+const std::string kLight = "light 0 0 2\n";
+
+TEST(SceneParser, ParsesTheFormatExample) {
+  const Scene s = parse_scene_text(R"(# two spheres over a floor, spec style
+light 0.6 0.8 1.6
+material floor diffuse 0.7 0.7 0.7
+material red diffuse 0.9 0.2 0.2 specular 0.5 0.5 0.5 shininess 40
+triangle -1 -1 -1   1 -1 -1   1 1 -1 material floor
+triangle -1 -1 -1   1 1 -1   -1 1 -1 material floor
+sphere 0 0 -0.3 0.35 material red
+sphere 0.5 0.4 0.2 0.15
+)", "example.scene");
+  ASSERT_EQ(s.lights.size(), 1u);
+  EXPECT_EQ(s.lights[0].position, glm::dvec3(0.6, 0.8, 1.6));
+  EXPECT_EQ(s.lights[0].color, glm::dvec3(1.0));
+  EXPECT_EQ(s.lights[0].ambient, glm::dvec3(0.15));
+  EXPECT_EQ(s.lights[0].where.line, 2);
+  ASSERT_EQ(s.materials.size(), 3u);  // default, floor, red
+  EXPECT_EQ(s.materials[2].specular, glm::dvec3(0.5));
+  EXPECT_EQ(s.materials[2].shininess, 40.0);
+  EXPECT_EQ(s.materials[1].specular, glm::dvec3(0.0));  // defaults
+  EXPECT_EQ(s.materials[1].ambient, glm::dvec3(1.0));
+  ASSERT_EQ(s.triangles.size(), 2u);
+  EXPECT_EQ(s.triangles[1].c, glm::dvec3(-1, 1, -1));
+  EXPECT_EQ(s.triangles[0].material, 1);
+  ASSERT_EQ(s.spheres.size(), 2u);
+  EXPECT_EQ(s.spheres[0].material, 2);
+  EXPECT_EQ(s.spheres[1].material, 0);
+  EXPECT_EQ(s.spheres[1].radius, 0.15);
+  EXPECT_FALSE(s.camera_from.has_value());
+  EXPECT_EQ(s.camera.eye, spec_camera().eye);
+  EXPECT_TRUE(s.warnings.empty());
+}
+
+TEST(SceneParser, LightKeywordsInAnyOrder) {
+  const Scene s = parse_scene_text("light 1 2 3 ambient 0.1 0.2 0.3 color 0.5 0.6 0.7\n", "t");
+  EXPECT_EQ(s.lights[0].color, glm::dvec3(0.5, 0.6, 0.7));
+  EXPECT_EQ(s.lights[0].ambient, glm::dvec3(0.1, 0.2, 0.3));
+}
+
+TEST(SceneParser, CommentsBlankLinesTabsAndCarriageReturns) {
+  const Scene s = parse_scene_text("\n  # c\n\tlight\t0 0 2 # trailing\r\n\r\nsphere 0 0 0 0.5\n", "t");
+  EXPECT_EQ(s.lights.size(), 1u);
+  EXPECT_EQ(s.spheres[0].where.line, 5);
+  EXPECT_EQ(s.spheres[0].where.column, 1);
+}
+
+TEST(SceneParser, CameraStatement) {
+  const Scene s = parse_scene_text(kLight + "camera fovy 30 eye 0 1 5 up 0 1 0 target 0 0 0\n", "t");
+  ASSERT_TRUE(s.camera_from.has_value());
+  EXPECT_EQ(s.camera_from->line, 2);
+  EXPECT_EQ(s.camera.eye, glm::dvec3(0, 1, 5));
+  EXPECT_EQ(s.camera.fovy_deg, 30.0);
+}
+
+TEST(SceneParser, NumbersInCLocaleWithExponentsAndSigns) {
+  const Scene s = parse_scene_text("light +1e-3 -0.5 2.5E0\n", "t");
+  EXPECT_EQ(s.lights[0].position, glm::dvec3(1e-3, -0.5, 2.5));
+}
+
+TEST(SceneParserErrors, MisspelledNumberNamesWhatWasExpected) {
+  EXPECT_EQ(error_of(kLight + "sphere 0 0 0 O.5\n"),
+            "t.scene:2:14: expected a number for the sphere radius, got \"O.5\"");
+}
+
+TEST(SceneParserErrors, MissingNumberPointsAtTheEndOfTheLine) {
+  EXPECT_EQ(error_of(kLight + "sphere 0 0 0\n"), "t.scene:2:13: expected a number for the sphere radius, got end of line");
+}
+
+TEST(SceneParserErrors, NanAndInfAreNotNumbers) {
+  EXPECT_EQ(error_of("light nan 0 2\n"), "t.scene:1:7: expected a number for the light position x, got \"nan\"");
+  EXPECT_EQ(error_of("light 0 inf 2\n"), "t.scene:1:9: expected a number for the light position y, got \"inf\"");
+  EXPECT_EQ(error_of("light 0 0 1e999\n"), "t.scene:1:11: expected a number for the light position z, got \"1e999\"");
+}
+
+TEST(SceneParserErrors, UnknownStatement) {
+  EXPECT_EQ(error_of(kLight + "  cube 0 0 0 1\n"),
+            "t.scene:2:3: unknown statement \"cube\" (expected light, material, sphere, triangle, mesh or camera)");
+}
+
+TEST(SceneParserErrors, KeywordsAreLowerCase) {
+  EXPECT_EQ(error_of("Light 0 0 2\n"),
+            "t.scene:1:1: unknown statement \"Light\" (expected light, material, sphere, triangle, mesh or camera)");
+}
+
+TEST(SceneParserErrors, UnknownKeyword) {
+  EXPECT_EQ(error_of("light 0 0 2 colour 1 1 1\n"),
+            "t.scene:1:13: unknown keyword \"colour\" in light (expected color or ambient)");
+}
+
+TEST(SceneParserErrors, KeywordGivenTwice) {
+  EXPECT_EQ(error_of("light 0 0 2 color 1 1 1 color 1 1 1\n"), "t.scene:1:25: keyword \"color\" is given twice");
+}
+
+TEST(SceneParserErrors, NegativeColor) {
+  EXPECT_EQ(error_of("light 0 0 2 color 1 -1 1\n"), "t.scene:1:19: the light color must not be negative");
+}
+
+TEST(SceneParserErrors, UndefinedMaterial) {
+  EXPECT_EQ(error_of(kLight + "sphere 0 0 0 0.5 material red\n"),
+            "t.scene:2:27: material \"red\" is not defined (define it on an earlier line)");
+}
+
+TEST(SceneParserErrors, MaterialUsedBeforeItsDefinition) {
+  EXPECT_EQ(error_of(kLight + "sphere 0 0 0 0.5 material red\nmaterial red\n"),
+            "t.scene:2:27: material \"red\" is not defined (define it on an earlier line)");
+}
+
+TEST(SceneParserErrors, MaterialDefinedTwice) {
+  EXPECT_EQ(error_of(kLight + "material red\nmaterial red diffuse 1 0 0\n"),
+            "t.scene:3:10: material \"red\" is already defined at line 2");
+}
+
+TEST(SceneParserErrors, NonPositiveRadius) {
+  EXPECT_EQ(error_of(kLight + "sphere 0 0 0 -0.5\n"), "t.scene:2:14: the sphere radius must be positive, got -0.5");
+  EXPECT_EQ(error_of(kLight + "sphere 0 0 0 0\n"), "t.scene:2:14: the sphere radius must be positive, got 0");
+}
+
+TEST(SceneParserErrors, TrailingTokens) {
+  EXPECT_EQ(error_of(kLight + "triangle 0 0 0 1 0 0 0 1 0 material\n"),
+            "t.scene:2:36: expected a material name, got end of line");
+  EXPECT_EQ(error_of("light 0 0 2 color 1 1 1 ambient 0 0 0 extra\n"),
+            "t.scene:1:39: unknown keyword \"extra\" in light (expected color or ambient)");
+}
+
+TEST(SceneParserErrors, UnterminatedQuote) {
+  EXPECT_EQ(error_of(kLight + "mesh \"bunny.obj\n"), "t.scene:2:6: unterminated quoted path (missing closing \")");
+}
+
+TEST(SceneParserErrors, MeshesAreNotSupportedYetButTheirSyntaxIsChecked) {
+  EXPECT_EQ(error_of(kLight + "mesh \"my bunny.obj\" scale 2 rotate 0 1 0 90 translate 0 0 0\n"),
+            "t.scene:2:1: mesh statements are not supported yet: this version renders spheres and triangles");
+  EXPECT_EQ(error_of(kLight + "mesh bunny.obj scale two\n"), "t.scene:2:22: expected a number for the mesh scale, got \"two\"");
+}
+
+TEST(SceneParserErrors, CameraNeedsEveryPart) {
+  EXPECT_EQ(error_of(kLight + "camera eye 0 0 5 target 0 0 0 fovy 40\n"),
+            "t.scene:2:38: the camera needs \"up\" (camera eye X Y Z target X Y Z up X Y Z fovy DEG)");
+}
+
+TEST(SceneParserErrors, CameraGeometry) {
+  EXPECT_EQ(error_of(kLight + "camera eye 0 0 5 target 0 0 0 up 0 1 0 fovy 180\n"),
+            "t.scene:2:45: fovy must be between 0 and 180 degrees, got 180");
+  EXPECT_EQ(error_of(kLight + "camera eye 0 0 5 target 0 0 5 up 0 1 0 fovy 40\n"),
+            "t.scene:2:1: the camera eye and target are the same point");
+  EXPECT_EQ(error_of(kLight + "camera eye 0 0 5 target 0 0 0 up 0 0 1 fovy 40\n"),
+            "t.scene:2:1: the camera up vector is zero or parallel to the view direction");
+}
+
+TEST(SceneParserErrors, SecondCamera) {
+  const std::string camera = "camera eye 0 0 5 target 0 0 0 up 0 1 0 fovy 40\n";
+  EXPECT_EQ(error_of(kLight + camera + camera), "t.scene:3:1: a second camera statement (the first is at line 2)");
+}
+
+TEST(SceneParserErrors, SceneWithoutLight) {
+  EXPECT_EQ(error_of("sphere 0 0 0 0.5\n"), "t.scene: the scene has no light: add a line such as \"light 0.6 0.8 1.6\"");
+}
+
+TEST(SceneParserErrors, MissingFile) {
+  try {
+    parse_scene_file("/nonexistent/x.scene");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "/nonexistent/x.scene: cannot open the scene file");
+  }
+}
+
+TEST(SceneParserWarnings, LightAtOrBelowZOne) {
+  const Scene s = parse_scene_text("light 0 0 1\n", "t");
+  ASSERT_EQ(s.warnings.size(), 1u);
+  EXPECT_EQ(s.warnings[0].where.str(), "t:1:1");
+  EXPECT_EQ(s.warnings[0].message,
+            "light 1 has z <= 1: the spec promises z > 1, so the viewpoint may be in shadow");
+}
+
+TEST(SceneParserWarnings, ObjectsOutsideTheCubeAndDegenerateTriangles) {
+  const Scene s = parse_scene_text(kLight + "sphere 0.9 0 0 0.2\ntriangle 0 0 0  0.5 0.5 0.5  1 1 1\n", "t");
+  ASSERT_EQ(s.warnings.size(), 2u);
+  EXPECT_EQ(s.warnings[0].message, "sphere reaches outside the cube [-1,1]^3 that holds a spec scene");
+  EXPECT_EQ(s.warnings[1].message,
+            "degenerate triangle (its vertices are collinear): it covers no pixel and casts no shadow");
+  EXPECT_EQ(s.warnings[1].where.line, 3);
+}
+
+}  // namespace
+}  // namespace umbra

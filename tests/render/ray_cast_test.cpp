@@ -1,0 +1,56 @@
+#include "render/ray_cast.hpp"
+
+#include <gtest/gtest.h>
+
+#include "mesh/scene_parser.hpp"
+#include "render/camera_transform.hpp"
+
+namespace umbra {
+namespace {
+
+const Scene kScene = parse_scene_text(
+    "light 0 0 2\n"
+    "sphere 0 0 0 0.5\n"
+    "triangle -1 -1 -1  1 -1 -1  1 1 -1\n",
+    "t.scene");
+
+TEST(RayCast, EyeRayHitsTheSphereAtTheHandComputedPoint) {
+  const auto hit = nearest_hit(kScene, {0, 0, 3.4}, {0, 0, -1});
+  ASSERT_TRUE(hit);
+  EXPECT_DOUBLE_EQ(hit->t, 2.9);
+  EXPECT_EQ(hit->object, 0);
+  EXPECT_EQ(hit->normal, glm::dvec3(0, 0, 1));
+}
+
+TEST(RayCast, ShadowRaysAgainstTheSphere) {
+  // (0, 0, -1) looks straight up at the light through the sphere.
+  EXPECT_TRUE(shadow_ray_blocked(kScene, {0, 0, -1}, 1, kScene.lights[0].position));
+  // From (0.9, 0, -1) the segment to the light passes 0.5747 from the centre.
+  EXPECT_FALSE(shadow_ray_blocked(kScene, {0.9, 0, -1}, 1, kScene.lights[0].position));
+  // From (0.5, 0, -1) it passes 0.4781 from the centre: blocked.
+  EXPECT_TRUE(shadow_ray_blocked(kScene, {0.5, 0, -1}, 1, kScene.lights[0].position));
+}
+
+TEST(RayCast, AnOccluderBeyondTheLightDoesNotShadow) {
+  EXPECT_FALSE(shadow_ray_blocked(kScene, {0, 0, 1}, -1, {0, 0, 2}));  // sphere is behind the point
+}
+
+TEST(RayCast, PixelRaysOfTheSpecCamera) {
+  const Camera camera = spec_camera();
+  const glm::dvec3 centre = pixel_ray_direction(camera, 101, 101, 50, 50);
+  EXPECT_NEAR(centre.x, 0.0, 1e-15);
+  EXPECT_NEAR(centre.y, 0.0, 1e-15);
+  EXPECT_NEAR(centre.z, -1.0, 1e-15);
+  // The top edge of the image is fovy / 2 = 22.5 degrees above the axis.
+  const glm::dvec3 top = pixel_ray_direction(camera, 101, 100, 50, -0.5);
+  EXPECT_NEAR(std::atan2(top.y, -top.z), M_PI / 8, 1e-12);
+}
+
+TEST(RayCast, MaskValuesForHandPickedPixels) {
+  // 101 x 101, pixel (50, 50) is the axis: it sees the sphere's top, facing the light.
+  EXPECT_EQ(reference_mask_value(kScene, 101, 101, 50, 50, 0), kMaskLit);
+  EXPECT_EQ(reference_mask_value(kScene, 101, 101, 0, 0, 0), kMaskNoSurface);  // corner: past the floor
+}
+
+}  // namespace
+}  // namespace umbra

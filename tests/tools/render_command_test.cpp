@@ -1,0 +1,153 @@
+// The command line as a user meets it: exit codes, exact messages, and no
+// output file when anything is wrong.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "render/image.hpp"
+
+namespace umbra {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandResult {
+  int status = 0;
+  std::string out, err;
+};
+
+class RenderCommand : public testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("umbra-cli-" + std::to_string(::getpid()) + "-" +
+                                        testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(path(name)) << text;
+    return path(name);
+  }
+
+  CommandResult run(const std::string& args) const {
+    const std::string command = std::string(UMBRA_EXECUTABLE) + " " + args + " >" + path("out.txt") + " 2>" + path("err.txt");
+    CommandResult r;
+    const int raw = std::system(command.c_str());
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.out = read(path("out.txt"));
+    r.err = read(path("err.txt"));
+    return r;
+  }
+
+  static std::string read(const std::string& p) {
+    std::ifstream in(p);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(RenderCommand, WritesImageAndMaskOfTheRequestedSize) {
+  const CommandResult r = run("render " + std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene -o " + path("a.png") +
+                    " --mask " + path("m.png") + " --size 64x48");
+  EXPECT_EQ(r.status, 0) << r.err;
+  const Image image = read_png(path("a.png"));
+  EXPECT_EQ(image.width, 64);
+  EXPECT_EQ(image.height, 48);
+  EXPECT_EQ(image.channels, 3);
+  const Image mask = read_png(path("m.png"));
+  EXPECT_EQ(mask.channels, 1);
+  for (uint8_t v : mask.pixels) EXPECT_TRUE(v == kMaskLit || v == kMaskUnlit || v == kMaskNoSurface);
+  EXPECT_EQ(r.out, "wrote " + path("a.png") + " (64x48) and mask " + path("m.png") + "\n");
+}
+
+TEST_F(RenderCommand, SceneErrorIsLocatedAndWritesNothing) {
+  const std::string scene = write("bad.scene", "light 0 0 2\nsphere 0 0 0 O.5\n");
+  const CommandResult r = run("render " + scene + " -o " + path("a.png") + " --mask " + path("m.png"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, scene + ":2:14: expected a number for the sphere radius, got \"O.5\"\n");
+  EXPECT_FALSE(fs::exists(path("a.png")));
+  EXPECT_FALSE(fs::exists(path("m.png")));
+}
+
+TEST_F(RenderCommand, LightInsideASphereIsAnErrorAtTheSphere) {
+  const std::string scene = write("inside.scene", "light 0 0 1.5\nsphere 0 0 1.2 0.5\n");
+  const CommandResult r = run("render " + scene + " -o " + path("a.png"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, scene + ":2:1: warning: sphere reaches outside the cube [-1,1]^3 that holds a spec scene\n" +
+                       scene + ":2:1: light 1 (line 1) is inside or on this sphere, which then has no shadow volume; "
+                           "move the light outside the sphere\n");
+  EXPECT_FALSE(fs::exists(path("a.png")));
+}
+
+TEST_F(RenderCommand, LightRotatedIntoASphereIsAnError) {
+  const std::string scene = write("rot.scene", "light 1 0 2\nsphere -1 0 2 0.5\n");
+  EXPECT_EQ(run("render " + scene + " -o " + path("a.png")).status, 0);
+  const CommandResult r = run("render " + scene + " -o " + path("b.png") + " --light-angle 180");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find(scene + ":2:1: light 1 (line 1) is inside or on this sphere"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("b.png")));
+}
+
+TEST_F(RenderCommand, UnwritableOutputLeavesNoFile) {
+  const CommandResult r = run("render " + std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene --size 32x32 -o " +
+                    path("no/such/dir/a.png"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find(path("no/such/dir/a.png") + ": cannot write the image"), std::string::npos) << r.err;
+}
+
+TEST_F(RenderCommand, MaskFailureRemovesTheImageToo) {
+  const CommandResult r = run("render " + std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene --size 32x32 -o " + path("a.png") +
+                    " --mask " + path("no/dir/m.png"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_FALSE(fs::exists(path("a.png")));
+}
+
+TEST_F(RenderCommand, UsageErrorsExitWithTwo) {
+  const std::string demo = std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene";
+  CommandResult r = run("render " + demo);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "umbra render: no output image given (-o OUT.png)\n(see umbra render --help)\n");
+  r = run("render " + demo + " -o x.png --size 10by10");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "umbra render: --size expects WIDTHxHEIGHT such as 800x600, got \"10by10\"\n(see umbra render --help)\n");
+  r = run("render " + demo + " -o x.png --segments 2");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "umbra render: --segments expects a whole number from 3 to 4096, got \"2\"\n(see umbra render --help)\n");
+  r = run("render " + demo + " -o x.png --light-angle nan");
+  EXPECT_EQ(r.status, 2);
+  r = run("render " + demo + " -o x.png --frobnicate");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "umbra render: unknown option --frobnicate\n(see umbra render --help)\n");
+  r = run("explode");
+  EXPECT_EQ(r.status, 2);
+}
+
+TEST_F(RenderCommand, HelpListsEveryOption) {
+  const CommandResult r = run("render --help");
+  EXPECT_EQ(r.status, 0);
+  for (const char* option : {"-o", "--size", "--light-angle", "--segments", "--show-volumes", "--mask", "--explain"})
+    EXPECT_NE(r.out.find(option), std::string::npos) << option;
+  EXPECT_EQ(run("--help").status, 0);
+}
+
+TEST_F(RenderCommand, ExplainPrintsThePlan) {
+  const CommandResult r = run("render " + std::string(UMBRA_SOURCE_DIR) + "/scenes/two_spheres.scene --size 32x32 --segments 12 --explain -o " +
+                    path("a.png"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("camera: eye (0, 0, 3.4) target (0, 0, 0) up (0, 1, 0) fovy 45 deg (the spec's default view)"),
+            std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("stencil method: z-fail"), std::string::npos);
+  EXPECT_NE(r.out.find("sphere (line 7): tangent-circle 12-gon (spec 2.2), 12 quads + 20 cap triangles"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("triangle (line 5): three side quads (spec 2.1), 3 quads + 2 cap triangles"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace umbra
