@@ -1,6 +1,6 @@
 #include "render/render_plan.hpp"
 
-#include <iomanip>
+#include <algorithm>
 
 #include "mesh/orientation.hpp"
 #include "render/camera_transform.hpp"
@@ -44,6 +44,8 @@ RenderPlan make_render_plan(const Scene& scene, const RenderSettings& settings) 
     LightPlan lp;
     for (const Sphere& s : scene.spheres) lp.casters.push_back(sphere_entry(s, light, settings.sphere_segments));
     for (const Triangle& t : scene.triangles) lp.casters.push_back(triangle_entry(t, light));
+    std::stable_sort(lp.casters.begin(), lp.casters.end(),  // file order, for --explain
+                     [](const CasterEntry& a, const CasterEntry& b) { return a.where.line < b.where.line; });
     for (const CasterEntry& e : lp.casters) append_volume(lp.all_volumes, e.volume);
     plan.lights.push_back(std::move(lp));
   }
