@@ -1,7 +1,8 @@
 # GL entry points come from a loader generated at build time by Debian's
 # python3-glad (DESIGN.md): one binary can then load them through either
 # OSMesaGetProcAddress or glfwGetProcAddress without libGL/libOSMesa clashes.
-find_program(GLAD_EXECUTABLE glad REQUIRED)
+# Debian installs it as /usr/bin/glad; prefer that over any other glad on PATH.
+find_program(GLAD_EXECUTABLE glad HINTS /usr/bin REQUIRED)
 
 set(UMBRA_GLAD_DIR ${CMAKE_BINARY_DIR}/glad)
 add_custom_command(
