@@ -10,6 +10,17 @@
 namespace umbra {
 namespace {
 
+// The info log of a shader (glGetShaderiv, glGetShaderInfoLog) or a program
+// (glGetProgramiv, glGetProgramInfoLog).
+template <typename GetIv, typename GetLog>
+std::string info_log(GLuint object, GetIv get_iv, GetLog get_log) {
+  GLint length = 0;
+  get_iv(object, GL_INFO_LOG_LENGTH, &length);
+  std::vector<char> log(size_t(length) + 1);
+  get_log(object, length, nullptr, log.data());
+  return log.data();
+}
+
 GLuint compile(GLenum stage, const std::string& source, const std::string& name) {
   const GLuint shader = glCreateShader(stage);
   const char* text = source.c_str();
@@ -18,13 +29,10 @@ GLuint compile(GLenum stage, const std::string& source, const std::string& name)
   GLint ok = 0;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   if (!ok) {
-    GLint length = 0;
-    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-    std::vector<char> log(size_t(length) + 1);
-    glGetShaderInfoLog(shader, length, nullptr, log.data());
+    const std::string log = info_log(shader, glGetShaderiv, glGetShaderInfoLog);
     glDeleteShader(shader);
     throw std::runtime_error("shader " + name + (stage == GL_VERTEX_SHADER ? " (vertex)" : " (fragment)") +
-                             " does not compile: " + log.data());
+                             " does not compile: " + log);
   }
   return shader;
 }
@@ -51,12 +59,9 @@ ShaderProgram::ShaderProgram(const std::string& name, const std::string& vertex_
   GLint ok = 0;
   glGetProgramiv(id_, GL_LINK_STATUS, &ok);
   if (!ok) {
-    GLint length = 0;
-    glGetProgramiv(id_, GL_INFO_LOG_LENGTH, &length);
-    std::vector<char> log(size_t(length) + 1);
-    glGetProgramInfoLog(id_, length, nullptr, log.data());
+    const std::string log = info_log(id_, glGetProgramiv, glGetProgramInfoLog);
     glDeleteProgram(id_);
-    throw std::runtime_error("shader " + name + " does not link: " + log.data());
+    throw std::runtime_error("shader " + name + " does not link: " + log);
   }
 }
 

@@ -2,6 +2,8 @@
 // light, against exact shadow rays on the CPU.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 #include "mask_comparison.hpp"
@@ -14,11 +16,6 @@ namespace umbra {
 namespace {
 
 std::string scene_path(const std::string& name) { return std::string(UMBRA_SOURCE_DIR) + "/scenes/" + name; }
-
-struct Rendered {
-  Scene scene;
-  RenderPlan plan;
-};
 
 // Renders each light's mask at width x height and checks every pixel.
 void expect_masks_match_reference(Scene scene, int width, int height, int segments, double light_angle = 0.0) {
