@@ -1,5 +1,7 @@
 #include "mesh/scene_checks.hpp"
 
+#include <cmath>
+
 #include <glm/geometric.hpp>
 
 namespace umbra {
@@ -9,11 +11,15 @@ void require_lights_outside_spheres(const Scene& scene) {
     const Light& light = scene.lights[i];
     for (const Sphere& s : scene.spheres) {
       const glm::dvec3 lc = s.center - light.position;
+      const std::string light_name = "light " + std::to_string(i + 1) + " (line " + std::to_string(light.where.line) + ")";
       // spec 2.2 needs LC^2 - R^2 > 0 for the tangent circle to exist.
-      if (glm::dot(lc, lc) - s.radius * s.radius <= 0.0)
-        throw InputError(s.where, "light " + std::to_string(i + 1) + " (line " + std::to_string(light.where.line) +
-                                      ") is inside or on this sphere, which then has no shadow volume; "
-                                      "move the light outside the sphere");
+      const double tangent2 = glm::dot(lc, lc) - s.radius * s.radius;
+      if (!std::isfinite(tangent2))
+        throw InputError(s.where, "the distance from " + light_name +
+                                      " to this sphere overflows double precision; scale the scene down");
+      if (tangent2 <= 0.0)
+        throw InputError(s.where, light_name + " is inside or on this sphere, which then has no shadow volume; "
+                                               "move the light outside the sphere");
     }
   }
 }
