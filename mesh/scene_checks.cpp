@@ -9,9 +9,9 @@ namespace umbra {
 void require_lights_outside_spheres(const Scene& scene) {
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& light = scene.lights[i];
+    const std::string light_name = "light " + std::to_string(i + 1) + " (line " + std::to_string(light.where.line) + ")";
     for (const Sphere& s : scene.spheres) {
       const glm::dvec3 lc = s.center - light.position;
-      const std::string light_name = "light " + std::to_string(i + 1) + " (line " + std::to_string(light.where.line) + ")";
       // spec 2.2 needs LC^2 - R^2 > 0 for the tangent circle to exist.
       const double tangent2 = glm::dot(lc, lc) - s.radius * s.radius;
       if (!std::isfinite(tangent2))
