@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "tools/check_command.hpp"
 #include "tools/render_command.hpp"
 
 namespace {
@@ -13,6 +14,8 @@ Renders exact hard shadows with stencil shadow volumes.
 
 commands:
   render SCENE -o OUT.png   render a scene headless to a PNG (see umbra render --help)
+  check MESH...             is each mesh a closed 2-manifold, and if not, why
+                            (see umbra check --help)
 
   umbra --help, umbra --version
 )";
@@ -30,6 +33,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (args[0] == "render") return umbra::run_render_command({args.begin() + 1, args.end()});
+  if (args[0] == "check") return umbra::run_check_command({args.begin() + 1, args.end()});
   std::cerr << "umbra: unknown command \"" << args[0] << "\"\n" << kUsage;
   return 2;
 }

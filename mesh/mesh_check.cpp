@@ -1,0 +1,349 @@
+#include "mesh/mesh_check.hpp"
+
+#include <algorithm>
+#include <array>
+#include <limits>
+
+#include <glm/geometric.hpp>
+
+#include "mesh/orientation.hpp"
+#include "mesh/point_merging.hpp"
+#include "mesh/polygon_triangulation.hpp"
+#include "mesh/self_intersections.hpp"
+#include "mesh/union_find.hpp"
+
+namespace umbra {
+namespace {
+
+constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+
+// The soup with coincident points merged, and what each face is.
+struct Faces {
+  std::vector<uint32_t> corners;  // vertex (merged point) indices, face after face as in the soup
+  std::vector<uint8_t> repeats_vertex, collinear, duplicate;
+  std::vector<uint32_t> duplicate_of;  // for a duplicate, the earlier face it repeats
+  bool in_topology(size_t f) const { return !repeats_vertex[f] && !duplicate[f]; }
+};
+
+bool has_repeated_vertex(const uint32_t* v, uint32_t n) {
+  for (uint32_t i = 0; i < n; ++i)
+    for (uint32_t j = i + 1; j < n; ++j)
+      if (v[i] == v[j]) return true;
+  return false;
+}
+
+bool all_collinear(const std::vector<glm::dvec3>& positions, const uint32_t* v, uint32_t n) {
+  for (uint32_t k = 2; k < n; ++k)
+    if (!collinear(positions[v[0]], positions[v[1]], positions[v[k]])) return false;
+  return true;
+}
+
+// Marks every face whose vertex set equals an earlier face's.
+void find_duplicates(const PolygonSoup& soup, Faces& faces) {
+  const size_t count = soup.polygon_count();
+  std::vector<std::vector<uint32_t>> sorted(count);
+  std::vector<uint32_t> order;
+  for (uint32_t f = 0; f < count; ++f) {
+    if (faces.repeats_vertex[f]) continue;
+    const uint32_t* v = faces.corners.data() + soup.polygon_starts[f];
+    sorted[f].assign(v, v + soup.corner_count(f));
+    std::sort(sorted[f].begin(), sorted[f].end());
+    order.push_back(f);
+  }
+  std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+    return sorted[a] != sorted[b] ? sorted[a] < sorted[b] : a < b;
+  });
+  for (size_t i = 1; i < order.size(); ++i) {
+    if (sorted[order[i]] != sorted[order[i - 1]]) continue;
+    faces.duplicate[order[i]] = 1;
+    faces.duplicate_of[order[i]] = faces.duplicate[order[i - 1]] ? faces.duplicate_of[order[i - 1]] : order[i - 1];
+  }
+}
+
+// One face's use of an edge, going from the vertex at `corner` to the next one.
+struct EdgeUse {
+  uint64_t key;  // (smaller vertex << 32) | larger vertex
+  uint32_t face;
+  uint32_t corner;  // index into Faces::corners
+  bool forward;     // traversed from the smaller vertex to the larger
+};
+
+uint32_t next_corner(const PolygonSoup& soup, uint32_t face, uint32_t corner) {
+  return corner + 1 == soup.polygon_starts[face + 1] ? soup.polygon_starts[face] : corner + 1;
+}
+
+}  // namespace
+
+MeshReport check_mesh(const PolygonSoup& soup, const CheckOptions& options) {
+  MeshReport report;
+  report.path = soup.path;
+  report.format = soup.format;
+  report.file_vertices = soup.points.size();
+  report.file_faces = soup.polygon_count();
+  if (!soup.points.empty()) {
+    report.bbox_min = report.bbox_max = soup.points[0];
+    for (const glm::dvec3& p : soup.points) {
+      report.bbox_min = glm::min(report.bbox_min, p);
+      report.bbox_max = glm::max(report.bbox_max, p);
+    }
+  }
+  const size_t face_count = soup.polygon_count();
+  const MergedPoints merged = merge_coincident_points(soup.points);
+  const size_t vertex_count = merged.positions.size();
+  report.merged_vertices = soup.points.size() - vertex_count;
+  const auto vertex_ref = [&](uint32_t v) {
+    const uint32_t p = merged.first_point[v];
+    return ElementRef{p, soup.point_lines[p]};
+  };
+  const auto face_ref = [&](uint32_t f) { return ElementRef{f, soup.polygon_lines[f]}; };
+  const auto room_for = [](const auto& list) { return list.size() < MeshReport::kMaxExamples; };
+  auto& examples = report.examples;
+
+  // Faces: degenerate, duplicate, or part of the topology.
+  Faces faces;
+  faces.corners.resize(soup.corners.size());
+  for (size_t c = 0; c < soup.corners.size(); ++c) faces.corners[c] = merged.vertex_of_point[soup.corners[c]];
+  faces.repeats_vertex.assign(face_count, 0);
+  faces.collinear.assign(face_count, 0);
+  faces.duplicate.assign(face_count, 0);
+  faces.duplicate_of.assign(face_count, kNone);
+  std::vector<uint8_t> vertex_used(vertex_count, 0);
+  for (uint32_t f = 0; f < face_count; ++f) {
+    const uint32_t* v = faces.corners.data() + soup.polygon_starts[f];
+    const uint32_t n = soup.corner_count(f);
+    for (uint32_t k = 0; k < n; ++k) vertex_used[v[k]] = 1;
+    faces.repeats_vertex[f] = has_repeated_vertex(v, n);
+    faces.collinear[f] = !faces.repeats_vertex[f] && all_collinear(merged.positions, v, n);
+    if (faces.repeats_vertex[f] || faces.collinear[f]) {
+      ++report.degenerate_faces;
+      if (room_for(examples.degenerate_faces)) examples.degenerate_faces.push_back(face_ref(f));
+    }
+  }
+  report.vertices = size_t(std::count(vertex_used.begin(), vertex_used.end(), 1));
+  report.isolated_vertices = vertex_count - report.vertices;
+  find_duplicates(soup, faces);
+  for (uint32_t f = 0; f < face_count; ++f) {
+    if (!faces.duplicate[f]) continue;
+    ++report.duplicate_faces;
+    if (room_for(examples.duplicate_faces)) examples.duplicate_faces.push_back({face_ref(f), face_ref(faces.duplicate_of[f])});
+  }
+
+  // Edges: every face's use of every edge, grouped by edge.
+  std::vector<EdgeUse> uses;
+  uses.reserve(faces.corners.size());
+  for (uint32_t f = 0; f < face_count; ++f) {
+    if (!faces.in_topology(f)) continue;
+    for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c) {
+      const uint32_t a = faces.corners[c], b = faces.corners[next_corner(soup, f, c)];
+      uses.push_back({(uint64_t(std::min(a, b)) << 32) | std::max(a, b), f, c, a < b});
+    }
+  }
+  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
+    return x.key != y.key ? x.key < y.key : x.face < y.face;
+  });
+
+  UnionFind components(face_count);
+  ParityUnionFind flips(face_count);        // parity 1: the face must flip to agree with its set's root
+  std::vector<uint8_t> orientation_conflict(face_count, 0);
+  UnionFind fans(faces.corners.size());     // corners joined across the manifold edges at their vertex
+  UnionFind border_graph(vertex_count);
+  std::vector<uint8_t> on_non_manifold_edge(vertex_count, 0);
+  struct EdgeRun { uint64_t key; uint32_t face; uint32_t uses; };
+  std::vector<EdgeRun> edges;
+  std::vector<uint32_t> inconsistent_edge_faces;
+  for (size_t i = 0; i < uses.size();) {
+    size_t j = i + 1;
+    while (j < uses.size() && uses[j].key == uses[i].key) ++j;
+    const uint32_t a = uint32_t(uses[i].key >> 32), b = uint32_t(uses[i].key);
+    edges.push_back({uses[i].key, uses[i].face, uint32_t(j - i)});
+    for (size_t k = i + 1; k < j; ++k) components.unite(uses[i].face, uses[k].face);
+    if (j - i == 1) {
+      ++report.border_edges;
+      border_graph.unite(a, b);
+      if (room_for(examples.border_edges)) examples.border_edges.push_back({vertex_ref(a), vertex_ref(b)});
+    } else if (j - i == 2) {
+      const EdgeUse& x = uses[i];
+      const EdgeUse& y = uses[i + 1];
+      const bool same_direction = x.forward == y.forward;
+      if (same_direction) {
+        ++report.inconsistent_edges;
+        inconsistent_edge_faces.push_back(x.face);
+      }
+      if (!flips.unite(x.face, y.face, same_direction ? 1 : 0)) orientation_conflict[x.face] = 1;
+      // Join the two faces' corners at each end of the edge.
+      const uint32_t x_next = next_corner(soup, x.face, x.corner), y_next = next_corner(soup, y.face, y.corner);
+      fans.unite(x.corner, same_direction ? y.corner : y_next);
+      fans.unite(x_next, same_direction ? y_next : y.corner);
+    } else {
+      ++report.non_manifold_edges;
+      on_non_manifold_edge[a] = on_non_manifold_edge[b] = 1;
+      if (room_for(examples.non_manifold_edges)) examples.non_manifold_edges.push_back({vertex_ref(a), vertex_ref(b)});
+    }
+    i = j;
+  }
+  report.edges = edges.size();
+
+  // Components, numbered in order of their first face.
+  std::vector<uint32_t> component_of(face_count, kNone);
+  std::vector<uint32_t> component_of_root(face_count, kNone);
+  for (uint32_t f = 0; f < face_count; ++f) {
+    if (!faces.in_topology(f)) continue;
+    uint32_t& id = component_of_root[components.find(f)];
+    if (id == kNone) {
+      id = uint32_t(report.components.size());
+      report.components.emplace_back();
+    }
+    component_of[f] = id;
+    ++report.components[id].faces;
+  }
+  auto& comps = report.components;
+  std::vector<uint8_t> component_non_manifold(comps.size(), 0), component_conflict(comps.size(), 0);
+  std::vector<size_t> component_inconsistent(comps.size(), 0);
+  for (const EdgeRun& e : edges) {
+    ComponentReport& c = comps[component_of[e.face]];
+    ++c.edges;
+    if (e.uses == 1) ++c.border_edges;
+    if (e.uses > 2) component_non_manifold[component_of[e.face]] = 1;
+  }
+  for (uint32_t f : inconsistent_edge_faces) ++component_inconsistent[component_of[f]];
+  for (uint32_t f = 0; f < face_count; ++f)
+    if (orientation_conflict[f]) component_conflict[component_of[f]] = 1;
+
+  // Vertices per component, and vertices whose faces form more than one fan.
+  std::vector<uint64_t> component_vertex;  // (component << 32) | vertex
+  std::vector<uint32_t> fan_of_vertex(vertex_count, kNone);
+  std::vector<uint8_t> several_fans(vertex_count, 0);
+  for (uint32_t f = 0; f < face_count; ++f) {
+    if (!faces.in_topology(f)) continue;
+    for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c) {
+      const uint32_t v = faces.corners[c];
+      component_vertex.push_back((uint64_t(component_of[f]) << 32) | v);
+      const uint32_t fan = fans.find(c);
+      if (fan_of_vertex[v] == kNone) fan_of_vertex[v] = fan;
+      else if (fan_of_vertex[v] != fan) several_fans[v] = 1;
+    }
+  }
+  std::sort(component_vertex.begin(), component_vertex.end());
+  component_vertex.erase(std::unique(component_vertex.begin(), component_vertex.end()), component_vertex.end());
+  for (uint64_t cv : component_vertex) ++comps[cv >> 32].vertices;
+  for (uint32_t v = 0; v < vertex_count; ++v) {
+    if (!several_fans[v] || on_non_manifold_edge[v]) continue;
+    ++report.non_manifold_vertices;
+    if (room_for(examples.non_manifold_vertices)) examples.non_manifold_vertices.push_back(vertex_ref(v));
+  }
+  // A component is non-manifold at a vertex when two of the vertex's fans lie in it.
+  {
+    std::vector<uint64_t> fans_in_component;  // (component << 32) | fan, for the vertices in question
+    std::vector<std::pair<uint32_t, uint64_t>> vertex_fans;
+    for (uint32_t f = 0; f < face_count; ++f) {
+      if (!faces.in_topology(f)) continue;
+      for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c) {
+        const uint32_t v = faces.corners[c];
+        if (several_fans[v] && !on_non_manifold_edge[v])
+          vertex_fans.push_back({v, (uint64_t(component_of[f]) << 32) | fans.find(c)});
+      }
+    }
+    std::sort(vertex_fans.begin(), vertex_fans.end());
+    vertex_fans.erase(std::unique(vertex_fans.begin(), vertex_fans.end()), vertex_fans.end());
+    for (size_t i = 1; i < vertex_fans.size(); ++i) {
+      if (vertex_fans[i].first == vertex_fans[i - 1].first && (vertex_fans[i].second >> 32) == (vertex_fans[i - 1].second >> 32))
+        component_non_manifold[vertex_fans[i].second >> 32] = 1;
+    }
+  }
+
+  // Border loops: the connected pieces of the border edges.
+  std::vector<uint8_t> loop_counted(vertex_count, 0);
+  for (const EdgeRun& e : edges) {
+    if (e.uses != 1) continue;
+    const uint32_t root = border_graph.find(uint32_t(e.key >> 32));
+    if (loop_counted[root]) continue;
+    loop_counted[root] = 1;
+    ++report.border_loops;
+    ++comps[component_of[e.face]].border_loops;
+  }
+
+  // Orientation: within each set of faces joined by manifold edges, flipping
+  // the smaller parity class makes them agree.
+  std::vector<std::array<size_t, 2>> parity_counts(face_count, {0, 0});
+  std::vector<uint8_t> parity_of(face_count, 0);
+  std::vector<uint32_t> flip_root(face_count, kNone);
+  for (uint32_t f = 0; f < face_count; ++f) {
+    if (!faces.in_topology(f)) continue;
+    const auto [root, parity] = flips.find(f);
+    flip_root[f] = root;
+    parity_of[f] = parity;
+    ++parity_counts[root][parity];
+  }
+  // A face flips when its class is the smaller one (ties keep the root's class).
+  const auto must_flip = [&](uint32_t f) {
+    const auto& counts = parity_counts[flip_root[f]];
+    const uint8_t keep = counts[1] > counts[0] ? 1 : 0;
+    return parity_of[f] != keep;
+  };
+  for (uint32_t f = 0; f < face_count; ++f) {
+    if (!faces.in_topology(f) || component_conflict[component_of[f]] || !must_flip(f)) continue;
+    ++report.faces_to_flip;
+    if (room_for(examples.faces_to_flip)) examples.faces_to_flip.push_back(face_ref(f));
+  }
+
+  // Triangles for the geometric tests, oriented as after the flips.
+  std::vector<std::array<uint32_t, 3>> triangles;
+  std::vector<uint32_t> triangle_face;
+  std::vector<double> component_volume(comps.size(), 0.0);
+  const glm::dvec3 centre = 0.5 * (report.bbox_min + report.bbox_max);  // keeps the volume sums well conditioned
+  for (uint32_t f = 0; f < face_count; ++f) {
+    if (!faces.in_topology(f) || faces.collinear[f]) continue;
+    const size_t first = triangles.size();
+    triangulate_polygon(merged.positions, faces.corners.data() + soup.polygon_starts[f], soup.corner_count(f), triangles);
+    const double sign = must_flip(f) ? -1.0 : 1.0;
+    for (size_t t = first; t < triangles.size(); ++t) {
+      triangle_face.push_back(f);
+      const auto& tri = triangles[t];
+      const glm::dvec3 a = merged.positions[tri[0]] - centre, b = merged.positions[tri[1]] - centre,
+                       c = merged.positions[tri[2]] - centre;
+      component_volume[component_of[f]] += sign * glm::dot(a, glm::cross(b, c)) / 6.0;
+    }
+  }
+  report.triangles = triangles.size();
+
+  for (size_t i = 0; i < comps.size(); ++i) {
+    ComponentReport& c = comps[i];
+    c.euler_characteristic = int64_t(c.vertices) - int64_t(c.edges) + int64_t(c.faces);
+    c.manifold = !component_non_manifold[i];
+    c.closed = c.border_edges == 0 && c.manifold;
+    c.orientable = !component_conflict[i];
+    c.consistently_oriented = c.orientable && component_inconsistent[i] == 0;
+    if (c.manifold && c.orientable) c.genus = (2 - c.euler_characteristic - int64_t(c.border_loops)) / 2;
+    if (c.closed && c.orientable) {
+      c.outward = component_volume[i] > 0.0;
+      if (!*c.outward) ++report.inward_components;
+    }
+    if (!c.orientable) ++report.non_orientable_components;
+  }
+  {
+    // V - E + F over the faces in the topology: each vertex once.
+    std::vector<uint8_t> in_topology_vertex(vertex_count, 0);
+    size_t topology_faces = 0;
+    for (uint32_t f = 0; f < face_count; ++f) {
+      if (!faces.in_topology(f)) continue;
+      ++topology_faces;
+      for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c) in_topology_vertex[faces.corners[c]] = 1;
+    }
+    const auto topology_vertices = std::count(in_topology_vertex.begin(), in_topology_vertex.end(), 1);
+    report.euler_characteristic = int64_t(topology_vertices) - int64_t(edges.size()) + int64_t(topology_faces);
+  }
+
+  if (options.self_intersection_seconds > 0.0) {
+    const SelfIntersections found = find_self_intersections(merged.positions, triangles, triangle_face,
+                                                            options.self_intersection_seconds, MeshReport::kMaxExamples);
+    report.self_intersections.checked = true;
+    report.self_intersections.complete = found.complete;
+    report.self_intersections.face_pairs = found.face_pairs;
+    report.self_intersections.seconds = found.seconds;
+    for (const auto& [f, g] : found.examples) examples.self_intersections.push_back({face_ref(f), face_ref(g)});
+  }
+  report.self_intersections.time_limit_seconds = options.self_intersection_seconds;
+  return report;
+}
+
+}  // namespace umbra

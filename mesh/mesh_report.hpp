@@ -1,0 +1,108 @@
+#pragma once
+// What `umbra check` finds in one mesh file: a value type that the check
+// fills and that prints itself as text or as one line of JSON.
+//
+// Counts are measured after merging points with equal coordinates (STL repeats
+// every point; other files often do), and degenerate and duplicate faces are
+// left out of the topology so that each defect is reported once.
+
+#include <cstdint>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace umbra {
+
+// A vertex or face as the file has it: its position in the file counting
+// from 0, and its line (0 in binary files).
+struct ElementRef {
+  uint32_t index = 0;
+  int line = 0;
+};
+using ElementPair = std::pair<ElementRef, ElementRef>;
+
+struct ComponentReport {
+  size_t faces = 0;
+  size_t vertices = 0;
+  size_t edges = 0;
+  size_t border_edges = 0;
+  size_t border_loops = 0;
+  int64_t euler_characteristic = 0;    // V - E + F
+  bool closed = false;                 // no border and no non-manifold edge
+  bool manifold = false;               // no non-manifold edge or vertex
+  bool orientable = false;             // faces can be flipped to agree on every edge
+  bool consistently_oriented = false;  // they already agree
+  std::optional<int64_t> genus;        // manifold and orientable: (2 - chi - loops) / 2
+  std::optional<bool> outward;         // closed and orientable: does the (repaired) orientation enclose positive volume
+};
+
+struct SelfIntersectionReport {
+  bool checked = false;   // false when the time limit is 0
+  bool complete = false;  // false when the time limit stopped the search
+  size_t face_pairs = 0;  // pairs of faces that intersect other than at shared vertices and edges
+  double seconds = 0.0;
+  double time_limit_seconds = 0.0;
+};
+
+enum class ShadowMethod { kSilhouette, kPerTriangle };
+const char* shadow_method_name(ShadowMethod method);
+
+// `s` as a JSON string literal, quotes included.
+std::string json_string(const std::string& s);
+
+struct MeshReport {
+  std::string path;
+  std::string format;
+  size_t file_vertices = 0;
+  size_t file_faces = 0;
+  size_t triangles = 0;           // after triangulating polygons
+  size_t vertices = 0;            // distinct positions used by a face
+  size_t merged_vertices = 0;     // points that repeat an earlier point's coordinates
+  size_t isolated_vertices = 0;   // distinct positions no face uses
+  size_t edges = 0;
+  size_t border_edges = 0;
+  size_t border_loops = 0;
+  size_t non_manifold_edges = 0;    // shared by more than two faces
+  size_t non_manifold_vertices = 0; // faces around it form more than one fan (vertices of non-manifold edges not counted)
+  size_t duplicate_faces = 0;       // same vertices as an earlier face, in any order
+  size_t degenerate_faces = 0;      // a repeated vertex, or all vertices on one line
+  size_t inconsistent_edges = 0;    // two faces traverse the edge in the same direction
+  size_t faces_to_flip = 0;         // the fewest flips that make every orientable component consistent
+  size_t non_orientable_components = 0;
+  size_t inward_components = 0;     // closed, orientable components that enclose negative volume
+  int64_t euler_characteristic = 0;
+  SelfIntersectionReport self_intersections;
+  glm::dvec3 bbox_min{0.0}, bbox_max{0.0};
+  std::vector<ComponentReport> components;
+
+  // A few offending elements of each kind, to find them in the file.
+  struct Examples {
+    std::vector<ElementPair> border_edges;        // the edge's two vertices
+    std::vector<ElementPair> non_manifold_edges;  // the edge's two vertices
+    std::vector<ElementRef> non_manifold_vertices;
+    std::vector<ElementPair> duplicate_faces;     // (face, the earlier face it repeats)
+    std::vector<ElementRef> degenerate_faces;
+    std::vector<ElementRef> faces_to_flip;
+    std::vector<ElementPair> self_intersections;  // two faces
+  } examples;
+  static constexpr size_t kMaxExamples = 5;
+
+  // A closed, consistently oriented 2-manifold without self-intersections or
+  // degenerate or duplicate faces: it can cast its shadow from its silhouette.
+  bool is_closed_manifold() const;
+  // Why it is not, one short phrase per reason; empty when it is.
+  std::vector<std::string> problems() const;
+  // The shadow method the renderer uses for this mesh.
+  ShadowMethod shadow_method() const;
+  // "closed 2-manifold: ..." or "not a closed 2-manifold (...): ..."
+  std::string verdict() const;
+
+  void print_text(std::ostream& out) const;
+  void print_json(std::ostream& out) const;  // one line, keys documented in docs/check.md
+};
+
+}  // namespace umbra

@@ -1,0 +1,38 @@
+#pragma once
+// A mesh file exactly as written: points and polygons in file order, nothing
+// merged, dropped or reoriented, so that a check sees every defect the file
+// has (a half-edge structure would refuse some of them on loading).
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace umbra {
+
+struct PolygonSoup {
+  std::string path;
+  std::string format;                 // "OBJ", "OFF", "PLY (binary little endian)", "STL (ascii)", ...
+  std::vector<glm::dvec3> points;     // in file order
+  std::vector<int> point_lines;       // line of each point; 0 in binary files
+  std::vector<uint32_t> corners;      // point indices of every polygon, polygon after polygon
+  std::vector<uint32_t> polygon_starts{0};  // polygon p is corners[starts[p], starts[p+1])
+  std::vector<int> polygon_lines;     // line of each polygon; 0 in binary files
+
+  size_t polygon_count() const { return polygon_starts.size() - 1; }
+  uint32_t corner_count(size_t p) const { return polygon_starts[p + 1] - polygon_starts[p]; }
+  const uint32_t* polygon(size_t p) const { return corners.data() + polygon_starts[p]; }
+
+  void add_point(const glm::dvec3& p, int line) {
+    points.push_back(p);
+    point_lines.push_back(line);
+  }
+  // Closes the polygon made of the corners added since the last one.
+  void end_polygon(int line) {
+    polygon_starts.push_back(uint32_t(corners.size()));
+    polygon_lines.push_back(line);
+  }
+};
+
+}  // namespace umbra

@@ -1,0 +1,106 @@
+#include "mesh/self_intersections.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/box_intersection_d.h>
+#include <CGAL/intersections.h>
+
+namespace umbra {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, uint32_t>;
+
+struct TimeLimitReached {};
+
+// Do two triangles intersect anywhere but in the vertices they share? The
+// cases follow CGAL's own self-intersection test (PMP::self_intersections):
+// with a shared edge they intersect only when coplanar and on the same side
+// of it; with a shared vertex, when the edge opposite it in one triangle
+// meets the other triangle.
+bool triangles_intersect(const std::array<Point, 3>& a, const std::array<uint32_t, 3>& ia,
+                         const std::array<Point, 3>& b, const std::array<uint32_t, 3>& ib) {
+  int shared_in_a[3] = {-1, -1, -1};  // for each corner of a, the matching corner of b
+  int shared = 0;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      if (ia[size_t(i)] == ib[size_t(j)]) {
+        shared_in_a[i] = j;
+        ++shared;
+      }
+    }
+  }
+  if (shared == 0) return CGAL::do_intersect(Kernel::Triangle_3(a[0], a[1], a[2]), Kernel::Triangle_3(b[0], b[1], b[2]));
+  if (shared >= 3) return false;  // the same triangle: a duplicate face, reported as such
+  if (shared == 2) {
+    int a_free = 0;
+    while (shared_in_a[a_free] >= 0) ++a_free;
+    int b_free = 0;
+    while (b_free == shared_in_a[0] || b_free == shared_in_a[1] || b_free == shared_in_a[2]) ++b_free;
+    const Point& p = a[size_t((a_free + 1) % 3)];
+    const Point& q = a[size_t((a_free + 2) % 3)];
+    return CGAL::orientation(p, q, a[size_t(a_free)], b[size_t(b_free)]) == CGAL::COPLANAR &&
+           CGAL::coplanar_orientation(p, q, a[size_t(a_free)], b[size_t(b_free)]) == CGAL::POSITIVE;
+  }
+  int a_vertex = 0;
+  while (shared_in_a[a_vertex] < 0) ++a_vertex;
+  const int b_vertex = shared_in_a[a_vertex];
+  const Kernel::Segment_3 a_opposite(a[size_t((a_vertex + 1) % 3)], a[size_t((a_vertex + 2) % 3)]);
+  const Kernel::Segment_3 b_opposite(b[size_t((b_vertex + 1) % 3)], b[size_t((b_vertex + 2) % 3)]);
+  return CGAL::do_intersect(a_opposite, Kernel::Triangle_3(b[0], b[1], b[2])) ||
+         CGAL::do_intersect(b_opposite, Kernel::Triangle_3(a[0], a[1], a[2]));
+}
+
+}  // namespace
+
+SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positions,
+                                          const std::vector<std::array<uint32_t, 3>>& triangles,
+                                          const std::vector<uint32_t>& triangle_face, double time_limit_seconds,
+                                          size_t max_examples) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  const auto deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(time_limit_seconds));
+
+  std::vector<Point> points;
+  points.reserve(positions.size());
+  for (const glm::dvec3& p : positions) points.emplace_back(p.x, p.y, p.z);
+  std::vector<Box> boxes;
+  boxes.reserve(triangles.size());
+  for (uint32_t t = 0; t < triangles.size(); ++t) {
+    const auto& tri = triangles[t];
+    boxes.emplace_back(points[tri[0]].bbox() + points[tri[1]].bbox() + points[tri[2]].bbox(), t);
+  }
+
+  std::vector<std::pair<uint32_t, uint32_t>> face_pairs;
+  size_t calls = 0;
+  const auto test = [&](const Box& x, const Box& y) {
+    if ((++calls & 1023) == 0 && Clock::now() > deadline) throw TimeLimitReached{};
+    const uint32_t s = x.info(), t = y.info();
+    uint32_t fs = triangle_face[s], ft = triangle_face[t];
+    if (fs == ft) return;
+    const auto& is = triangles[s];
+    const auto& it = triangles[t];
+    if (triangles_intersect({points[is[0]], points[is[1]], points[is[2]]}, is, {points[it[0]], points[it[1]], points[it[2]]}, it))
+      face_pairs.emplace_back(std::min(fs, ft), std::max(fs, ft));
+  };
+
+  SelfIntersections result;
+  try {
+    // Closed boxes: triangles that only touch still count as intersecting.
+    CGAL::box_self_intersection_d<CGAL::Sequential_tag>(boxes.begin(), boxes.end(), test, std::ptrdiff_t(10),
+                                                        CGAL::Box_intersection_d::CLOSED);
+  } catch (const TimeLimitReached&) {
+    result.complete = false;
+  }
+  std::sort(face_pairs.begin(), face_pairs.end());
+  face_pairs.erase(std::unique(face_pairs.begin(), face_pairs.end()), face_pairs.end());
+  result.face_pairs = face_pairs.size();
+  result.examples.assign(face_pairs.begin(), face_pairs.begin() + std::ptrdiff_t(std::min(max_examples, face_pairs.size())));
+  result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return result;
+}
+
+}  // namespace umbra

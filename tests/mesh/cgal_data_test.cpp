@@ -1,0 +1,92 @@
+// `umbra check` against CGAL's own answers on the real meshes of Debian's
+// CGAL data (libcgal-demo), unpacked at build time: for every mesh CGAL
+// builds into a half-edge mesh, the same border edges, holes, components,
+// closedness, self-intersection verdict and outward orientation; for every
+// soup CGAL refuses, a report that says why.
+#include <filesystem>
+#include <iostream>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/shape_predicates.h>
+#include <CGAL/Surface_mesh.h>
+#include <gtest/gtest.h>
+
+#include "mesh/mesh_check.hpp"
+#include "mesh/mesh_file.hpp"
+
+namespace umbra {
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+
+std::vector<std::string> cgal_meshes() {
+  std::vector<std::string> paths;
+  for (const auto& entry : std::filesystem::directory_iterator(UMBRA_CGAL_DATA "/meshes"))
+    if (!mesh_format_of(entry.path().string()).empty()) paths.push_back(entry.path().string());
+  std::sort(paths.begin(), paths.end());
+  return paths;
+}
+
+TEST(CgalData, EveryMeshIsReadAndAgreesWithCgal) {
+  const std::vector<std::string> paths = cgal_meshes();
+  ASSERT_GE(paths.size(), 100u) << "CGAL's data meshes are missing from " UMBRA_CGAL_DATA;
+  size_t compared_as_meshes = 0, refused_soups = 0;
+  for (const std::string& path : paths) {
+    SCOPED_TRACE(path);
+    std::vector<Kernel::Point_3> points;
+    std::vector<std::vector<std::size_t>> polygons;
+    if (!CGAL::IO::read_polygon_soup(path, points, polygons)) continue;  // CGAL cannot read it either
+    MeshReport report;
+    ASSERT_NO_THROW(report = check_mesh(read_polygon_soup(path)));
+    ASSERT_EQ(report.file_faces, polygons.size());
+    if (mesh_format_of(path) != "stl") {  // CGAL's STL reader merges points
+      EXPECT_EQ(report.file_vertices, points.size());
+    }
+
+    // The same soup as umbra sees it: equal points merged.
+    PMP::merge_duplicate_points_in_polygon_soup(points, polygons);
+    Mesh mesh;
+    if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
+      ++refused_soups;
+      EXPECT_NE(report.shadow_method(), ShadowMethod::kSilhouette) << "CGAL refuses this soup as a mesh";
+      EXPECT_GT(report.non_manifold_edges + report.non_manifold_vertices + report.inconsistent_edges +
+                    report.non_orientable_components + report.degenerate_faces + report.duplicate_faces,
+                0u);
+      continue;
+    }
+    PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+    ++compared_as_meshes;
+    std::vector<Mesh::Halfedge_index> cycles;
+    PMP::extract_boundary_cycles(mesh, std::back_inserter(cycles));
+    size_t border_halfedges = 0;
+    for (const auto h : mesh.halfedges()) border_halfedges += mesh.is_border(h);
+    auto component = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:c", 0).first;
+    EXPECT_EQ(report.border_edges, border_halfedges);
+    EXPECT_EQ(report.border_loops, cycles.size());
+    EXPECT_EQ(report.components.size(), PMP::connected_components(mesh, component));
+    EXPECT_EQ(report.non_manifold_edges + report.non_manifold_vertices + report.inconsistent_edges, 0u);
+    const bool triangles = CGAL::is_triangle_mesh(mesh);
+    if (triangles && report.degenerate_faces == 0) {
+      EXPECT_EQ(report.self_intersections.face_pairs > 0, PMP::does_self_intersect(mesh));
+    }
+    if (CGAL::is_closed(mesh) && triangles && report.components.size() == 1 && report.degenerate_faces == 0) {
+      EXPECT_EQ(report.inward_components == 0, PMP::is_outward_oriented(mesh));
+    }
+  }
+  std::cout << compared_as_meshes << " meshes compared with CGAL's, " << refused_soups << " soups CGAL refuses\n";
+  // The comparison covered both kinds (numbers as of CGAL 5.5's data).
+  EXPECT_GT(compared_as_meshes, 50u);
+  EXPECT_GT(refused_soups, 0u);
+}
+
+}  // namespace
+}  // namespace umbra
