@@ -41,11 +41,18 @@ PolygonSoup read_off(std::string_view text, const std::string& path) {
   if (counts_on_header_line && scanner.rest_of_line().substr(0, 6) == "BINARY")
     scanner.fail("binary OFF is not supported; write the mesh as text OFF, OBJ, PLY or STL");
   if (!counts_on_header_line) require_line(scanner, next_content_line(scanner), "the vertex and face counts");
-  // Each point and face takes at least a few bytes, so larger counts are lies
+  // Each point and face takes at least two bytes, so larger counts are lies
   // (and must not make us reserve gigabytes).
-  const uint64_t most = std::min<uint64_t>(text.size(), std::numeric_limits<uint32_t>::max() - 1);
-  const uint64_t point_count = scanner.count("vertex count", most);
-  const uint64_t face_count = scanner.count("face count", most);
+  const uint64_t most = std::min<uint64_t>(text.size() / 2, std::numeric_limits<uint32_t>::max() - 1);
+  const auto count = [&](const char* what) {
+    const uint64_t n = scanner.count(what);
+    if (n > most)
+      scanner.fail(std::string("the ") + what + " " + std::to_string(n) + " is more than a file of " +
+                   std::to_string(text.size()) + " bytes can hold");
+    return n;
+  };
+  const uint64_t point_count = count("vertex count");
+  const uint64_t face_count = count("face count");
   soup.points.reserve(point_count);
   soup.point_lines.reserve(point_count);
   soup.polygon_lines.reserve(face_count);
@@ -61,12 +68,16 @@ PolygonSoup read_off(std::string_view text, const std::string& path) {
   }
   for (uint64_t f = 0; f < face_count; ++f) {
     require_line(scanner, next_content_line(scanner), "face " + std::to_string(f) + " of " + std::to_string(face_count));
-    const uint64_t corners = scanner.count("face's vertex count", most);
+    const uint64_t corners = count("face's vertex count");
     if (corners < 3) scanner.fail("a face needs at least 3 vertices, this one has " + std::to_string(corners));
     for (uint64_t k = 0; k < corners; ++k) {
       if (scanner.at_line_end())
         scanner.fail("the face has " + std::to_string(k) + " vertex indices, its count says " + std::to_string(corners));
-      soup.corners.push_back(uint32_t(scanner.count("vertex index", point_count == 0 ? 0 : point_count - 1)));
+      const uint64_t index = scanner.count("vertex index");
+      if (index >= point_count)
+        scanner.fail("vertex index " + std::to_string(index) + " is out of range: the file has " +
+                     std::to_string(point_count) + " vertices, counted from 0");
+      soup.corners.push_back(uint32_t(index));
     }
     soup.end_polygon(scanner.line_number());
   }

@@ -86,7 +86,8 @@ PlyHeader read_header(TextScanner& scanner) {
       PlyElement element;
       element.name = std::string(scanner.field());
       if (element.name.empty()) scanner.fail("expected an element name");
-      element.count = scanner.count("element count", std::numeric_limits<uint32_t>::max() - 1);
+      element.count = scanner.count("element count");
+      if (element.count >= std::numeric_limits<uint32_t>::max()) scanner.fail("the element count is too large");
       header.elements.push_back(std::move(element));
     } else if (keyword == "property") {
       if (header.elements.empty()) scanner.fail("a property before any element");
@@ -201,6 +202,7 @@ void read_body(Cursor& cursor, const PlyHeader& header, const PlyLayout& layout,
                size_t byte_budget, const std::function<int()>& line_of) {
   for (const PlyElement& e : header.elements) {
     const bool is_vertex = e.name == "vertex", is_face = e.name == "face";
+    if (e.properties.empty() && !is_vertex && !is_face) continue;  // nothing to read, however many
     if (is_vertex) soup.points.reserve(std::min<size_t>(e.count, byte_budget));
     for (uint64_t n = 0; n < e.count; ++n) {
       glm::dvec3 p(0.0);

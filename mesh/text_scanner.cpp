@@ -69,11 +69,9 @@ int64_t TextScanner::integer(const char* what) {
   return value;
 }
 
-uint64_t TextScanner::count(const char* what, uint64_t most) {
+uint64_t TextScanner::count(const char* what) {
   const int64_t value = integer(what);
-  if (value < 0 || uint64_t(value) > most)
-    fail(std::string("the ") + what + " must be between 0 and " + std::to_string(most) + ", got " +
-         std::to_string(value));
+  if (value < 0) fail(std::string("the ") + what + " must not be negative, got " + std::to_string(value));
   return uint64_t(value);
 }
 

@@ -26,7 +26,7 @@ class TextScanner {
 
   double number(const char* what);                 // a finite number, or an error naming `what`
   int64_t integer(const char* what);               // a decimal integer
-  uint64_t count(const char* what, uint64_t most); // an integer in [0, most]
+  uint64_t count(const char* what);                // a non-negative integer
 
   [[noreturn]] void fail(const std::string& message) const;  // at the current field
   [[noreturn]] void fail_at_line(const std::string& message) const;

@@ -1,0 +1,120 @@
+#pragma once
+// Small meshes built in the tests, each with a report the tests know exactly.
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "mesh/polygon_soup.hpp"
+
+namespace umbra::test {
+
+using Face = std::vector<uint32_t>;
+
+inline PolygonSoup make_soup(const std::vector<glm::dvec3>& points, const std::vector<Face>& faces) {
+  PolygonSoup soup;
+  soup.path = "test.off";
+  soup.format = "test";
+  for (size_t i = 0; i < points.size(); ++i) soup.add_point(points[i], int(i) + 1);
+  for (size_t f = 0; f < faces.size(); ++f) {
+    soup.corners.insert(soup.corners.end(), faces[f].begin(), faces[f].end());
+    soup.end_polygon(int(points.size() + f) + 1);
+  }
+  return soup;
+}
+
+// Appends `b` to `a` (indices shifted), as two components of one file.
+inline PolygonSoup combine(const PolygonSoup& a, const PolygonSoup& b) {
+  PolygonSoup soup = a;
+  const uint32_t offset = uint32_t(a.points.size());
+  for (size_t i = 0; i < b.points.size(); ++i) soup.add_point(b.points[i], b.point_lines[i]);
+  for (size_t f = 0; f < b.polygon_count(); ++f) {
+    for (uint32_t k = 0; k < b.corner_count(f); ++k) soup.corners.push_back(b.polygon(f)[k] + offset);
+    soup.end_polygon(b.polygon_lines[f]);
+  }
+  return soup;
+}
+
+// Vertices 0..3 at the origin and the unit axes; faces point outward.
+inline PolygonSoup tetrahedron(glm::dvec3 at = glm::dvec3(0.0), double size = 1.0) {
+  return make_soup({at, at + glm::dvec3(size, 0, 0), at + glm::dvec3(0, size, 0), at + glm::dvec3(0, 0, size)},
+                   {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}});
+}
+
+// The box [lo, hi] as 6 outward quads; vertex i has x = hi.x when i & 1,
+// y = hi.y when i & 2, z = hi.z when i & 4.
+inline PolygonSoup box_quads(glm::dvec3 lo, glm::dvec3 hi) {
+  std::vector<glm::dvec3> points;
+  for (int i = 0; i < 8; ++i) points.push_back({i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z});
+  return make_soup(points, {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}});
+}
+
+// The same box as 12 outward triangles: quad q becomes triangles 2q and 2q+1.
+inline PolygonSoup box_triangles(glm::dvec3 lo, glm::dvec3 hi) {
+  const PolygonSoup quads = box_quads(lo, hi);
+  std::vector<Face> faces;
+  for (size_t q = 0; q < quads.polygon_count(); ++q) {
+    const uint32_t* v = quads.polygon(q);
+    faces.push_back({v[0], v[1], v[2]});
+    faces.push_back({v[0], v[2], v[3]});
+  }
+  return make_soup(quads.points, faces);
+}
+
+inline PolygonSoup unit_cube() { return box_triangles(glm::dvec3(0.0), glm::dvec3(1.0)); }
+
+inline PolygonSoup reversed(PolygonSoup soup, std::vector<size_t> faces) {
+  for (size_t f : faces) std::reverse(soup.corners.begin() + soup.polygon_starts[f], soup.corners.begin() + soup.polygon_starts[f + 1]);
+  return soup;
+}
+
+inline PolygonSoup all_reversed(PolygonSoup soup) {
+  for (size_t f = 0; f < soup.polygon_count(); ++f) soup = reversed(std::move(soup), {f});
+  return soup;
+}
+
+inline PolygonSoup without_faces(const PolygonSoup& soup, std::vector<size_t> drop) {
+  std::vector<Face> faces;
+  for (size_t f = 0; f < soup.polygon_count(); ++f)
+    if (std::find(drop.begin(), drop.end(), f) == drop.end()) faces.emplace_back(soup.polygon(f), soup.polygon(f) + soup.corner_count(f));
+  return make_soup(soup.points, faces);
+}
+
+// A torus of n x m quads (tube radius r around a circle of radius R in the xy plane), outward.
+inline PolygonSoup quad_torus(int n, int m, double R = 2.0, double r = 0.5) {
+  std::vector<glm::dvec3> points;
+  std::vector<Face> faces;
+  const double tau = 6.283185307179586;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) {
+      const double u = tau * i / n, v = tau * j / m;
+      points.push_back({(R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v)});
+    }
+  const auto at = [&](int i, int j) { return uint32_t(((i + n) % n) * m + (j + m) % m); };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) faces.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+  return make_soup(points, faces);
+}
+
+// A Moebius strip of n quads: one border loop, not orientable.
+inline PolygonSoup moebius_strip(int n) {
+  std::vector<glm::dvec3> points;
+  const double tau = 6.283185307179586;
+  for (int i = 0; i < n; ++i) {
+    const double u = tau * i / n;
+    for (double s : {-0.3, 0.3}) {
+      const double w = s * std::cos(u / 2);
+      points.push_back({(1 + w) * std::cos(u), (1 + w) * std::sin(u), s * std::sin(u / 2)});
+    }
+  }
+  std::vector<Face> faces;
+  for (int i = 0; i < n; ++i) {
+    const uint32_t a = uint32_t(2 * i), b = a + 1;
+    // The last quad joins the strip's end to its start with a half twist.
+    const uint32_t c = i + 1 < n ? a + 2 : 1, d = i + 1 < n ? a + 3 : 0;
+    faces.push_back({a, c, d, b});
+  }
+  return make_soup(points, faces);
+}
+
+}  // namespace umbra::test

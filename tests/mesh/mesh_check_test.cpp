@@ -1,0 +1,267 @@
+// check_mesh on small meshes whose every count is known by hand.
+#include <glm/vec2.hpp>
+#include <gtest/gtest.h>
+
+#include "mesh/mesh_check.hpp"
+#include "tests/mesh/mesh_builders.hpp"
+
+namespace umbra {
+namespace {
+
+using namespace umbra::test;
+
+void expect_clean_closed_manifold(const MeshReport& r) {
+  EXPECT_EQ(r.border_edges, 0u);
+  EXPECT_EQ(r.border_loops, 0u);
+  EXPECT_EQ(r.non_manifold_edges, 0u);
+  EXPECT_EQ(r.non_manifold_vertices, 0u);
+  EXPECT_EQ(r.duplicate_faces, 0u);
+  EXPECT_EQ(r.degenerate_faces, 0u);
+  EXPECT_EQ(r.inconsistent_edges, 0u);
+  EXPECT_EQ(r.self_intersections.face_pairs, 0u);
+  EXPECT_TRUE(r.self_intersections.complete);
+  EXPECT_TRUE(r.is_closed_manifold()) << r.verdict();
+  EXPECT_EQ(r.shadow_method(), ShadowMethod::kSilhouette);
+}
+
+TEST(MeshCheck, TetrahedronIsAClosedGenusZeroManifoldFacingOutward) {
+  const MeshReport r = check_mesh(tetrahedron());
+  expect_clean_closed_manifold(r);
+  EXPECT_EQ(r.vertices, 4u);
+  EXPECT_EQ(r.edges, 6u);
+  EXPECT_EQ(r.triangles, 4u);
+  EXPECT_EQ(r.euler_characteristic, 2);
+  ASSERT_EQ(r.components.size(), 1u);
+  EXPECT_EQ(r.components[0].genus, 0);
+  EXPECT_EQ(r.components[0].outward, true);
+  EXPECT_EQ(r.inward_components, 0u);
+  EXPECT_EQ(r.bbox_min, glm::dvec3(0.0));
+  EXPECT_EQ(r.bbox_max, glm::dvec3(1.0));
+  EXPECT_EQ(r.verdict(), "closed 2-manifold: casts its shadow from silhouette edges");
+}
+
+TEST(MeshCheck, CubeOfTrianglesAndCubeOfQuadsHaveTheSameTopology) {
+  const MeshReport triangles = check_mesh(unit_cube());
+  const MeshReport quads = check_mesh(box_quads(glm::dvec3(0.0), glm::dvec3(1.0)));
+  expect_clean_closed_manifold(triangles);
+  expect_clean_closed_manifold(quads);
+  EXPECT_EQ(triangles.edges, 18u);
+  EXPECT_EQ(quads.edges, 12u);  // diagonals are not edges of a quad mesh
+  EXPECT_EQ(quads.file_faces, 6u);
+  EXPECT_EQ(quads.triangles, 12u);
+  EXPECT_EQ(triangles.euler_characteristic, 2);
+  EXPECT_EQ(quads.euler_characteristic, 2);
+  EXPECT_EQ(quads.components[0].outward, true);
+}
+
+TEST(MeshCheck, CubeMissingAFaceHasOneHoleOfFourBorderEdges) {
+  const MeshReport r = check_mesh(without_faces(unit_cube(), {4, 5}));  // the y = 0 side (quad 2)
+  EXPECT_EQ(r.border_edges, 4u);
+  EXPECT_EQ(r.border_loops, 1u);
+  EXPECT_EQ(r.euler_characteristic, 1);
+  ASSERT_EQ(r.components.size(), 1u);
+  EXPECT_FALSE(r.components[0].closed);
+  EXPECT_EQ(r.components[0].genus, 0);
+  EXPECT_FALSE(r.components[0].outward.has_value());  // an open surface has no inside
+  EXPECT_FALSE(r.is_closed_manifold());
+  EXPECT_EQ(r.shadow_method(), ShadowMethod::kPerTriangle);
+  EXPECT_EQ(r.problems(), std::vector<std::string>{"4 border edges in 1 hole"});
+  ASSERT_EQ(r.examples.border_edges.size(), 4u);
+  for (const auto& [a, b] : r.examples.border_edges) {
+    EXPECT_EQ(a.index & 2, 0u) << "a border vertex has y = 0";
+    EXPECT_EQ(b.index & 2, 0u);
+  }
+}
+
+TEST(MeshCheck, TwoCubesSharingAnEdgeHaveOneNonManifoldEdge) {
+  // [0,1]^3 and [1,2]x[1,2]x[0,1] share the edge x = y = 1.
+  const PolygonSoup soup = combine(unit_cube(), box_triangles({1, 1, 0}, {2, 2, 1}));
+  const MeshReport r = check_mesh(soup);
+  EXPECT_EQ(r.merged_vertices, 2u);
+  EXPECT_EQ(r.vertices, 14u);
+  EXPECT_EQ(r.non_manifold_edges, 1u);
+  EXPECT_EQ(r.non_manifold_vertices, 0u);  // its ends are counted with the edge
+  EXPECT_EQ(r.border_edges, 0u);
+  EXPECT_EQ(r.edges, 35u);
+  EXPECT_EQ(r.euler_characteristic, 14 - 35 + 24);
+  EXPECT_EQ(r.components.size(), 1u);
+  EXPECT_FALSE(r.components[0].manifold);
+  EXPECT_FALSE(r.components[0].genus.has_value());
+  EXPECT_EQ(r.self_intersections.face_pairs, 0u);  // touching along a shared edge is not crossing
+  ASSERT_EQ(r.examples.non_manifold_edges.size(), 1u);
+  const glm::dvec3 a = soup.points[r.examples.non_manifold_edges[0].first.index];
+  const glm::dvec3 b = soup.points[r.examples.non_manifold_edges[0].second.index];
+  EXPECT_EQ(glm::dvec2(a), glm::dvec2(1.0, 1.0));
+  EXPECT_EQ(glm::dvec2(b), glm::dvec2(1.0, 1.0));
+  EXPECT_EQ(r.shadow_method(), ShadowMethod::kPerTriangle);
+}
+
+TEST(MeshCheck, TwoTetrahedraSharingAVertexHaveOneNonManifoldVertex) {
+  // The second tetrahedron is the first mirrored through the origin.
+  PolygonSoup mirrored = all_reversed(tetrahedron());
+  for (glm::dvec3& p : mirrored.points) p = -p;
+  const MeshReport r = check_mesh(combine(tetrahedron(), mirrored));
+  EXPECT_EQ(r.non_manifold_vertices, 1u);
+  EXPECT_EQ(r.non_manifold_edges, 0u);
+  ASSERT_EQ(r.examples.non_manifold_vertices.size(), 1u);
+  EXPECT_EQ(r.examples.non_manifold_vertices[0].index, 0u);
+  EXPECT_EQ(r.examples.non_manifold_vertices[0].line, 1);
+  // Joined only at a vertex: two components, each a closed outward sphere.
+  ASSERT_EQ(r.components.size(), 2u);
+  for (const ComponentReport& c : r.components) {
+    EXPECT_TRUE(c.closed);
+    EXPECT_EQ(c.genus, 0);
+    EXPECT_EQ(c.outward, true);
+  }
+  EXPECT_EQ(r.euler_characteristic, 7 - 12 + 8);
+  EXPECT_EQ(r.self_intersections.face_pairs, 0u);
+  EXPECT_EQ(r.problems(), std::vector<std::string>{"1 non-manifold vertex"});
+  EXPECT_EQ(r.shadow_method(), ShadowMethod::kPerTriangle);
+}
+
+TEST(MeshCheck, OneFlippedFaceIsNamedAsTheFaceToFlip) {
+  const MeshReport r = check_mesh(reversed(unit_cube(), {7}));
+  EXPECT_EQ(r.inconsistent_edges, 3u);
+  EXPECT_EQ(r.faces_to_flip, 1u);
+  ASSERT_EQ(r.examples.faces_to_flip.size(), 1u);
+  EXPECT_EQ(r.examples.faces_to_flip[0].index, 7u);
+  EXPECT_EQ(r.non_orientable_components, 0u);
+  ASSERT_EQ(r.components.size(), 1u);
+  EXPECT_TRUE(r.components[0].orientable);
+  EXPECT_FALSE(r.components[0].consistently_oriented);
+  EXPECT_EQ(r.components[0].outward, true);  // once the face is flipped
+  EXPECT_EQ(r.problems(), std::vector<std::string>{"inconsistent orientation (1 face to flip)"});
+  EXPECT_EQ(r.shadow_method(), ShadowMethod::kPerTriangle);
+}
+
+TEST(MeshCheck, InwardCubeIsAClosedManifoldThatSaysItFacesInward) {
+  const MeshReport r = check_mesh(all_reversed(unit_cube()));
+  expect_clean_closed_manifold(r);
+  EXPECT_EQ(r.inward_components, 1u);
+  EXPECT_EQ(r.components[0].outward, false);
+  EXPECT_NE(r.verdict().find("oriented inward"), std::string::npos);
+}
+
+TEST(MeshCheck, InterpenetratingCubesCrossInSixFacePairs) {
+  // [0,2]^3 and [1,3]^3: each of A's faces x, y, z = 2 crosses two of B's faces x, y, z = 1.
+  const MeshReport r = check_mesh(combine(box_quads({0, 0, 0}, {2, 2, 2}), box_quads({1, 1, 1}, {3, 3, 3})));
+  EXPECT_EQ(r.self_intersections.face_pairs, 6u);
+  EXPECT_TRUE(r.self_intersections.complete);
+  EXPECT_EQ(r.components.size(), 2u);
+  EXPECT_EQ(r.border_edges + r.non_manifold_edges + r.non_manifold_vertices + r.inconsistent_edges, 0u);
+  ASSERT_EQ(r.examples.self_intersections.size(), 5u);  // the first five of six
+  for (const auto& [f, g] : r.examples.self_intersections) {
+    EXPECT_LT(f.index, 6u);  // one face of each cube
+    EXPECT_GE(g.index, 6u);
+  }
+  EXPECT_FALSE(r.is_closed_manifold());
+  EXPECT_EQ(r.problems(), std::vector<std::string>{"6 self-intersecting face pairs"});
+  // Closed and consistently oriented: the silhouette method still holds.
+  EXPECT_EQ(r.shadow_method(), ShadowMethod::kSilhouette);
+}
+
+TEST(MeshCheck, DegenerateFacesAreCountedAndKeptOutOfTheTests) {
+  // A tetrahedron, a face that repeats a vertex, and a separate face whose
+  // corners lie on a line.
+  PolygonSoup soup = tetrahedron();
+  soup.corners.insert(soup.corners.end(), {0, 1, 1});
+  soup.end_polygon(10);
+  const PolygonSoup sliver = make_soup({{5, 5, 5}, {6, 6, 6}, {7, 7, 7}}, {{0, 1, 2}});
+  const MeshReport r = check_mesh(combine(soup, sliver));
+  EXPECT_EQ(r.degenerate_faces, 2u);
+  ASSERT_EQ(r.examples.degenerate_faces.size(), 2u);
+  EXPECT_EQ(r.examples.degenerate_faces[0].index, 4u);
+  EXPECT_EQ(r.examples.degenerate_faces[0].line, 10);
+  EXPECT_EQ(r.examples.degenerate_faces[1].index, 5u);
+  // The repeated-vertex face is left out of the topology; the sliver is an open piece.
+  ASSERT_EQ(r.components.size(), 2u);
+  EXPECT_TRUE(r.components[0].closed);
+  EXPECT_EQ(r.components[1].border_edges, 3u);
+  EXPECT_EQ(r.border_loops, 1u);
+  EXPECT_EQ(r.triangles, 4u);  // only the tetrahedron's triangles are tested for crossings
+  EXPECT_EQ(r.self_intersections.face_pairs, 0u);
+}
+
+TEST(MeshCheck, DuplicateFaceIsNamedWithTheFaceItRepeats) {
+  PolygonSoup soup = tetrahedron();
+  soup.corners.insert(soup.corners.end(), {1, 0, 2});  // face 0 reversed
+  soup.end_polygon(9);
+  const MeshReport r = check_mesh(soup);
+  EXPECT_EQ(r.duplicate_faces, 1u);
+  ASSERT_EQ(r.examples.duplicate_faces.size(), 1u);
+  EXPECT_EQ(r.examples.duplicate_faces[0].first.index, 4u);
+  EXPECT_EQ(r.examples.duplicate_faces[0].second.index, 0u);
+  // Left out of the topology, so it is reported once and not again as four non-manifold edges.
+  EXPECT_EQ(r.non_manifold_edges, 0u);
+  EXPECT_EQ(r.border_edges, 0u);
+  EXPECT_EQ(r.problems(), std::vector<std::string>{"1 duplicate face"});
+  EXPECT_EQ(r.shadow_method(), ShadowMethod::kSilhouette);
+}
+
+TEST(MeshCheck, TorusHasGenusOne) {
+  const MeshReport r = check_mesh(quad_torus(8, 6));
+  expect_clean_closed_manifold(r);
+  EXPECT_EQ(r.vertices, 48u);
+  EXPECT_EQ(r.edges, 96u);
+  EXPECT_EQ(r.euler_characteristic, 0);
+  EXPECT_EQ(r.components[0].genus, 1);
+  EXPECT_EQ(r.components[0].outward, true);
+}
+
+TEST(MeshCheck, MoebiusStripIsNotOrientable) {
+  const MeshReport r = check_mesh(moebius_strip(12));
+  EXPECT_EQ(r.non_orientable_components, 1u);
+  ASSERT_EQ(r.components.size(), 1u);
+  EXPECT_FALSE(r.components[0].orientable);
+  EXPECT_FALSE(r.components[0].genus.has_value());
+  EXPECT_EQ(r.border_loops, 1u);  // its one edge runs around twice
+  EXPECT_EQ(r.border_edges, 24u);
+  EXPECT_EQ(r.euler_characteristic, 0);
+  EXPECT_EQ(r.shadow_method(), ShadowMethod::kPerTriangle);
+}
+
+TEST(MeshCheck, BowTieOfTwoTrianglesHasANonManifoldVertex) {
+  const MeshReport r = check_mesh(make_soup({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 0, 0}, {-1, -1, 0}}, {{0, 1, 2}, {0, 3, 4}}));
+  EXPECT_EQ(r.non_manifold_vertices, 1u);
+  EXPECT_EQ(r.components.size(), 2u);
+  EXPECT_EQ(r.border_edges, 6u);
+}
+
+TEST(MeshCheck, CoincidentPointsAreMergedIntoOneVertex) {
+  // The cube with each triangle's corners written out separately, as STL does.
+  const PolygonSoup cube = unit_cube();
+  std::vector<glm::dvec3> points;
+  std::vector<Face> faces;
+  for (size_t f = 0; f < cube.polygon_count(); ++f) {
+    Face face;
+    for (uint32_t k = 0; k < 3; ++k) {
+      face.push_back(uint32_t(points.size()));
+      points.push_back(cube.points[cube.polygon(f)[k]]);
+    }
+    faces.push_back(face);
+  }
+  const MeshReport r = check_mesh(make_soup(points, faces));
+  expect_clean_closed_manifold(r);
+  EXPECT_EQ(r.file_vertices, 36u);
+  EXPECT_EQ(r.merged_vertices, 28u);
+  EXPECT_EQ(r.vertices, 8u);
+}
+
+TEST(MeshCheck, TimeLimitOfZeroSkipsTheSelfIntersectionSearchAndSaysSo) {
+  CheckOptions options;
+  options.self_intersection_seconds = 0.0;
+  const MeshReport r = check_mesh(unit_cube(), options);
+  EXPECT_FALSE(r.self_intersections.checked);
+  EXPECT_FALSE(r.is_closed_manifold());
+  EXPECT_EQ(r.problems(), std::vector<std::string>{"self-intersections not checked"});
+  EXPECT_EQ(r.shadow_method(), ShadowMethod::kSilhouette);
+}
+
+TEST(MeshCheck, EmptyMeshHasNoFaces) {
+  const MeshReport r = check_mesh(make_soup({}, {}));
+  EXPECT_EQ(r.problems(), std::vector<std::string>{"no faces"});
+  EXPECT_EQ(r.shadow_method(), ShadowMethod::kPerTriangle);
+}
+
+}  // namespace
+}  // namespace umbra

@@ -1,0 +1,217 @@
+// Reading mesh files as written, and the exact error for each kind of bad file.
+#include <cstring>
+#include <filesystem>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "mesh/input_error.hpp"
+#include "mesh/mesh_file.hpp"
+
+namespace umbra {
+namespace {
+
+std::string error_of(const std::string& bytes, const std::string& path) {
+  try {
+    parse_polygon_soup(bytes, path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+std::vector<std::vector<uint32_t>> polygons_of(const PolygonSoup& soup) {
+  std::vector<std::vector<uint32_t>> out;
+  for (size_t f = 0; f < soup.polygon_count(); ++f) out.emplace_back(soup.polygon(f), soup.polygon(f) + soup.corner_count(f));
+  return out;
+}
+
+const std::vector<std::vector<uint32_t>> kTetrahedronFaces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+
+TEST(MeshFile, ObjKeepsPointsAndFacesWithTheirLines) {
+  const PolygonSoup soup = parse_polygon_soup(
+      "# a tetrahedron\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv +0 0 1e0\nvn 0 0 1\n"
+      "f 1 3 2\nf 1//1 2//1 4//1\nf -4/1 -1/2 -2/3\ng side\nusemtl red\nf 2 3 4\n",
+      "t.obj");
+  EXPECT_EQ(soup.format, "OBJ");
+  ASSERT_EQ(soup.points.size(), 4u);
+  EXPECT_EQ(soup.points[3], glm::dvec3(0, 0, 1));
+  EXPECT_EQ(soup.point_lines, (std::vector<int>{2, 3, 4, 5}));
+  EXPECT_EQ(polygons_of(soup), kTetrahedronFaces);
+  EXPECT_EQ(soup.polygon_lines, (std::vector<int>{7, 8, 9, 12}));
+}
+
+TEST(MeshFile, OffReadsPolygonsCommentsAndCountsOnTheHeaderLine) {
+  const PolygonSoup a = parse_polygon_soup(
+      "OFF\n# comment\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2 255 0 0\n3 1 2 3\n", "t.off");
+  EXPECT_EQ(polygons_of(a), kTetrahedronFaces);
+  EXPECT_EQ(a.polygon_lines, (std::vector<int>{8, 9, 10, 11}));
+  const PolygonSoup b = parse_polygon_soup("COFF 4 1 0\n0 0 0 1 1 1 1\n1 0 0 1 1 1 1\n1 1 0 1 1 1 1\n0 1 0 1 1 1 1\n4 0 1 2 3\n", "t.off");
+  ASSERT_EQ(b.polygon_count(), 1u);
+  EXPECT_EQ(b.corner_count(0), 4u);
+}
+
+std::string binary_stl(const std::vector<std::array<glm::vec3, 3>>& triangles) {
+  std::string bytes(80, ' ');
+  const uint32_t count = uint32_t(triangles.size());
+  bytes.append(reinterpret_cast<const char*>(&count), 4);  // little endian on the machines we build for
+  for (const auto& t : triangles) {
+    const float normal[3] = {0, 0, 0};
+    bytes.append(reinterpret_cast<const char*>(normal), 12);
+    for (const glm::vec3& p : t) bytes.append(reinterpret_cast<const char*>(&p), 12);
+    bytes.append(2, '\0');
+  }
+  return bytes;
+}
+
+TEST(MeshFile, StlAsciiAndBinaryGiveTheSameSoup) {
+  const std::string ascii =
+      "solid t\n facet normal 0 0 -1\n  outer loop\n   vertex 0 0 0\n   vertex 0 1 0\n   vertex 1 0 0\n  endloop\n endfacet\n"
+      " facet normal 0 0 1\n  outer loop\n   vertex 1 0 0\n   vertex 0 1 0\n   vertex 0 0 1\n  endloop\n endfacet\nendsolid t\n";
+  const PolygonSoup a = parse_polygon_soup(ascii, "t.stl");
+  // A binary file whose header also begins with "solid": the size decides.
+  std::string binary = binary_stl({{{{0, 0, 0}, {0, 1, 0}, {1, 0, 0}}}, {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}});
+  binary.replace(0, 5, "solid");
+  const PolygonSoup b = parse_polygon_soup(binary, "T.STL");
+  EXPECT_EQ(a.format, "STL (ascii)");
+  EXPECT_EQ(b.format, "STL (binary)");
+  EXPECT_EQ(a.points, b.points);
+  EXPECT_EQ(polygons_of(a), polygons_of(b));
+  EXPECT_EQ(polygons_of(a), (std::vector<std::vector<uint32_t>>{{0, 1, 2}, {3, 4, 5}}));
+  EXPECT_EQ(a.polygon_lines, (std::vector<int>{7, 14}));
+}
+
+// The tetrahedron as PLY in each encoding, with an extra vertex property and an extra element.
+std::string ply(const std::string& format) {
+  std::string header = "ply\nformat " + format + " 1.0\ncomment made by a test\nelement vertex 4\nproperty float x\n"
+                       "property float y\nproperty double z\nproperty uchar red\nelement face 4\n"
+                       "property list uchar int vertex_indices\nelement edge 1\nproperty int v1\nend_header\n";
+  if (format == "ascii")
+    return header + "0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n7\n";
+  const bool big = format == "binary_big_endian";
+  const auto put = [&](auto value) {
+    char raw[sizeof value];
+    std::memcpy(raw, &value, sizeof value);
+    if (big) std::reverse(raw, raw + sizeof value);
+    header.append(raw, sizeof value);
+  };
+  const float p[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  for (const auto& v : p) {
+    put(v[0]);
+    put(v[1]);
+    put(double(v[2]));
+    put(uint8_t(1));
+  }
+  for (const auto& f : kTetrahedronFaces) {
+    put(uint8_t(3));
+    for (uint32_t i : f) put(int32_t(i));
+  }
+  put(int32_t(7));
+  return header;
+}
+
+TEST(MeshFile, PlyAsciiLittleAndBigEndianGiveTheSameSoup) {
+  for (const std::string format : {"ascii", "binary_little_endian", "binary_big_endian"}) {
+    SCOPED_TRACE(format);
+    const PolygonSoup soup = parse_polygon_soup(ply(format), "t.ply");
+    ASSERT_EQ(soup.points.size(), 4u);
+    EXPECT_EQ(soup.points[3], glm::dvec3(0, 0, 1));
+    EXPECT_EQ(polygons_of(soup), kTetrahedronFaces);
+  }
+  EXPECT_EQ(parse_polygon_soup(ply("ascii"), "t.ply").polygon_lines, (std::vector<int>{18, 19, 20, 21}));
+}
+
+TEST(MeshFile, BadFilesGetTheirExactLocatedError) {
+  EXPECT_EQ(error_of("v 0 0 0\nf 1 0 1\n", "a.obj"),
+            "a.obj:2:5: vertex indices count from 1 (or from -1 backwards); 0 is not an index");
+  EXPECT_EQ(error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n", "a.obj"),
+            "a.obj:4: face 0 refers to vertex 6 (counting from 0), but the file has 3 vertices");
+  EXPECT_EQ(error_of("v 0 nan 0\n", "a.obj"), "a.obj:1:5: the vertex y coordinate is \"nan\", not a finite number");
+  EXPECT_EQ(error_of("v 0 0\n", "a.obj"), "a.obj:1:6: expected a number for the vertex z coordinate, got end of line");
+  EXPECT_EQ(error_of("v 0 0 0\nv 1 0 0\nf 1 2\n", "a.obj"), "a.obj:3: a face needs at least 3 vertices, this one has 2");
+  EXPECT_EQ(error_of("v 0 0 0\nf 1 -3 1\n", "a.obj"),
+            "a.obj:2:5: relative vertex index -3 points before the first vertex (only 1 defined so far)");
+  EXPECT_EQ(error_of("OFX\n", "b.off"), "b.off:1:1: expected the header \"OFF\", got \"OFX\"");
+  EXPECT_EQ(error_of("OFF BINARY\n", "b.off"),
+            "b.off:1:5: binary OFF is not supported; write the mesh as text OFF, OBJ, PLY or STL");
+  EXPECT_EQ(error_of("OFF\n3 1 0\n0 0 0\n1 0 0\n", "b.off"), "b.off:4: the file ends before vertex 2 of 3");
+  EXPECT_EQ(error_of("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n", "b.off"),
+            "b.off:6:6: the face has 2 vertex indices, its count says 3");
+  EXPECT_EQ(error_of("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", "b.off"),
+            "b.off:6:7: vertex index 3 is out of range: the file has 3 vertices, counted from 0");
+  EXPECT_EQ(error_of("OFF\n-3 1 0\n", "b.off"), "b.off:2:1: the vertex count must not be negative, got -3");
+  EXPECT_EQ(error_of("OFF\n3000 1 0\n", "b.off"), "b.off:2:1: the vertex count 3000 is more than a file of 13 bytes can hold");
+  EXPECT_EQ(error_of("solid x\nfacet\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nendloop\n", "c.stl"),
+            "c.stl:6:1: a facet needs at least 3 vertices, this one has 2");
+  EXPECT_EQ(error_of("solid x\nouter loop\nvertex 0 0 0\n", "c.stl"), "c.stl:3: the file ends inside a facet (no \"endloop\")");
+  EXPECT_EQ(error_of(binary_stl({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}}).substr(0, 120), "c.stl"),
+            "c.stl: not a valid STL file: as binary STL its 1 triangles need 134 bytes but the file has 120, and it "
+            "does not begin with \"solid\" as ascii STL does");
+  EXPECT_EQ(error_of("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n", "d.ply"),
+            "d.ply:4: the PLY header has no \"end_header\"");
+  EXPECT_EQ(error_of("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n0\n", "d.ply"),
+            "d.ply: the PLY header declares no \"vertex\" element with x, y and z properties");
+  EXPECT_EQ(error_of(ply("binary_little_endian").substr(0, ply("binary_little_endian").size() - 20), "d.ply"),
+            "d.ply: the file ends in the middle of a list item");
+  EXPECT_EQ(error_of("ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
+                     "element face 1\nproperty list uchar float vertex_indices\nend_header\n", "d.ply"),
+            "d.ply: the face's vertex indices must have an integer type");
+  EXPECT_EQ(error_of("", "e.dae"), "e.dae: unknown mesh format: the file name must end in .obj, .off, .ply or .stl");
+}
+
+TEST(MeshFile, MissingFileAndFolderAreReportedByName) {
+  try {
+    read_polygon_soup("/nonexistent/m.obj");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "/nonexistent/m.obj: cannot open: No such file or directory");
+  }
+  const std::string folder = ::testing::TempDir() + "folder.obj";
+  std::filesystem::create_directories(folder);
+  try {
+    read_polygon_soup(folder);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), folder + ": is a folder, not a mesh file");
+  }
+}
+
+// Any bytes give a soup or an InputError: never a crash, a hang or another exception.
+TEST(MeshFile, MangledFilesNeverCrashTheReaders) {
+  const std::vector<std::pair<std::string, std::string>> seeds = {
+      {"m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf -1 -2 -3\n"},
+      {"m.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"},
+      {"m.stl", "solid a\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n"},
+      {"m.ply", ply("ascii")},
+      {"n.ply", ply("binary_little_endian")},
+      {"o.ply", ply("binary_big_endian")},
+      {"b.stl", binary_stl({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}})}};
+  std::mt19937 random(2026);
+  size_t read = 0, refused = 0;
+  for (const auto& [path, seed] : seeds) {
+    for (int trial = 0; trial < 400; ++trial) {
+      std::string bytes = seed;
+      const int edits = 1 + int(random() % 4);
+      for (int e = 0; e < edits && !bytes.empty(); ++e) {
+        const size_t at = random() % bytes.size();
+        switch (random() % 4) {
+          case 0: bytes[at] = char(random() % 256); break;
+          case 1: bytes.erase(at, 1 + random() % 8); break;
+          case 2: bytes.insert(at, 1, "0123456789-+.e /\n#"[random() % 18]); break;
+          default: bytes.resize(at); break;
+        }
+      }
+      try {
+        parse_polygon_soup(bytes, path);
+        ++read;
+      } catch (const InputError&) {
+        ++refused;
+      }
+    }
+  }
+  EXPECT_GT(read, 0u);
+  EXPECT_GT(refused, 0u);
+}
+
+}  // namespace
+}  // namespace umbra
