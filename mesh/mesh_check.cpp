@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "mesh/input_error.hpp"
 #include "mesh/orientation.hpp"
 #include "mesh/point_merging.hpp"
 #include "mesh/polygon_triangulation.hpp"
@@ -38,25 +39,41 @@ bool all_collinear(const std::vector<glm::dvec3>& positions, const uint32_t* v, 
   return true;
 }
 
-// Marks every face whose vertex set equals an earlier face's.
+// Marks every face whose vertex set equals an earlier face's: faces are
+// sorted by a hash of their sorted vertices, and only equal hashes compared.
 void find_duplicates(const PolygonSoup& soup, Faces& faces) {
-  const size_t count = soup.polygon_count();
-  std::vector<std::vector<uint32_t>> sorted(count);
-  std::vector<uint32_t> order;
-  for (uint32_t f = 0; f < count; ++f) {
-    if (faces.repeats_vertex[f]) continue;
+  const auto sorted_vertices = [&](uint32_t f, std::vector<uint32_t>& out) {
     const uint32_t* v = faces.corners.data() + soup.polygon_starts[f];
-    sorted[f].assign(v, v + soup.corner_count(f));
-    std::sort(sorted[f].begin(), sorted[f].end());
-    order.push_back(f);
+    out.assign(v, v + soup.corner_count(f));
+    std::sort(out.begin(), out.end());
+  };
+  std::vector<std::pair<uint64_t, uint32_t>> keyed;  // (hash, face)
+  std::vector<uint32_t> a, b;
+  for (uint32_t f = 0; f < soup.polygon_count(); ++f) {
+    if (faces.repeats_vertex[f]) continue;
+    sorted_vertices(f, a);
+    uint64_t hash = 1469598103934665603ull;  // FNV-1a over the sorted indices
+    for (uint32_t v : a) hash = (hash ^ v) * 1099511628211ull;
+    keyed.push_back({hash, f});
   }
-  std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-    return sorted[a] != sorted[b] ? sorted[a] < sorted[b] : a < b;
-  });
-  for (size_t i = 1; i < order.size(); ++i) {
-    if (sorted[order[i]] != sorted[order[i - 1]]) continue;
-    faces.duplicate[order[i]] = 1;
-    faces.duplicate_of[order[i]] = faces.duplicate[order[i - 1]] ? faces.duplicate_of[order[i - 1]] : order[i - 1];
+  std::sort(keyed.begin(), keyed.end());
+  for (size_t start = 0; start < keyed.size();) {
+    size_t end = start + 1;
+    while (end < keyed.size() && keyed[end].first == keyed[start].first) ++end;
+    // Within a run of equal hashes (almost always one face), compare in full;
+    // faces are in file order, so the first match is the earlier face.
+    for (size_t i = start + 1; i < end; ++i) {
+      sorted_vertices(keyed[i].second, a);
+      for (size_t j = start; j < i; ++j) {
+        if (faces.duplicate[keyed[j].second]) continue;
+        sorted_vertices(keyed[j].second, b);
+        if (a != b) continue;
+        faces.duplicate[keyed[i].second] = 1;
+        faces.duplicate_of[keyed[i].second] = keyed[j].second;
+        break;
+      }
+    }
+    start = end;
   }
 }
 
@@ -64,8 +81,10 @@ void find_duplicates(const PolygonSoup& soup, Faces& faces) {
 struct EdgeUse {
   uint64_t key;  // (smaller vertex << 32) | larger vertex
   uint32_t face;
-  uint32_t corner;  // index into Faces::corners
-  bool forward;     // traversed from the smaller vertex to the larger
+  uint32_t corner_and_direction;  // index into Faces::corners << 1 | traversed from smaller to larger vertex
+
+  uint32_t corner() const { return corner_and_direction >> 1; }
+  bool forward() const { return corner_and_direction & 1; }
 };
 
 uint32_t next_corner(const PolygonSoup& soup, uint32_t face, uint32_t corner) {
@@ -88,14 +107,16 @@ MeshReport check_mesh(const PolygonSoup& soup, const CheckOptions& options) {
     }
   }
   const size_t face_count = soup.polygon_count();
+  if (soup.corners.size() >= (size_t(1) << 31))
+    throw InputError({soup.path, 0, 0}, "too large to check: more than 2^31 face corners");
   const MergedPoints merged = merge_coincident_points(soup.points);
   const size_t vertex_count = merged.positions.size();
   report.merged_vertices = soup.points.size() - vertex_count;
   const auto vertex_ref = [&](uint32_t v) {
     const uint32_t p = merged.first_point[v];
-    return ElementRef{p, soup.point_lines[p]};
+    return ElementRef{p, soup.point_line(p)};
   };
-  const auto face_ref = [&](uint32_t f) { return ElementRef{f, soup.polygon_lines[f]}; };
+  const auto face_ref = [&](uint32_t f) { return ElementRef{f, soup.polygon_line(f)}; };
   const auto room_for = [](const auto& list) { return list.size() < MeshReport::kMaxExamples; };
   auto& examples = report.examples;
 
@@ -135,7 +156,7 @@ MeshReport check_mesh(const PolygonSoup& soup, const CheckOptions& options) {
     if (!faces.in_topology(f)) continue;
     for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c) {
       const uint32_t a = faces.corners[c], b = faces.corners[next_corner(soup, f, c)];
-      uses.push_back({(uint64_t(std::min(a, b)) << 32) | std::max(a, b), f, c, a < b});
+      uses.push_back({(uint64_t(std::min(a, b)) << 32) | std::max(a, b), f, (c << 1) | uint32_t(a < b)});
     }
   }
   std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
@@ -164,16 +185,16 @@ MeshReport check_mesh(const PolygonSoup& soup, const CheckOptions& options) {
     } else if (j - i == 2) {
       const EdgeUse& x = uses[i];
       const EdgeUse& y = uses[i + 1];
-      const bool same_direction = x.forward == y.forward;
+      const bool same_direction = x.forward() == y.forward();
       if (same_direction) {
         ++report.inconsistent_edges;
         inconsistent_edge_faces.push_back(x.face);
       }
       if (!flips.unite(x.face, y.face, same_direction ? 1 : 0)) orientation_conflict[x.face] = 1;
       // Join the two faces' corners at each end of the edge.
-      const uint32_t x_next = next_corner(soup, x.face, x.corner), y_next = next_corner(soup, y.face, y.corner);
-      fans.unite(x.corner, same_direction ? y.corner : y_next);
-      fans.unite(x_next, same_direction ? y_next : y.corner);
+      const uint32_t x_next = next_corner(soup, x.face, x.corner()), y_next = next_corner(soup, y.face, y.corner());
+      fans.unite(x.corner(), same_direction ? y.corner() : y_next);
+      fans.unite(x_next, same_direction ? y_next : y.corner());
     } else {
       ++report.non_manifold_edges;
       on_non_manifold_edge[a] = on_non_manifold_edge[b] = 1;
@@ -182,6 +203,7 @@ MeshReport check_mesh(const PolygonSoup& soup, const CheckOptions& options) {
     i = j;
   }
   report.edges = edges.size();
+  std::vector<EdgeUse>().swap(uses);  // the largest array; the edges and unions hold what is needed
 
   // Components, numbered in order of their first face.
   std::vector<uint32_t> component_of(face_count, kNone);
@@ -210,22 +232,29 @@ MeshReport check_mesh(const PolygonSoup& soup, const CheckOptions& options) {
     if (orientation_conflict[f]) component_conflict[component_of[f]] = 1;
 
   // Vertices per component, and vertices whose faces form more than one fan.
-  std::vector<uint64_t> component_vertex;  // (component << 32) | vertex
+  std::vector<uint32_t> component_of_vertex(vertex_count, kNone);  // the first component seen at each vertex
+  std::vector<uint64_t> vertex_in_other_component;  // (component << 32) | vertex: only where components touch
   std::vector<uint32_t> fan_of_vertex(vertex_count, kNone);
   std::vector<uint8_t> several_fans(vertex_count, 0);
   for (uint32_t f = 0; f < face_count; ++f) {
     if (!faces.in_topology(f)) continue;
     for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c) {
       const uint32_t v = faces.corners[c];
-      component_vertex.push_back((uint64_t(component_of[f]) << 32) | v);
+      if (component_of_vertex[v] == kNone) {
+        component_of_vertex[v] = component_of[f];
+        ++comps[component_of[f]].vertices;
+      } else if (component_of_vertex[v] != component_of[f]) {
+        vertex_in_other_component.push_back((uint64_t(component_of[f]) << 32) | v);
+      }
       const uint32_t fan = fans.find(c);
       if (fan_of_vertex[v] == kNone) fan_of_vertex[v] = fan;
       else if (fan_of_vertex[v] != fan) several_fans[v] = 1;
     }
   }
-  std::sort(component_vertex.begin(), component_vertex.end());
-  component_vertex.erase(std::unique(component_vertex.begin(), component_vertex.end()), component_vertex.end());
-  for (uint64_t cv : component_vertex) ++comps[cv >> 32].vertices;
+  std::sort(vertex_in_other_component.begin(), vertex_in_other_component.end());
+  vertex_in_other_component.erase(std::unique(vertex_in_other_component.begin(), vertex_in_other_component.end()),
+                                  vertex_in_other_component.end());
+  for (uint64_t cv : vertex_in_other_component) ++comps[cv >> 32].vertices;
   for (uint32_t v = 0; v < vertex_count; ++v) {
     if (!several_fans[v] || on_non_manifold_edge[v]) continue;
     ++report.non_manifold_vertices;
@@ -264,7 +293,7 @@ MeshReport check_mesh(const PolygonSoup& soup, const CheckOptions& options) {
 
   // Orientation: within each set of faces joined by manifold edges, flipping
   // the smaller parity class makes them agree.
-  std::vector<std::array<size_t, 2>> parity_counts(face_count, {0, 0});
+  std::vector<std::array<uint32_t, 2>> parity_counts(face_count, {0, 0});
   std::vector<uint8_t> parity_of(face_count, 0);
   std::vector<uint32_t> flip_root(face_count, kNone);
   for (uint32_t f = 0; f < face_count; ++f) {

@@ -4,7 +4,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "mesh/input_error.hpp"
 #include "mesh/mesh_readers.hpp"
@@ -37,10 +36,15 @@ PolygonSoup read_polygon_soup(const std::string& path) {
   if (std::filesystem::is_directory(path, ec)) throw InputError({path, 0, 0}, "is a folder, not a mesh file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError({path, 0, 0}, std::string("cannot open: ") + std::strerror(errno));
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  if (in.bad()) throw InputError({path, 0, 0}, "cannot read the file");
-  return parse_polygon_soup(bytes.str(), path);
+  // One read into one buffer: a mesh file can be hundreds of megabytes.
+  std::string bytes;
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  if (size < 0) throw InputError({path, 0, 0}, "cannot read the file");
+  bytes.resize(size_t(size));
+  in.seekg(0);
+  if (!in.read(bytes.data(), size)) throw InputError({path, 0, 0}, "cannot read the file");
+  return parse_polygon_soup(bytes, path);
 }
 
 void require_corners_in_range(const PolygonSoup& soup) {
@@ -49,7 +53,7 @@ void require_corners_in_range(const PolygonSoup& soup) {
     const uint32_t* corners = soup.polygon(p);
     for (uint32_t k = 0; k < soup.corner_count(p); ++k) {
       if (corners[k] >= point_count)
-        throw InputError({soup.path, soup.polygon_lines[p], 0},
+        throw InputError({soup.path, soup.polygon_line(p), 0},
                          "face " + std::to_string(p) + " refers to vertex " + std::to_string(corners[k]) +
                              " (counting from 0), but the file has " + std::to_string(point_count) + " vertices");
     }

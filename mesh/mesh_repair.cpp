@@ -106,12 +106,17 @@ RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output) {
   if (polygons.empty()) throw InputError({soup.path, 0, 0}, "nothing left to repair: the mesh has no valid face");
 
   const size_t points_before_orienting = points.size();
+  const std::vector<Polygon> before_orienting = polygons;
   // Orients each piece consistently, splitting vertices and edges where the
   // soup is not a manifold (PMP's documented way to make any soup a mesh).
   const bool was_orientable_manifold = PMP::orient_polygon_soup(points, polygons);
+  size_t flipped = 0;
+  for (size_t f = 0; f < polygons.size(); ++f) flipped += polygons[f] != before_orienting[f];
+  if (flipped > 0) changes.push_back("flipped " + counted(flipped, "face", "faces") + " to orient them consistently");
   if (!was_orientable_manifold)
     changes.push_back("split " + counted(points.size() - points_before_orienting, "vertex", "vertices") +
-                      " to make the faces around non-manifold or non-orientable places separate");
+                      " into copies where faces meet only at a point or cannot agree on an orientation (the copies "
+                      "keep their coordinates, so the check below still sees those points)");
 
   Mesh mesh;
   PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);

@@ -28,6 +28,12 @@ std::string number(double x) {
   return buffer;
 }
 
+std::string seconds(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3f s", x);
+  return buffer;
+}
+
 std::string json_number(double x) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.17g", x);
@@ -173,7 +179,7 @@ void MeshReport::print_text(std::ostream& out) const {
   } else {
     out << plural(self_intersections.face_pairs, "face pair", "face pairs") << " ("
         << (self_intersections.complete ? "complete" : "stopped at the time limit of " + number(self_intersections.time_limit_seconds) + " s")
-        << ", " << number(self_intersections.seconds) << " s)\n";
+        << ", " << seconds(self_intersections.seconds) << ")\n";
     std::vector<std::string> s;
     for (const auto& [f, g] : examples.self_intersections) s.push_back(element("face", f) + " x " + element("face", g));
     examples_line(s);

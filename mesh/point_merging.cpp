@@ -1,39 +1,46 @@
 #include "mesh/point_merging.hpp"
 
-#include <algorithm>
-#include <numeric>
+#include <cstring>
 
 namespace umbra {
+namespace {
+
+uint64_t bits_of(double x) {
+  if (x == 0.0) x = 0.0;  // -0.0 equals 0.0, so it must hash the same
+  uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  return bits;
+}
+
+uint64_t hash_of(const glm::dvec3& p) {
+  uint64_t h = bits_of(p.x) * 0x9E3779B97F4A7C15ull;
+  h = (h ^ (h >> 29) ^ bits_of(p.y)) * 0xBF58476D1CE4E5B9ull;
+  h = (h ^ (h >> 32) ^ bits_of(p.z)) * 0x94D049BB133111EBull;
+  return h ^ (h >> 31);
+}
+
+}  // namespace
 
 MergedPoints merge_coincident_points(const std::vector<glm::dvec3>& points) {
-  std::vector<uint32_t> order(points.size());
-  std::iota(order.begin(), order.end(), uint32_t(0));
-  const auto less = [&](uint32_t a, uint32_t b) {
-    const glm::dvec3& p = points[a];
-    const glm::dvec3& q = points[b];
-    if (p.x != q.x) return p.x < q.x;
-    if (p.y != q.y) return p.y < q.y;
-    if (p.z != q.z) return p.z < q.z;
-    return a < b;  // the first in the file leads its group
-  };
-  std::sort(order.begin(), order.end(), less);
+  // An open-addressing table of distinct positions, at most half full: one
+  // pass, and 4 bytes per slot rather than a sorted copy of every point.
+  size_t slots = 16;
+  while (slots < 2 * points.size()) slots *= 2;
+  constexpr uint32_t kEmpty = ~uint32_t(0);
+  std::vector<uint32_t> table(slots, kEmpty);  // position index, or kEmpty
 
-  // Each group's leader (its first point in the file) stands for the group.
-  std::vector<uint32_t> leader(points.size());
-  for (size_t i = 0; i < order.size(); ++i) {
-    const bool starts_group = i == 0 || points[order[i]] != points[order[i - 1]];
-    leader[order[i]] = starts_group ? order[i] : leader[order[i - 1]];
-  }
   MergedPoints merged;
   merged.vertex_of_point.resize(points.size());
-  for (uint32_t p = 0; p < points.size(); ++p) {
-    if (leader[p] == p) {
-      merged.vertex_of_point[p] = uint32_t(merged.positions.size());
-      merged.positions.push_back(points[p]);
-      merged.first_point.push_back(p);
-    } else {
-      merged.vertex_of_point[p] = merged.vertex_of_point[leader[p]];  // the leader comes first in the file
+  for (uint32_t i = 0; i < points.size(); ++i) {
+    const glm::dvec3& p = points[i];
+    size_t slot = hash_of(p) & (slots - 1);
+    while (table[slot] != kEmpty && merged.positions[table[slot]] != p) slot = (slot + 1) & (slots - 1);
+    if (table[slot] == kEmpty) {
+      table[slot] = uint32_t(merged.positions.size());
+      merged.positions.push_back(p);
+      merged.first_point.push_back(i);
     }
+    merged.vertex_of_point[i] = table[slot];
   }
   return merged;
 }

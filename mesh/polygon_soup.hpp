@@ -15,14 +15,16 @@ struct PolygonSoup {
   std::string path;
   std::string format;                 // "OBJ", "OFF", "PLY (binary little endian)", "STL (ascii)", ...
   std::vector<glm::dvec3> points;     // in file order
-  std::vector<int> point_lines;       // line of each point; 0 in binary files
+  std::vector<int> point_lines;       // line of each point; empty or 0 in binary files
   std::vector<uint32_t> corners;      // point indices of every polygon, polygon after polygon
   std::vector<uint32_t> polygon_starts{0};  // polygon p is corners[starts[p], starts[p+1])
-  std::vector<int> polygon_lines;     // line of each polygon; 0 in binary files
+  std::vector<int> polygon_lines;     // line of each polygon; empty or 0 in binary files
 
   size_t polygon_count() const { return polygon_starts.size() - 1; }
   uint32_t corner_count(size_t p) const { return polygon_starts[p + 1] - polygon_starts[p]; }
   const uint32_t* polygon(size_t p) const { return corners.data() + polygon_starts[p]; }
+  int point_line(size_t i) const { return i < point_lines.size() ? point_lines[i] : 0; }
+  int polygon_line(size_t p) const { return p < polygon_lines.size() ? polygon_lines[p] : 0; }
 
   void add_point(const glm::dvec3& p, int line) {
     points.push_back(p);

@@ -33,10 +33,8 @@ PolygonSoup read_binary_stl(std::string_view bytes, const std::string& path, uin
   soup.path = path;
   soup.format = "STL (binary)";
   soup.points.reserve(size_t(triangle_count) * 3);
-  soup.point_lines.assign(size_t(triangle_count) * 3, 0);
   soup.corners.reserve(size_t(triangle_count) * 3);
   soup.polygon_starts.reserve(size_t(triangle_count) + 1);
-  soup.polygon_lines.assign(triangle_count, 0);
   for (uint32_t t = 0; t < triangle_count; ++t) {
     const char* record = bytes.data() + kBinaryHeaderBytes + size_t(t) * kBinaryTriangleBytes;
     for (int k = 0; k < 3; ++k) {

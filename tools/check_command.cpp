@@ -39,8 +39,9 @@ options:
                     per mesh and report that it stopped (default 60; 0 skips)
   -h, --help        show this help
 
-exit status: 0 every mesh is a closed 2-manifold, 1 one is not (or cannot be
-repaired), 2 one could not be read, or a usage error.
+exit status: 0 every mesh is a closed 2-manifold, 1 one is not (after the
+repair, with --repair), 2 one could not be read, the repaired mesh could not
+be written, or a usage error.
 )";
 
 namespace {

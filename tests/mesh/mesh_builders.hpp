@@ -27,10 +27,10 @@ inline PolygonSoup make_soup(const std::vector<glm::dvec3>& points, const std::v
 inline PolygonSoup combine(const PolygonSoup& a, const PolygonSoup& b) {
   PolygonSoup soup = a;
   const uint32_t offset = uint32_t(a.points.size());
-  for (size_t i = 0; i < b.points.size(); ++i) soup.add_point(b.points[i], b.point_lines[i]);
+  for (size_t i = 0; i < b.points.size(); ++i) soup.add_point(b.points[i], b.point_line(i));
   for (size_t f = 0; f < b.polygon_count(); ++f) {
     for (uint32_t k = 0; k < b.corner_count(f); ++k) soup.corners.push_back(b.polygon(f)[k] + offset);
-    soup.end_polygon(b.polygon_lines[f]);
+    soup.end_polygon(b.polygon_line(f));
   }
   return soup;
 }

@@ -10,51 +10,15 @@
 #include <fstream>
 
 #include "render/image.hpp"
+#include "tests/tools/command_fixture.hpp"
 
 namespace umbra {
 namespace {
 
 namespace fs = std::filesystem;
+using test::CommandResult;
 
-struct CommandResult {
-  int status = 0;
-  std::string out, err;
-};
-
-class RenderCommand : public testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("umbra-cli-" + std::to_string(::getpid()) + "-" +
-                                        testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(path(name)) << text;
-    return path(name);
-  }
-
-  CommandResult run(const std::string& args) const {
-    const std::string command = std::string(UMBRA_EXECUTABLE) + " " + args + " >" + path("out.txt") + " 2>" + path("err.txt");
-    CommandResult r;
-    const int raw = std::system(command.c_str());
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = read(path("out.txt"));
-    r.err = read(path("err.txt"));
-    return r;
-  }
-
-  static std::string read(const std::string& p) {
-    std::ifstream in(p);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  }
-
-  fs::path dir_;
-};
+class RenderCommand : public test::CommandTest {};
 
 TEST_F(RenderCommand, WritesImageAndMaskOfTheRequestedSize) {
   const CommandResult r = run("render " + std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene -o " + path("a.png") +

@@ -1,0 +1,92 @@
+// Makes the large mesh that bench/check_benchmark.sh times: a mesh read with
+// umbra's readers, each triangle split into four at its edge midpoints LEVELS
+// times (the surface and its topology stay the same), written as binary STL
+// and as OBJ.
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+
+#include "mesh/input_error.hpp"
+#include "mesh/mesh_file.hpp"
+#include "mesh/point_merging.hpp"
+#include "mesh/polygon_triangulation.hpp"
+
+namespace {
+
+using Triangle = std::array<uint32_t, 3>;
+
+void subdivide(std::vector<glm::dvec3>& points, std::vector<Triangle>& triangles) {
+  std::map<std::pair<uint32_t, uint32_t>, uint32_t> midpoint;
+  const auto middle = [&](uint32_t a, uint32_t b) {
+    const auto key = std::minmax(a, b);
+    const auto [it, added] = midpoint.try_emplace(key, uint32_t(points.size()));
+    if (added) points.push_back(0.5 * (points[a] + points[b]));
+    return it->second;
+  };
+  std::vector<Triangle> finer;
+  finer.reserve(triangles.size() * 4);
+  for (const Triangle& t : triangles) {
+    const uint32_t ab = middle(t[0], t[1]), bc = middle(t[1], t[2]), ca = middle(t[2], t[0]);
+    finer.push_back({t[0], ab, ca});
+    finer.push_back({ab, t[1], bc});
+    finer.push_back({ca, bc, t[2]});
+    finer.push_back({ab, bc, ca});
+  }
+  triangles = std::move(finer);
+}
+
+void write_stl(const std::string& path, const std::vector<glm::dvec3>& points, const std::vector<Triangle>& triangles) {
+  std::ofstream out(path, std::ios::binary);
+  const std::string header(80, ' ');
+  out.write(header.data(), 80);
+  const uint32_t count = uint32_t(triangles.size());
+  out.write(reinterpret_cast<const char*>(&count), 4);
+  for (const Triangle& t : triangles) {
+    float record[12] = {0, 0, 0};
+    for (int k = 0; k < 3; ++k)
+      for (int i = 0; i < 3; ++i) record[3 + 3 * k + i] = float(points[t[size_t(k)]][i]);
+    out.write(reinterpret_cast<const char*>(record), sizeof record);
+    out.write("\0\0", 2);
+  }
+}
+
+void write_obj(const std::string& path, const std::vector<glm::dvec3>& points, const std::vector<Triangle>& triangles) {
+  std::ofstream out(path);
+  char line[128];
+  for (const glm::dvec3& p : points) {
+    // Written as float, as the STL holds them, so both files describe the same mesh.
+    std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", double(float(p.x)), double(float(p.y)), double(float(p.z)));
+    out << line;
+  }
+  for (const Triangle& t : triangles) out << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 5) {
+    std::cerr << "usage: make_subdivided_mesh IN OUT.stl OUT.obj LEVELS\n";
+    return 2;
+  }
+  try {
+    const umbra::PolygonSoup soup = umbra::read_polygon_soup(argv[1]);
+    const umbra::MergedPoints merged = umbra::merge_coincident_points(soup.points);
+    std::vector<glm::dvec3> points = merged.positions;
+    std::vector<Triangle> triangles;
+    for (size_t f = 0; f < soup.polygon_count(); ++f) {
+      std::vector<uint32_t> corners;
+      for (uint32_t k = 0; k < soup.corner_count(f); ++k) corners.push_back(merged.vertex_of_point[soup.polygon(f)[k]]);
+      umbra::triangulate_polygon(points, corners.data(), uint32_t(corners.size()), triangles);
+    }
+    for (int level = std::atoi(argv[4]); level > 0; --level) subdivide(points, triangles);
+    write_stl(argv[2], points, triangles);
+    write_obj(argv[3], points, triangles);
+    std::cout << triangles.size() << " triangles, " << points.size() << " vertices\n";
+    return 0;
+  } catch (const umbra::InputError& e) {
+    std::cerr << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,153 @@
+// `umbra check` as a user meets it: reports in order, exit codes, JSON lines,
+// repair that never touches its input.
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "tests/mesh/mesh_builders.hpp"
+#include "tests/tools/command_fixture.hpp"
+
+namespace umbra {
+namespace {
+
+using test::CommandResult;
+namespace fs = std::filesystem;
+
+std::string obj_text(const PolygonSoup& soup) {
+  std::ostringstream out;
+  for (const glm::dvec3& p : soup.points) out << "v " << p.x << " " << p.y << " " << p.z << "\n";
+  for (size_t f = 0; f < soup.polygon_count(); ++f) {
+    out << "f";
+    for (uint32_t k = 0; k < soup.corner_count(f); ++k) out << " " << soup.polygon(f)[k] + 1;
+    out << "\n";
+  }
+  return out.str();
+}
+
+class CheckCommand : public test::CommandTest {};
+
+TEST_F(CheckCommand, ClosedMeshExitsZeroWithItsVerdict) {
+  const CommandResult r = run("check " + write("tet.obj", obj_text(test::tetrahedron())));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find(path("tet.obj") + ": OBJ, 4 vertices, 4 faces (4 triangles)\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  verdict            closed 2-manifold: casts its shadow from silhouette edges\n"), std::string::npos);
+  EXPECT_EQ(r.err, "");
+}
+
+TEST_F(CheckCommand, SeveralMeshesAreReportedInTheOrderGiven) {
+  const std::string open = write("open.obj", obj_text(test::without_faces(test::unit_cube(), {4, 5})));
+  const std::string closed = write("closed.obj", obj_text(test::unit_cube()));
+  const CommandResult r = run("check " + open + " " + closed + " " + open);
+  EXPECT_EQ(r.status, 1);
+  const size_t first = r.out.find(open + ": OBJ");
+  const size_t second = r.out.find(closed + ": OBJ");
+  const size_t third = r.out.find(open + ": OBJ", first + 1);
+  EXPECT_LT(first, second);
+  EXPECT_LT(second, third);
+  EXPECT_NE(third, std::string::npos);
+  EXPECT_NE(r.out.find("not a closed 2-manifold (4 border edges in 1 hole): shadow from per-triangle volumes (slower)"),
+            std::string::npos);
+}
+
+TEST_F(CheckCommand, UnreadableMeshExitsTwoWithItsLocatedError) {
+  const std::string bad = write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n");
+  const std::string good = write("good.obj", obj_text(test::tetrahedron()));
+  const CommandResult r = run("check " + good + " " + bad);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, bad + ":4: face 0 refers to vertex 3 (counting from 0), but the file has 3 vertices\n");
+  EXPECT_NE(r.out.find(good + ": OBJ"), std::string::npos);
+}
+
+TEST_F(CheckCommand, JsonIsOneValidObjectPerMeshPerLine) {
+  const std::string bad = write("bad \"name\".off", "OFF\n1 0 0\n");
+  const std::string good = write("good.obj", obj_text(test::unit_cube()));
+  const std::string flipped = write("flipped.obj", obj_text(test::reversed(test::unit_cube(), {7})));
+  const CommandResult r = run("check --json " + good + " '" + bad + "' " + flipped);
+  EXPECT_EQ(r.status, 2);
+  // Python's json module is the judge of validity; it prints the fields we ask for.
+  std::ofstream(path("out.json")) << r.out;
+  const std::string script =
+      "import json,sys\n"
+      "for line in open(sys.argv[1]):\n"
+      "  o = json.loads(line)\n"
+      "  print(o['path'].split('/')[-1], o.get('closed_manifold'), o.get('faces_to_flip'), o.get('shadow_method'),"
+      " 'error' in o, o.get('examples', {}).get('faces_to_flip'))\n";
+  std::ofstream(path("read.py")) << script;
+  const int status = std::system(("python3 " + path("read.py") + " " + path("out.json") + " >" + path("fields.txt")).c_str());
+  ASSERT_EQ(status, 0) << r.out;
+  EXPECT_EQ(read(path("fields.txt")),
+            "good.obj True 0 silhouette False []\n"
+            "bad \"name\".off None None None True None\n"
+            "flipped.obj False 1 per-triangle False [{'face': 7, 'line': 16}]\n");
+}
+
+TEST_F(CheckCommand, RepairFixesOrientationAndDuplicatesAndLeavesTheInputAlone) {
+  PolygonSoup soup = test::reversed(test::unit_cube(), {3, 8});
+  soup.corners.insert(soup.corners.end(), {0, 2, 3});  // a duplicate of face 0
+  soup.end_polygon(0);
+  const std::string input = write("in.obj", obj_text(soup));
+  const std::string before = read(input);
+  const CommandResult r = run("check " + input + " --repair " + path("out.off"));
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("  removed 1 duplicate face\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  flipped 2 faces to orient them consistently\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(path("out.off") + ": OFF, 8 vertices, 12 faces"), std::string::npos);
+  EXPECT_NE(r.out.find("verdict            closed 2-manifold"), std::string::npos);
+  EXPECT_EQ(read(input), before);
+  EXPECT_EQ(run("check " + path("out.off")).status, 0);
+}
+
+TEST_F(CheckCommand, RepairTurnsAnInwardMeshOutward) {
+  const std::string input = write("in.obj", obj_text(test::all_reversed(test::tetrahedron())));
+  const CommandResult r = run("check " + input + " --repair " + path("out.stl"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("  turned 1 closed component outward\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("component 0        4 faces, closed, chi 2, genus 0, outward\n"), std::string::npos) << r.out;
+}
+
+TEST_F(CheckCommand, RepairSaysWhatRemainsWhenAHoleCannotBeStitched) {
+  const std::string input = write("in.obj", obj_text(test::without_faces(test::unit_cube(), {4, 5})));
+  const CommandResult r = run("check " + input + " --repair " + path("out.obj"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.out.find("  nothing to change\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("(4 border edges in 1 hole)"), std::string::npos) << r.out;
+}
+
+TEST_F(CheckCommand, RepairRefusesToOverwriteItsInputOrTakeTwoMeshes) {
+  const std::string input = write("in.obj", obj_text(test::tetrahedron()));
+  const CommandResult same = run("check " + input + " --repair " + input);
+  EXPECT_EQ(same.status, 2);
+  EXPECT_EQ(same.err, "umbra check: --repair would overwrite its input \"" + input +
+                          "\"; name another file\n(see umbra check --help)\n");
+  const CommandResult alias = run("check " + input + " --repair " + dir_.string() + "/./in.obj");
+  EXPECT_EQ(alias.status, 2);
+  const CommandResult two = run("check " + input + " " + input + " --repair " + path("x.obj"));
+  EXPECT_EQ(two.status, 2);
+  EXPECT_EQ(two.err, "umbra check: --repair takes one mesh at a time\n(see umbra check --help)\n");
+  const CommandResult format = run("check " + input + " --repair " + path("x.dae"));
+  EXPECT_EQ(format.status, 2);
+  EXPECT_FALSE(fs::exists(path("x.obj")));
+}
+
+TEST_F(CheckCommand, RepairIntoAMissingFolderFailsWithoutLeavingAFile) {
+  const std::string input = write("in.obj", obj_text(test::tetrahedron()));
+  const CommandResult r = run("check " + input + " --repair " + path("no/such/out.obj"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, path("no/such/out.obj") + ": cannot write the repaired mesh\n");
+  EXPECT_FALSE(fs::exists(path("no")));
+}
+
+TEST_F(CheckCommand, HelpAndUsageErrors) {
+  const CommandResult help = run("check --help");
+  EXPECT_EQ(help.status, 0);
+  EXPECT_EQ(help.out.rfind("usage: umbra check MESH...", 0), 0u);
+  const CommandResult none = run("check");
+  EXPECT_EQ(none.status, 2);
+  EXPECT_EQ(none.err, "umbra check: no mesh file given\n(see umbra check --help)\n");
+  const CommandResult limit = run("check a.obj --time-limit -1");
+  EXPECT_EQ(limit.status, 2);
+  EXPECT_EQ(limit.err, "umbra check: --time-limit must not be negative\n(see umbra check --help)\n");
+}
+
+}  // namespace
+}  // namespace umbra
