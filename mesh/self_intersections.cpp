@@ -71,6 +71,9 @@ SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positio
   boxes.reserve(triangles.size());
   for (uint32_t t = 0; t < triangles.size(); ++t) {
     const auto& tri = triangles[t];
+    // A triangle with collinear corners has no plane: the exact tests are
+    // undefined for it (the check reports its face as degenerate instead).
+    if (CGAL::collinear(points[tri[0]], points[tri[1]], points[tri[2]])) continue;
     boxes.emplace_back(points[tri[0]].bbox() + points[tri[1]].bbox() + points[tri[2]].bbox(), t);
   }
 

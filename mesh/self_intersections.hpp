@@ -21,8 +21,8 @@ struct SelfIntersections {
 // `triangles` index `positions` (coincident points already merged, so a shared
 // vertex has one index); `triangle_face` names each triangle's face, and two
 // triangles of the same face are not tested against each other. Triangles
-// whose corners are collinear must be left out (exact intersection tests are
-// undefined for them).
+// whose corners are collinear are skipped (exact intersection tests are
+// undefined for them; the check reports them as degenerate).
 SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positions,
                                           const std::vector<std::array<uint32_t, 3>>& triangles,
                                           const std::vector<uint32_t>& triangle_face, double time_limit_seconds,

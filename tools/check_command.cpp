@@ -102,6 +102,9 @@ CheckOutcome check_one(const std::string& path, const CheckCommandOptions& optio
   } catch (const std::bad_alloc&) {
     err << path << ": not enough memory to check this mesh\n";
     outcome.status = 2;
+  } catch (const std::exception& e) {
+    err << path << ": the check failed: " << e.what() << "\n";
+    outcome.status = 2;
   }
   outcome.out = out.str();
   outcome.err = err.str();

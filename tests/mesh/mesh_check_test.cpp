@@ -2,7 +2,10 @@
 #include <glm/vec2.hpp>
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "mesh/mesh_check.hpp"
+#include "mesh/self_intersections.hpp"
 #include "tests/mesh/mesh_builders.hpp"
 
 namespace umbra {
@@ -261,6 +264,55 @@ TEST(MeshCheck, EmptyMeshHasNoFaces) {
   const MeshReport r = check_mesh(make_soup({}, {}));
   EXPECT_EQ(r.problems(), std::vector<std::string>{"no faces"});
   EXPECT_EQ(r.shadow_method(), ShadowMethod::kPerTriangle);
+}
+
+TEST(MeshCheck, SelfIntersectionSearchSkipsTrianglesWithoutAPlane) {
+  // Triangle 1 has collinear corners and lies across triangle 0; an exact
+  // test of it would be undefined, so it is skipped, not an error.
+  const std::vector<glm::dvec3> points = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, -1}, {0.5, 0.5, 0}, {0.5, 0.5, 1},
+                                          {5, 5, 5}, {6, 5, 5}, {5, 6, 5}};
+  const SelfIntersections found =
+      find_self_intersections(points, {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}}, {0, 1, 2}, 10.0, 5);
+  EXPECT_EQ(found.face_pairs, 0u);
+  EXPECT_TRUE(found.complete);
+  // The same segment as a proper triangle through triangle 0 is found.
+  const SelfIntersections crossing =
+      find_self_intersections(points, {{0, 1, 2}, {3, 5, 7}, {6, 7, 8}}, {0, 1, 2}, 10.0, 5);
+  EXPECT_EQ(crossing.face_pairs, 1u);
+  ASSERT_EQ(crossing.examples.size(), 1u);
+  EXPECT_EQ(crossing.examples[0], std::make_pair(0u, 1u));
+}
+
+// Random soups over a few points (so that faces share vertices and edges and
+// repeat each other) and random polygons: the check finishes and its counts agree.
+TEST(MeshCheck, RandomSoupsAreCheckedWithConsistentCounts) {
+  std::mt19937 random(7);
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<glm::dvec3> points;
+    const int point_count = 3 + int(random() % 8);
+    for (int i = 0; i < point_count; ++i)
+      points.push_back(glm::dvec3(random() % 3, random() % 3, random() % 3));  // coincident and collinear points on purpose
+    std::vector<Face> faces;
+    const int face_count = 1 + int(random() % 12);
+    for (int f = 0; f < face_count; ++f) {
+      Face face(3 + random() % 3);
+      for (uint32_t& v : face) v = uint32_t(random() % uint32_t(point_count));
+      faces.push_back(face);
+    }
+    MeshReport r;
+    ASSERT_NO_THROW(r = check_mesh(make_soup(points, faces))) << "trial " << trial;
+    size_t faces_in_components = 0, border_edges = 0, loops = 0;
+    for (const ComponentReport& c : r.components) {
+      faces_in_components += c.faces;
+      border_edges += c.border_edges;
+      loops += c.border_loops;
+      EXPECT_EQ(c.closed, c.border_edges == 0 && c.manifold);
+    }
+    EXPECT_LE(faces_in_components + r.duplicate_faces, r.file_faces);
+    EXPECT_EQ(border_edges, r.border_edges);
+    EXPECT_EQ(loops, r.border_loops);
+    EXPECT_EQ(r.is_closed_manifold(), r.problems().empty());
+  }
 }
 
 }  // namespace
