@@ -13,6 +13,7 @@ packages=(
   libglm-dev libpng-dev              # vectors and matrices, PNG output
   libosmesa6-dev                     # headless OpenGL (Mesa llvmpipe)
   libcgal-dev libgmp-dev libmpfr-dev # exact predicates, mesh checks and repair
+  libopenmesh-dev                    # half-edge meshes for silhouettes
   libgtest-dev python3               # tests (python3 reads the JSON that umbra check writes)
   libcgal-demo                       # CGAL's data meshes, for the tests
   admesh time bc                     # bench/check_benchmark.sh: the checker it compares with, timing

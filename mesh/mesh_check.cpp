@@ -93,8 +93,11 @@ uint32_t next_corner(const PolygonSoup& soup, uint32_t face, uint32_t corner) {
 
 }  // namespace
 
-MeshReport check_mesh(const PolygonSoup& soup, const CheckOptions& options) {
-  MeshReport report;
+MeshReport check_mesh(const PolygonSoup& soup, const CheckOptions& options) { return analyse_mesh(soup, options).report; }
+
+MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options) {
+  MeshAnalysis analysis;
+  MeshReport& report = analysis.report;
   report.path = soup.path;
   report.format = soup.format;
   report.file_vertices = soup.points.size();
@@ -109,7 +112,7 @@ MeshReport check_mesh(const PolygonSoup& soup, const CheckOptions& options) {
   const size_t face_count = soup.polygon_count();
   if (soup.corners.size() >= (size_t(1) << 31))
     throw InputError({soup.path, 0, 0}, "too large to check: more than 2^31 face corners");
-  const MergedPoints merged = merge_coincident_points(soup.points);
+  MergedPoints merged = merge_coincident_points(soup.points);
   const size_t vertex_count = merged.positions.size();
   report.merged_vertices = soup.points.size() - vertex_count;
   const auto vertex_ref = [&](uint32_t v) {
@@ -315,22 +318,24 @@ MeshReport check_mesh(const PolygonSoup& soup, const CheckOptions& options) {
     if (room_for(examples.faces_to_flip)) examples.faces_to_flip.push_back(face_ref(f));
   }
 
-  // Triangles for the geometric tests, oriented as after the flips.
-  std::vector<std::array<uint32_t, 3>> triangles;
-  std::vector<uint32_t> triangle_face;
+  // Triangles for the geometric tests and the renderer, oriented as after the
+  // flips. Faces whose corners are collinear stay: a closed mesh needs them.
+  std::vector<std::array<uint32_t, 3>>& triangles = analysis.triangles;
+  std::vector<uint32_t>& triangle_face = analysis.triangle_face;
   std::vector<double> component_volume(comps.size(), 0.0);
   const glm::dvec3 centre = 0.5 * (report.bbox_min + report.bbox_max);  // keeps the volume sums well conditioned
   for (uint32_t f = 0; f < face_count; ++f) {
-    if (!faces.in_topology(f) || faces.collinear[f]) continue;
+    if (!faces.in_topology(f)) continue;
     const size_t first = triangles.size();
     triangulate_polygon(merged.positions, faces.corners.data() + soup.polygon_starts[f], soup.corner_count(f), triangles);
-    const double sign = must_flip(f) ? -1.0 : 1.0;
+    const bool flip = must_flip(f) && !component_conflict[component_of[f]];
     for (size_t t = first; t < triangles.size(); ++t) {
       triangle_face.push_back(f);
-      const auto& tri = triangles[t];
+      auto& tri = triangles[t];
+      if (flip) std::swap(tri[1], tri[2]);
       const glm::dvec3 a = merged.positions[tri[0]] - centre, b = merged.positions[tri[1]] - centre,
                        c = merged.positions[tri[2]] - centre;
-      component_volume[component_of[f]] += sign * glm::dot(a, glm::cross(b, c)) / 6.0;
+      component_volume[component_of[f]] += glm::dot(a, glm::cross(b, c)) / 6.0;
     }
   }
   report.triangles = triangles.size();
@@ -372,7 +377,8 @@ MeshReport check_mesh(const PolygonSoup& soup, const CheckOptions& options) {
     for (const auto& [f, g] : found.examples) examples.self_intersections.push_back({face_ref(f), face_ref(g)});
   }
   report.self_intersections.time_limit_seconds = options.self_intersection_seconds;
-  return report;
+  analysis.positions = std::move(merged.positions);
+  return analysis;
 }
 
 }  // namespace umbra

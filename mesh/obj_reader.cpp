@@ -40,10 +40,7 @@ PolygonSoup read_obj(std::string_view text, const std::string& path) {
   while (scanner.next_line()) {
     const std::string_view keyword = scanner.field();
     if (keyword == "v") {
-      glm::dvec3 p;
-      p.x = scanner.number("vertex x coordinate");
-      p.y = scanner.number("vertex y coordinate");
-      p.z = scanner.number("vertex z coordinate");
+      const glm::dvec3 p = scanner.vertex();
       soup.add_point(p, scanner.line_number());
     } else if (keyword == "f") {
       uint32_t corners = 0;

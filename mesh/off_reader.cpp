@@ -60,10 +60,7 @@ PolygonSoup read_off(std::string_view text, const std::string& path) {
 
   for (uint64_t i = 0; i < point_count; ++i) {
     require_line(scanner, next_content_line(scanner), "vertex " + std::to_string(i) + " of " + std::to_string(point_count));
-    glm::dvec3 p;
-    p.x = scanner.number("vertex x coordinate");
-    p.y = scanner.number("vertex y coordinate");
-    p.z = scanner.number("vertex z coordinate");
+    const glm::dvec3 p = scanner.vertex();
     soup.add_point(p, scanner.line_number());
   }
   for (uint64_t f = 0; f < face_count; ++f) {

@@ -67,10 +67,7 @@ PolygonSoup read_ascii_stl(std::string_view text, const std::string& path) {
       loop_corners = 0;
     } else if (keyword == "vertex") {
       if (!in_loop) scanner.fail("\"vertex\" outside an \"outer loop\" ... \"endloop\" block");
-      glm::dvec3 p;
-      p.x = scanner.number("vertex x coordinate");
-      p.y = scanner.number("vertex y coordinate");
-      p.z = scanner.number("vertex z coordinate");
+      const glm::dvec3 p = scanner.vertex();
       soup.corners.push_back(uint32_t(soup.points.size()));
       soup.add_point(p, scanner.line_number());
       ++loop_corners;

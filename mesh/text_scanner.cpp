@@ -55,6 +55,14 @@ double TextScanner::number(const char* what) {
   return value;
 }
 
+glm::dvec3 TextScanner::vertex() {
+  glm::dvec3 p;
+  p.x = number("vertex x coordinate");
+  p.y = number("vertex y coordinate");
+  p.z = number("vertex z coordinate");
+  return p;
+}
+
 int64_t TextScanner::integer(const char* what) {
   const std::string_view text = field();
   if (text.empty()) fail(std::string("expected an integer for the ") + what + ", got end of line");

@@ -7,6 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include <glm/vec3.hpp>
+
 #include "mesh/input_error.hpp"
 
 namespace umbra {
@@ -25,6 +27,7 @@ class TextScanner {
   bool at_line_end();
 
   double number(const char* what);                 // a finite number, or an error naming `what`
+  glm::dvec3 vertex();                             // three numbers: a vertex's x, y and z
   int64_t integer(const char* what);               // a decimal integer
   uint64_t count(const char* what);                // a non-negative integer
 
