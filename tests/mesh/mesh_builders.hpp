@@ -96,6 +96,32 @@ inline PolygonSoup quad_torus(int n, int m, double R = 2.0, double r = 0.5) {
   return make_soup(points, faces);
 }
 
+// The octahedron with vertices at +-1 on each axis, outward.
+inline PolygonSoup octahedron() {
+  return make_soup({{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}},
+                   {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}});
+}
+
+// A unit sphere of `rings` bands (an even number puts a ring on the equator)
+// and `segments` meridians: triangles at the poles, quads between, outward.
+inline PolygonSoup uv_sphere(int rings, int segments) {
+  const double pi = 3.141592653589793;
+  std::vector<glm::dvec3> points = {{0, 0, 1}, {0, 0, -1}};
+  for (int i = 1; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const double polar = pi * i / rings, azimuth = 2 * pi * j / segments;
+      points.push_back({std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth), std::cos(polar)});
+    }
+  const auto at = [&](int ring, int j) { return uint32_t(2 + (ring - 1) * segments + (j + segments) % segments); };
+  std::vector<Face> faces;
+  for (int j = 0; j < segments; ++j) {
+    faces.push_back({0, at(1, j), at(1, j + 1)});
+    for (int i = 1; i + 1 < rings; ++i) faces.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    faces.push_back({1, at(rings - 1, j + 1), at(rings - 1, j)});
+  }
+  return make_soup(points, faces);
+}
+
 // A Moebius strip of n quads: one border loop, not orientable.
 inline PolygonSoup moebius_strip(int n) {
   std::vector<glm::dvec3> points;

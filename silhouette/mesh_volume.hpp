@@ -1,0 +1,46 @@
+#pragma once
+// The shadow volume of a closed, consistently oriented triangle mesh from its
+// silhouette: side quads extruded to infinity from the silhouette edges,
+// oriented by the face that faces the light; light cap = the facing faces;
+// dark cap = the other faces, at infinity.
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "silhouette/mesh_adjacency.hpp"
+#include "silhouette/shadow_volume.hpp"
+
+namespace umbra {
+
+// The volume as indices into the mesh's 2N vertices: v < N is mesh vertex v,
+// v >= N is mesh vertex v - N at infinity, (P - L, 0). The vertices never
+// change with the light, so a renderer keeps them in a static buffer and
+// sends only these indices each frame.
+struct MeshVolumeIndices {
+  std::vector<uint32_t> indices;  // triangles, counter-clockwise seen from outside the volume
+  int side_quads = 0;
+  int light_cap_triangles = 0;
+  int dark_cap_triangles = 0;
+};
+
+// The silhouette edges, each as (a, b) in the direction the facing face runs along it.
+std::vector<std::array<uint32_t, 2>> silhouette_edges(const MeshAdjacency& mesh, const std::vector<uint8_t>& facing);
+
+// `facing` is scratch space (classify_faces' output), kept by the caller so
+// that a frame allocates nothing once the buffers have grown.
+void mesh_volume_indices(const MeshAdjacency& mesh, const glm::dvec3& light, std::vector<uint8_t>& facing,
+                         MeshVolumeIndices& volume);
+
+// The same volume with its vertices: for tests, `umbra volume` and the
+// fallback's common path.
+ShadowVolume mesh_shadow_volume(const MeshAdjacency& mesh, const glm::dvec3& light);
+
+// The slower method for a mesh that is not a closed, consistently oriented
+// 2-manifold: every triangle's own volume (spec 2.1), which is correct for
+// any triangle soup.
+ShadowVolume per_triangle_volume(const std::vector<glm::dvec3>& positions,
+                                 const std::vector<std::array<uint32_t, 3>>& triangles, const glm::dvec3& light);
+
+}  // namespace umbra

@@ -1,0 +1,158 @@
+// Silhouettes and volumes of closed meshes against hand-computed edges, and
+// closed, outward volumes for many lights.
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <random>
+#include <set>
+
+#include "mesh/half_edge_mesh.hpp"
+#include "mesh/mesh_check.hpp"
+#include "mesh/orientation.hpp"
+#include "silhouette/classify_faces.hpp"
+#include "silhouette/mesh_volume.hpp"
+#include "silhouette/volume_topology.hpp"
+#include "tests/mesh/mesh_builders.hpp"
+
+namespace umbra {
+namespace {
+
+using namespace umbra::test;
+
+MeshAdjacency adjacency_of(const PolygonSoup& soup) {
+  const MeshAnalysis a = analyse_mesh(soup);
+  return build_mesh_adjacency(build_half_edge_mesh(a.positions, a.triangles));
+}
+
+bool less_point(const glm::dvec3& a, const glm::dvec3& b) {
+  return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+}
+bool less_edge(const std::pair<glm::dvec3, glm::dvec3>& a, const std::pair<glm::dvec3, glm::dvec3>& b) {
+  return less_point(a.first, b.first) || (a.first == b.first && less_point(a.second, b.second));
+}
+using EdgeSet = std::set<std::pair<glm::dvec3, glm::dvec3>, bool (*)(const std::pair<glm::dvec3, glm::dvec3>&,
+                                                                      const std::pair<glm::dvec3, glm::dvec3>&)>;
+
+EdgeSet silhouette_of(const MeshAdjacency& mesh, const glm::dvec3& light) {
+  std::vector<uint8_t> facing;
+  classify_faces(mesh, light, facing);
+  EdgeSet edges(less_edge);
+  for (const auto& [a, b] : silhouette_edges(mesh, facing)) edges.insert({mesh.positions[a], mesh.positions[b]});
+  return edges;
+}
+
+// A closed loop through `corners` in order.
+EdgeSet loop(const std::vector<glm::dvec3>& corners) {
+  EdgeSet edges(less_edge);
+  for (size_t i = 0; i < corners.size(); ++i) edges.insert({corners[i], corners[(i + 1) % corners.size()]});
+  return edges;
+}
+
+const PolygonSoup kCube = box_quads(glm::dvec3(-1.0), glm::dvec3(1.0));
+
+TEST(MeshSilhouette, CubeLitFromAboveOutlinesItsTopFace) {
+  // Only the top face (z = 1) faces (0, 0, 5); its edges run counter-clockwise seen from above.
+  EXPECT_EQ(silhouette_of(adjacency_of(kCube), {0, 0, 5}),
+            loop({{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}}));
+}
+
+TEST(MeshSilhouette, CubeLitAlongItsDiagonalOutlinesAHexagon) {
+  // x = 1, y = 1 and z = 1 face (5, 5, 5); their outline skips the corner (1, 1, 1).
+  EXPECT_EQ(silhouette_of(adjacency_of(kCube), {5, 5, 5}),
+            loop({{1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, 1, 1}, {-1, -1, 1}, {1, -1, 1}}));
+}
+
+TEST(MeshSilhouette, FaceWhosePlaneContainsTheLightDoesNotFaceIt) {
+  // (3, 0, 1) lies in the plane of the top face: only x = 1 faces it, exactly.
+  const MeshAdjacency cube = adjacency_of(kCube);
+  EXPECT_EQ(silhouette_of(cube, {3, 0, 1}), loop({{1, -1, -1}, {1, 1, -1}, {1, 1, 1}, {1, -1, 1}}));
+  // A hair above, the top face faces the light too; a hair below, it does not.
+  EXPECT_EQ(silhouette_of(cube, {3, 0, 1 + 1e-15}), loop({{1, -1, -1}, {1, 1, -1}, {1, 1, 1}, {-1, 1, 1}, {-1, -1, 1}, {1, -1, 1}}));
+  EXPECT_EQ(silhouette_of(cube, {3, 0, 1 - 1e-15}), silhouette_of(cube, {3, 0, 1}));
+  for (const glm::dvec3& light : {glm::dvec3(3, 0, 1), glm::dvec3(3, 0, 1 + 1e-15), glm::dvec3(1, 1, 7)})
+    EXPECT_TRUE(is_closed_and_consistently_oriented(mesh_shadow_volume(cube, light)));
+}
+
+TEST(MeshSilhouette, OctahedronLitAlongAnAxisOutlinesTheSquareAcrossIt) {
+  const MeshAdjacency octahedron = adjacency_of(test::octahedron());
+  EXPECT_EQ(silhouette_of(octahedron, {0, 0, 10}), loop({{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}}));
+  EXPECT_EQ(silhouette_of(octahedron, {10, 0, 0}), loop({{0, -1, 0}, {0, 0, -1}, {0, 1, 0}, {0, 0, 1}}));
+}
+
+TEST(MeshSilhouette, SphereLitFromAboveOutlinesItsEquator) {
+  // From (0, 0, 100) the tangent cone touches at z = 0.01: every band above
+  // the equator tilts up and faces the light, every band below does not.
+  const int segments = 16;
+  const MeshAdjacency sphere = adjacency_of(uv_sphere(8, segments));
+  std::vector<glm::dvec3> equator;
+  for (int j = 0; j < segments; ++j) {
+    const double azimuth = 2 * 3.141592653589793 * j / segments;
+    equator.push_back({std::sin(3.141592653589793 / 2) * std::cos(azimuth), std::sin(3.141592653589793 / 2) * std::sin(azimuth),
+                       std::cos(3.141592653589793 / 2)});
+  }
+  EXPECT_EQ(silhouette_of(sphere, {0, 0, 100}), loop(equator));
+}
+
+TEST(MeshVolume, CapsAndQuadsOfTheCubeLitFromAbove) {
+  const ShadowVolume v = mesh_shadow_volume(adjacency_of(unit_cube()), {0.5, 0.5, 5});
+  EXPECT_EQ(v.side_quads, 4);
+  EXPECT_EQ(v.light_cap_triangles, 2);
+  EXPECT_EQ(v.dark_cap_triangles, 10);
+  int finite_triangles = 0;
+  for (const auto& tri : v.triangles) {
+    if (v.vertices[tri[0]].w == 0.0 || v.vertices[tri[1]].w == 0.0 || v.vertices[tri[2]].w == 0.0) continue;
+    ++finite_triangles;  // a light-cap triangle: it faces the light
+    EXPECT_GT(orientation(glm::dvec3(v.vertices[tri[0]]), glm::dvec3(v.vertices[tri[1]]), glm::dvec3(v.vertices[tri[2]]),
+                          {0.5, 0.5, 5}),
+              0);
+  }
+  EXPECT_EQ(finite_triangles, 2);
+}
+
+// Lights all around, 4 to 14 units from the centre.
+std::vector<glm::dvec3> lights_around(int count, unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<glm::dvec3> lights;
+  for (int i = 0; i < count; ++i) {
+    const glm::dvec3 direction(unit(random), unit(random), unit(random));
+    lights.push_back(glm::normalize(direction) * (4.0 + 10.0 * std::abs(unit(random))));
+  }
+  return lights;
+}
+
+TEST(MeshVolume, ConvexMeshesGiveClosedOrientedManifoldVolumes) {
+  for (const PolygonSoup& soup : {unit_cube(), kCube, test::octahedron(), uv_sphere(8, 16), uv_sphere(5, 7),
+                                   all_reversed(uv_sphere(6, 9))}) {
+    const MeshAdjacency mesh = adjacency_of(soup);
+    for (const glm::dvec3& light : lights_around(50, 4)) {
+      const ShadowVolume v = mesh_shadow_volume(mesh, light);
+      ASSERT_TRUE(is_closed_and_consistently_oriented(v)) << mesh.triangles.size() << " triangles, light " << light.x << " "
+                                                          << light.y << " " << light.z;
+      EXPECT_GE(v.side_quads, 3);
+      EXPECT_EQ(size_t(v.light_cap_triangles + v.dark_cap_triangles), mesh.triangles.size());
+    }
+  }
+}
+
+TEST(MeshVolume, TorusVolumeHasNoBoundaryWhereSilhouetteLoopsMeet) {
+  const MeshAdjacency torus = adjacency_of(quad_torus(12, 8));
+  int loops_meet = 0;
+  for (const glm::dvec3& light : lights_around(200, 5)) {
+    const ShadowVolume v = mesh_shadow_volume(torus, light);
+    ASSERT_TRUE(has_no_boundary(v)) << light.x << " " << light.y << " " << light.z;
+    loops_meet += !is_closed_and_consistently_oriented(v);
+  }
+  EXPECT_GT(loops_meet, 0) << "no light made two silhouette loops meet: the test lost its point";
+}
+
+TEST(MeshVolume, HasNoBoundaryCatchesAMissingQuad) {
+  ShadowVolume v = mesh_shadow_volume(adjacency_of(kCube), {0, 0, 5});
+  ASSERT_TRUE(has_no_boundary(v));
+  v.triangles.pop_back();
+  EXPECT_FALSE(has_no_boundary(v));
+}
+
+}  // namespace
+}  // namespace umbra
