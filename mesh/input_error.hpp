@@ -18,11 +18,13 @@ struct FileLoc {
 class InputError : public std::runtime_error {
  public:
   InputError(FileLoc where, const std::string& message)
-      : std::runtime_error(where.str() + ": " + message), where_(std::move(where)) {}
+      : std::runtime_error(where.str() + ": " + message), where_(std::move(where)), message_(message) {}
   const FileLoc& where() const { return where_; }
+  const std::string& message() const { return message_; }  // without the location
 
  private:
   FileLoc where_;
+  std::string message_;
 };
 
 }  // namespace umbra

@@ -354,6 +354,12 @@ MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options) 
     }
     if (!c.orientable) ++report.non_orientable_components;
   }
+  // The renderer gets closed components facing outward, so that it can cull
+  // their back faces (the file's orientation stays in the report).
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    const ComponentReport& c = comps[component_of[triangle_face[t]]];
+    if (c.outward == false) std::swap(triangles[t][1], triangles[t][2]);
+  }
   {
     // V - E + F over the faces in the topology: each vertex once.
     std::vector<uint8_t> in_topology_vertex(vertex_count, 0);

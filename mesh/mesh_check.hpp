@@ -19,7 +19,8 @@ struct CheckOptions {
 // The report, and the mesh as the renderer takes it: coincident points
 // merged, faces that repeat a vertex and duplicate faces dropped, every other
 // face triangulated and turned to agree with its neighbours (the fewest flips;
-// a non-orientable component keeps the file's orientation).
+// a non-orientable component keeps the file's orientation), and every closed
+// component turned to face outward.
 struct MeshAnalysis {
   MeshReport report;
   std::vector<glm::dvec3> positions;

@@ -78,14 +78,12 @@ const char* shadow_method_name(ShadowMethod method) {
 }
 
 ShadowMethod MeshReport::shadow_method() const {
-  const bool closed_oriented = border_edges == 0 && non_manifold_edges == 0 && non_manifold_vertices == 0 &&
-                               inconsistent_edges == 0 && non_orientable_components == 0 && !components.empty();
-  return closed_oriented ? ShadowMethod::kSilhouette : ShadowMethod::kPerTriangle;
+  return topology_problems().empty() ? ShadowMethod::kSilhouette : ShadowMethod::kPerTriangle;
 }
 
 bool MeshReport::is_closed_manifold() const { return problems().empty(); }
 
-std::vector<std::string> MeshReport::problems() const {
+std::vector<std::string> MeshReport::topology_problems() const {
   std::vector<std::string> out;
   if (components.empty()) out.push_back("no faces");
   if (border_edges > 0)
@@ -96,6 +94,11 @@ std::vector<std::string> MeshReport::problems() const {
     out.push_back(plural(non_orientable_components, "non-orientable component", "non-orientable components"));
   if (inconsistent_edges > 0)
     out.push_back("inconsistent orientation (" + plural(faces_to_flip, "face", "faces") + " to flip)");
+  return out;
+}
+
+std::vector<std::string> MeshReport::problems() const {
+  std::vector<std::string> out = topology_problems();
   if (duplicate_faces > 0) out.push_back(plural(duplicate_faces, "duplicate face", "duplicate faces"));
   if (degenerate_faces > 0) out.push_back(plural(degenerate_faces, "degenerate face", "degenerate faces"));
   if (!self_intersections.checked) {

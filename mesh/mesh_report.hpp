@@ -96,6 +96,9 @@ struct MeshReport {
   bool is_closed_manifold() const;
   // Why it is not, one short phrase per reason; empty when it is.
   std::vector<std::string> problems() const;
+  // The problems that decide the shadow method: no faces, border, non-manifold
+  // edges or vertices, orientation.
+  std::vector<std::string> topology_problems() const;
   // The shadow method the renderer uses for this mesh.
   ShadowMethod shadow_method() const;
   // "closed 2-manifold: ..." or "not a closed 2-manifold (...): ..."

@@ -2,6 +2,8 @@
 // The validated scene (scene-format.md) as plain values. Nothing above mesh/
 // sees scene text: the parser produces this, the renderer consumes it.
 
+#include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -9,6 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include "mesh/input_error.hpp"
+#include "mesh/mesh_report.hpp"
 
 namespace umbra {
 
@@ -40,6 +43,24 @@ struct Triangle {
   FileLoc where;
 };
 
+// A `mesh` statement with its file loaded: the triangles in scene coordinates
+// (scale, then rotate, then translate), merged, consistently oriented where
+// the mesh allows, and the check's report that chooses its shadow method.
+struct Mesh {
+  std::string path;  // as resolved against the scene file's folder
+  int material = 0;
+  double scale = 1.0;
+  glm::dvec3 rotation_axis{0.0, 0.0, 1.0};
+  double rotation_deg = 0.0;
+  glm::dvec3 translation{0.0};
+  FileLoc where;
+
+  std::vector<glm::dvec3> positions;
+  std::vector<std::array<uint32_t, 3>> triangles;
+  glm::dvec3 bounds_min{0.0}, bounds_max{0.0};  // of the positions, in scene coordinates
+  MeshReport report;  // topology only: the renderer does not search for self-intersections
+};
+
 struct Camera {
   glm::dvec3 eye{0.0};
   glm::dvec3 target{0.0};
@@ -62,6 +83,7 @@ struct Scene {
   std::vector<Material> materials;  // [0] is the default material
   std::vector<Sphere> spheres;
   std::vector<Triangle> triangles;
+  std::vector<Mesh> meshes;
   Camera camera = spec_camera();
   std::optional<FileLoc> camera_from;  // where the camera statement was; none: spec view
   std::vector<Warning> warnings;

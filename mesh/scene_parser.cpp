@@ -1,6 +1,7 @@
 #include "mesh/scene_parser.hpp"
 
 #include <charconv>
+#include <filesystem>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -8,7 +9,11 @@
 #include <sstream>
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/mat3x3.hpp>
 
+#include "mesh/mesh_check.hpp"
+#include "mesh/mesh_file.hpp"
 #include "mesh/orientation.hpp"
 
 namespace umbra {
@@ -45,7 +50,13 @@ std::vector<Token> tokenize(const std::string& line, const FileLoc& where) {
   return tokens;
 }
 
-std::string quoted(const std::string& s) { return "\"" + s + "\""; }
+std::string join(const std::vector<std::string>& phrases) {
+  std::string s;
+  for (size_t i = 0; i < phrases.size(); ++i) s += (i ? ", " : "") + phrases[i];
+  return s;
+}
+
+std::string in_quotes(const std::string& s) { return "\"" + s + "\""; }
 
 // Reads the tokens of one statement left to right, with located errors.
 class StatementReader {
@@ -65,7 +76,7 @@ class StatementReader {
 
   [[noreturn]] void fail_at_next(const std::string& message) const { throw InputError(next_loc(), message); }
 
-  std::string got() const { return done() ? "end of line" : quoted(peek().text); }
+  std::string got() const { return done() ? "end of line" : in_quotes(peek().text); }
 
   double number(const std::string& what) {
     if (done()) fail_at_next("expected a number for the " + what + ", got end of line");
@@ -111,9 +122,9 @@ class StatementReader {
       std::string list;
       for (size_t i = 0; i < allowed.size(); ++i)
         list += (i == 0 ? "" : i + 1 == allowed.size() ? " or " : ", ") + allowed[i];
-      fail_at_next("unknown keyword " + quoted(k) + " in " + statement + " (expected " + list + ")");
+      fail_at_next("unknown keyword " + in_quotes(k) + " in " + statement + " (expected " + list + ")");
     }
-    if (!seen_.insert(k).second) fail_at_next("keyword " + quoted(k) + " is given twice");
+    if (!seen_.insert(k).second) fail_at_next("keyword " + in_quotes(k) + " is given twice");
     ++next_;
     return k;
   }
@@ -129,6 +140,11 @@ class StatementReader {
 };
 
 class SceneBuilder {
+  struct PendingMesh {
+    Mesh mesh;
+    FileLoc path_at;
+  };
+
  public:
   explicit SceneBuilder(const std::string& name) {
     scene_.path = name;
@@ -144,11 +160,12 @@ class SceneBuilder {
     else if (k == "mesh") mesh(r);
     else if (k == "camera") camera(r);
     else
-      throw InputError(r.statement_loc(), "unknown statement " + quoted(k) +
+      throw InputError(r.statement_loc(), "unknown statement " + in_quotes(k) +
                                               " (expected light, material, sphere, triangle, mesh or camera)");
   }
 
   Scene finish() {
+    load_meshes();
     if (scene_.lights.empty())
       throw InputError({scene_.path}, "the scene has no light: add a line such as \"light 0.6 0.8 1.6\"");
     return std::move(scene_);
@@ -175,7 +192,7 @@ class SceneBuilder {
     const FileLoc name_at = r.next_loc();
     m.name = r.word("a material name");
     if (const auto it = materials_.find(m.name); it != materials_.end())
-      throw InputError(name_at, "material " + quoted(m.name) + " is already defined at line " +
+      throw InputError(name_at, "material " + in_quotes(m.name) + " is already defined at line " +
                                     std::to_string(it->second.line));
     while (auto k = r.keyword_of("material", {"ambient", "diffuse", "specular", "shininess"})) {
       if (*k == "ambient") m.ambient = r.color("material ambient");
@@ -200,7 +217,7 @@ class SceneBuilder {
     const std::string name = r.word("a material name");
     for (size_t i = 1; i < scene_.materials.size(); ++i)
       if (scene_.materials[i].name == name) return int(i);
-    throw InputError(at, "material " + quoted(name) + " is not defined (define it on an earlier line)");
+    throw InputError(at, "material " + in_quotes(name) + " is not defined (define it on an earlier line)");
   }
 
   void sphere(StatementReader& r) {
@@ -235,22 +252,67 @@ class SceneBuilder {
   }
 
   void mesh(StatementReader& r) {
-    const FileLoc at = r.statement_loc();
-    r.word("a mesh file path");
+    Mesh m;
+    m.where = r.statement_loc();
+    const FileLoc path_at = r.next_loc();
+    m.path = r.word("a mesh file path");
     while (auto k = r.keyword_of("mesh", {"material", "scale", "rotate", "translate"})) {
       if (*k == "material") {
-        material_named(r);
+        m.material = material_named(r);
       } else if (*k == "scale") {
-        r.number("mesh scale");
+        const FileLoc at = r.next_loc();
+        m.scale = r.number("mesh scale");
+        if (m.scale <= 0) throw InputError(at, "the mesh scale must be positive, got " + format(m.scale));
       } else if (*k == "rotate") {
-        r.vec3("mesh rotation axis");
-        r.number("mesh rotation angle");
+        const FileLoc at = r.next_loc();
+        m.rotation_axis = r.vec3("mesh rotation axis");
+        if (m.rotation_axis == glm::dvec3(0.0)) throw InputError(at, "the mesh rotation axis must not be (0, 0, 0)");
+        m.rotation_deg = r.number("mesh rotation angle");
       } else {
-        r.vec3("mesh translation");
+        m.translation = r.vec3("mesh translation");
       }
     }
-    if (!r.done()) return;  // the caller reports the stray token
-    throw InputError(at, "mesh statements are not supported yet: this version renders spheres and triangles");
+    pending_meshes_.push_back({std::move(m), path_at});
+  }
+
+  // Reads every mesh file once the whole scene has parsed, so that a typo
+  // later in the scene is reported before a large file is read.
+  void load_meshes() {
+    const std::filesystem::path folder = std::filesystem::path(scene_.path).parent_path();
+    for (auto& [m, path_at] : pending_meshes_) {
+      const std::string written = m.path;
+      m.path = (folder / written).lexically_normal().string();
+      MeshAnalysis analysis;
+      try {
+        CheckOptions topology_only;
+        topology_only.self_intersection_seconds = 0.0;
+        analysis = analyse_mesh(read_polygon_soup(m.path), topology_only);
+      } catch (const InputError& e) {
+        if (e.where().line == 0)  // the file as a whole: say so at the statement that names it
+          throw InputError(path_at, "mesh file " + in_quotes(m.path) + ": " + e.message());
+        throw InputError(e.where(), e.message() + " (in the mesh of " + m.where.str() + ")");
+      }
+      // Scale, then rotate, then translate (scene-format.md); a positive scale
+      // and a rotation keep the faces' orientation.
+      const glm::dmat3 rotation(glm::rotate(glm::dmat4(1.0), glm::radians(m.rotation_deg), glm::normalize(m.rotation_axis)));
+      m.positions.reserve(analysis.positions.size());
+      for (const glm::dvec3& p : analysis.positions) m.positions.push_back(rotation * (m.scale * p) + m.translation);
+      if (!m.positions.empty()) {
+        m.bounds_min = m.bounds_max = m.positions[0];
+        for (const glm::dvec3& p : m.positions) {
+          m.bounds_min = glm::min(m.bounds_min, p);
+          m.bounds_max = glm::max(m.bounds_max, p);
+        }
+      }
+      m.triangles = std::move(analysis.triangles);
+      m.report = std::move(analysis.report);
+      if (m.triangles.empty())
+        warn(m.where, "mesh " + in_quotes(written) + " has no faces: it casts no shadow");
+      else if (m.report.shadow_method() != ShadowMethod::kSilhouette)
+        warn(m.where, "mesh " + in_quotes(written) + " is not a closed 2-manifold (" + join(m.report.topology_problems()) +
+                          "): its shadow comes from per-triangle volumes (slower)");
+      scene_.meshes.push_back(std::move(m));
+    }
   }
 
   void camera(StatementReader& r) {
@@ -291,6 +353,7 @@ class SceneBuilder {
 
   Scene scene_;
   std::map<std::string, FileLoc> materials_;
+  std::vector<PendingMesh> pending_meshes_;
 };
 
 }  // namespace

@@ -1,6 +1,8 @@
 #include "render/ray_cast.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <glm/geometric.hpp>
 
@@ -23,12 +25,13 @@ std::optional<double> hit_sphere(const Sphere& s, const glm::dvec3& o, const glm
 }
 
 // Moller-Trumbore, accepting either side; the edges are inclusive.
-std::optional<double> hit_triangle(const Triangle& tri, const glm::dvec3& o, const glm::dvec3& d) {
-  const glm::dvec3 e1 = tri.b - tri.a, e2 = tri.c - tri.a;
+std::optional<double> hit_triangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dvec3& o,
+                                   const glm::dvec3& d) {
+  const glm::dvec3 e1 = b - a, e2 = c - a;
   const glm::dvec3 p = glm::cross(d, e2);
   const double det = glm::dot(e1, p);
   if (det == 0.0) return std::nullopt;  // parallel to the plane, or degenerate
-  const glm::dvec3 s = o - tri.a;
+  const glm::dvec3 s = o - a;
   const double u = glm::dot(s, p) / det;
   if (u < 0.0 || u > 1.0) return std::nullopt;
   const glm::dvec3 q = glm::cross(s, e1);
@@ -37,6 +40,25 @@ std::optional<double> hit_triangle(const Triangle& tri, const glm::dvec3& o, con
   const double t = glm::dot(e2, q) / det;
   if (t > 0.0) return t;
   return std::nullopt;
+}
+
+// Does the ray meet the box at t >= 0? (The slab test; a box is only a
+// shortcut, so rounding on its edges must err towards yes.)
+bool may_hit_box(const glm::dvec3& lo, const glm::dvec3& hi, const glm::dvec3& o, const glm::dvec3& d, double t_max) {
+  double t0 = 0.0, t1 = t_max;
+  for (int i = 0; i < 3; ++i) {
+    const double slack = 1e-9 * (1.0 + std::abs(lo[i]) + std::abs(hi[i]));
+    if (d[i] == 0.0) {
+      if (o[i] < lo[i] - slack || o[i] > hi[i] + slack) return false;
+      continue;
+    }
+    double near = (lo[i] - slack - o[i]) / d[i], far = (hi[i] + slack - o[i]) / d[i];
+    if (near > far) std::swap(near, far);
+    t0 = std::max(t0, near);
+    t1 = std::min(t1, far);
+    if (t0 > t1) return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -57,9 +79,25 @@ std::optional<RayHit> nearest_hit(const Scene& scene, const glm::dvec3& origin, 
     const int id = sphere_count + int(j);
     if (id == skip) continue;
     const Triangle& tri = scene.triangles[j];
-    const auto t = hit_triangle(tri, origin, direction);
+    const auto t = hit_triangle(tri.a, tri.b, tri.c, origin, direction);
     if (t && (!best || *t < best->t))
       best = RayHit{*t, origin + *t * direction, glm::normalize(glm::cross(tri.b - tri.a, tri.c - tri.a)), id};
+  }
+  int first_id = sphere_count + int(scene.triangles.size());
+  for (const Mesh& mesh : scene.meshes) {
+    const int mesh_first = first_id;
+    first_id += int(mesh.triangles.size());
+    const double t_max = best ? best->t : std::numeric_limits<double>::infinity();
+    if (!may_hit_box(mesh.bounds_min, mesh.bounds_max, origin, direction, t_max)) continue;
+    for (size_t j = 0; j < mesh.triangles.size(); ++j) {
+      const int id = mesh_first + int(j);
+      if (id == skip) continue;
+      const glm::dvec3& a = mesh.positions[mesh.triangles[j][0]];
+      const glm::dvec3& b = mesh.positions[mesh.triangles[j][1]];
+      const glm::dvec3& c = mesh.positions[mesh.triangles[j][2]];
+      const auto t = hit_triangle(a, b, c, origin, direction);
+      if (t && (!best || *t < best->t)) best = RayHit{*t, origin + *t * direction, glm::normalize(glm::cross(b - a, c - a)), id};
+    }
   }
   return best;
 }

@@ -1,6 +1,6 @@
 #pragma once
 // The CPU reference: eye rays and exact shadow rays in double precision
-// against true spheres and triangles. It answers, per pixel, what the shadow
+// against true spheres, triangles and the triangles of meshes. It answers, per pixel, what the shadow
 // mask must be; tests compare the GL renderer's mask with it.
 
 #include <optional>
@@ -16,7 +16,7 @@ struct RayHit {
   double t = 0.0;         // distance along the (unit) ray
   glm::dvec3 point{0.0};
   glm::dvec3 normal{0.0};  // unit; the outward normal for spheres, either side for triangles
-  int object = -1;         // spheres first, then triangles, in file order
+  int object = -1;         // spheres first, then triangles, then each mesh's triangles, in file order
 };
 
 // The nearest hit with t > 0, skipping object `skip` (-1: none).

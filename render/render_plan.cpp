@@ -33,9 +33,37 @@ CasterEntry triangle_entry(const Triangle& t, const Light& light) {
   return e;
 }
 
+std::string joined(const std::vector<std::string>& phrases) {
+  std::string s;
+  for (size_t i = 0; i < phrases.size(); ++i) s += (i ? ", " : "") + phrases[i];
+  return s;
+}
+
+// A mesh's entry; a silhouette volume goes to `light_plan.mesh_volumes`.
+CasterEntry mesh_entry(const Scene& scene, size_t index, const MeshCaster& caster, const Light& light, LightPlan& light_plan) {
+  const Mesh& mesh = scene.meshes[index];
+  CasterEntry e{"mesh", mesh.where, "", {}};
+  if (caster.method == ShadowMethod::kSilhouette) {
+    MeshVolumePlan volume{index, {}};
+    std::vector<uint8_t> facing;
+    mesh_volume_indices(caster.adjacency, light.position, facing, volume.volume);
+    e.method = "silhouette of a closed 2-manifold (" + std::to_string(mesh.triangles.size()) + " triangles)";
+    e.mesh_volume = int(light_plan.mesh_volumes.size());
+    light_plan.mesh_volumes.push_back(std::move(volume));
+  } else {
+    e.volume = per_triangle_volume(mesh.positions, mesh.triangles, light.position);
+    e.method = "per-triangle volumes (slower): not a closed 2-manifold (" + joined(mesh.report.topology_problems()) + ")";
+  }
+  return e;
+}
+
 }  // namespace
 
 RenderPlan make_render_plan(const Scene& scene, const RenderSettings& settings) {
+  return make_render_plan(scene, prepare_mesh_casters(scene), settings);
+}
+
+RenderPlan make_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshes, const RenderSettings& settings) {
   RenderPlan plan;
   plan.settings = settings;
   plan.camera = scene.camera;
@@ -44,9 +72,18 @@ RenderPlan make_render_plan(const Scene& scene, const RenderSettings& settings) 
     LightPlan lp;
     for (const Sphere& s : scene.spheres) lp.casters.push_back(sphere_entry(s, light, settings.sphere_segments));
     for (const Triangle& t : scene.triangles) lp.casters.push_back(triangle_entry(t, light));
+    for (size_t m = 0; m < scene.meshes.size(); ++m) lp.casters.push_back(mesh_entry(scene, m, meshes[m], light, lp));
     std::stable_sort(lp.casters.begin(), lp.casters.end(),  // file order, for --explain
                      [](const CasterEntry& a, const CasterEntry& b) { return a.where.line < b.where.line; });
     for (const CasterEntry& e : lp.casters) append_volume(lp.all_volumes, e.volume);
+    lp.side_quads = lp.all_volumes.side_quads;
+    lp.light_cap_triangles = lp.all_volumes.light_cap_triangles;
+    lp.dark_cap_triangles = lp.all_volumes.dark_cap_triangles;
+    for (const MeshVolumePlan& m : lp.mesh_volumes) {
+      lp.side_quads += m.volume.side_quads;
+      lp.light_cap_triangles += m.volume.light_cap_triangles;
+      lp.dark_cap_triangles += m.volume.dark_cap_triangles;
+    }
     plan.lights.push_back(std::move(lp));
   }
   return plan;
@@ -64,14 +101,18 @@ void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& 
   for (size_t i = 0; i < plan.lights.size(); ++i) {
     const Light& light = scene.lights[i];
     const LightPlan& lp = plan.lights[i];
-    out << "  light " << i + 1 << " at " << light.position << " (line " << light.where.line << "): "
-        << lp.all_volumes.side_quads << " side quads, " << lp.all_volumes.light_cap_triangles << " light-cap and "
-        << lp.all_volumes.dark_cap_triangles << " dark-cap triangles\n";
+    out << "  light " << i + 1 << " at " << light.position << " (line " << light.where.line << "): " << lp.side_quads
+        << " side quads, " << lp.light_cap_triangles << " light-cap and " << lp.dark_cap_triangles << " dark-cap triangles\n";
     for (const CasterEntry& e : lp.casters) {
       out << "    " << e.kind << " (line " << e.where.line << "): " << e.method;
-      if (!e.volume.triangles.empty())
+      if (e.mesh_volume >= 0) {
+        const MeshVolumeIndices& v = lp.mesh_volumes[size_t(e.mesh_volume)].volume;
+        out << ", " << v.side_quads << " quads + " << v.light_cap_triangles + v.dark_cap_triangles
+            << " cap triangles (static vertices, indices per frame)";
+      } else if (!e.volume.triangles.empty()) {
         out << ", " << e.volume.side_quads << " quads + " << e.volume.light_cap_triangles + e.volume.dark_cap_triangles
             << " cap triangles";
+      }
       out << "\n";
     }
   }

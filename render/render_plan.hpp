@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "mesh/scene.hpp"
+#include "silhouette/mesh_caster.hpp"
+#include "silhouette/mesh_volume.hpp"
 #include "silhouette/shadow_volume.hpp"
 
 namespace umbra {
@@ -19,15 +21,24 @@ struct RenderSettings {
 };
 
 struct CasterEntry {
-  std::string kind;    // "sphere" or "triangle"
+  std::string kind;    // "sphere", "triangle" or "mesh"
   FileLoc where;
   std::string method;  // how its volume was made, or why it has none
-  ShadowVolume volume;  // empty when it casts no shadow from this light
+  ShadowVolume volume;  // empty when it casts no shadow from this light, or when it is a mesh_volume
+  int mesh_volume = -1;  // for a mesh cast from its silhouette: index into LightPlan::mesh_volumes
+};
+
+// A silhouette volume as indices over the mesh's static vertex buffer.
+struct MeshVolumePlan {
+  size_t mesh = 0;  // index into Scene::meshes
+  MeshVolumeIndices volume;
 };
 
 struct LightPlan {
   std::vector<CasterEntry> casters;
-  ShadowVolume all_volumes;  // every caster's volume, one draw call
+  ShadowVolume all_volumes;                  // every other caster's volume, one draw call
+  std::vector<MeshVolumePlan> mesh_volumes;  // one draw call each
+  int side_quads = 0, light_cap_triangles = 0, dark_cap_triangles = 0;  // of all of them
 };
 
 struct RenderPlan {
@@ -38,6 +49,9 @@ struct RenderPlan {
 };
 
 // Requires the lights outside every sphere (require_lights_outside_spheres).
+// `meshes` is prepare_mesh_casters(scene), made once and kept across frames.
+RenderPlan make_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshes, const RenderSettings& settings);
+// The same for one frame: prepares the mesh casters itself.
 RenderPlan make_render_plan(const Scene& scene, const RenderSettings& settings);
 
 void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& plan);

@@ -107,8 +107,16 @@ void main() {
 inline constexpr const char* kVolumeVertex = R"(#version 330 core
 layout(location = 0) in vec4 position;  // w = 0: at infinity
 uniform mat4 view_projection;
+// Mesh volumes keep one static buffer whose vertices at infinity hold the
+// mesh point P itself; the light moves them to (P - L, 0) here.
+uniform bool extrude_from_light;
+uniform vec3 light_position;
 invariant gl_Position;
-void main() { gl_Position = view_projection * position; }
+void main() {
+  vec4 p = position;
+  if (extrude_from_light && position.w == 0.0) p = vec4(position.xyz - light_position, 0.0);
+  gl_Position = view_projection * p;
+}
 )";
 
 inline constexpr const char* kVolumeFragment = R"(#version 330 core

@@ -37,6 +37,10 @@ ShadowRenderer::ShadowRenderer(const Scene& scene, const RenderPlan& plan) : sce
   volume_program_ = std::make_unique<ShaderProgram>("volume", shaders::kVolumeVertex, shaders::kVolumeFragment);
   surfaces_ = std::make_unique<SurfaceBuffers>(scene);
   volumes_ = std::make_unique<VolumeBuffer>();
+  mesh_volumes_.resize(scene.meshes.size());
+  for (const LightPlan& lp : plan.lights)
+    for (const MeshVolumePlan& m : lp.mesh_volumes)
+      if (!mesh_volumes_[m.mesh]) mesh_volumes_[m.mesh] = std::make_unique<MeshVolumeBuffer>(scene.meshes[m.mesh].positions);
 
   const RenderSettings& s = plan.settings;
   const glm::mat4 view_projection(infinite_perspective(plan.camera.fovy_deg, double(s.width) / s.height, kNearPlane) *
@@ -110,10 +114,23 @@ void ShadowRenderer::count_shadow_volumes(size_t light) {
   // leaves the surface lit, whatever the rasteriser's rounding.
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(0.0f, 4.0f);
-  volumes_->upload(plan_.lights[light].all_volumes);
-  volume_program_->use();
-  volumes_->draw();
+  draw_volumes(light);
   baseline_state();
+}
+
+// Light `light`'s volumes with the volume program and the current state.
+void ShadowRenderer::draw_volumes(size_t light) {
+  const LightPlan& lp = plan_.lights[light];
+  volume_program_->use();
+  volume_program_->set("extrude_from_light", 0);
+  volumes_->upload(lp.all_volumes);
+  volumes_->draw();
+  volume_program_->set("extrude_from_light", 1);
+  volume_program_->set("light_position", f(scene_.lights[light].position));
+  for (const MeshVolumePlan& m : lp.mesh_volumes) {
+    mesh_volumes_[m.mesh]->upload_indices(m.volume.indices);
+    mesh_volumes_[m.mesh]->draw();
+  }
 }
 
 void ShadowRenderer::direct_light_pass(size_t light) {
@@ -137,9 +154,9 @@ void ShadowRenderer::show_volumes_pass() {
   glCullFace(GL_BACK);
   volume_program_->use();
   for (size_t i = 0; i < plan_.lights.size(); ++i) {
+    volume_program_->use();
     volume_program_->set("tint", tints[i % 3]);
-    volumes_->upload(plan_.lights[i].all_volumes);
-    volumes_->draw();
+    draw_volumes(i);
   }
   baseline_state();
 }

@@ -8,6 +8,7 @@
 //      diffuse + specular term where the stencil is zero.
 
 #include <memory>
+#include <vector>
 
 #include "mesh/scene.hpp"
 #include "render/image.hpp"
@@ -18,6 +19,7 @@ namespace umbra {
 class ShaderProgram;
 class SurfaceBuffers;
 class VolumeBuffer;
+class MeshVolumeBuffer;
 
 class ShadowRenderer {
  public:
@@ -42,6 +44,7 @@ class ShadowRenderer {
   void show_volumes_pass();
   void mask_pass();
   void draw_surfaces(int pass, size_t light);
+  void draw_volumes(size_t light);
   Image read_pixels(int channels) const;
 
   const Scene& scene_;
@@ -49,6 +52,7 @@ class ShadowRenderer {
   std::unique_ptr<ShaderProgram> triangle_program_, sphere_program_, volume_program_;
   std::unique_ptr<SurfaceBuffers> surfaces_;
   std::unique_ptr<VolumeBuffer> volumes_;
+  std::vector<std::unique_ptr<MeshVolumeBuffer>> mesh_volumes_;  // per scene mesh; null for the per-triangle method
 };
 
 }  // namespace umbra

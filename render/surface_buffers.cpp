@@ -3,24 +3,42 @@
 #include <algorithm>
 
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include "render/gl.hpp"
 
 namespace umbra {
 
 SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
-  // Triangles sorted by material so each material is one draw call.
-  std::vector<const Triangle*> sorted;
-  for (const Triangle& t : scene.triangles) sorted.push_back(&t);
-  std::stable_sort(sorted.begin(), sorted.end(),
-                   [](const Triangle* a, const Triangle* b) { return a->material < b->material; });
+  // The spec's triangles and every mesh's, grouped by material and by
+  // whether they belong to a closed mesh, one draw call per group; flat
+  // normals, as the shadows are flat-faced. A closed mesh's back faces are
+  // culled when the eye is outside its bounding box: then they are never
+  // visible, and where rasterisation lets one show at an outline pixel,
+  // two-sided shading would paint it unlit.
+  struct Drawn {
+    Triangle triangle;
+    bool closed;
+  };
+  std::vector<Drawn> all;
+  for (const Triangle& t : scene.triangles) all.push_back({t, false});
+  for (const Mesh& mesh : scene.meshes) {
+    const glm::dvec3& eye = scene.camera.eye;
+    const bool eye_outside = glm::any(glm::lessThan(eye, mesh.bounds_min)) || glm::any(glm::greaterThan(eye, mesh.bounds_max));
+    const bool closed = mesh.report.shadow_method() == ShadowMethod::kSilhouette && eye_outside;
+    for (const auto& t : mesh.triangles)
+      all.push_back({{mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]], mesh.material, mesh.where}, closed});
+  }
+  std::stable_sort(all.begin(), all.end(), [](const Drawn& a, const Drawn& b) {
+    return a.triangle.material != b.triangle.material ? a.triangle.material < b.triangle.material : a.closed < b.closed;
+  });
   std::vector<float> data;  // position xyz, normal xyz
-  for (const Triangle* t : sorted) {
-    const glm::dvec3 n = glm::cross(t->b - t->a, t->c - t->a);  // flipped toward the eye in the shader
-    for (const glm::dvec3& p : {t->a, t->b, t->c})
+  for (const auto& [t, closed] : all) {
+    const glm::dvec3 n = glm::cross(t.b - t.a, t.c - t.a);  // flipped toward the eye in the shader
+    for (const glm::dvec3& p : {t.a, t.b, t.c})
       data.insert(data.end(), {float(p.x), float(p.y), float(p.z), float(n.x), float(n.y), float(n.z)});
-    if (groups_.empty() || groups_.back().material != t->material)
-      groups_.push_back({t->material, int(data.size() / 6) - 3, 0});
+    if (groups_.empty() || groups_.back().material != t.material || groups_.back().closed != closed)
+      groups_.push_back({t.material, closed, int(data.size() / 6) - 3, 0});
     groups_.back().vertex_count += 3;
   }
   glGenVertexArrays(1, &triangle_vao_);
@@ -57,8 +75,13 @@ SurfaceBuffers::~SurfaceBuffers() {
 }
 
 void SurfaceBuffers::draw_triangle_group(const TriangleGroup& group) const {
+  if (group.closed) {
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+  }
   glBindVertexArray(triangle_vao_);
   glDrawArrays(GL_TRIANGLES, group.first_vertex, group.vertex_count);
+  glDisable(GL_CULL_FACE);
 }
 
 void SurfaceBuffers::draw_sphere_box() const {
@@ -68,6 +91,42 @@ void SurfaceBuffers::draw_sphere_box() const {
   glBindVertexArray(box_vao_);
   glDrawElements(GL_TRIANGLES, 36, GL_UNSIGNED_INT, nullptr);
   glDisable(GL_CULL_FACE);
+}
+
+MeshVolumeBuffer::MeshVolumeBuffer(const std::vector<glm::dvec3>& positions) {
+  std::vector<float> vertices;
+  vertices.reserve(positions.size() * 8);
+  for (float w : {1.0f, 0.0f})
+    for (const glm::dvec3& p : positions) vertices.insert(vertices.end(), {float(p.x), float(p.y), float(p.z), w});
+  glGenVertexArrays(1, &vao_);
+  glGenBuffers(1, &vbo_);
+  glGenBuffers(1, &ibo_);
+  glBindVertexArray(vao_);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data(), GL_STATIC_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ibo_);
+  glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 4 * sizeof(float), nullptr);
+  glEnableVertexAttribArray(0);
+  glBindVertexArray(0);
+}
+
+MeshVolumeBuffer::~MeshVolumeBuffer() {
+  const GLuint buffers[] = {vbo_, ibo_};
+  glDeleteBuffers(2, buffers);
+  glDeleteVertexArrays(1, &vao_);
+}
+
+void MeshVolumeBuffer::upload_indices(const std::vector<uint32_t>& indices) {
+  glBindVertexArray(vao_);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(uint32_t)), indices.data(), GL_STREAM_DRAW);
+  glBindVertexArray(0);
+  index_count_ = int(indices.size());
+}
+
+void MeshVolumeBuffer::draw() const {
+  if (index_count_ == 0) return;
+  glBindVertexArray(vao_);
+  glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
 }
 
 VolumeBuffer::VolumeBuffer() {

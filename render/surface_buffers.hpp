@@ -19,6 +19,7 @@ class SurfaceBuffers {
 
   struct TriangleGroup {
     int material = 0;
+    bool closed = false;  // from closed meshes, facing outward: back faces are culled
     int first_vertex = 0;
     int vertex_count = 0;
   };
@@ -30,6 +31,24 @@ class SurfaceBuffers {
   std::vector<TriangleGroup> groups_;
   unsigned triangle_vao_ = 0, triangle_vbo_ = 0;
   unsigned box_vao_ = 0, box_vbo_ = 0, box_ibo_ = 0;
+};
+
+// A mesh's shadow volume vertices, uploaded once: its N points with w = 1,
+// then the same N points with w = 0, which the volume shader moves to
+// infinity away from the light. Each frame only the indices change.
+class MeshVolumeBuffer {
+ public:
+  explicit MeshVolumeBuffer(const std::vector<glm::dvec3>& positions);
+  ~MeshVolumeBuffer();
+  MeshVolumeBuffer(const MeshVolumeBuffer&) = delete;
+  MeshVolumeBuffer& operator=(const MeshVolumeBuffer&) = delete;
+
+  void upload_indices(const std::vector<uint32_t>& indices);
+  void draw() const;
+
+ private:
+  unsigned vao_ = 0, vbo_ = 0, ibo_ = 0;
+  int index_count_ = 0;
 };
 
 class VolumeBuffer {

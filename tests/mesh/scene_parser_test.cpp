@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 namespace umbra {
 namespace {
 
@@ -144,10 +147,76 @@ TEST(SceneParserErrors, UnterminatedQuote) {
   EXPECT_EQ(error_of(kLight + "mesh \"bunny.obj\n"), "t.scene:2:6: unterminated quoted path (missing closing \")");
 }
 
-TEST(SceneParserErrors, MeshesAreNotSupportedYetButTheirSyntaxIsChecked) {
+TEST(SceneParserErrors, MeshStatementSyntaxIsCheckedBeforeAnyFileIsRead) {
   EXPECT_EQ(error_of(kLight + "mesh \"my bunny.obj\" scale 2 rotate 0 1 0 90 translate 0 0 0\n"),
-            "t.scene:2:1: mesh statements are not supported yet: this version renders spheres and triangles");
+            "t.scene:2:6: mesh file \"my bunny.obj\": cannot open: No such file or directory");
   EXPECT_EQ(error_of(kLight + "mesh bunny.obj scale two\n"), "t.scene:2:22: expected a number for the mesh scale, got \"two\"");
+  EXPECT_EQ(error_of(kLight + "mesh bunny.obj scale 0\n"), "t.scene:2:22: the mesh scale must be positive, got 0");
+  EXPECT_EQ(error_of(kLight + "mesh bunny.obj rotate 0 0 0 30\n"),
+            "t.scene:2:23: the mesh rotation axis must not be (0, 0, 0)");
+  // A later syntax error is reported before the missing file.
+  EXPECT_EQ(error_of(kLight + "mesh bunny.obj\nsphere 0 0 0 -1\n"), "t.scene:3:14: the sphere radius must be positive, got -1");
+}
+
+// Scenes that load real mesh files, written into a fresh folder.
+class SceneMeshes : public testing::Test {
+ protected:
+  std::string folder_ = ::testing::TempDir() + "umbra-scene-meshes/";
+  void SetUp() override { std::filesystem::create_directories(folder_ + "parts"); }
+  void write(const std::string& name, const std::string& text) { std::ofstream(folder_ + name) << text; }
+  Scene parse(const std::string& text) { return parse_scene_text(text, folder_ + "s.scene"); }
+  std::string error(const std::string& text) {
+    try {
+      parse(text);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  }
+};
+
+const char* const kTetrahedronObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+
+TEST_F(SceneMeshes, MeshIsLoadedRelativeToTheSceneAndTransformedScaleRotateTranslate) {
+  write("parts/tet.obj", kTetrahedronObj);
+  const Scene scene = parse("light 0 0 5\nmaterial red diffuse 1 0 0\n"
+                            "mesh parts/tet.obj translate 1 2 3 rotate 0 0 1 90 material red scale 2\n");
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  const Mesh& m = scene.meshes[0];
+  EXPECT_EQ(m.path, folder_ + "parts/tet.obj");
+  EXPECT_EQ(m.material, 1);
+  EXPECT_EQ(m.where.line, 3);
+  ASSERT_EQ(m.positions.size(), 4u);
+  // (1, 0, 0) scaled to (2, 0, 0), turned 90 degrees about z to (0, 2, 0), moved to (1, 4, 3).
+  EXPECT_NEAR(m.positions[1].x, 1.0, 1e-15);
+  EXPECT_NEAR(m.positions[1].y, 4.0, 1e-15);
+  EXPECT_NEAR(m.positions[1].z, 3.0, 1e-15);
+  EXPECT_EQ(m.triangles.size(), 4u);
+  EXPECT_EQ(m.report.shadow_method(), ShadowMethod::kSilhouette);
+  EXPECT_TRUE(scene.warnings.empty());
+}
+
+TEST_F(SceneMeshes, OpenMeshGetsAWarningThatNamesItsFallback) {
+  write("open.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n");
+  const Scene scene = parse("light 0 0 5\nmesh open.obj\n");
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  EXPECT_EQ(scene.warnings[0].where.str(), folder_ + "s.scene:2:1");
+  EXPECT_EQ(scene.warnings[0].message,
+            "mesh \"open.obj\" is not a closed 2-manifold (3 border edges in 1 hole): its shadow comes from per-triangle "
+            "volumes (slower)");
+  EXPECT_EQ(scene.meshes[0].report.shadow_method(), ShadowMethod::kPerTriangle);
+}
+
+TEST_F(SceneMeshes, ErrorInsideTheMeshFileNamesThatFileAndTheStatement) {
+  write("bad.obj", "v 0 0 0\nv 1 0 nan\n");
+  EXPECT_EQ(error("light 0 0 5\n\nmesh bad.obj\n"),
+            folder_ + "bad.obj:2:7: the vertex z coordinate is \"nan\", not a finite number (in the mesh of " + folder_ +
+                "s.scene:3:1)");
+  write("short.stl", std::string(90, 'x'));
+  EXPECT_EQ(error("light 0 0 5\nmesh short.stl\n"),
+            folder_ + "s.scene:2:6: mesh file \"" + folder_ +
+                "short.stl\": not a valid STL file: as binary STL its 2021161080 triangles need 101058054084 bytes but "
+                "the file has 90, and it does not begin with \"solid\" as ascii STL does");
 }
 
 TEST(SceneParserErrors, CameraNeedsEveryPart) {
