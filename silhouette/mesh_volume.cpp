@@ -22,21 +22,24 @@ void mesh_volume_indices(const MeshAdjacency& mesh, const glm::dvec3& light, std
   out.clear();
   volume.light_cap_triangles = volume.dark_cap_triangles = volume.side_quads = 0;
   for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    if (facing[t]) continue;
     const auto& tri = mesh.triangles[t];
-    if (facing[t]) {
-      out.insert(out.end(), {tri[0], tri[1], tri[2]});
-      ++volume.light_cap_triangles;
-    } else {
-      // Facing away from the light, so already facing out of the volume's far end.
-      out.insert(out.end(), {tri[0] + far, tri[1] + far, tri[2] + far});
-      ++volume.dark_cap_triangles;
-    }
+    // The near cap is the faces that turn away from the light, reversed so
+    // that they face it: the volume starts behind the mesh's lit side, which
+    // is then never on its boundary (no self-shadowing where rasterisation
+    // rounds differently for a surface and its cap, as at outlines).
+    out.insert(out.end(), {tri[0], tri[2], tri[1]});
+    ++volume.light_cap_triangles;
+    // The far cap is the same faces at infinity, already facing away.
+    out.insert(out.end(), {tri[0] + far, tri[1] + far, tri[2] + far});
+    ++volume.dark_cap_triangles;
   }
   for (const MeshAdjacency::Edge& e : mesh.edges) {
     if (facing[e.left_face] == facing[e.right_face]) continue;
-    // a -> b as the facing face runs along it: seen from the light the facing
-    // face is counter-clockwise, so the quad (b, a, a', b') faces outward, as
-    // for a triangle's sides (extrude_to_infinity).
+    // a -> b as the facing face runs along it (the reversed non-facing face
+    // of the near cap runs a -> b too): seen from the light that is
+    // counter-clockwise, so the quad (b, a, a', b') faces outward, as for a
+    // triangle's sides (extrude_to_infinity).
     const uint32_t a = facing[e.left_face] ? e.from : e.to;
     const uint32_t b = facing[e.left_face] ? e.to : e.from;
     out.insert(out.end(), {b, a, a + far, b, a + far, b + far});

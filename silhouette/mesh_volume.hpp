@@ -1,8 +1,12 @@
 #pragma once
 // The shadow volume of a closed, consistently oriented triangle mesh from its
 // silhouette: side quads extruded to infinity from the silhouette edges,
-// oriented by the face that faces the light; light cap = the facing faces;
-// dark cap = the other faces, at infinity.
+// oriented by the face that faces the light; near cap = the faces that do not
+// face the light, reversed; dark cap = the same faces at infinity. This is the
+// shadow behind the mesh's lit side less the mesh's own inside, which no
+// visible point is in: the same shadow for everything the eye can see, and
+// the lit faces are never on the volume's boundary, so they cannot shadow
+// themselves by rounding.
 
 #include <cstdint>
 #include <vector>
@@ -21,7 +25,7 @@ namespace umbra {
 struct MeshVolumeIndices {
   std::vector<uint32_t> indices;  // triangles, counter-clockwise seen from outside the volume
   int side_quads = 0;
-  int light_cap_triangles = 0;
+  int light_cap_triangles = 0;  // the near cap
   int dark_cap_triangles = 0;
 };
 

@@ -11,11 +11,15 @@
 #include <string>
 
 #include <glm/geometric.hpp>
+#include <gtest/gtest.h>
 
+#include "mesh/scene_checks.hpp"
 #include "render/camera_transform.hpp"
+#include "render/headless_context.hpp"
 #include "render/image.hpp"
 #include "render/ray_cast.hpp"
 #include "render/render_plan.hpp"
+#include "render/shadow_renderer.hpp"
 #include "silhouette/sphere_volume.hpp"
 
 namespace umbra::test {
@@ -79,6 +83,27 @@ inline MaskComparison compare_with_reference(const Scene& scene, const RenderPla
       }
     }
   return r;
+}
+
+// Renders each light's mask at width x height and checks every pixel.
+inline void expect_masks_match_reference(Scene scene, int width, int height, int segments, double light_angle = 0.0) {
+  rotate_lights_about_z(scene, light_angle);
+  require_lights_outside_spheres(scene);
+  RenderSettings settings;
+  settings.width = width;
+  settings.height = height;
+  settings.sphere_segments = segments;
+  const RenderPlan plan = make_render_plan(scene, settings);
+  HeadlessContext context(width, height);
+  ShadowRenderer renderer(scene, plan);
+  for (size_t light = 0; light < scene.lights.size(); ++light) {
+    const Image mask = renderer.render_mask(light);
+    const MaskComparison r = compare_with_reference(scene, plan, mask, light);
+    EXPECT_EQ(r.unexplained, 0) << scene.path << " light " << light + 1 << ": " << r.first_unexplained << " ("
+                                << r.differing << " of " << r.surface_pixels << " surface pixels differ, "
+                                << r.excused_boundary << " on an edge, " << r.excused_ngon << " in the N-gon band)";
+    EXPECT_GT(r.surface_pixels, width * height / 10) << "the scene should fill the view";
+  }
 }
 
 }  // namespace umbra::test

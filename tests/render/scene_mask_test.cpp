@@ -17,35 +17,14 @@ namespace {
 
 std::string scene_path(const std::string& name) { return std::string(UMBRA_SOURCE_DIR) + "/scenes/" + name; }
 
-// Renders each light's mask at width x height and checks every pixel.
-void expect_masks_match_reference(Scene scene, int width, int height, int segments, double light_angle = 0.0) {
-  rotate_lights_about_z(scene, light_angle);
-  require_lights_outside_spheres(scene);
-  RenderSettings settings;
-  settings.width = width;
-  settings.height = height;
-  settings.sphere_segments = segments;
-  const RenderPlan plan = make_render_plan(scene, settings);
-  HeadlessContext context(width, height);
-  ShadowRenderer renderer(scene, plan);
-  for (size_t light = 0; light < scene.lights.size(); ++light) {
-    const Image mask = renderer.render_mask(light);
-    const test::MaskComparison r = test::compare_with_reference(scene, plan, mask, light);
-    EXPECT_EQ(r.unexplained, 0) << scene.path << " light " << light + 1 << ": " << r.first_unexplained << " ("
-                                << r.differing << " of " << r.surface_pixels << " surface pixels differ, "
-                                << r.excused_boundary << " on an edge, " << r.excused_ngon << " in the N-gon band)";
-    EXPECT_GT(r.surface_pixels, width * height / 10) << "the scene should fill the view";
-  }
-}
-
 class BundledScene : public testing::TestWithParam<std::string> {};
 
 TEST_P(BundledScene, MaskMatchesExactShadowRays) {
-  expect_masks_match_reference(parse_scene_file(scene_path(GetParam())), 240, 180, 64);
+  test::expect_masks_match_reference(parse_scene_file(scene_path(GetParam())), 240, 180, 64);
 }
 
 TEST_P(BundledScene, MaskMatchesExactShadowRaysWithTheLightRotated) {
-  expect_masks_match_reference(parse_scene_file(scene_path(GetParam())), 160, 160, 32, 137.0);
+  test::expect_masks_match_reference(parse_scene_file(scene_path(GetParam())), 160, 160, 32, 137.0);
 }
 
 std::vector<std::string> bundled_scenes() {
@@ -68,13 +47,13 @@ TEST(ZFail, EyeInsideAShadowVolumeStillGetsCorrectShadows) {
   const Scene scene = parse_scene_file(scene_path("camera_in_shadow.scene"));
   // The premise: the eye is in the shadow of light 1 (z-pass would miscount).
   ASSERT_TRUE(shadow_ray_blocked(scene, scene.camera.eye, -1, scene.lights[0].position));
-  expect_masks_match_reference(scene, 200, 200, 64);
+  test::expect_masks_match_reference(scene, 200, 200, 64);
 }
 
 TEST(ZFail, SphereShadowErrorIsConfinedToTheNgonBand) {
   // With a coarse hexagon (spec figure 7) the band is wide; every difference
   // must still be explained by it or by a pixel edge.
-  expect_masks_match_reference(parse_scene_file(scene_path("two_spheres.scene")), 200, 200, 6);
+  test::expect_masks_match_reference(parse_scene_file(scene_path("two_spheres.scene")), 200, 200, 6);
 }
 
 TEST(Shading, LitAndShadowedFloorPixelsHaveThePhongValues) {

@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <random>
 #include <set>
 
@@ -95,19 +96,22 @@ TEST(MeshSilhouette, SphereLitFromAboveOutlinesItsEquator) {
 }
 
 TEST(MeshVolume, CapsAndQuadsOfTheCubeLitFromAbove) {
+  // The top face's 2 triangles face (0.5, 0.5, 5); the other 10 make both caps.
   const ShadowVolume v = mesh_shadow_volume(adjacency_of(unit_cube()), {0.5, 0.5, 5});
   EXPECT_EQ(v.side_quads, 4);
-  EXPECT_EQ(v.light_cap_triangles, 2);
+  EXPECT_EQ(v.light_cap_triangles, 10);
   EXPECT_EQ(v.dark_cap_triangles, 10);
-  int finite_triangles = 0;
+  int near_cap = 0;
   for (const auto& tri : v.triangles) {
     if (v.vertices[tri[0]].w == 0.0 || v.vertices[tri[1]].w == 0.0 || v.vertices[tri[2]].w == 0.0) continue;
-    ++finite_triangles;  // a light-cap triangle: it faces the light
-    EXPECT_GT(orientation(glm::dvec3(v.vertices[tri[0]]), glm::dvec3(v.vertices[tri[1]]), glm::dvec3(v.vertices[tri[2]]),
+    ++near_cap;  // a near-cap triangle: a face turned away from the light, reversed to face it (or edge-on)
+    EXPECT_GE(orientation(glm::dvec3(v.vertices[tri[0]]), glm::dvec3(v.vertices[tri[1]]), glm::dvec3(v.vertices[tri[2]]),
                           {0.5, 0.5, 5}),
               0);
+    EXPECT_LT(glm::dvec3(v.vertices[tri[0]]).z + glm::dvec3(v.vertices[tri[1]]).z + glm::dvec3(v.vertices[tri[2]]).z, 3.0)
+        << "the lit top face is not part of the volume";
   }
-  EXPECT_EQ(finite_triangles, 2);
+  EXPECT_EQ(near_cap, 10);
 }
 
 // Lights all around, 4 to 14 units from the centre.
@@ -131,7 +135,11 @@ TEST(MeshVolume, ConvexMeshesGiveClosedOrientedManifoldVolumes) {
       ASSERT_TRUE(is_closed_and_consistently_oriented(v)) << mesh.triangles.size() << " triangles, light " << light.x << " "
                                                           << light.y << " " << light.z;
       EXPECT_GE(v.side_quads, 3);
-      EXPECT_EQ(size_t(v.light_cap_triangles + v.dark_cap_triangles), mesh.triangles.size());
+      std::vector<uint8_t> facing;
+      classify_faces(mesh, light, facing);
+      const int turned_away = int(std::count(facing.begin(), facing.end(), 0));
+      EXPECT_EQ(v.light_cap_triangles, turned_away);
+      EXPECT_EQ(v.dark_cap_triangles, turned_away);
     }
   }
 }
