@@ -5,6 +5,7 @@
 
 #include "tools/check_command.hpp"
 #include "tools/render_command.hpp"
+#include "tools/volume_command.hpp"
 
 namespace {
 
@@ -16,6 +17,8 @@ commands:
   render SCENE -o OUT.png   render a scene headless to a PNG (see umbra render --help)
   check MESH...             is each mesh a closed 2-manifold, and if not, why
                             (see umbra check --help)
+  volume SCENE -o OUT.obj   write a light's shadow volumes as a mesh to look at
+                            (see umbra volume --help)
 
   umbra --help, umbra --version
 )";
@@ -34,6 +37,7 @@ int main(int argc, char** argv) {
   }
   if (args[0] == "render") return umbra::run_render_command({args.begin() + 1, args.end()});
   if (args[0] == "check") return umbra::run_check_command({args.begin() + 1, args.end()});
+  if (args[0] == "volume") return umbra::run_volume_command({args.begin() + 1, args.end()});
   std::cerr << "umbra: unknown command \"" << args[0] << "\"\n" << kUsage;
   return 2;
 }

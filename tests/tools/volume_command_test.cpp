@@ -1,0 +1,53 @@
+// `umbra volume`: the volumes of a scene as a mesh file that reads back as
+// closed, outward surfaces.
+#include <gtest/gtest.h>
+
+#include "mesh/mesh_check.hpp"
+#include "mesh/mesh_file.hpp"
+#include "tests/tools/command_fixture.hpp"
+
+namespace umbra {
+namespace {
+
+using test::CommandResult;
+namespace fs = std::filesystem;
+
+class VolumeCommand : public test::CommandTest {};
+
+TEST_F(VolumeCommand, IcosphereVolumeReadsBackAsAClosedOutwardSurface) {
+  // The scene without its floor: the icosphere's and the sphere's volumes, apart.
+  const std::string scene = write("s.scene", "light 0.2 0.7 1.8\nmesh " + std::string(UMBRA_SOURCE_DIR) +
+                                                 "/scenes/meshes/icosphere.obj scale 0.3 translate -0.45 0 -0.3\n"
+                                                 "sphere 0.45 0 -0.3 0.3\n");
+  const CommandResult r = run("volume " + scene + " -o " + path("v.obj") + " --segments 16");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("wrote " + path("v.obj") + ": 2 volume(s), ", 0), 0u) << r.out;
+  const std::string obj = read(path("v.obj"));
+  EXPECT_NE(obj.find("g mesh_line_2\n"), std::string::npos);
+  EXPECT_NE(obj.find("g sphere_line_3\n"), std::string::npos);
+  const MeshReport report = check_mesh(read_polygon_soup(path("v.obj")));
+  ASSERT_EQ(report.components.size(), 2u);
+  for (const ComponentReport& c : report.components) {
+    EXPECT_TRUE(c.closed);
+    EXPECT_EQ(c.genus, 0);
+    EXPECT_EQ(c.outward, true);
+  }
+  EXPECT_EQ(report.border_edges + report.non_manifold_edges + report.inconsistent_edges, 0u);
+}
+
+TEST_F(VolumeCommand, BadLightAndUsageErrors) {
+  const std::string scene = write("s.scene", "light 0 0 2\nsphere 0 0 0 0.5\n");
+  const CommandResult light = run("volume " + scene + " -o " + path("v.obj") + " --light 2");
+  EXPECT_EQ(light.status, 1);
+  EXPECT_EQ(light.err, scene + ": --light 2: the scene has 1 light(s)\n");
+  EXPECT_FALSE(fs::exists(path("v.obj")));
+  const CommandResult none = run("volume " + scene);
+  EXPECT_EQ(none.status, 2);
+  EXPECT_EQ(none.err, "umbra volume: no output file given (-o OUT.obj)\n(see umbra volume --help)\n");
+  const CommandResult far = run("volume " + scene + " -o x.obj --far 0");
+  EXPECT_EQ(far.status, 2);
+  EXPECT_EQ(far.err, "umbra volume: --far must be positive\n(see umbra volume --help)\n");
+}
+
+}  // namespace
+}  // namespace umbra

@@ -1,0 +1,157 @@
+#include "tools/volume_command.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+#include <glm/geometric.hpp>
+
+#include "mesh/scene_checks.hpp"
+#include "mesh/scene_parser.hpp"
+#include "render/render_plan.hpp"
+#include "tools/command_line.hpp"
+
+namespace umbra {
+
+const char* const kVolumeUsage =
+    R"(usage: umbra volume SCENE -o OUT.obj [options]
+
+Writes the shadow volumes of one light as an OBJ file, to look at in any mesh
+viewer: one group per caster, named for its kind and line, and faces
+oriented outward. A volume reaches infinity; here its vertices at infinity
+(P - L, 0) are put at P + D (P - L) / |P - L|, a finite distance D beyond
+the caster.
+
+options:
+  -o, --output OUT.obj  the file to write (required)
+  --light N             which light, counting from 1 (default 1)
+  --light-angle DEG     rotate every light about the z axis by DEG degrees
+  --segments N          sides of a sphere's tangent-circle N-gon (default 64)
+  --far D               distance of the far vertices beyond the caster (default 3)
+  -h, --help            show this help
+)";
+
+namespace {
+
+struct VolumeOptions {
+  std::string scene_path, output;
+  int light = 1;
+  double light_angle_deg = 0.0;
+  double far = 3.0;
+  RenderSettings settings;
+  bool help = false;
+};
+
+VolumeOptions parse_volume_options(const std::vector<std::string>& argv) {
+  VolumeOptions o;
+  Arguments args(argv);
+  while (!args.done()) {
+    const std::string a = args.take();
+    if (a == "-h" || a == "--help") o.help = true;
+    else if (a == "-o" || a == "--output") o.output = args.value_of(a);
+    else if (a == "--light") o.light = parse_int_in(a, args.value_of(a), 1, 1 << 20);
+    else if (a == "--light-angle") o.light_angle_deg = parse_finite_number(a, args.value_of(a));
+    else if (a == "--segments") o.settings.sphere_segments = parse_int_in(a, args.value_of(a), 3, 4096);
+    else if (a == "--far") {
+      o.far = parse_finite_number(a, args.value_of(a));
+      if (o.far <= 0) throw UsageError("--far must be positive");
+    } else if (a.size() > 1 && a[0] == '-') throw UsageError("unknown option " + a);
+    else if (o.scene_path.empty()) o.scene_path = a;
+    else throw UsageError("one scene at a time (got \"" + o.scene_path + "\" and \"" + a + "\")");
+  }
+  if (o.help) return o;
+  if (o.scene_path.empty()) throw UsageError("no scene file given");
+  if (o.output.empty()) throw UsageError("no output file given (-o OUT.obj)");
+  return o;
+}
+
+// The volume with every vertex finite, ready for a mesh file.
+std::vector<glm::dvec3> finite_vertices(const ShadowVolume& volume, const glm::dvec3& light, double far) {
+  std::vector<glm::dvec3> points;
+  for (const glm::dvec4& v : volume.vertices) {
+    if (v.w != 0.0) {
+      points.push_back(glm::dvec3(v) / v.w);
+    } else {
+      // (P - L, 0): P is light + direction, so this is `far` beyond P.
+      const glm::dvec3 direction = glm::dvec3(v);
+      points.push_back(light + direction + far * glm::normalize(direction));
+    }
+  }
+  return points;
+}
+
+void write_group(std::ostream& out, const std::string& name, const std::vector<glm::dvec3>& points,
+                 const std::vector<std::array<uint32_t, 3>>& triangles, size_t& written_vertices) {
+  out << "g " << name << "\n";
+  char line[128];
+  for (const glm::dvec3& p : points) {
+    std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", p.x, p.y, p.z);
+    out << line;
+  }
+  for (const auto& t : triangles)
+    out << "f " << written_vertices + t[0] + 1 << " " << written_vertices + t[1] + 1 << " " << written_vertices + t[2] + 1 << "\n";
+  written_vertices += points.size();
+}
+
+}  // namespace
+
+int run_volume_command(const std::vector<std::string>& argv) {
+  VolumeOptions options;
+  try {
+    options = parse_volume_options(argv);
+  } catch (const UsageError& e) {
+    std::cerr << "umbra volume: " << e.what() << "\n(see umbra volume --help)\n";
+    return 2;
+  }
+  if (options.help) {
+    std::cout << kVolumeUsage;
+    return 0;
+  }
+  try {
+    Scene scene = parse_scene_file(options.scene_path);
+    for (const Warning& w : scene.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
+    if (size_t(options.light) > scene.lights.size())
+      throw InputError({scene.path}, "--light " + std::to_string(options.light) + ": the scene has " +
+                                         std::to_string(scene.lights.size()) + " light(s)");
+    rotate_lights_about_z(scene, options.light_angle_deg);
+    require_lights_outside_spheres(scene);
+    const RenderPlan plan = make_render_plan(scene, options.settings);
+    const LightPlan& lp = plan.lights[size_t(options.light - 1)];
+    const glm::dvec3 light = scene.lights[size_t(options.light - 1)].position;
+
+    const std::string temporary = options.output + ".partial";
+    std::ofstream out(temporary);
+    out << "# shadow volumes of light " << options.light << " of " << scene.path << ", made by umbra volume\n"
+        << "# vertices at infinity are drawn " << options.far << " beyond the caster\n";
+    size_t written = 0, groups = 0;
+    for (const CasterEntry& e : lp.casters) {
+      ShadowVolume volume = e.volume;
+      if (e.mesh_volume >= 0) {
+        // A silhouette volume: indices over the mesh's points, then the same points at infinity.
+        const MeshVolumePlan& m = lp.mesh_volumes[size_t(e.mesh_volume)];
+        const std::vector<glm::dvec3>& positions = scene.meshes[m.mesh].positions;
+        for (const glm::dvec3& p : positions) volume.vertices.emplace_back(p, 1.0);
+        for (const glm::dvec3& p : positions) volume.vertices.emplace_back(p - light, 0.0);
+        for (size_t i = 0; i < m.volume.indices.size(); i += 3)
+          volume.triangles.push_back({m.volume.indices[i], m.volume.indices[i + 1], m.volume.indices[i + 2]});
+      }
+      if (volume.triangles.empty()) continue;
+      write_group(out, e.kind + "_line_" + std::to_string(e.where.line), finite_vertices(volume, light, options.far),
+                  volume.triangles, written);
+      ++groups;
+    }
+    out.close();
+    if (!out || std::rename(temporary.c_str(), options.output.c_str()) != 0) {
+      std::remove(temporary.c_str());
+      throw InputError({options.output}, "cannot write the volume file");
+    }
+    std::cout << "wrote " << options.output << ": " << groups << " volume(s), " << lp.side_quads << " side quads, "
+              << lp.light_cap_triangles << " near-cap and " << lp.dark_cap_triangles << " far-cap triangles\n";
+    return 0;
+  } catch (const std::exception& e) {
+    std::cerr << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace umbra
