@@ -15,6 +15,7 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev # exact predicates, mesh checks and repair
   libopenmesh-dev                    # half-edge meshes for silhouettes
   libgtest-dev python3               # tests (python3 reads the JSON that umbra check writes)
+  libbenchmark-dev                   # bench/silhouette_benchmark (Google Benchmark)
   libcgal-demo                       # CGAL's data meshes, for the tests
   admesh time bc                     # bench/check_benchmark.sh: the checker it compares with, timing
 )

@@ -128,7 +128,7 @@ void ShadowRenderer::draw_volumes(size_t light) {
   volume_program_->set("extrude_from_light", 1);
   volume_program_->set("light_position", f(scene_.lights[light].position));
   for (const MeshVolumePlan& m : lp.mesh_volumes) {
-    mesh_volumes_[m.mesh]->upload_indices(m.volume.indices);
+    mesh_volumes_[m.mesh]->upload_indices(m.volume.buffer.data(), m.volume.count);
     mesh_volumes_[m.mesh]->draw();
   }
 }

@@ -116,11 +116,11 @@ MeshVolumeBuffer::~MeshVolumeBuffer() {
   glDeleteVertexArrays(1, &vao_);
 }
 
-void MeshVolumeBuffer::upload_indices(const std::vector<uint32_t>& indices) {
+void MeshVolumeBuffer::upload_indices(const uint32_t* indices, size_t count) {
   glBindVertexArray(vao_);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(uint32_t)), indices.data(), GL_STREAM_DRAW);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(count * sizeof(uint32_t)), indices, GL_STREAM_DRAW);
   glBindVertexArray(0);
-  index_count_ = int(indices.size());
+  index_count_ = int(count);
 }
 
 void MeshVolumeBuffer::draw() const {

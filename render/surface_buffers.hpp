@@ -43,7 +43,7 @@ class MeshVolumeBuffer {
   MeshVolumeBuffer(const MeshVolumeBuffer&) = delete;
   MeshVolumeBuffer& operator=(const MeshVolumeBuffer&) = delete;
 
-  void upload_indices(const std::vector<uint32_t>& indices);
+  void upload_indices(const uint32_t* indices, size_t count);
   void draw() const;
 
  private:

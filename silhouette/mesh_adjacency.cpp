@@ -42,14 +42,15 @@ MeshAdjacency build_mesh_adjacency(const HalfEdgeMesh& mesh) {
     const double scale = kRelativeError * glm::length(ab) * glm::length(ac);
     adjacency.planes.push_back({n, glm::dot(n, a), rounded_up(scale), rounded_up(scale * reach)});
   }
-  adjacency.edges.reserve(mesh.n_edges());
+  adjacency.edge_faces.reserve(mesh.n_edges());
+  adjacency.edge_vertices.reserve(mesh.n_edges());
   for (const auto e : mesh.edges()) {
     const auto h = mesh.halfedge_handle(e, 0);
     const auto opposite = mesh.opposite_halfedge_handle(h);
     if (mesh.is_boundary(h) || mesh.is_boundary(opposite))
       throw std::invalid_argument("build_mesh_adjacency needs a closed mesh");
-    adjacency.edges.push_back({uint32_t(mesh.from_vertex_handle(h).idx()), uint32_t(mesh.to_vertex_handle(h).idx()),
-                               uint32_t(mesh.face_handle(h).idx()), uint32_t(mesh.face_handle(opposite).idx())});
+    adjacency.edge_faces.push_back({uint32_t(mesh.face_handle(h).idx()), uint32_t(mesh.face_handle(opposite).idx())});
+    adjacency.edge_vertices.push_back({uint32_t(mesh.from_vertex_handle(h).idx()), uint32_t(mesh.to_vertex_handle(h).idx())});
   }
   return adjacency;
 }

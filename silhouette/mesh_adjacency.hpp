@@ -23,16 +23,15 @@ struct MeshAdjacency {
     float error_per_light_distance;
     float error_constant;
   };
-  // An edge between two faces; `left_face` runs along it from `from` to `to`,
-  // `right_face` from `to` to `from`.
-  struct Edge {
-    uint32_t from, to, left_face, right_face;
-  };
-
   std::vector<glm::dvec3> positions;
   std::vector<std::array<uint32_t, 3>> triangles;
   std::vector<FacePlane> planes;
-  std::vector<Edge> edges;
+  // Edge e lies between faces edge_faces[e] = {left, right}: the left face
+  // runs along it from edge_vertices[e][0] to edge_vertices[e][1], the right
+  // face back. Two arrays, because every frame reads the faces of every edge
+  // but the vertices only of the few silhouette edges.
+  std::vector<std::array<uint32_t, 2>> edge_faces;
+  std::vector<std::array<uint32_t, 2>> edge_vertices;
 };
 
 // Requires a closed triangle mesh (every halfedge has a face).

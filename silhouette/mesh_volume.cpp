@@ -5,12 +5,26 @@
 
 namespace umbra {
 
+namespace {
+
+// Edge e as (a, b) in the direction its face that faces the light runs along
+// it, when it is a silhouette edge (its two faces disagree).
+inline bool oriented_silhouette_edge(const MeshAdjacency& mesh, const uint8_t* facing, size_t e, uint32_t& a, uint32_t& b) {
+  const auto [left, right] = mesh.edge_faces[e];
+  if (facing[left] == facing[right]) return false;
+  const auto [from, to] = mesh.edge_vertices[e];
+  a = facing[left] ? from : to;
+  b = facing[left] ? to : from;
+  return true;
+}
+
+}  // namespace
+
 std::vector<std::array<uint32_t, 2>> silhouette_edges(const MeshAdjacency& mesh, const std::vector<uint8_t>& facing) {
   std::vector<std::array<uint32_t, 2>> edges;
-  for (const MeshAdjacency::Edge& e : mesh.edges) {
-    if (facing[e.left_face] == facing[e.right_face]) continue;
-    edges.push_back(facing[e.left_face] ? std::array<uint32_t, 2>{e.from, e.to} : std::array<uint32_t, 2>{e.to, e.from});
-  }
+  uint32_t a = 0, b = 0;
+  for (size_t e = 0; e < mesh.edge_faces.size(); ++e)
+    if (oriented_silhouette_edge(mesh, facing.data(), e, a, b)) edges.push_back({a, b});
   return edges;
 }
 
@@ -18,33 +32,40 @@ void mesh_volume_indices(const MeshAdjacency& mesh, const glm::dvec3& light, std
                          MeshVolumeIndices& volume) {
   classify_faces(mesh, light, facing);
   const uint32_t far = uint32_t(mesh.positions.size());  // offset of the vertices at infinity
-  std::vector<uint32_t>& out = volume.indices;
-  out.clear();
-  volume.light_cap_triangles = volume.dark_cap_triangles = volume.side_quads = 0;
+  // Room for the most a volume can have (both caps of every face, a quad per
+  // edge), kept across frames and written through a pointer.
+  const size_t most = 6 * (mesh.triangles.size() + mesh.edge_faces.size());
+  if (volume.buffer.size() < most) volume.buffer.resize(most);
+  uint32_t* out = volume.buffer.data();
+  int caps = 0, quads = 0;
   for (size_t t = 0; t < mesh.triangles.size(); ++t) {
     if (facing[t]) continue;
     const auto& tri = mesh.triangles[t];
     // The near cap is the faces that turn away from the light, reversed so
     // that they face it: the volume starts behind the mesh's lit side, which
     // is then never on its boundary (no self-shadowing where rasterisation
-    // rounds differently for a surface and its cap, as at outlines).
-    out.insert(out.end(), {tri[0], tri[2], tri[1]});
-    ++volume.light_cap_triangles;
-    // The far cap is the same faces at infinity, already facing away.
-    out.insert(out.end(), {tri[0] + far, tri[1] + far, tri[2] + far});
-    ++volume.dark_cap_triangles;
+    // rounds differently for a surface and its cap, as at outlines). The far
+    // cap is the same faces at infinity, already facing away.
+    out[0] = tri[0], out[1] = tri[2], out[2] = tri[1];
+    out[3] = tri[0] + far, out[4] = tri[1] + far, out[5] = tri[2] + far;
+    out += 6;
+    ++caps;
   }
-  for (const MeshAdjacency::Edge& e : mesh.edges) {
-    if (facing[e.left_face] == facing[e.right_face]) continue;
-    // a -> b as the facing face runs along it (the reversed non-facing face
-    // of the near cap runs a -> b too): seen from the light that is
-    // counter-clockwise, so the quad (b, a, a', b') faces outward, as for a
-    // triangle's sides (extrude_to_infinity).
-    const uint32_t a = facing[e.left_face] ? e.from : e.to;
-    const uint32_t b = facing[e.left_face] ? e.to : e.from;
-    out.insert(out.end(), {b, a, a + far, b, a + far, b + far});
-    ++volume.side_quads;
+  uint32_t a = 0, b = 0;
+  for (size_t e = 0; e < mesh.edge_faces.size(); ++e) {
+    if (!oriented_silhouette_edge(mesh, facing.data(), e, a, b)) continue;
+    // a -> b as the facing face runs along it (the reversed near-cap face runs
+    // a -> b too): seen from the light that is counter-clockwise, so the quad
+    // (b, a, a', b') faces outward, as for a triangle's sides
+    // (extrude_to_infinity).
+    out[0] = b, out[1] = a, out[2] = a + far;
+    out[3] = b, out[4] = a + far, out[5] = b + far;
+    out += 6;
+    ++quads;
   }
+  volume.count = size_t(out - volume.buffer.data());
+  volume.light_cap_triangles = volume.dark_cap_triangles = caps;
+  volume.side_quads = quads;
 }
 
 ShadowVolume mesh_shadow_volume(const MeshAdjacency& mesh, const glm::dvec3& light) {
@@ -54,8 +75,8 @@ ShadowVolume mesh_shadow_volume(const MeshAdjacency& mesh, const glm::dvec3& lig
   ShadowVolume volume;
   for (const glm::dvec3& p : mesh.positions) volume.vertices.emplace_back(p, 1.0);
   for (const glm::dvec3& p : mesh.positions) volume.vertices.emplace_back(p - light, 0.0);
-  for (size_t i = 0; i < indices.indices.size(); i += 3)
-    volume.triangles.push_back({indices.indices[i], indices.indices[i + 1], indices.indices[i + 2]});
+  for (size_t i = 0; i < indices.count; i += 3)
+    volume.triangles.push_back({indices.buffer[i], indices.buffer[i + 1], indices.buffer[i + 2]});
   volume.side_quads = indices.side_quads;
   volume.light_cap_triangles = indices.light_cap_triangles;
   volume.dark_cap_triangles = indices.dark_cap_triangles;

@@ -23,7 +23,11 @@ namespace umbra {
 // change with the light, so a renderer keeps them in a static buffer and
 // sends only these indices each frame.
 struct MeshVolumeIndices {
-  std::vector<uint32_t> indices;  // triangles, counter-clockwise seen from outside the volume
+  // Triangles, counter-clockwise seen from outside the volume: the first
+  // `count` entries. The buffer keeps the largest size a volume of the mesh
+  // can have, so a frame neither allocates nor clears memory.
+  std::vector<uint32_t> buffer;
+  size_t count = 0;
   int side_quads = 0;
   int light_cap_triangles = 0;  // the near cap
   int dark_cap_triangles = 0;

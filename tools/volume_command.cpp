@@ -132,8 +132,8 @@ int run_volume_command(const std::vector<std::string>& argv) {
         const std::vector<glm::dvec3>& positions = scene.meshes[m.mesh].positions;
         for (const glm::dvec3& p : positions) volume.vertices.emplace_back(p, 1.0);
         for (const glm::dvec3& p : positions) volume.vertices.emplace_back(p - light, 0.0);
-        for (size_t i = 0; i < m.volume.indices.size(); i += 3)
-          volume.triangles.push_back({m.volume.indices[i], m.volume.indices[i + 1], m.volume.indices[i + 2]});
+        const uint32_t* indices = m.volume.buffer.data();
+        for (size_t i = 0; i < m.volume.count; i += 3) volume.triangles.push_back({indices[i], indices[i + 1], indices[i + 2]});
       }
       if (volume.triangles.empty()) continue;
       write_group(out, e.kind + "_line_" + std::to_string(e.where.line), finite_vertices(volume, light, options.far),

@@ -1,0 +1,150 @@
+// Google Benchmark: the per-frame work of a mesh shadow (face classification
+// and volume extraction over the flat adjacency arrays), beside the memory
+// bandwidth bound of that loop, and the silhouette volume against per-triangle
+// volumes for the same mesh, in triangles built and in render time.
+//
+//   build/bench/silhouette_benchmark [--benchmark_repetitions=5 --benchmark_report_aggregates_only=true]
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <numeric>
+
+#include "mesh/half_edge_mesh.hpp"
+#include "mesh/mesh_check.hpp"
+#include "mesh/scene_parser.hpp"
+#include "render/headless_context.hpp"
+#include "render/render_plan.hpp"
+#include "render/shadow_renderer.hpp"
+#include "silhouette/mesh_adjacency.hpp"
+#include "silhouette/mesh_caster.hpp"
+#include "silhouette/mesh_volume.hpp"
+
+namespace umbra {
+namespace {
+
+// A torus of n x m quads split into 2 n m triangles (radii 1 and 0.35).
+void torus(int n, int m, std::vector<glm::dvec3>& positions, std::vector<std::array<uint32_t, 3>>& triangles) {
+  const double tau = 6.283185307179586;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) {
+      const double u = tau * i / n, v = tau * j / m;
+      positions.push_back({(1 + 0.35 * std::cos(v)) * std::cos(u), (1 + 0.35 * std::cos(v)) * std::sin(u), 0.35 * std::sin(v)});
+    }
+  const auto at = [&](int i, int j) { return uint32_t((i % n) * m + (j % m)); };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) {
+      triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+}
+
+const MeshAdjacency& torus_adjacency(int n, int m) {
+  static std::map<std::pair<int, int>, MeshAdjacency> cache;
+  auto it = cache.find({n, m});
+  if (it == cache.end()) {
+    std::vector<glm::dvec3> positions;
+    std::vector<std::array<uint32_t, 3>> triangles;
+    torus(n, m, positions, triangles);
+    it = cache.emplace(std::make_pair(n, m), build_mesh_adjacency(build_half_edge_mesh(positions, triangles))).first;
+  }
+  return it->second;
+}
+
+// Bytes one classify + extract pass must at least read and write: the face
+// planes and the faces of every edge read once, the triangles of the faces
+// turned away from the light read, the facing flags written and read back,
+// and the indices written.
+double bytes_per_pass(const MeshAdjacency& mesh, const MeshVolumeIndices& volume) {
+  const double faces = double(mesh.planes.size());
+  return faces * sizeof(MeshAdjacency::FacePlane) + double(mesh.edge_faces.size()) * sizeof(mesh.edge_faces[0]) +
+         double(volume.light_cap_triangles) * sizeof(mesh.triangles[0]) + 2.0 * faces +
+         double(volume.count) * sizeof(uint32_t);
+}
+
+void BM_ClassifyAndExtract(benchmark::State& state) {
+  const MeshAdjacency& mesh = torus_adjacency(int(state.range(0)), int(state.range(1)));
+  std::vector<uint8_t> facing;
+  MeshVolumeIndices volume;
+  double angle = 0.0;
+  for (auto _ : state) {
+    angle += 0.01;  // the light orbits, as in the spec's animation
+    mesh_volume_indices(mesh, {3.0 * std::cos(angle), 3.0 * std::sin(angle), 2.0}, facing, volume);
+    benchmark::DoNotOptimize(volume.buffer.data());
+  }
+  state.counters["triangles"] = double(mesh.triangles.size());
+  state.counters["side_quads"] = volume.side_quads;
+  state.counters["bytes_per_pass"] = bytes_per_pass(mesh, volume);
+  state.SetBytesProcessed(int64_t(state.iterations() * bytes_per_pass(mesh, volume)));
+}
+// 250 x 200 quads: 100,000 triangles; 800 x 640: 1,024,000.
+BENCHMARK(BM_ClassifyAndExtract)->Args({250, 200})->Args({800, 640})->Unit(benchmark::kMillisecond);
+
+// The bound: streaming through as many bytes as one pass touches, reading
+// 8 bytes at a time and summing, which is what the memory system allows.
+void BM_MemoryBandwidth(benchmark::State& state) {
+  const MeshAdjacency& mesh = torus_adjacency(int(state.range(0)), int(state.range(1)));
+  std::vector<uint8_t> facing;
+  MeshVolumeIndices volume;
+  mesh_volume_indices(mesh, {3.0, 0.0, 2.0}, facing, volume);
+  const size_t words = size_t(bytes_per_pass(mesh, volume) / 8);
+  std::vector<uint64_t> buffer(words, 1);
+  for (auto _ : state) benchmark::DoNotOptimize(std::accumulate(buffer.begin(), buffer.end(), uint64_t(0)));
+  state.SetBytesProcessed(int64_t(state.iterations() * words * 8));
+}
+BENCHMARK(BM_MemoryBandwidth)->Args({250, 200})->Args({800, 640})->Unit(benchmark::kMillisecond);
+
+// CPU cost of the fallback for the same mesh: every triangle's own volume.
+void BM_PerTriangleVolumes(benchmark::State& state) {
+  std::vector<glm::dvec3> positions;
+  std::vector<std::array<uint32_t, 3>> triangles;
+  torus(int(state.range(0)), int(state.range(1)), positions, triangles);
+  ShadowVolume volume;
+  for (auto _ : state) {
+    volume = per_triangle_volume(positions, triangles, {3.0, 0.0, 2.0});
+    benchmark::DoNotOptimize(volume.triangles.data());
+  }
+  state.counters["side_quads"] = volume.side_quads;
+  state.counters["volume_triangles"] = double(volume.triangles.size());
+}
+BENCHMARK(BM_PerTriangleVolumes)->Args({250, 200})->Unit(benchmark::kMillisecond);
+
+// A frame through OSMesa (400 x 400, one light): a torus over a floor, its
+// shadow from the silhouette (argument 1) or from per-triangle volumes (0).
+void BM_RenderFrame(benchmark::State& state) {
+  const bool silhouette = state.range(2) != 0;
+  std::vector<glm::dvec3> positions;
+  std::vector<std::array<uint32_t, 3>> triangles;
+  torus(int(state.range(0)), int(state.range(1)), positions, triangles);
+  Scene scene = parse_scene_text("light 0.5 0.9 1.8\ntriangle -1 -1 -1 1 -1 -1 1 1 -1\ntriangle -1 -1 -1 1 1 -1 -1 1 -1\n",
+                                 "bench.scene");
+  PolygonSoup soup;
+  for (const glm::dvec3& p : positions) soup.add_point(0.5 * p + glm::dvec3(0, 0, -0.3), 0);
+  for (const auto& t : triangles) {
+    soup.corners.insert(soup.corners.end(), t.begin(), t.end());
+    soup.end_polygon(0);
+  }
+  MeshAnalysis analysis = analyse_mesh(soup, CheckOptions{0.0});
+  Mesh mesh;
+  mesh.positions = std::move(analysis.positions);
+  mesh.triangles = std::move(analysis.triangles);
+  mesh.report = std::move(analysis.report);
+  mesh.bounds_min = mesh.report.bbox_min;
+  mesh.bounds_max = mesh.report.bbox_max;
+  scene.meshes.push_back(std::move(mesh));
+  std::vector<MeshCaster> casters = prepare_mesh_casters(scene);
+  if (!silhouette) casters[0] = MeshCaster{};  // the per-triangle method
+  RenderSettings settings;
+  settings.width = settings.height = 400;
+  HeadlessContext context(400, 400);
+  RenderPlan plan = make_render_plan(scene, casters, settings);
+  ShadowRenderer renderer(scene, plan);
+  for (auto _ : state) benchmark::DoNotOptimize(renderer.render_image(false).pixels.data());
+  state.counters["volume_triangles"] = double(plan.lights[0].side_quads * 2 + plan.lights[0].light_cap_triangles +
+                                              plan.lights[0].dark_cap_triangles);
+}
+BENCHMARK(BM_RenderFrame)->Args({250, 200, 1})->Args({250, 200, 0})->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace umbra
+
+BENCHMARK_MAIN();
