@@ -75,6 +75,30 @@ TEST(MeshSilhouette, FaceWhosePlaneContainsTheLightDoesNotFaceIt) {
     EXPECT_TRUE(is_closed_and_consistently_oriented(mesh_shadow_volume(cube, light)));
 }
 
+TEST(MeshSilhouette, ClassificationAgreesWithTheExactPredicateForLightsOnAndNearAFacesPlane) {
+  // Lights on the plane of a tetrahedron's face, as rounding puts them, and a
+  // few units in the last place off it: where the plane test's rounding could
+  // flip the sign, the exact predicate must have decided.
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> coordinate(-1.0, 1.0), far(-50.0, 50.0);
+  int decided_near_zero = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const glm::dvec3 a(coordinate(random), coordinate(random), coordinate(random));
+    const glm::dvec3 b(coordinate(random), coordinate(random), coordinate(random));
+    const glm::dvec3 c(coordinate(random), coordinate(random), coordinate(random));
+    const glm::dvec3 d = (a + b + c) / 3.0 + glm::normalize(glm::cross(b - a, c - a)) * -0.5;  // behind face abc
+    const MeshAdjacency tetrahedron = adjacency_of(make_soup({a, b, c, d}, {{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {2, 3, 0}}));
+    glm::dvec3 light = a + far(random) * (b - a) + far(random) * (c - a);
+    light.z = std::nextafter(light.z, trial % 3 == 0 ? 10.0 : -10.0);
+    std::vector<uint8_t> facing;
+    classify_faces(tetrahedron, light, facing);
+    const int exact = orientation(a, b, c, light);
+    EXPECT_EQ(facing[0], exact > 0) << "trial " << trial;
+    decided_near_zero += std::abs(glm::dot(glm::cross(b - a, c - a), light - a)) < 1e-12;
+  }
+  EXPECT_GT(decided_near_zero, 1000) << "the lights should lie within rounding of the plane";
+}
+
 TEST(MeshSilhouette, OctahedronLitAlongAnAxisOutlinesTheSquareAcrossIt) {
   const MeshAdjacency octahedron = adjacency_of(test::octahedron());
   EXPECT_EQ(silhouette_of(octahedron, {0, 0, 10}), loop({{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}}));
