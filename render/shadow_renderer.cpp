@@ -40,7 +40,10 @@ ShadowRenderer::ShadowRenderer(const Scene& scene, const RenderPlan& plan) : sce
   mesh_volumes_.resize(scene.meshes.size());
   for (const LightPlan& lp : plan.lights)
     for (const MeshVolumePlan& m : lp.mesh_volumes)
-      if (!mesh_volumes_[m.mesh]) mesh_volumes_[m.mesh] = std::make_unique<MeshVolumeBuffer>(scene.meshes[m.mesh].positions);
+      if (!mesh_volumes_[m.mesh]) {
+        mesh_volumes_[m.mesh] = std::make_unique<VolumeBuffer>();
+        mesh_volumes_[m.mesh]->upload_mesh_vertices(scene.meshes[m.mesh].positions);
+      }
 
   const RenderSettings& s = plan.settings;
   const glm::mat4 view_projection(infinite_perspective(plan.camera.fovy_deg, double(s.width) / s.height, kNearPlane) *

@@ -19,7 +19,6 @@ namespace umbra {
 class ShaderProgram;
 class SurfaceBuffers;
 class VolumeBuffer;
-class MeshVolumeBuffer;
 
 class ShadowRenderer {
  public:
@@ -52,7 +51,7 @@ class ShadowRenderer {
   std::unique_ptr<ShaderProgram> triangle_program_, sphere_program_, volume_program_;
   std::unique_ptr<SurfaceBuffers> surfaces_;
   std::unique_ptr<VolumeBuffer> volumes_;
-  std::vector<std::unique_ptr<MeshVolumeBuffer>> mesh_volumes_;  // per scene mesh; null for the per-triangle method
+  std::vector<std::unique_ptr<VolumeBuffer>> mesh_volumes_;  // per scene mesh; null for the per-triangle method
 };
 
 }  // namespace umbra

@@ -93,42 +93,6 @@ void SurfaceBuffers::draw_sphere_box() const {
   glDisable(GL_CULL_FACE);
 }
 
-MeshVolumeBuffer::MeshVolumeBuffer(const std::vector<glm::dvec3>& positions) {
-  std::vector<float> vertices;
-  vertices.reserve(positions.size() * 8);
-  for (float w : {1.0f, 0.0f})
-    for (const glm::dvec3& p : positions) vertices.insert(vertices.end(), {float(p.x), float(p.y), float(p.z), w});
-  glGenVertexArrays(1, &vao_);
-  glGenBuffers(1, &vbo_);
-  glGenBuffers(1, &ibo_);
-  glBindVertexArray(vao_);
-  glBindBuffer(GL_ARRAY_BUFFER, vbo_);
-  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data(), GL_STATIC_DRAW);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ibo_);
-  glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 4 * sizeof(float), nullptr);
-  glEnableVertexAttribArray(0);
-  glBindVertexArray(0);
-}
-
-MeshVolumeBuffer::~MeshVolumeBuffer() {
-  const GLuint buffers[] = {vbo_, ibo_};
-  glDeleteBuffers(2, buffers);
-  glDeleteVertexArrays(1, &vao_);
-}
-
-void MeshVolumeBuffer::upload_indices(const uint32_t* indices, size_t count) {
-  glBindVertexArray(vao_);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(count * sizeof(uint32_t)), indices, GL_STREAM_DRAW);
-  glBindVertexArray(0);
-  index_count_ = int(count);
-}
-
-void MeshVolumeBuffer::draw() const {
-  if (index_count_ == 0) return;
-  glBindVertexArray(vao_);
-  glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
-}
-
 VolumeBuffer::VolumeBuffer() {
   glGenVertexArrays(1, &vao_);
   glGenBuffers(1, &vbo_);
@@ -147,17 +111,32 @@ VolumeBuffer::~VolumeBuffer() {
   glDeleteVertexArrays(1, &vao_);
 }
 
+void VolumeBuffer::upload_vertices(const std::vector<float>& xyzw, unsigned usage) {
+  glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(xyzw.size() * sizeof(float)), xyzw.data(), usage);
+}
+
+void VolumeBuffer::upload_indices(const uint32_t* indices, size_t count) {
+  glBindVertexArray(vao_);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(count * sizeof(uint32_t)), indices, GL_STREAM_DRAW);
+  glBindVertexArray(0);
+  index_count_ = int(count);
+}
+
 void VolumeBuffer::upload(const ShadowVolume& volume) {
   std::vector<float> vertices;
   vertices.reserve(volume.vertices.size() * 4);
   for (const glm::dvec4& v : volume.vertices) vertices.insert(vertices.end(), {float(v.x), float(v.y), float(v.z), float(v.w)});
-  glBindVertexArray(vao_);
-  glBindBuffer(GL_ARRAY_BUFFER, vbo_);
-  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data(), GL_STREAM_DRAW);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(volume.triangles.size() * sizeof(volume.triangles[0])),
-               volume.triangles.data(), GL_STREAM_DRAW);
-  glBindVertexArray(0);
-  index_count_ = int(volume.triangles.size() * 3);
+  upload_vertices(vertices, GL_STREAM_DRAW);
+  upload_indices(volume.triangles.empty() ? nullptr : volume.triangles[0].data(), volume.triangles.size() * 3);
+}
+
+void VolumeBuffer::upload_mesh_vertices(const std::vector<glm::dvec3>& positions) {
+  std::vector<float> vertices;
+  vertices.reserve(positions.size() * 8);
+  for (float w : {1.0f, 0.0f})
+    for (const glm::dvec3& p : positions) vertices.insert(vertices.end(), {float(p.x), float(p.y), float(p.z), w});
+  upload_vertices(vertices, GL_STATIC_DRAW);
 }
 
 void VolumeBuffer::draw() const {

@@ -1,7 +1,8 @@
 #pragma once
 // GPU buffers for what the scene draws: the triangles (flat normals, grouped
-// by material), a box that sphere fragments are ray-cast from, and the
-// shadow volumes of one light, re-uploaded each frame as the light moves.
+// by material), a box that sphere fragments are ray-cast from, and shadow
+// volumes: those of spheres and triangles re-uploaded each frame as the light
+// moves, those of meshes with static vertices and per-frame indices.
 
 #include <vector>
 
@@ -33,24 +34,6 @@ class SurfaceBuffers {
   unsigned box_vao_ = 0, box_vbo_ = 0, box_ibo_ = 0;
 };
 
-// A mesh's shadow volume vertices, uploaded once: its N points with w = 1,
-// then the same N points with w = 0, which the volume shader moves to
-// infinity away from the light. Each frame only the indices change.
-class MeshVolumeBuffer {
- public:
-  explicit MeshVolumeBuffer(const std::vector<glm::dvec3>& positions);
-  ~MeshVolumeBuffer();
-  MeshVolumeBuffer(const MeshVolumeBuffer&) = delete;
-  MeshVolumeBuffer& operator=(const MeshVolumeBuffer&) = delete;
-
-  void upload_indices(const uint32_t* indices, size_t count);
-  void draw() const;
-
- private:
-  unsigned vao_ = 0, vbo_ = 0, ibo_ = 0;
-  int index_count_ = 0;
-};
-
 class VolumeBuffer {
  public:
   VolumeBuffer();
@@ -58,10 +41,18 @@ class VolumeBuffer {
   VolumeBuffer(const VolumeBuffer&) = delete;
   VolumeBuffer& operator=(const VolumeBuffer&) = delete;
 
+  // A volume's vertices and triangles, for one frame.
   void upload(const ShadowVolume& volume);
+  // A mesh's volume vertices, once: its N points with w = 1, then the same N
+  // points with w = 0, which the volume shader moves to infinity away from
+  // the light. Each frame then sends only upload_indices.
+  void upload_mesh_vertices(const std::vector<glm::dvec3>& positions);
+  void upload_indices(const uint32_t* indices, size_t count);
   void draw() const;
 
  private:
+  void upload_vertices(const std::vector<float>& xyzw, unsigned usage);
+
   unsigned vao_ = 0, vbo_ = 0, ibo_ = 0;
   int index_count_ = 0;
 };

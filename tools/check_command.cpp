@@ -138,16 +138,8 @@ int repair_one(const std::string& path, const std::string& output, const CheckCo
 
 int run_check_command(const std::vector<std::string>& argv) {
   CheckCommandOptions options;
-  try {
-    options = parse_check_options(argv);
-  } catch (const UsageError& e) {
-    std::cerr << "umbra check: " << e.what() << "\n(see umbra check --help)\n";
-    return 2;
-  }
-  if (options.help) {
-    std::cout << kCheckUsage;
-    return 0;
-  }
+  if (const auto exit_status = parse_command_line("check", kCheckUsage, argv, parse_check_options, options))
+    return *exit_status;
   if (options.repair_output) return repair_one(options.meshes[0], *options.repair_output, options);
 
   // Workers take meshes in order; results are printed in order as they finish.

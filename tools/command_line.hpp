@@ -1,6 +1,8 @@
 #pragma once
 // Small helpers for reading command-line arguments with clear errors.
 
+#include <iostream>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -26,6 +28,25 @@ class Arguments {
   std::vector<std::string> args_;
   size_t next_ = 0;
 };
+
+// Runs `parse` over a command's arguments. On a usage error prints it with a
+// hint to --help and returns 2; when the options ask for help prints `usage`
+// and returns 0; otherwise returns nothing and the command goes on.
+template <typename Options, typename Parse>
+std::optional<int> parse_command_line(const char* command, const char* usage, const std::vector<std::string>& argv,
+                                      Parse parse, Options& options) {
+  try {
+    options = parse(argv);
+  } catch (const UsageError& e) {
+    std::cerr << "umbra " << command << ": " << e.what() << "\n(see umbra " << command << " --help)\n";
+    return 2;
+  }
+  if (options.help) {
+    std::cout << usage;
+    return 0;
+  }
+  return std::nullopt;
+}
 
 double parse_finite_number(const std::string& option, const std::string& text);
 int parse_int_in(const std::string& option, const std::string& text, int lowest, int highest);

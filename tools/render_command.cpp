@@ -81,16 +81,8 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
 
 int run_render_command(const std::vector<std::string>& argv) {
   RenderOptions options;
-  try {
-    options = parse_render_options(argv);
-  } catch (const UsageError& e) {
-    std::cerr << "umbra render: " << e.what() << "\n(see umbra render --help)\n";
-    return 2;
-  }
-  if (options.help) {
-    std::cout << kRenderUsage;
-    return 0;
-  }
+  if (const auto exit_status = parse_command_line("render", kRenderUsage, argv, parse_render_options, options))
+    return *exit_status;
   try {
     Scene scene = parse_scene_file(options.scene_path);
     for (const Warning& w : scene.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";

@@ -97,16 +97,8 @@ void write_group(std::ostream& out, const std::string& name, const std::vector<g
 
 int run_volume_command(const std::vector<std::string>& argv) {
   VolumeOptions options;
-  try {
-    options = parse_volume_options(argv);
-  } catch (const UsageError& e) {
-    std::cerr << "umbra volume: " << e.what() << "\n(see umbra volume --help)\n";
-    return 2;
-  }
-  if (options.help) {
-    std::cout << kVolumeUsage;
-    return 0;
-  }
+  if (const auto exit_status = parse_command_line("volume", kVolumeUsage, argv, parse_volume_options, options))
+    return *exit_status;
   try {
     Scene scene = parse_scene_file(options.scene_path);
     for (const Warning& w : scene.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
