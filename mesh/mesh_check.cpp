@@ -265,7 +265,6 @@ MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options) 
   }
   // A component is non-manifold at a vertex when two of the vertex's fans lie in it.
   {
-    std::vector<uint64_t> fans_in_component;  // (component << 32) | fan, for the vertices in question
     std::vector<std::pair<uint32_t, uint64_t>> vertex_fans;
     for (uint32_t f = 0; f < face_count; ++f) {
       if (!faces.in_topology(f)) continue;
@@ -360,18 +359,12 @@ MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options) 
     const ComponentReport& c = comps[component_of[triangle_face[t]]];
     if (c.outward == false) std::swap(triangles[t][1], triangles[t][2]);
   }
-  {
-    // V - E + F over the faces in the topology: each vertex once.
-    std::vector<uint8_t> in_topology_vertex(vertex_count, 0);
-    size_t topology_faces = 0;
-    for (uint32_t f = 0; f < face_count; ++f) {
-      if (!faces.in_topology(f)) continue;
-      ++topology_faces;
-      for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c) in_topology_vertex[faces.corners[c]] = 1;
-    }
-    const auto topology_vertices = std::count(in_topology_vertex.begin(), in_topology_vertex.end(), 1);
-    report.euler_characteristic = int64_t(topology_vertices) - int64_t(edges.size()) + int64_t(topology_faces);
-  }
+  // V - E + F over the faces in the topology, each vertex once.
+  const auto topology_vertices = std::count_if(component_of_vertex.begin(), component_of_vertex.end(),
+                                               [](uint32_t c) { return c != kNone; });
+  size_t topology_faces = 0;
+  for (const ComponentReport& c : comps) topology_faces += c.faces;
+  report.euler_characteristic = int64_t(topology_vertices) - int64_t(edges.size()) + int64_t(topology_faces);
 
   if (options.self_intersection_seconds > 0.0) {
     const SelfIntersections found = find_self_intersections(merged.positions, triangles, triangle_face,

@@ -81,6 +81,14 @@ ShadowMethod MeshReport::shadow_method() const {
   return topology_problems().empty() ? ShadowMethod::kSilhouette : ShadowMethod::kPerTriangle;
 }
 
+std::string MeshReport::shadow_method_reason() const {
+  const std::vector<std::string> why = topology_problems();
+  if (why.empty()) return "closed 2-manifold";
+  std::string s = "not a closed 2-manifold (";
+  for (size_t i = 0; i < why.size(); ++i) s += (i ? ", " : "") + why[i];
+  return s + ")";
+}
+
 bool MeshReport::is_closed_manifold() const { return problems().empty(); }
 
 std::vector<std::string> MeshReport::topology_problems() const {

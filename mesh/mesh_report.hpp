@@ -99,8 +99,10 @@ struct MeshReport {
   // The problems that decide the shadow method: no faces, border, non-manifold
   // edges or vertices, orientation.
   std::vector<std::string> topology_problems() const;
-  // The shadow method the renderer uses for this mesh.
+  // The shadow method the renderer uses for this mesh, and why in a phrase:
+  // "closed 2-manifold" or "not a closed 2-manifold (4 border edges in 1 hole)".
   ShadowMethod shadow_method() const;
+  std::string shadow_method_reason() const;
   // "closed 2-manifold: ..." or "not a closed 2-manifold (...): ..."
   std::string verdict() const;
 

@@ -50,12 +50,6 @@ std::vector<Token> tokenize(const std::string& line, const FileLoc& where) {
   return tokens;
 }
 
-std::string join(const std::vector<std::string>& phrases) {
-  std::string s;
-  for (size_t i = 0; i < phrases.size(); ++i) s += (i ? ", " : "") + phrases[i];
-  return s;
-}
-
 std::string in_quotes(const std::string& s) { return "\"" + s + "\""; }
 
 // Reads the tokens of one statement left to right, with located errors.
@@ -309,8 +303,8 @@ class SceneBuilder {
       if (m.triangles.empty())
         warn(m.where, "mesh " + in_quotes(written) + " has no faces: it casts no shadow");
       else if (m.report.shadow_method() != ShadowMethod::kSilhouette)
-        warn(m.where, "mesh " + in_quotes(written) + " is not a closed 2-manifold (" + join(m.report.topology_problems()) +
-                          "): its shadow comes from per-triangle volumes (slower)");
+        warn(m.where, "mesh " + in_quotes(written) + " is " + m.report.shadow_method_reason() +
+                          ": its shadow comes from per-triangle volumes (slower)");
       scene_.meshes.push_back(std::move(m));
     }
   }

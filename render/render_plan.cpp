@@ -33,12 +33,6 @@ CasterEntry triangle_entry(const Triangle& t, const Light& light) {
   return e;
 }
 
-std::string joined(const std::vector<std::string>& phrases) {
-  std::string s;
-  for (size_t i = 0; i < phrases.size(); ++i) s += (i ? ", " : "") + phrases[i];
-  return s;
-}
-
 // A mesh's entry; a silhouette volume goes to `light_plan.mesh_volumes`.
 CasterEntry mesh_entry(const Scene& scene, size_t index, const MeshCaster& caster, const Light& light, LightPlan& light_plan) {
   const Mesh& mesh = scene.meshes[index];
@@ -47,12 +41,13 @@ CasterEntry mesh_entry(const Scene& scene, size_t index, const MeshCaster& caste
     MeshVolumePlan volume{index, {}};
     std::vector<uint8_t> facing;
     mesh_volume_indices(caster.adjacency, light.position, facing, volume.volume);
-    e.method = "silhouette of a closed 2-manifold (" + std::to_string(mesh.triangles.size()) + " triangles)";
+    e.method = "silhouette of a " + mesh.report.shadow_method_reason() + " (" + std::to_string(mesh.triangles.size()) +
+               " triangles)";
     e.mesh_volume = int(light_plan.mesh_volumes.size());
     light_plan.mesh_volumes.push_back(std::move(volume));
   } else {
     e.volume = per_triangle_volume(mesh.positions, mesh.triangles, light.position);
-    e.method = "per-triangle volumes (slower): not a closed 2-manifold (" + joined(mesh.report.topology_problems()) + ")";
+    e.method = "per-triangle volumes (slower): " + mesh.report.shadow_method_reason();
   }
   return e;
 }

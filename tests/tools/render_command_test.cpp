@@ -116,5 +116,24 @@ TEST_F(RenderCommand, ExplainPrintsThePlan) {
   EXPECT_NE(r.out.find("triangle (line 5): three side quads (spec 2.1), 3 quads + 2 cap triangles"), std::string::npos);
 }
 
+TEST_F(RenderCommand, ExplainSaysWhichShadowMethodEachMeshGotAndWhy) {
+  const CommandResult r = run("render " + std::string(UMBRA_SOURCE_DIR) + "/scenes/mesh_open_box.scene --size 32x32 --explain -o " +
+                              path("a.png"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("mesh (line 9): per-triangle volumes (slower): not a closed 2-manifold (4 border edges in 1 hole), "
+                       "30 quads + 20 cap triangles\n"),
+            std::string::npos)
+      << r.out;
+  // The pair of closed pieces: 9 silhouette edges, the 7 faces turned away in each cap.
+  EXPECT_NE(r.out.find("mesh (line 10): silhouette of a closed 2-manifold (16 triangles), 9 quads + 14 cap triangles "
+                       "(static vertices, indices per frame)\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.err.find("mesh_open_box.scene:9:1: warning: mesh \"meshes/open_box.obj\" is not a closed 2-manifold (4 border "
+                       "edges in 1 hole): its shadow comes from per-triangle volumes (slower)\n"),
+            std::string::npos)
+      << r.err;
+}
+
 }  // namespace
 }  // namespace umbra
