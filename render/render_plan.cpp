@@ -33,18 +33,20 @@ CasterEntry triangle_entry(const Triangle& t, const Light& light) {
   return e;
 }
 
-// A mesh's entry; a silhouette volume goes to `light_plan.mesh_volumes`.
-CasterEntry mesh_entry(const Scene& scene, size_t index, const MeshCaster& caster, const Light& light, LightPlan& light_plan) {
+// A mesh's entry. A silhouette volume goes to light_plan.mesh_volumes[slot],
+// whose index buffer is kept from the previous frame when there is one.
+CasterEntry mesh_entry(const Scene& scene, size_t index, const MeshCaster& caster, const Light& light, LightPlan& light_plan,
+                       size_t& slot, std::vector<uint8_t>& facing) {
   const Mesh& mesh = scene.meshes[index];
   CasterEntry e{"mesh", mesh.where, "", {}};
   if (caster.method == ShadowMethod::kSilhouette) {
-    MeshVolumePlan volume{index, {}};
-    std::vector<uint8_t> facing;
+    if (slot == light_plan.mesh_volumes.size()) light_plan.mesh_volumes.emplace_back();
+    MeshVolumePlan& volume = light_plan.mesh_volumes[slot];
+    volume.mesh = index;
     mesh_volume_indices(caster.adjacency, light.position, facing, volume.volume);
     e.method = "silhouette of a " + mesh.report.shadow_method_reason() + " (" + std::to_string(mesh.triangles.size()) +
                " triangles)";
-    e.mesh_volume = int(light_plan.mesh_volumes.size());
-    light_plan.mesh_volumes.push_back(std::move(volume));
+    e.mesh_volume = int(slot++);
   } else {
     e.volume = per_triangle_volume(mesh.positions, mesh.triangles, light.position);
     e.method = "per-triangle volumes (slower): " + mesh.report.shadow_method_reason();
@@ -61,15 +63,30 @@ RenderPlan make_render_plan(const Scene& scene, const RenderSettings& settings) 
 RenderPlan make_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshes, const RenderSettings& settings) {
   RenderPlan plan;
   plan.settings = settings;
+  update_render_plan(scene, meshes, plan);
+  return plan;
+}
+
+void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshes, RenderPlan& plan) {
   plan.camera = scene.camera;
   plan.camera_is_spec_default = !scene.camera_from.has_value();
-  for (const Light& light : scene.lights) {
-    LightPlan lp;
-    for (const Sphere& s : scene.spheres) lp.casters.push_back(sphere_entry(s, light, settings.sphere_segments));
+  plan.lights.resize(scene.lights.size());
+  std::vector<uint8_t>& facing = plan.facing_scratch;
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    const Light& light = scene.lights[i];
+    LightPlan& lp = plan.lights[i];
+    lp.casters.clear();
+    size_t slot = 0;
+    for (const Sphere& s : scene.spheres) lp.casters.push_back(sphere_entry(s, light, plan.settings.sphere_segments));
     for (const Triangle& t : scene.triangles) lp.casters.push_back(triangle_entry(t, light));
-    for (size_t m = 0; m < scene.meshes.size(); ++m) lp.casters.push_back(mesh_entry(scene, m, meshes[m], light, lp));
+    for (size_t m = 0; m < scene.meshes.size(); ++m)
+      lp.casters.push_back(mesh_entry(scene, m, meshes[m], light, lp, slot, facing));
+    lp.mesh_volumes.resize(slot);
     std::stable_sort(lp.casters.begin(), lp.casters.end(),  // file order, for --explain
                      [](const CasterEntry& a, const CasterEntry& b) { return a.where.line < b.where.line; });
+    lp.all_volumes.vertices.clear();
+    lp.all_volumes.triangles.clear();
+    lp.all_volumes.side_quads = lp.all_volumes.light_cap_triangles = lp.all_volumes.dark_cap_triangles = 0;
     for (const CasterEntry& e : lp.casters) append_volume(lp.all_volumes, e.volume);
     lp.side_quads = lp.all_volumes.side_quads;
     lp.light_cap_triangles = lp.all_volumes.light_cap_triangles;
@@ -79,9 +96,7 @@ RenderPlan make_render_plan(const Scene& scene, const std::vector<MeshCaster>& m
       lp.light_cap_triangles += m.volume.light_cap_triangles;
       lp.dark_cap_triangles += m.volume.dark_cap_triangles;
     }
-    plan.lights.push_back(std::move(lp));
   }
-  return plan;
 }
 
 void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& plan) {

@@ -46,6 +46,7 @@ struct RenderPlan {
   Camera camera;
   bool camera_is_spec_default = true;
   std::vector<LightPlan> lights;  // one per scene light, same order
+  std::vector<uint8_t> facing_scratch;  // classify_faces' output, kept so that a frame need not allocate it
 };
 
 // Requires the lights outside every sphere (require_lights_outside_spheres).
@@ -53,6 +54,11 @@ struct RenderPlan {
 RenderPlan make_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshes, const RenderSettings& settings);
 // The same for one frame: prepares the mesh casters itself.
 RenderPlan make_render_plan(const Scene& scene, const RenderSettings& settings);
+// The next frame of an animation: recomputes every light's volumes for the
+// scene as it is now (its lights moved), keeping the plan's settings and
+// reusing its buffers, so that mesh volumes cost only classification and
+// extraction.
+void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshes, RenderPlan& plan);
 
 void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& plan);
 

@@ -5,10 +5,12 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <filesystem>
 #include <random>
 #include <set>
 
 #include "mesh/half_edge_mesh.hpp"
+#include "mesh/mesh_file.hpp"
 #include "mesh/mesh_check.hpp"
 #include "mesh/orientation.hpp"
 #include "silhouette/classify_faces.hpp"
@@ -177,6 +179,22 @@ TEST(MeshVolume, TorusVolumeHasNoBoundaryWhereSilhouetteLoopsMeet) {
     loops_meet += !is_closed_and_consistently_oriented(v);
   }
   EXPECT_GT(loops_meet, 0) << "no light made two silhouette loops meet: the test lost its point";
+}
+
+TEST(MeshVolume, EveryBundledClosedMeshGivesVolumesWithoutBoundaryForManyLights) {
+  int meshes = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(UMBRA_SOURCE_DIR) + "/scenes/meshes")) {
+    if (mesh_format_of(entry.path().string()).empty()) continue;
+    const MeshAnalysis a = analyse_mesh(read_polygon_soup(entry.path().string()));
+    if (a.report.shadow_method() != ShadowMethod::kSilhouette) continue;
+    ++meshes;
+    const MeshAdjacency mesh = build_mesh_adjacency(build_half_edge_mesh(a.positions, a.triangles));
+    for (const glm::dvec3& light : lights_around(100, 6)) {
+      const ShadowVolume v = mesh_shadow_volume(mesh, light);
+      EXPECT_TRUE(has_no_boundary(v)) << entry.path() << ", light " << light.x << " " << light.y << " " << light.z;
+    }
+  }
+  EXPECT_EQ(meshes, 3) << "icosphere.obj, torus.obj and pair.off are closed";
 }
 
 TEST(MeshVolume, HasNoBoundaryCatchesAMissingQuad) {
