@@ -91,17 +91,109 @@ uint32_t next_corner(const PolygonSoup& soup, uint32_t face, uint32_t corner) {
   return corner + 1 == soup.polygon_starts[face + 1] ? soup.polygon_starts[face] : corner + 1;
 }
 
-}  // namespace
+// The stages of the analysis, in the order run() calls them; each reads what
+// the earlier ones left in the members below.
+class MeshAnalyser {
+ public:
+  MeshAnalyser(const PolygonSoup& soup, MeshAnalysis& analysis)
+      : soup(soup),
+        analysis(analysis),
+        report(analysis.report),
+        examples(analysis.report.examples),
+        comps(analysis.report.components),
+        triangles(analysis.triangles),
+        triangle_face(analysis.triangle_face),
+        merged(merge_coincident_points(soup.points)),
+        face_count(soup.polygon_count()),
+        vertex_count(merged.positions.size()),
+        components(face_count),
+        flips(face_count),
+        fans(soup.corners.size()),
+        border_graph(vertex_count) {}
 
-MeshReport check_mesh(const PolygonSoup& soup, const CheckOptions& options) { return analyse_mesh(soup, options).report; }
+  void run(const CheckOptions& options) {
+    describe_file();
+    sort_faces();
+    group_edges();
+    label_components();
+    find_non_manifold_vertices();
+    count_border_loops();
+    orient_faces();
+    triangulate();
+    summarise_components();
+    search_self_intersections(options);
+    analysis.positions = std::move(merged.positions);
+  }
 
-MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options) {
-  MeshAnalysis analysis;
-  MeshReport& report = analysis.report;
+ private:
+  void describe_file();
+  void sort_faces();
+  void group_edges();
+  void label_components();
+  void find_non_manifold_vertices();
+  void count_border_loops();
+  void orient_faces();
+  void triangulate();
+  void summarise_components();
+  void search_self_intersections(const CheckOptions& options);
+
+  ElementRef vertex_ref(uint32_t v) const {
+    const uint32_t p = merged.first_point[v];
+    return ElementRef{p, soup.point_line(p)};
+  }
+  ElementRef face_ref(uint32_t f) const { return ElementRef{f, soup.polygon_line(f)}; }
+  template <typename List>
+  static bool room_for(const List& list) { return list.size() < MeshReport::kMaxExamples; }
+  // Whether face f must flip: its parity class is the smaller one in its set
+  // (ties keep the root's class).
+  bool must_flip(uint32_t f) const {
+    const auto& counts = parity_counts[flip_root[f]];
+    const uint8_t keep = counts[1] > counts[0] ? 1 : 0;
+    return parity_of[f] != keep;
+  }
+
+  const PolygonSoup& soup;
+  MeshAnalysis& analysis;
+  MeshReport& report;
+  MeshReport::Examples& examples;
+  std::vector<ComponentReport>& comps;
+  std::vector<std::array<uint32_t, 3>>& triangles;
+  std::vector<uint32_t>& triangle_face;
+  MergedPoints merged;
+  const size_t face_count, vertex_count;
+  Faces faces;
+
+  // group_edges
+  struct EdgeRun {
+    uint64_t key;
+    uint32_t face;
+    uint32_t uses;
+  };
+  std::vector<EdgeRun> edges;
+  UnionFind components;                   // faces joined across any edge
+  ParityUnionFind flips;                  // parity 1: the face must flip to agree with its set's root
+  UnionFind fans;                         // corners joined across the manifold edges at their vertex
+  UnionFind border_graph;                 // vertices joined by border edges
+  std::vector<uint8_t> orientation_conflict, on_non_manifold_edge;
+  std::vector<uint32_t> inconsistent_edge_faces;
+  // label_components and later
+  std::vector<uint32_t> component_of, component_of_vertex;
+  std::vector<uint8_t> component_non_manifold, component_conflict;
+  std::vector<size_t> component_inconsistent;
+  // orient_faces
+  std::vector<std::array<uint32_t, 2>> parity_counts;
+  std::vector<uint8_t> parity_of;
+  std::vector<uint32_t> flip_root;
+  // triangulate
+  std::vector<double> component_volume;
+};
+
+void MeshAnalyser::describe_file() {
   report.path = soup.path;
   report.format = soup.format;
   report.file_vertices = soup.points.size();
-  report.file_faces = soup.polygon_count();
+  report.file_faces = face_count;
+  report.merged_vertices = soup.points.size() - vertex_count;
   if (!soup.points.empty()) {
     report.bbox_min = report.bbox_max = soup.points[0];
     for (const glm::dvec3& p : soup.points) {
@@ -109,22 +201,10 @@ MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options) 
       report.bbox_max = glm::max(report.bbox_max, p);
     }
   }
-  const size_t face_count = soup.polygon_count();
-  if (soup.corners.size() >= (size_t(1) << 31))
-    throw InputError({soup.path, 0, 0}, "too large to check: more than 2^31 face corners");
-  MergedPoints merged = merge_coincident_points(soup.points);
-  const size_t vertex_count = merged.positions.size();
-  report.merged_vertices = soup.points.size() - vertex_count;
-  const auto vertex_ref = [&](uint32_t v) {
-    const uint32_t p = merged.first_point[v];
-    return ElementRef{p, soup.point_line(p)};
-  };
-  const auto face_ref = [&](uint32_t f) { return ElementRef{f, soup.polygon_line(f)}; };
-  const auto room_for = [](const auto& list) { return list.size() < MeshReport::kMaxExamples; };
-  auto& examples = report.examples;
+}
 
-  // Faces: degenerate, duplicate, or part of the topology.
-  Faces faces;
+// Faces: degenerate, duplicate, or part of the topology.
+void MeshAnalyser::sort_faces() {
   faces.corners.resize(soup.corners.size());
   for (size_t c = 0; c < soup.corners.size(); ++c) faces.corners[c] = merged.vertex_of_point[soup.corners[c]];
   faces.repeats_vertex.assign(face_count, 0);
@@ -151,8 +231,12 @@ MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options) 
     ++report.duplicate_faces;
     if (room_for(examples.duplicate_faces)) examples.duplicate_faces.push_back({face_ref(f), face_ref(faces.duplicate_of[f])});
   }
+}
 
-  // Edges: every face's use of every edge, grouped by edge.
+// Edges: every face's use of every edge, grouped by edge.
+void MeshAnalyser::group_edges() {
+  orientation_conflict.assign(face_count, 0);
+  on_non_manifold_edge.assign(vertex_count, 0);
   std::vector<EdgeUse> uses;
   uses.reserve(faces.corners.size());
   for (uint32_t f = 0; f < face_count; ++f) {
@@ -166,15 +250,6 @@ MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options) 
     return x.key != y.key ? x.key < y.key : x.face < y.face;
   });
 
-  UnionFind components(face_count);
-  ParityUnionFind flips(face_count);        // parity 1: the face must flip to agree with its set's root
-  std::vector<uint8_t> orientation_conflict(face_count, 0);
-  UnionFind fans(faces.corners.size());     // corners joined across the manifold edges at their vertex
-  UnionFind border_graph(vertex_count);
-  std::vector<uint8_t> on_non_manifold_edge(vertex_count, 0);
-  struct EdgeRun { uint64_t key; uint32_t face; uint32_t uses; };
-  std::vector<EdgeRun> edges;
-  std::vector<uint32_t> inconsistent_edge_faces;
   for (size_t i = 0; i < uses.size();) {
     size_t j = i + 1;
     while (j < uses.size() && uses[j].key == uses[i].key) ++j;
@@ -207,9 +282,11 @@ MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options) 
   }
   report.edges = edges.size();
   std::vector<EdgeUse>().swap(uses);  // the largest array; the edges and unions hold what is needed
+}
 
-  // Components, numbered in order of their first face.
-  std::vector<uint32_t> component_of(face_count, kNone);
+// Components, numbered in order of their first face, and what each holds.
+void MeshAnalyser::label_components() {
+  component_of.assign(face_count, kNone);
   std::vector<uint32_t> component_of_root(face_count, kNone);
   for (uint32_t f = 0; f < face_count; ++f) {
     if (!faces.in_topology(f)) continue;
@@ -221,9 +298,9 @@ MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options) 
     component_of[f] = id;
     ++report.components[id].faces;
   }
-  auto& comps = report.components;
-  std::vector<uint8_t> component_non_manifold(comps.size(), 0), component_conflict(comps.size(), 0);
-  std::vector<size_t> component_inconsistent(comps.size(), 0);
+  component_non_manifold.assign(comps.size(), 0);
+  component_conflict.assign(comps.size(), 0);
+  component_inconsistent.assign(comps.size(), 0);
   for (const EdgeRun& e : edges) {
     ComponentReport& c = comps[component_of[e.face]];
     ++c.edges;
@@ -233,9 +310,11 @@ MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options) 
   for (uint32_t f : inconsistent_edge_faces) ++component_inconsistent[component_of[f]];
   for (uint32_t f = 0; f < face_count; ++f)
     if (orientation_conflict[f]) component_conflict[component_of[f]] = 1;
+}
 
-  // Vertices per component, and vertices whose faces form more than one fan.
-  std::vector<uint32_t> component_of_vertex(vertex_count, kNone);  // the first component seen at each vertex
+// Vertices per component, and vertices whose faces form more than one fan.
+void MeshAnalyser::find_non_manifold_vertices() {
+  component_of_vertex.assign(vertex_count, kNone);
   std::vector<uint64_t> vertex_in_other_component;  // (component << 32) | vertex: only where components touch
   std::vector<uint32_t> fan_of_vertex(vertex_count, kNone);
   std::vector<uint8_t> several_fans(vertex_count, 0);
@@ -281,8 +360,10 @@ MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options) 
         component_non_manifold[vertex_fans[i].second >> 32] = 1;
     }
   }
+}
 
-  // Border loops: the connected pieces of the border edges.
+// Border loops: the connected pieces of the border edges.
+void MeshAnalyser::count_border_loops() {
   std::vector<uint8_t> loop_counted(vertex_count, 0);
   for (const EdgeRun& e : edges) {
     if (e.uses != 1) continue;
@@ -292,12 +373,14 @@ MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options) 
     ++report.border_loops;
     ++comps[component_of[e.face]].border_loops;
   }
+}
 
-  // Orientation: within each set of faces joined by manifold edges, flipping
-  // the smaller parity class makes them agree.
-  std::vector<std::array<uint32_t, 2>> parity_counts(face_count, {0, 0});
-  std::vector<uint8_t> parity_of(face_count, 0);
-  std::vector<uint32_t> flip_root(face_count, kNone);
+// Orientation: within each set of faces joined by manifold edges, flipping
+// the smaller parity class makes them agree.
+void MeshAnalyser::orient_faces() {
+  parity_counts.assign(face_count, {0, 0});
+  parity_of.assign(face_count, 0);
+  flip_root.assign(face_count, kNone);
   for (uint32_t f = 0; f < face_count; ++f) {
     if (!faces.in_topology(f)) continue;
     const auto [root, parity] = flips.find(f);
@@ -305,23 +388,17 @@ MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options) 
     parity_of[f] = parity;
     ++parity_counts[root][parity];
   }
-  // A face flips when its class is the smaller one (ties keep the root's class).
-  const auto must_flip = [&](uint32_t f) {
-    const auto& counts = parity_counts[flip_root[f]];
-    const uint8_t keep = counts[1] > counts[0] ? 1 : 0;
-    return parity_of[f] != keep;
-  };
   for (uint32_t f = 0; f < face_count; ++f) {
     if (!faces.in_topology(f) || component_conflict[component_of[f]] || !must_flip(f)) continue;
     ++report.faces_to_flip;
     if (room_for(examples.faces_to_flip)) examples.faces_to_flip.push_back(face_ref(f));
   }
+}
 
-  // Triangles for the geometric tests and the renderer, oriented as after the
-  // flips. Faces whose corners are collinear stay: a closed mesh needs them.
-  std::vector<std::array<uint32_t, 3>>& triangles = analysis.triangles;
-  std::vector<uint32_t>& triangle_face = analysis.triangle_face;
-  std::vector<double> component_volume(comps.size(), 0.0);
+// Triangles for the geometric tests and the renderer, oriented as after the
+// flips. Faces whose corners are collinear stay: a closed mesh needs them.
+void MeshAnalyser::triangulate() {
+  component_volume.assign(comps.size(), 0.0);
   const glm::dvec3 centre = 0.5 * (report.bbox_min + report.bbox_max);  // keeps the volume sums well conditioned
   for (uint32_t f = 0; f < face_count; ++f) {
     if (!faces.in_topology(f)) continue;
@@ -338,7 +415,10 @@ MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options) 
     }
   }
   report.triangles = triangles.size();
+}
 
+// Per component: closed, manifold, orientable, genus, outward.
+void MeshAnalyser::summarise_components() {
   for (size_t i = 0; i < comps.size(); ++i) {
     ComponentReport& c = comps[i];
     c.euler_characteristic = int64_t(c.vertices) - int64_t(c.edges) + int64_t(c.faces);
@@ -365,7 +445,9 @@ MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options) 
   size_t topology_faces = 0;
   for (const ComponentReport& c : comps) topology_faces += c.faces;
   report.euler_characteristic = int64_t(topology_vertices) - int64_t(edges.size()) + int64_t(topology_faces);
+}
 
+void MeshAnalyser::search_self_intersections(const CheckOptions& options) {
   if (options.self_intersection_seconds > 0.0) {
     const SelfIntersections found = find_self_intersections(merged.positions, triangles, triangle_face,
                                                             options.self_intersection_seconds, MeshReport::kMaxExamples);
@@ -376,7 +458,17 @@ MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options) 
     for (const auto& [f, g] : found.examples) examples.self_intersections.push_back({face_ref(f), face_ref(g)});
   }
   report.self_intersections.time_limit_seconds = options.self_intersection_seconds;
-  analysis.positions = std::move(merged.positions);
+}
+
+}  // namespace
+
+MeshReport check_mesh(const PolygonSoup& soup, const CheckOptions& options) { return analyse_mesh(soup, options).report; }
+
+MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options) {
+  if (soup.corners.size() >= (size_t(1) << 31))
+    throw InputError({soup.path, 0, 0}, "too large to check: more than 2^31 face corners");
+  MeshAnalysis analysis;
+  MeshAnalyser(soup, analysis).run(options);
   return analysis;
 }
 
