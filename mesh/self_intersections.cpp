@@ -79,9 +79,13 @@ SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positio
 
   std::vector<std::pair<uint32_t, uint32_t>> face_pairs;
   size_t calls = 0;
-  const auto test = [&](const Box& x, const Box& y) {
+  // The sweep moves pointers (8 bytes) rather than boxes (56), as PMP does.
+  std::vector<const Box*> box_pointers;
+  box_pointers.reserve(boxes.size());
+  for (const Box& b : boxes) box_pointers.push_back(&b);
+  const auto test = [&](const Box* x, const Box* y) {
     if ((++calls & 1023) == 0 && Clock::now() > deadline) throw TimeLimitReached{};
-    const uint32_t s = x.info(), t = y.info();
+    const uint32_t s = x->info(), t = y->info();
     uint32_t fs = triangle_face[s], ft = triangle_face[t];
     if (fs == ft) return;
     const auto& is = triangles[s];
@@ -93,7 +97,8 @@ SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positio
   SelfIntersections result;
   try {
     // Closed boxes: triangles that only touch still count as intersecting.
-    CGAL::box_self_intersection_d<CGAL::Sequential_tag>(boxes.begin(), boxes.end(), test, std::ptrdiff_t(10),
+    // Below 2000 boxes the sweep scans instead of splitting further (PMP's value).
+    CGAL::box_self_intersection_d<CGAL::Sequential_tag>(box_pointers.begin(), box_pointers.end(), test, std::ptrdiff_t(2000),
                                                         CGAL::Box_intersection_d::CLOSED);
   } catch (const TimeLimitReached&) {
     result.complete = false;
