@@ -260,6 +260,19 @@ TEST(MeshCheck, TimeLimitOfZeroSkipsTheSelfIntersectionSearchAndSaysSo) {
   EXPECT_EQ(r.shadow_method(), ShadowMethod::kSilhouette);
 }
 
+TEST(MeshCheck, SelfIntersectionSearchThatHitsItsTimeLimitSaysSo) {
+  CheckOptions options;
+  options.self_intersection_seconds = 1e-9;  // over before the first clock check, after 1024 box pairs
+  const MeshReport r = check_mesh(uv_sphere(64, 64), options);
+  EXPECT_TRUE(r.self_intersections.checked);
+  EXPECT_FALSE(r.self_intersections.complete);
+  EXPECT_EQ(r.self_intersections.face_pairs, 0u);
+  EXPECT_EQ(r.problems(), std::vector<std::string>{"self-intersection search stopped after 1e-09 s"});
+  EXPECT_FALSE(r.is_closed_manifold());
+  EXPECT_EQ(r.shadow_method(), ShadowMethod::kSilhouette);
+  EXPECT_TRUE(check_mesh(uv_sphere(64, 64)).self_intersections.complete);
+}
+
 TEST(MeshCheck, EmptyMeshHasNoFaces) {
   const MeshReport r = check_mesh(make_soup({}, {}));
   EXPECT_EQ(r.problems(), std::vector<std::string>{"no faces"});
