@@ -12,6 +12,8 @@ packages=(
   python3-glad                       # generates the OpenGL loader at build time
   libglm-dev libpng-dev              # vectors and matrices, PNG output
   libosmesa6-dev                     # headless OpenGL (Mesa llvmpipe)
+  libglfw3-dev libgl1-mesa-dri       # umbra view: a window with an OpenGL context
+  xvfb xauth                         # tests run umbra view in a virtual display
   libcgal-dev libgmp-dev libmpfr-dev # exact predicates, mesh checks and repair
   libopenmesh-dev                    # half-edge meshes for silhouettes
   libgtest-dev python3               # tests (python3 reads the JSON that umbra check writes)

@@ -45,16 +45,24 @@ ShadowRenderer::ShadowRenderer(const Scene& scene, const RenderPlan& plan) : sce
         mesh_volumes_[m.mesh]->upload_mesh_vertices(scene.meshes[m.mesh].positions);
       }
 
-  const RenderSettings& s = plan.settings;
-  const glm::mat4 view_projection(infinite_perspective(plan.camera.fovy_deg, double(s.width) / s.height, kNearPlane) *
-                                  view_matrix(plan.camera));
   glm::dvec3 ambient_sum(0.0);
   for (const Light& light : scene.lights) ambient_sum += light.ambient;
   for (ShaderProgram* p : {triangle_program_.get(), sphere_program_.get()}) {
     p->use();
-    p->set("view_projection", view_projection);
-    p->set("eye", f(plan.camera.eye));
     p->set("ambient_sum", f(ambient_sum));
+  }
+}
+
+// The plan's camera and image size, read every frame: a viewer moves the
+// camera and resizes the window.
+void ShadowRenderer::apply_view() {
+  const RenderSettings& s = plan_.settings;
+  const glm::mat4 view_projection(infinite_perspective(plan_.camera.fovy_deg, double(s.width) / s.height, kNearPlane) *
+                                  view_matrix(plan_.camera));
+  for (ShaderProgram* p : {triangle_program_.get(), sphere_program_.get()}) {
+    p->use();
+    p->set("view_projection", view_projection);
+    p->set("eye", f(plan_.camera.eye));
   }
   volume_program_->use();
   volume_program_->set("view_projection", view_projection);
@@ -93,6 +101,7 @@ void ShadowRenderer::draw_surfaces(int pass, size_t light) {
 }
 
 void ShadowRenderer::depth_and_ambient_pass() {
+  apply_view();
   baseline_state();
   glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
   glClearDepth(1.0);
@@ -164,15 +173,21 @@ void ShadowRenderer::show_volumes_pass() {
   baseline_state();
 }
 
-Image ShadowRenderer::render_image(bool show_volumes) {
+void ShadowRenderer::draw(bool show_volumes) {
   depth_and_ambient_pass();
   for (size_t i = 0; i < scene_.lights.size(); ++i) {
     count_shadow_volumes(i);
     direct_light_pass(i);
   }
   if (show_volumes) show_volumes_pass();
+}
+
+Image ShadowRenderer::render_image(bool show_volumes) {
+  draw(show_volumes);
   return read_pixels(3);
 }
+
+Image ShadowRenderer::read_image() const { return read_pixels(3); }
 
 Image ShadowRenderer::render_mask(size_t light) {
   depth_and_ambient_pass();

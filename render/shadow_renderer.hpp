@@ -27,9 +27,14 @@ class ShadowRenderer {
   ShadowRenderer(const Scene& scene, const RenderPlan& plan);
   ~ShadowRenderer();
 
-  // The shaded image (RGB). With show_volumes, every light's volumes are
-  // drawn over it translucently, front faces only (the spec's debugging view).
+  // Draws the frame into the default framebuffer. With show_volumes, every
+  // light's volumes are drawn over it translucently, front faces only (the
+  // spec's debugging view). The plan's camera and size are read each time.
+  void draw(bool show_volumes);
+  // The shaded image (RGB): draw, then read it back.
   Image render_image(bool show_volumes);
+  // What the last draw left in the framebuffer (RGB).
+  Image read_image() const;
 
   // Light `light`'s shadow mask (grey): kMaskNoSurface where no surface is
   // seen, kMaskLit where the visible point faces the light and is outside its
@@ -37,6 +42,7 @@ class ShadowRenderer {
   Image render_mask(size_t light);
 
  private:
+  void apply_view();
   void depth_and_ambient_pass();
   void count_shadow_volumes(size_t light);
   void direct_light_pass(size_t light);

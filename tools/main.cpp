@@ -5,6 +5,7 @@
 
 #include "tools/check_command.hpp"
 #include "tools/render_command.hpp"
+#include "tools/view_command.hpp"
 #include "tools/volume_command.hpp"
 
 namespace {
@@ -17,6 +18,8 @@ commands:
   render SCENE -o OUT.png   render a scene headless to a PNG (see umbra render --help)
   check MESH...             is each mesh a closed 2-manifold, and if not, why
                             (see umbra check --help)
+  view SCENE                the spec's interactive program: the light orbits,
+                            keys and mouse (see umbra view --help)
   volume SCENE -o OUT.obj   write a light's shadow volumes as a mesh to look at
                             (see umbra volume --help)
 
@@ -38,6 +41,7 @@ int main(int argc, char** argv) {
   if (args[0] == "render") return umbra::run_render_command({args.begin() + 1, args.end()});
   if (args[0] == "check") return umbra::run_check_command({args.begin() + 1, args.end()});
   if (args[0] == "volume") return umbra::run_volume_command({args.begin() + 1, args.end()});
+  if (args[0] == "view") return umbra::run_view_command({args.begin() + 1, args.end()});
   std::cerr << "umbra: unknown command \"" << args[0] << "\"\n" << kUsage;
   return 2;
 }

@@ -1,0 +1,83 @@
+// `umbra view` under Xvfb (a real window, Mesa's GLX): a scripted run's
+// screenshot is pixel for pixel the headless render of the same frame.
+#include <gtest/gtest.h>
+
+#include "render/image.hpp"
+#include "tests/tools/command_fixture.hpp"
+
+namespace umbra {
+namespace {
+
+using test::CommandResult;
+
+class ViewCommand : public test::CommandTest {
+ protected:
+  // The viewer in a virtual X display of its own.
+  CommandResult run_in_xvfb(const std::string& args) const {
+    return run_with_prefix("xvfb-run -a -s '-screen 0 640x480x24' ", args);
+  }
+  CommandResult run_with_prefix(const std::string& prefix, const std::string& args) const {
+    const std::string command =
+        prefix + std::string(UMBRA_EXECUTABLE) + " " + args + " >" + path("out.txt") + " 2>" + path("err.txt");
+    CommandResult r;
+    const int raw = std::system(command.c_str());
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.out = read(path("out.txt"));
+    r.err = read(path("err.txt"));
+    return r;
+  }
+  static std::string scene(const std::string& name) { return std::string(UMBRA_SOURCE_DIR) + "/scenes/" + name; }
+};
+
+void expect_same_pixels(const Image& a, const Image& b) {
+  ASSERT_EQ(a.width, b.width);
+  ASSERT_EQ(a.height, b.height);
+  ASSERT_EQ(a.channels, b.channels);
+  size_t differing = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) differing += a.pixels[i] != b.pixels[i];
+  EXPECT_EQ(differing, 0u);
+}
+
+TEST_F(ViewCommand, PausedScreenshotIsTheHeadlessRender) {
+  const CommandResult view = run_in_xvfb("view " + scene("demo.scene") +
+                                         " --size 160x120 --paused --light-angle 30 --frames 3 --screenshot " + path("v.png"));
+  ASSERT_EQ(view.status, 0) << view.err;
+  EXPECT_EQ(view.out, "wrote " + path("v.png") + " (frame 3, light at 30 deg)\n");
+  ASSERT_EQ(run("render " + scene("demo.scene") + " --size 160x120 --light-angle 30 -o " + path("h.png")).status, 0);
+  expect_same_pixels(read_png(path("v.png")), read_png(path("h.png")));
+}
+
+TEST_F(ViewCommand, OrbitingLightScreenshotIsTheHeadlessRenderAtItsAngle) {
+  // 60 degrees a second at 1/60 s a frame: frame 7 is drawn with the light at 6 degrees.
+  const CommandResult view = run_in_xvfb("view " + scene("mesh_torus.scene") +
+                                         " --size 160x120 --speed 60 --frames 7 --screenshot " + path("v.png"));
+  ASSERT_EQ(view.status, 0) << view.err;
+  EXPECT_EQ(view.out, "wrote " + path("v.png") + " (frame 7, light at 6 deg)\n");
+  ASSERT_EQ(run("render " + scene("mesh_torus.scene") + " --size 160x120 --light-angle 6 -o " + path("h.png")).status, 0);
+  expect_same_pixels(read_png(path("v.png")), read_png(path("h.png")));
+}
+
+TEST_F(ViewCommand, BadSceneExitsOneWithItsLocatedError) {
+  const std::string bad = write("bad.scene", "light 0 0 2\nsphere 0 0 0 O.5\n");
+  const CommandResult r = run_in_xvfb("view " + bad + " --frames 1");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, bad + ":2:14: expected a number for the sphere radius, got \"O.5\"\n");
+}
+
+TEST_F(ViewCommand, WithoutADisplayItSaysSo) {
+  const CommandResult r = run_with_prefix("env -u DISPLAY -u WAYLAND_DISPLAY ", "view " + scene("demo.scene") + " --frames 1");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("GLFW: cannot start (is there a display? try xvfb-run)"), std::string::npos) << r.err;
+}
+
+TEST_F(ViewCommand, UsageErrors) {
+  const CommandResult r = run("view " + scene("demo.scene") + " --screenshot x.png");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "umbra view: --screenshot needs --frames N\n(see umbra view --help)\n");
+  const CommandResult help = run("view --help");
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.out.find("  v             show or hide the shadow volumes\n"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace umbra
