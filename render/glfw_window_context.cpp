@@ -31,6 +31,8 @@ WindowContext::Key key_of(int glfw_key) {
     case GLFW_KEY_V: return Key::kV;
     case GLFW_KEY_M: return Key::kM;
     case GLFW_KEY_R: return Key::kR;
+    case GLFW_KEY_S: return Key::kS;
+    case GLFW_KEY_O: return Key::kO;
     case GLFW_KEY_H: return Key::kH;
     case GLFW_KEY_Q: return Key::kQ;
     case GLFW_KEY_ESCAPE: return Key::kEscape;
@@ -103,5 +105,6 @@ void WindowContext::poll_events() { glfwPollEvents(); }
 void WindowContext::set_title(const std::string& title) { glfwSetWindowTitle(glfw_->window, title.c_str()); }
 void WindowContext::framebuffer_size(int& width, int& height) const { glfwGetFramebufferSize(glfw_->window, &width, &height); }
 double WindowContext::time_seconds() const { return glfwGetTime(); }
+void* WindowContext::native_window() const { return glfw_->window; }
 
 }  // namespace umbra

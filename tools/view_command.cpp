@@ -3,7 +3,6 @@
 #include <sys/stat.h>
 
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -18,6 +17,7 @@
 #include "render/image.hpp"
 #include "render/render_plan.hpp"
 #include "render/shadow_renderer.hpp"
+#include "render/text_overlay.hpp"
 #include "render/window_context.hpp"
 #include "tools/command_line.hpp"
 
@@ -28,9 +28,9 @@ const char* const kViewUsage =
 
 Opens SCENE in a window and renders it as `umbra render` does, with the light
 orbiting the z axis (the spec's animation). The scene is reloaded when its
-file changes; an error keeps the last good scene and shows in the window's
-title and on the terminal. The title shows the method, the frame time and
-the volume sizes.
+file changes; an error keeps the last good scene and shows in the window and
+on the terminal. An overlay shows the method, the frame time, the volume
+sizes and the keys.
 
 keys:
   space         pause or resume the light
@@ -39,7 +39,9 @@ keys:
   v             show or hide the shadow volumes
   ] and [       double or halve the sphere segments N (3 to 4096)
   m             switch method (only z-fail has landed so far)
-  r             return to the scene's camera (the spec's view by default)
+  r             return to the scene's camera
+  s             return to the spec's view (eye (0, 0, 3.4), looking down -z)
+  o             show or hide the overlay
   h             print this help on the terminal
   q, escape     quit
 mouse: drag to orbit the camera around its target, scroll to zoom
@@ -52,7 +54,9 @@ options:
   --segments N         sphere segments (default 64)
   --frames N           draw N frames, then exit; the light then advances by
                        SPEED/60 degrees per frame, so a run is reproducible
-  --screenshot OUT.png with --frames: write the last frame to OUT.png
+  --screenshot OUT.png with --frames: write the last frame to OUT.png (without
+                       the overlay, so that it is the headless render's frame)
+  --overlay-in-screenshot  include the overlay in the screenshot
   -h, --help           show this help
 )";
 
@@ -66,6 +70,7 @@ struct ViewOptions {
   bool paused = false;
   int frames = 0;  // 0: until the window is closed
   std::optional<std::string> screenshot;
+  bool overlay_in_screenshot = false;
   bool help = false;
 };
 
@@ -82,6 +87,7 @@ ViewOptions parse_view_options(const std::vector<std::string>& argv) {
     else if (a == "--segments") o.settings.sphere_segments = parse_int_in(a, args.value_of(a), 3, 4096);
     else if (a == "--frames") o.frames = parse_int_in(a, args.value_of(a), 1, 1 << 30);
     else if (a == "--screenshot") o.screenshot = args.value_of(a);
+    else if (a == "--overlay-in-screenshot") o.overlay_in_screenshot = true;
     else if (a.size() > 1 && a[0] == '-') throw UsageError("unknown option " + a);
     else if (o.scene_path.empty()) o.scene_path = a;
     else throw UsageError("one scene at a time (got \"" + o.scene_path + "\" and \"" + a + "\")");
@@ -128,6 +134,25 @@ void orbit(Camera& camera, double yaw_deg, double pitch_deg) {
   camera.eye = camera.target + offset;
 }
 
+// What the overlay shows: the frame, the volumes, any reload error, the keys.
+std::vector<std::string> status_lines(const std::string& path, const LightPlan& light, double frame_ms, double angle,
+                                      bool paused, double speed, int segments, const std::string& error) {
+  char line[256];
+  std::vector<std::string> lines = {path};
+  std::snprintf(line, sizeof line, "z-fail (the only method so far)   frame time %.1f ms", frame_ms);
+  lines.push_back(line);
+  std::snprintf(line, sizeof line, "light 1 at %.1f deg, %s%.3g deg/s   sphere N = %d", std::fmod(angle, 360.0),
+                paused ? "paused, " : "", speed, segments);
+  lines.push_back(line);
+  std::snprintf(line, sizeof line, "light 1 volumes: %d side quads, %d near-cap and %d far-cap triangles", light.side_quads,
+                light.light_cap_triangles, light.dark_cap_triangles);
+  lines.push_back(line);
+  if (!error.empty()) lines.push_back("ERROR (showing the last good scene): " + error);
+  lines.push_back("space pause  left/right step  up/down speed  v volumes  [ ] N");
+  lines.push_back("drag orbit  scroll zoom  r scene camera  s spec view  o overlay  h help  q quit");
+  return lines;
+}
+
 }  // namespace
 
 int run_view_command(const std::vector<std::string>& argv) {
@@ -155,14 +180,21 @@ int run_view_command(const std::vector<std::string>& argv) {
   };
 
   try {
-    window = std::make_unique<WindowContext>(options.settings.width, options.settings.height, "umbra view");
+    window = std::make_unique<WindowContext>(options.settings.width, options.settings.height,
+                                             "umbra view - " + options.scene_path);
     load(true);
   } catch (const std::exception& e) {
     std::cerr << e.what() << "\n";
     return 1;
   }
 
-  bool paused = options.paused, show_volumes = false;
+  std::unique_ptr<TextOverlay> overlay;
+  try {
+    overlay = std::make_unique<TextOverlay>(*window);
+  } catch (const std::exception& e) {
+    std::cerr << "umbra view: " << e.what() << "; going on without the overlay\n";
+  }
+  bool paused = options.paused, show_volumes = false, show_overlay = true;
   double speed = options.speed_deg_per_s, angle = options.light_angle_deg;
   std::string error;  // the last reload error, shown in the title until the next good load
   using Key = WindowContext::Key;
@@ -178,6 +210,8 @@ int run_view_command(const std::vector<std::string>& argv) {
       case Key::kLeftBracket: options.settings.sphere_segments = std::max(3, options.settings.sphere_segments / 2); break;
       case Key::kM: std::cerr << "umbra view: only the z-fail method has landed so far\n"; break;
       case Key::kR: orbited.reset(); scene.frame.camera = scene.file.camera; break;
+      case Key::kS: orbited = spec_camera(); scene.frame.camera = *orbited; break;
+      case Key::kO: show_overlay = !show_overlay; break;
       case Key::kH: std::cout << kViewUsage; break;
       case Key::kQ: case Key::kEscape: window->close(); break;
       case Key::kOther: break;
@@ -208,7 +242,6 @@ int run_view_command(const std::vector<std::string>& argv) {
       }
     }
     const double now = window->time_seconds();
-    const auto started = std::chrono::steady_clock::now();
     scene.frame.lights = scene.file.lights;
     rotate_lights_about_z(scene.frame, angle);
     int width = 0, height = 0;
@@ -220,17 +253,18 @@ int run_view_command(const std::vector<std::string>& argv) {
       update_render_plan(scene.frame, scene.meshes, *scene.plan);
       scene.renderer->draw(show_volumes);
     }
-    const double frame_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
-    const LightPlan& lp = scene.plan->lights[0];
-    char title[512];
-    std::snprintf(title, sizeof title, "umbra view - %s - z-fail - %.1f ms - light %.0f deg%s - %d quads, %d cap triangles - N %d - h: help%s%s",
-                  options.scene_path.c_str(), frame_ms, std::fmod(angle, 360.0), paused ? " (paused)" : "", lp.side_quads,
-                  lp.light_cap_triangles + lp.dark_cap_triangles, options.settings.sphere_segments,
-                  error.empty() ? "" : " - ERROR: ", error.c_str());
-    window->set_title(title);
+    // The interval since the previous frame: drawing, the buffer swap and the wait for it.
+    const double frame_ms = 1000.0 * (now - last_time);
 
-    if (options.frames > 0 && frame == options.frames) {
+    const bool last_frame = options.frames > 0 && frame == options.frames;
+    const auto draw_overlay = [&] {
+      if (overlay && show_overlay)
+        overlay->draw(status_lines(options.scene_path, scene.plan->lights[0], frame_ms, angle, paused, speed,
+                                   options.settings.sphere_segments, error));
+    };
+    if (last_frame) {
       if (options.screenshot) {
+        if (options.overlay_in_screenshot) draw_overlay();
         try {
           write_png(scene.renderer->read_image(), *options.screenshot);
         } catch (const std::exception& e) {
@@ -241,6 +275,7 @@ int run_view_command(const std::vector<std::string>& argv) {
       }
       break;
     }
+    draw_overlay();
     window->swap_buffers();
     window->poll_events();
     // Scripted runs advance by a fixed 1/60 s a frame, interactive ones by the clock.

@@ -57,6 +57,22 @@ TEST_F(ViewCommand, OrbitingLightScreenshotIsTheHeadlessRenderAtItsAngle) {
   expect_same_pixels(read_png(path("v.png")), read_png(path("h.png")));
 }
 
+TEST_F(ViewCommand, OverlayIsDrawnInTheTopLeftCornerOnly) {
+  const CommandResult view = run_in_xvfb("view " + scene("demo.scene") +
+                                         " --size 640x480 --paused --frames 2 --overlay-in-screenshot --screenshot " + path("v.png"));
+  ASSERT_EQ(view.status, 0) << view.err;
+  ASSERT_EQ(run("render " + scene("demo.scene") + " --size 640x480 -o " + path("h.png")).status, 0);
+  const Image v = read_png(path("v.png")), h = read_png(path("h.png"));
+  int inside = 0, outside = 0;
+  for (int y = 0; y < h.height; ++y)
+    for (int x = 0; x < h.width; ++x) {
+      const bool differs = v.at(x, y, 0) != h.at(x, y, 0) || v.at(x, y, 1) != h.at(x, y, 1) || v.at(x, y, 2) != h.at(x, y, 2);
+      (y < 160 ? inside : outside) += differs;
+    }
+  EXPECT_GT(inside, 5000) << "seven lines of text in a translucent box";
+  EXPECT_EQ(outside, 0);
+}
+
 TEST_F(ViewCommand, BadSceneExitsOneWithItsLocatedError) {
   const std::string bad = write("bad.scene", "light 0 0 2\nsphere 0 0 0 O.5\n");
   const CommandResult r = run_in_xvfb("view " + bad + " --frames 1");
