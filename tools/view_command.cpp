@@ -134,9 +134,9 @@ void orbit(Camera& camera, double yaw_deg, double pitch_deg) {
   camera.eye = camera.target + offset;
 }
 
-// What the overlay shows: the frame, the volumes, any reload error, the keys.
+// What the overlay shows: the frame, the volumes, a message (an error), the keys.
 std::vector<std::string> status_lines(const std::string& path, const LightPlan& light, double frame_ms, double angle,
-                                      bool paused, double speed, int segments, const std::string& error) {
+                                      bool paused, double speed, int segments, const std::string& message) {
   char line[256];
   std::vector<std::string> lines = {path};
   std::snprintf(line, sizeof line, "z-fail (the only method so far)   frame time %.1f ms", frame_ms);
@@ -147,7 +147,7 @@ std::vector<std::string> status_lines(const std::string& path, const LightPlan& 
   std::snprintf(line, sizeof line, "light 1 volumes: %d side quads, %d near-cap and %d far-cap triangles", light.side_quads,
                 light.light_cap_triangles, light.dark_cap_triangles);
   lines.push_back(line);
-  if (!error.empty()) lines.push_back("ERROR (showing the last good scene): " + error);
+  if (!message.empty()) lines.push_back(message);
   lines.push_back("space pause  left/right step  up/down speed  v volumes  [ ] N");
   lines.push_back("drag orbit  scroll zoom  r scene camera  s spec view  o overlay  h help  q quit");
   return lines;
@@ -165,11 +165,12 @@ int run_view_command(const std::vector<std::string>& argv) {
   std::unique_ptr<WindowContext> window;
   LoadedScene scene;
   std::optional<Camera> orbited;  // the user's camera, kept across reloads
-  const auto load = [&](bool first) {
+  // Lights are checked at `angle`, where the next frame will draw them.
+  const auto load = [&](bool first, double angle) {
     Scene parsed = parse_scene_file(options.scene_path);
     for (const Warning& w : parsed.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
     Scene check = parsed;
-    rotate_lights_about_z(check, options.light_angle_deg);
+    rotate_lights_about_z(check, angle);
     require_lights_outside_spheres(check);
     scene.file = std::move(parsed);
     scene.frame = scene.file;
@@ -182,7 +183,7 @@ int run_view_command(const std::vector<std::string>& argv) {
   try {
     window = std::make_unique<WindowContext>(options.settings.width, options.settings.height,
                                              "umbra view - " + options.scene_path);
-    load(true);
+    load(true, options.light_angle_deg);
   } catch (const std::exception& e) {
     std::cerr << e.what() << "\n";
     return 1;
@@ -196,6 +197,8 @@ int run_view_command(const std::vector<std::string>& argv) {
   }
   bool paused = options.paused, show_volumes = false, show_overlay = true;
   double speed = options.speed_deg_per_s, angle = options.light_angle_deg;
+  double good_angle = angle;  // the last angle with every light outside every sphere
+  std::string light_error;    // why the light stopped, while it stays stopped
   std::string error;  // the last reload error, shown in the title until the next good load
   using Key = WindowContext::Key;
   window->on_key = [&](Key key) {
@@ -234,7 +237,7 @@ int run_view_command(const std::vector<std::string>& argv) {
     if (const auto now = file_signature(options.scene_path); now && now != file_time) {
       file_time = now;
       try {
-        load(false);
+        load(false, angle);
         error.clear();
       } catch (const std::exception& e) {
         error = e.what();
@@ -242,8 +245,22 @@ int run_view_command(const std::vector<std::string>& argv) {
       }
     }
     const double now = window->time_seconds();
-    scene.frame.lights = scene.file.lights;
-    rotate_lights_about_z(scene.frame, angle);
+    // A light orbiting into a sphere stops where it was, paused, with the error shown.
+    const auto place_lights = [&] {
+      scene.frame.lights = scene.file.lights;
+      rotate_lights_about_z(scene.frame, angle);
+      require_lights_outside_spheres(scene.frame);
+    };
+    try {
+      place_lights();
+      good_angle = angle;
+      light_error.clear();
+    } catch (const InputError& e) {
+      light_error = e.what();
+      paused = true;
+      angle = good_angle;
+      place_lights();
+    }
     int width = 0, height = 0;
     window->framebuffer_size(width, height);
     if (width > 0 && height > 0) {
@@ -260,7 +277,10 @@ int run_view_command(const std::vector<std::string>& argv) {
     const auto draw_overlay = [&] {
       if (overlay && show_overlay)
         overlay->draw(status_lines(options.scene_path, scene.plan->lights[0], frame_ms, angle, paused, speed,
-                                   options.settings.sphere_segments, error));
+                                   options.settings.sphere_segments,
+                                   !error.empty()         ? "ERROR (showing the last good scene): " + error
+                                   : !light_error.empty() ? "light stopped: " + light_error
+                                                          : std::string()));
     };
     if (last_frame) {
       if (options.screenshot) {

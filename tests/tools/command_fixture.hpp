@@ -37,8 +37,10 @@ class CommandTest : public testing::Test {
     return path(name);
   }
 
-  CommandResult run(const std::string& args) const {
-    const std::string command = std::string(UMBRA_EXECUTABLE) + " " + args + " >" + path("out.txt") + " 2>" + path("err.txt");
+  // Runs `umbra ARGS`, after `prefix` (such as "xvfb-run -a ") when given.
+  CommandResult run(const std::string& args, const std::string& prefix = "") const {
+    const std::string command =
+        prefix + std::string(UMBRA_EXECUTABLE) + " " + args + " >" + path("out.txt") + " 2>" + path("err.txt");
     CommandResult r;
     const int raw = std::system(command.c_str());
     r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

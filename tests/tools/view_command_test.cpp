@@ -13,19 +13,7 @@ using test::CommandResult;
 class ViewCommand : public test::CommandTest {
  protected:
   // The viewer in a virtual X display of its own.
-  CommandResult run_in_xvfb(const std::string& args) const {
-    return run_with_prefix("xvfb-run -a -s '-screen 0 640x480x24' ", args);
-  }
-  CommandResult run_with_prefix(const std::string& prefix, const std::string& args) const {
-    const std::string command =
-        prefix + std::string(UMBRA_EXECUTABLE) + " " + args + " >" + path("out.txt") + " 2>" + path("err.txt");
-    CommandResult r;
-    const int raw = std::system(command.c_str());
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = read(path("out.txt"));
-    r.err = read(path("err.txt"));
-    return r;
-  }
+  CommandResult run_in_xvfb(const std::string& args) const { return run(args, "xvfb-run -a -s '-screen 0 640x480x24' "); }
   static std::string scene(const std::string& name) { return std::string(UMBRA_SOURCE_DIR) + "/scenes/" + name; }
 };
 
@@ -73,6 +61,16 @@ TEST_F(ViewCommand, OverlayIsDrawnInTheTopLeftCornerOnly) {
   EXPECT_EQ(outside, 0);
 }
 
+TEST_F(ViewCommand, LightOrbitingIntoASphereStopsOutsideIt) {
+  // 90 degrees a frame: frame 2 would put the light at (0, 1, 2), inside the sphere.
+  const std::string s = write("orbit.scene", "light 1 0 2\nsphere 0 1 2 0.3\ntriangle -1 -1 -1 1 -1 -1 0 1 -1\n");
+  const CommandResult view = run_in_xvfb("view " + s + " --size 80x60 --speed 5400 --frames 4 --screenshot " + path("v.png"));
+  ASSERT_EQ(view.status, 0) << view.err;
+  EXPECT_EQ(view.out, "wrote " + path("v.png") + " (frame 4, light at 0 deg)\n");
+  ASSERT_EQ(run("render " + s + " --size 80x60 -o " + path("h.png")).status, 0);
+  expect_same_pixels(read_png(path("v.png")), read_png(path("h.png")));
+}
+
 TEST_F(ViewCommand, BadSceneExitsOneWithItsLocatedError) {
   const std::string bad = write("bad.scene", "light 0 0 2\nsphere 0 0 0 O.5\n");
   const CommandResult r = run_in_xvfb("view " + bad + " --frames 1");
@@ -81,7 +79,7 @@ TEST_F(ViewCommand, BadSceneExitsOneWithItsLocatedError) {
 }
 
 TEST_F(ViewCommand, WithoutADisplayItSaysSo) {
-  const CommandResult r = run_with_prefix("env -u DISPLAY -u WAYLAND_DISPLAY ", "view " + scene("demo.scene") + " --frames 1");
+  const CommandResult r = run("view " + scene("demo.scene") + " --frames 1", "env -u DISPLAY -u WAYLAND_DISPLAY ");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("GLFW: cannot start (is there a display? try xvfb-run)"), std::string::npos) << r.err;
 }
