@@ -166,7 +166,7 @@ int run_view_command(const std::vector<std::string>& argv) {
   LoadedScene scene;
   std::optional<Camera> orbited;  // the user's camera, kept across reloads
   // Lights are checked at `angle`, where the next frame will draw them.
-  const auto load = [&](bool first, double angle) {
+  const auto load = [&](double angle) {
     Scene parsed = parse_scene_file(options.scene_path);
     for (const Warning& w : parsed.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
     Scene check = parsed;
@@ -174,7 +174,7 @@ int run_view_command(const std::vector<std::string>& argv) {
     require_lights_outside_spheres(check);
     scene.file = std::move(parsed);
     scene.frame = scene.file;
-    if (!first && orbited) scene.frame.camera = *orbited;
+    if (orbited) scene.frame.camera = *orbited;  // a reload keeps the user's view
     scene.meshes = prepare_mesh_casters(scene.frame);
     scene.plan = std::make_unique<RenderPlan>(make_render_plan(scene.frame, scene.meshes, options.settings));
     scene.renderer = std::make_unique<ShadowRenderer>(scene.frame, *scene.plan);
@@ -183,7 +183,7 @@ int run_view_command(const std::vector<std::string>& argv) {
   try {
     window = std::make_unique<WindowContext>(options.settings.width, options.settings.height,
                                              "umbra view - " + options.scene_path);
-    load(true, options.light_angle_deg);
+    load(options.light_angle_deg);
   } catch (const std::exception& e) {
     std::cerr << e.what() << "\n";
     return 1;
@@ -237,7 +237,7 @@ int run_view_command(const std::vector<std::string>& argv) {
     if (const auto now = file_signature(options.scene_path); now && now != file_time) {
       file_time = now;
       try {
-        load(false, angle);
+        load(angle);
         error.clear();
       } catch (const std::exception& e) {
         error = e.what();
