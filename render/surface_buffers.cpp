@@ -80,7 +80,17 @@ void SurfaceBuffers::draw_triangle_group(const TriangleGroup& group) const {
     glCullFace(GL_BACK);
   }
   glBindVertexArray(triangle_vao_);
-  glDrawArrays(GL_TRIANGLES, group.first_vertex, group.vertex_count);
+  // Mesa's llvmpipe (lp_setup_analyse_triangles, a fast path for one
+  // Windows compositor) treats a draw of exactly 9 vertices whose last
+  // triangle is level on screen (all three at one window y, as a triangle
+  // whose plane holds the eye is) as a rectangle, and draws nothing when the
+  // first two do not make one. So 3 triangles are drawn as 2 + 1.
+  if (group.vertex_count == 9) {
+    glDrawArrays(GL_TRIANGLES, group.first_vertex, 6);
+    glDrawArrays(GL_TRIANGLES, group.first_vertex + 6, 3);
+  } else {
+    glDrawArrays(GL_TRIANGLES, group.first_vertex, group.vertex_count);
+  }
   glDisable(GL_CULL_FACE);
 }
 
@@ -143,6 +153,13 @@ void VolumeBuffer::draw() const {
   if (index_count_ == 0) return;
   glBindVertexArray(vao_);
   glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
+}
+
+void VolumeBuffer::draw_triangles(uint32_t first, uint32_t end) const {
+  if (end <= first) return;
+  glBindVertexArray(vao_);
+  glDrawElements(GL_TRIANGLES, GLsizei(3 * (end - first)), GL_UNSIGNED_INT,
+                 reinterpret_cast<const void*>(size_t(first) * 3 * sizeof(uint32_t)));
 }
 
 }  // namespace umbra
