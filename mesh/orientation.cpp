@@ -1,6 +1,7 @@
 #include "mesh/orientation.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
 
 namespace umbra {
 namespace {
@@ -15,6 +16,18 @@ int orientation(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, c
 
 bool collinear(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
   return CGAL::collinear(point(a), point(b), point(c));
+}
+
+int side_of_sphere(const glm::dvec3& center, double radius, const glm::dvec3& p) {
+  // Rationals hold every double and their products exactly; a scene has few
+  // spheres and lights, so the exact path is cheap enough to take always.
+  using Q = CGAL::Exact_rational;
+  Q sum = -Q(radius) * Q(radius);
+  for (int i = 0; i < 3; ++i) {
+    const Q d = Q(p[i]) - Q(center[i]);
+    sum += d * d;
+  }
+  return CGAL::sign(sum);
 }
 
 }  // namespace umbra

@@ -4,6 +4,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "mesh/orientation.hpp"
+
 namespace umbra {
 
 void require_lights_outside_spheres(const Scene& scene) {
@@ -17,7 +19,10 @@ void require_lights_outside_spheres(const Scene& scene) {
       if (!std::isfinite(tangent2))
         throw InputError(s.where, "the distance from " + light_name +
                                       " to this sphere overflows double precision; scale the scene down");
-      if (tangent2 <= 0.0)
+      // Exactly on the surface counts as on it whatever the rounding says; and
+      // so does a point the double arithmetic cannot tell from it, where the
+      // tangent circle cannot be built.
+      if (side_of_sphere(s.center, s.radius, light.position) <= 0 || tangent2 <= 0.0)
         throw InputError(s.where, light_name + " is inside or on this sphere, which then has no shadow volume; "
                                                "move the light outside the sphere");
     }
