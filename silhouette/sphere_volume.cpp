@@ -47,7 +47,7 @@ ShadowVolume sphere_volume(const glm::dvec3& center, double radius, const glm::d
     const double beta = 2.0 * M_PI * k / segments;
     loop[size_t(segments - 1 - k)] = circle.center + std::cos(beta) * circle.v + std::sin(beta) * circle.u;
   }
-  return extrude_to_infinity(loop, light);
+  return extrude_to_infinity(loop, light, circle.center);
 }
 
 }  // namespace umbra

@@ -62,8 +62,8 @@ TEST(SphereVolume, LightCapFacesTheLightAndEveryFaceOutward) {
   const glm::dvec3 center(0, 0, -0.3), light(0.6, 0.8, 1.6);
   const ShadowVolume v = sphere_volume(center, 0.35, light, 16);
   EXPECT_EQ(v.side_quads, 16);
-  EXPECT_EQ(v.light_cap_triangles, 14);
-  EXPECT_EQ(v.dark_cap_triangles, 14);
+  EXPECT_EQ(v.light_cap_triangles, 16);  // fans round the cap's centre
+  EXPECT_EQ(v.dark_cap_triangles, 16);
   for (int i = 0; i < v.light_cap_triangles; ++i)
     EXPECT_GT(glm::dot(test::face_normal(v, v.triangles[size_t(i)]), light - center), 0.0);
   // A point inside the volume (behind the sphere on the axis) is on the inner
@@ -75,6 +75,27 @@ TEST(SphereVolume, LightCapFacesTheLightAndEveryFaceOutward) {
     const glm::dvec3 normal = glm::cross(a - b, glm::dvec3(v.vertices[t[2]]));
     EXPECT_LT(glm::dot(normal, inside - b), 0.0);
   }
+}
+
+TEST(SphereVolume, CapsAtInfinityStayWellConditionedWhenTheLightAlmostTouchesTheSphere) {
+  // A light 1e-9 R outside the sphere: the cone is 4e-5 rad short of a half
+  // space, so its directions at infinity lie almost in one plane. Every
+  // triangle of the cap at infinity must still span a solid corner (the
+  // determinant of its unit directions), or float clipping loses it; a fan
+  // from one rim vertex would give determinants near 4e-5.
+  const glm::dvec3 center(0.1, -0.1, -0.3), axis = glm::normalize(glm::dvec3(0.3, 0.4, 0.866));
+  const double radius = 0.4;
+  const ShadowVolume v = sphere_volume(center, radius, center + axis * (radius * (1.0 + 1e-9)), 64);
+  EXPECT_TRUE(is_closed_and_consistently_oriented(v));
+  int far_triangles = 0;
+  for (const auto& t : v.triangles) {
+    if (v.vertices[t[0]].w != 0.0 || v.vertices[t[1]].w != 0.0 || v.vertices[t[2]].w != 0.0) continue;
+    ++far_triangles;
+    glm::dvec3 d[3];
+    for (int i = 0; i < 3; ++i) d[i] = glm::normalize(glm::dvec3(v.vertices[t[size_t(i)]]));
+    EXPECT_GT(std::abs(glm::dot(glm::cross(d[0], d[1]), d[2])), 0.05);
+  }
+  EXPECT_EQ(far_triangles, 64);  // the dark cap: a fan round the cone's axis
 }
 
 TEST(SphereVolume, IsClosedForManyLightsAndSegmentCounts) {

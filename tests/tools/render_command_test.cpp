@@ -111,7 +111,7 @@ TEST_F(RenderCommand, ExplainPrintsThePlan) {
   EXPECT_NE(r.out.find("camera: eye (0, 0, 3.4) target (0, 0, 0) up (0, 1, 0) fovy 45 deg (the spec's default view)"),
             std::string::npos) << r.out;
   EXPECT_NE(r.out.find("stencil method: z-fail"), std::string::npos);
-  EXPECT_NE(r.out.find("sphere (line 7): tangent-circle 12-gon (spec 2.2), 12 quads + 20 cap triangles"), std::string::npos)
+  EXPECT_NE(r.out.find("sphere (line 7): tangent-circle 12-gon (spec 2.2), 12 quads + 24 cap triangles"), std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("triangle (line 5): three side quads (spec 2.1), 3 quads + 2 cap triangles"), std::string::npos);
 }
