@@ -7,6 +7,8 @@
 
 namespace umbra {
 
+double near_plane(const Camera& camera) { return kNearPlaneFraction * glm::length(camera.target - camera.eye); }
+
 glm::dmat4 view_matrix(const Camera& camera) { return glm::lookAt(camera.eye, camera.target, camera.up); }
 
 glm::dmat4 infinite_perspective(double fovy_deg, double aspect, double near) {

@@ -8,8 +8,12 @@
 
 namespace umbra {
 
-// The near plane distance; the far plane is at infinity.
-constexpr double kNearPlane = 0.05;
+// The near plane is at this fraction of the eye's distance to its target,
+// so that a scene scaled by 1e6 or 1e-6 with its camera keeps the same depth
+// precision; for the spec's view (eye 3.4 from the origin) it is 0.05.
+constexpr double kNearPlaneFraction = 0.05 / 3.4;
+// The far plane is at infinity.
+double near_plane(const Camera& camera);
 
 // Everitt and Kilgard: with the far plane at infinity, a vertex at infinity
 // lands exactly on the far plane and rounding may clip it. Scaling depth by

@@ -86,8 +86,14 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
                      [](const CasterEntry& a, const CasterEntry& b) { return a.where.line < b.where.line; });
     lp.all_volumes.vertices.clear();
     lp.all_volumes.triangles.clear();
+    lp.all_volumes.part_ends.clear();
     lp.all_volumes.side_quads = lp.all_volumes.light_cap_triangles = lp.all_volumes.dark_cap_triangles = 0;
     for (const CasterEntry& e : lp.casters) append_volume(lp.all_volumes, e.volume);
+    lp.stencil_batch_ends.clear();
+    const std::vector<uint32_t>& parts = lp.all_volumes.part_ends;
+    for (size_t end = kVolumesPerStencilBatch; end < parts.size(); end += kVolumesPerStencilBatch)
+      lp.stencil_batch_ends.push_back(parts[end - 1]);
+    lp.stencil_batch_ends.push_back(uint32_t(lp.all_volumes.triangles.size()));
     lp.side_quads = lp.all_volumes.side_quads;
     lp.light_cap_triangles = lp.all_volumes.light_cap_triangles;
     lp.dark_cap_triangles = lp.all_volumes.dark_cap_triangles;
@@ -105,7 +111,8 @@ void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& 
   out << "  image: " << plan.settings.width << "x" << plan.settings.height << "\n";
   out << "  camera: eye " << c.eye << " target " << c.target << " up " << c.up << " fovy " << c.fovy_deg
       << " deg" << (plan.camera_is_spec_default ? " (the spec's default view)" : " (from the scene file)") << "\n";
-  out << "  projection: perspective, near " << kNearPlane << ", far plane at infinity (epsilon 2^-22)\n";
+  out << "  projection: perspective, near " << near_plane(c) << " (" << kNearPlaneFraction
+      << " of the eye's distance to the target), far plane at infinity (epsilon 2^-22)\n";
   out << "  stencil method: z-fail with light and dark caps, two-sided stencil with wrapping;\n"
          "    correct wherever the eye is, inside a shadow volume or not\n";
   for (size_t i = 0; i < plan.lights.size(); ++i) {
@@ -113,6 +120,10 @@ void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& 
     const LightPlan& lp = plan.lights[i];
     out << "  light " << i + 1 << " at " << light.position << " (line " << light.where.line << "): " << lp.side_quads
         << " side quads, " << lp.light_cap_triangles << " light-cap and " << lp.dark_cap_triangles << " dark-cap triangles\n";
+    if (lp.stencil_batch_ends.size() > 1)
+      out << "    counted in " << lp.stencil_batch_ends.size() + lp.mesh_volumes.size()
+          << " stencil batches (at most " << kVolumesPerStencilBatch << " sphere and triangle volumes each, and one per mesh), "
+          << "so that no count wraps to zero\n";
     for (const CasterEntry& e : lp.casters) {
       out << "    " << e.kind << " (line " << e.where.line << "): " << e.method;
       if (e.mesh_volume >= 0) {

@@ -34,9 +34,17 @@ struct MeshVolumePlan {
   MeshVolumeIndices volume;
 };
 
+// The 8-bit stencil counts modulo 256, so a point inside exactly 256 volumes
+// would read as lit. Sphere and triangle volumes (each counts a point 0 or 1
+// times) are therefore counted in batches of at most 255.
+constexpr size_t kVolumesPerStencilBatch = 255;
+
 struct LightPlan {
   std::vector<CasterEntry> casters;
   ShadowVolume all_volumes;                  // every other caster's volume, one draw call
+  // all_volumes' batches for the stencil: one past the last triangle of each.
+  // With more than one, every mesh volume is a batch of its own too.
+  std::vector<uint32_t> stencil_batch_ends;
   std::vector<MeshVolumePlan> mesh_volumes;  // one draw call each
   int side_quads = 0, light_cap_triangles = 0, dark_cap_triangles = 0;  // of all of them
 };

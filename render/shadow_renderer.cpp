@@ -57,7 +57,8 @@ ShadowRenderer::ShadowRenderer(const Scene& scene, const RenderPlan& plan) : sce
 // camera and resizes the window.
 void ShadowRenderer::apply_view() {
   const RenderSettings& s = plan_.settings;
-  const glm::mat4 view_projection(infinite_perspective(plan_.camera.fovy_deg, double(s.width) / s.height, kNearPlane) *
+  const glm::mat4 view_projection(infinite_perspective(plan_.camera.fovy_deg, double(s.width) / s.height,
+                                                       near_plane(plan_.camera)) *
                                   view_matrix(plan_.camera));
   for (ShaderProgram* p : {triangle_program_.get(), sphere_program_.get()}) {
     p->use();
@@ -110,24 +111,38 @@ void ShadowRenderer::depth_and_ambient_pass() {
 }
 
 void ShadowRenderer::count_shadow_volumes(size_t light) {
-  glClearStencil(0);
-  glClear(GL_STENCIL_BUFFER_BIT);
-  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  glDepthMask(GL_FALSE);
-  glDepthFunc(GL_LESS);  // a volume face level with a surface counts as behind it
-  glEnable(GL_STENCIL_TEST);
-  glStencilFunc(GL_ALWAYS, 0, 0xFF);
-  // z-fail (seed 002): back faces increment, front faces decrement where the
-  // depth test fails; wrapping keeps counts beyond 255 correct modulo 256.
-  glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
-  glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
-  // A triangle's light cap is the triangle itself: push volumes a few depth
-  // units back so the cap reliably counts as behind its own surface, which
-  // leaves the surface lit, whatever the rasteriser's rounding.
-  glEnable(GL_POLYGON_OFFSET_FILL);
-  glPolygonOffset(0.0f, 4.0f);
-  draw_volumes(light);
-  baseline_state();
+  const LightPlan& lp = plan_.lights[light];
+  const size_t batches =
+      lp.stencil_batch_ends.size() > 1 ? lp.stencil_batch_ends.size() + lp.mesh_volumes.size() : 1;
+  shadow_marked_in_alpha_ = batches > 1;
+  if (shadow_marked_in_alpha_) {  // nothing is marked yet
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    volumes_->upload(lp.all_volumes);  // batches draw ranges of it
+  }
+  for (size_t batch = 0; batch < batches; ++batch) {
+    glClearStencil(0);
+    glClear(GL_STENCIL_BUFFER_BIT);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glDepthMask(GL_FALSE);
+    glDepthFunc(GL_LESS);  // a volume face level with a surface counts as behind it
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_ALWAYS, 0, 0xFF);
+    // z-fail (seed 002): back faces increment, front faces decrement where the
+    // depth test fails; wrapping keeps counts beyond 255 correct modulo 256.
+    glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+    glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+    // A triangle's light cap is the triangle itself: push volumes a few depth
+    // units back so the cap reliably counts as behind its own surface, which
+    // leaves the surface lit, whatever the rasteriser's rounding.
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(0.0f, 4.0f);
+    if (batches == 1) draw_volumes(light);
+    else draw_stencil_batch(light, batch);
+    baseline_state();
+    if (batch + 1 < batches) mark_shadowed_in_alpha();  // the last batch's count stays in the stencil
+  }
 }
 
 // Light `light`'s volumes with the volume program and the current state.
@@ -145,14 +160,51 @@ void ShadowRenderer::draw_volumes(size_t light) {
   }
 }
 
+// One batch of a light whose volumes are counted in several: a range of
+// all_volumes (already uploaded), or one mesh's volume.
+void ShadowRenderer::draw_stencil_batch(size_t light, size_t batch) {
+  const LightPlan& lp = plan_.lights[light];
+  volume_program_->use();
+  const std::vector<uint32_t>& ends = lp.stencil_batch_ends;
+  if (batch < ends.size()) {
+    volume_program_->set("extrude_from_light", 0);
+    volumes_->draw_triangles(batch == 0 ? 0 : ends[batch - 1], ends[batch]);
+    return;
+  }
+  const MeshVolumePlan& m = lp.mesh_volumes[batch - ends.size()];
+  volume_program_->set("extrude_from_light", 1);
+  volume_program_->set("light_position", f(scene_.lights[light].position));
+  mesh_volumes_[m.mesh]->upload_indices(m.volume.buffer.data(), m.volume.count);
+  mesh_volumes_[m.mesh]->draw();
+}
+
+// Alpha = 1 on every visible surface pixel whose stencil count is not zero.
+void ShadowRenderer::mark_shadowed_in_alpha() {
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+  glDepthFunc(GL_EQUAL);
+  glDepthMask(GL_FALSE);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_NOTEQUAL, 0, 0xFF);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  draw_surfaces(shaders::kAmbient, 0);  // every surface pass writes alpha 1
+  baseline_state();
+}
+
+// For a pass that adds light where the stencil is zero: with batches, blend
+// so that pixels marked in alpha get nothing, and leave alpha as it is.
+void ShadowRenderer::leave_out_marked_pixels() const {
+  glEnable(GL_BLEND);
+  if (shadow_marked_in_alpha_) glBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE);
+  else glBlendFunc(GL_ONE, GL_ONE);
+}
+
 void ShadowRenderer::direct_light_pass(size_t light) {
   glEnable(GL_STENCIL_TEST);
   glStencilFunc(GL_EQUAL, 0, 0xFF);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glDepthFunc(GL_EQUAL);
   glDepthMask(GL_FALSE);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE);
+  leave_out_marked_pixels();
   draw_surfaces(shaders::kDirect, light);
   baseline_state();
 }
@@ -192,8 +244,9 @@ Image ShadowRenderer::read_image() const { return read_pixels(3); }
 Image ShadowRenderer::render_mask(size_t light) {
   depth_and_ambient_pass();
   count_shadow_volumes(light);
-  // Every visible surface starts unlit, then lit where it faces the light and
-  // the stencil count is zero.
+  // Every visible surface starts unlit (0), then lit where it faces the light
+  // and the stencil count is zero; alpha keeps any batches' marks.
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
   glClearColor(kMaskNoSurface / 255.0f, kMaskNoSurface / 255.0f, kMaskNoSurface / 255.0f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
   glDepthFunc(GL_EQUAL);
@@ -202,6 +255,7 @@ Image ShadowRenderer::render_mask(size_t light) {
   glEnable(GL_STENCIL_TEST);
   glStencilFunc(GL_EQUAL, 0, 0xFF);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  leave_out_marked_pixels();  // 1 * 0 + lit, or nothing where marked
   draw_surfaces(shaders::kMaskLit, light);
   baseline_state();
   return read_pixels(1);

@@ -6,6 +6,10 @@
 //      depth writes off, back faces incrementing and front faces decrementing
 //      (with wrapping) where the depth test fails; then add the light's
 //      diffuse + specular term where the stencil is zero.
+// When a light has more volumes than one stencil count can hold (the plan's
+// stencil batches), each batch is counted on its own and the pixels it
+// shadows are marked in the colour buffer's alpha, which the light's pass
+// then leaves out.
 
 #include <memory>
 #include <vector>
@@ -50,6 +54,9 @@ class ShadowRenderer {
   void mask_pass();
   void draw_surfaces(int pass, size_t light);
   void draw_volumes(size_t light);
+  void draw_stencil_batch(size_t light, size_t batch);
+  void mark_shadowed_in_alpha();
+  void leave_out_marked_pixels() const;
   Image read_pixels(int channels) const;
 
   const Scene& scene_;
@@ -58,6 +65,7 @@ class ShadowRenderer {
   std::unique_ptr<SurfaceBuffers> surfaces_;
   std::unique_ptr<VolumeBuffer> volumes_;
   std::vector<std::unique_ptr<VolumeBuffer>> mesh_volumes_;  // per scene mesh; null for the per-triangle method
+  bool shadow_marked_in_alpha_ = false;  // the last count_shadow_volumes used batches
 };
 
 }  // namespace umbra

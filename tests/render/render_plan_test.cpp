@@ -2,6 +2,8 @@
 // plan made afresh, without reallocating the mesh volumes' index buffers.
 #include <gtest/gtest.h>
 
+#include <sstream>
+
 #include "mesh/scene_parser.hpp"
 #include "render/render_plan.hpp"
 
@@ -28,6 +30,25 @@ TEST(RenderPlan, UpdateForAMovedLightEqualsAFreshPlanAndReusesTheIndexBuffers) {
   ASSERT_EQ(plan.lights[0].casters.size(), fresh.lights[0].casters.size());
   for (size_t i = 0; i < plan.lights[0].casters.size(); ++i)
     EXPECT_EQ(plan.lights[0].casters[i].method, fresh.lights[0].casters[i].method);
+}
+
+TEST(RenderPlan, SplitsMoreThan255VolumesIntoStencilBatches) {
+  // 600 level triangles over one point (8 volume triangles each) and one
+  // degenerate triangle (no volume): batches end after volumes 255 and 510.
+  std::string text = "light 0 0 2\ntriangle 0 0 0  1 0 0  2 0 0\n";
+  for (int k = 0; k < 600; ++k) text += "triangle -0.1 -0.1 " + std::to_string(k * 0.001) + "  0.1 -0.1 " +
+                                        std::to_string(k * 0.001) + "  0 0.1 " + std::to_string(k * 0.001) + "\n";
+  const RenderPlan plan = make_render_plan(parse_scene_text(text, "many.scene"), RenderSettings{});
+  EXPECT_EQ(plan.lights[0].stencil_batch_ends, (std::vector<uint32_t>{255 * 8, 510 * 8, 600 * 8}));
+  std::ostringstream out;
+  print_render_plan(out, parse_scene_text(text, "many.scene"), plan);
+  EXPECT_NE(out.str().find("counted in 3 stencil batches (at most 255 sphere and triangle volumes each, and one per "
+                           "mesh), so that no count wraps to zero\n"),
+            std::string::npos)
+      << out.str();
+
+  const RenderPlan small = make_render_plan(parse_scene_text("light 0 0 2\nsphere 0 0 0 0.5\n", "one.scene"), RenderSettings{});
+  EXPECT_EQ(small.lights[0].stencil_batch_ends, (std::vector<uint32_t>{uint32_t(small.lights[0].all_volumes.triangles.size())}));
 }
 
 }  // namespace

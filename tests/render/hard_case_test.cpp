@@ -1,0 +1,289 @@
+// The hard cases of numerical stability (README, "Hard cases"): each scene's
+// mask must match exact shadow rays on the CPU, every volume vertex must be
+// finite where it should be and a true direction where it is at infinity, and
+// every volume must be closed. Where the answer is an error, it is the exact
+// error.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "hard_case_scenes.hpp"
+#include "mask_comparison.hpp"
+#include "mesh/scene_checks.hpp"
+#include "mesh/scene_parser.hpp"
+#include "silhouette/mesh_caster.hpp"
+#include "silhouette/mesh_volume.hpp"
+#include "silhouette/volume_topology.hpp"
+
+namespace umbra {
+namespace {
+
+using test::box_obj;
+using test::floor_text;
+using test::write_mesh;
+
+RenderPlan plan_for(const Scene& scene) {
+  RenderSettings settings;
+  settings.width = settings.height = 120;
+  return make_render_plan(scene, settings);
+}
+
+// No NaN anywhere; w is 1 (finite) or 0 (at infinity), and a point at
+// infinity is a true direction, never (0, 0, 0, 0).
+void expect_sound_volumes(const Scene& scene) {
+  const std::vector<MeshCaster> casters = prepare_mesh_casters(scene);
+  const RenderPlan plan = make_render_plan(scene, casters, RenderSettings{});
+  for (size_t i = 0; i < plan.lights.size(); ++i) {
+    const LightPlan& lp = plan.lights[i];
+    for (const glm::dvec4& v : lp.all_volumes.vertices) {
+      ASSERT_TRUE(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)) << "light " << i + 1;
+      ASSERT_TRUE(v.w == 1.0 || (v.w == 0.0 && (v.x != 0.0 || v.y != 0.0 || v.z != 0.0))) << "light " << i + 1;
+    }
+    for (const CasterEntry& e : lp.casters)
+      if (!e.volume.triangles.empty()) EXPECT_TRUE(is_closed_and_consistently_oriented(e.volume)) << e.where.str();
+    for (const MeshVolumePlan& m : lp.mesh_volumes) {
+      const std::vector<glm::dvec3>& positions = scene.meshes[m.mesh].positions;
+      for (size_t k = 0; k < m.volume.count; ++k) {
+        const uint32_t index = m.volume.buffer[k];
+        ASSERT_LT(index, 2 * positions.size());
+        if (index >= positions.size())
+          ASSERT_NE(positions[index - positions.size()], scene.lights[i].position) << "a (0, 0, 0, 0) vertex";
+      }
+      const ShadowVolume volume = mesh_shadow_volume(casters[m.mesh].adjacency, scene.lights[i].position);
+      EXPECT_TRUE(has_no_boundary(volume)) << "light " << i + 1;
+    }
+  }
+}
+
+void expect_hard_case_holds(const Scene& scene, int segments = 64) {
+  expect_sound_volumes(scene);
+  test::expect_masks_match_reference(scene, 120, 120, segments);
+}
+
+std::string method_of(const Scene& scene, size_t caster) { return plan_for(scene).lights[0].casters[caster].method; }
+
+// --- spheres -----------------------------------------------------------------
+
+// Light 1 sits `gap` (relative to R) outside the sphere, towards the camera.
+Scene light_near_sphere(double gap) {
+  const double r = 0.4;
+  const glm::dvec3 centre(0.1, -0.1, -0.3), dir = glm::normalize(glm::dvec3(0.3, 0.4, 0.866));
+  const glm::dvec3 l = centre + dir * (r * (1.0 + gap));
+  std::ostringstream text;
+  text.precision(17);
+  text << "light " << l.x << " " << l.y << " " << l.z << "\n" << floor_text() << "sphere " << centre.x << " "
+       << centre.y << " " << centre.z << " " << r << "\nsphere -0.6 0.5 -0.8 0.15\n";
+  return parse_scene_text(text.str(), "near.scene");
+}
+
+TEST(HardSphere, LightAThousandthOfTheRadiusOutside) { expect_hard_case_holds(light_near_sphere(1e-3)); }
+
+TEST(HardSphere, LightABillionthOfTheRadiusOutside) { expect_hard_case_holds(light_near_sphere(1e-9)); }
+
+std::string sphere_error(const std::string& text) {
+  try {
+    require_lights_outside_spheres(parse_scene_text(text, "s.scene"));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(HardSphere, LightOnOrInsideIsAnErrorAtTheSphere) {
+  const std::string error = "s.scene:2:1: light 1 (line 1) is inside or on this sphere, which then has no shadow "
+                            "volume; move the light outside the sphere";
+  EXPECT_EQ(sphere_error("light 0 0 0.5\nsphere 0 0 0 0.5\n"), error);             // on it
+  EXPECT_EQ(sphere_error("light 0.3 0.4 0\nsphere 0 0 0 0.5\n"), error);           // on it, 0.3^2 + 0.4^2 rounds
+  EXPECT_EQ(sphere_error("light 0 0 0.1\nsphere 0 0 0 0.5\n"), error);             // inside
+  EXPECT_EQ(sphere_error("light 0 0 0.5000000000000001\nsphere 0 0 0 0.5\n"), "");  // one ulp outside
+}
+
+// --- triangles ---------------------------------------------------------------
+
+// A vertical triangle in the plane y = 0; the light is `offset` off that plane.
+Scene light_by_triangle_plane(double offset) {
+  std::ostringstream text;
+  text.precision(17);
+  text << "light 0.3 " << offset << " 1.5\n"
+       << floor_text() << "triangle -0.4 0 -0.6  0.4 0 -0.6  0 0 0.3\nsphere 0.3 0.4 -0.6 0.2\n";
+  return parse_scene_text(text.str(), "plane.scene");
+}
+
+TEST(HardTriangle, LightInItsPlaneCastsNothing) {
+  const Scene scene = light_by_triangle_plane(0.0);
+  EXPECT_EQ(method_of(scene, 2), "none: its plane contains the light, so it is seen edge-on");
+  expect_hard_case_holds(scene);
+}
+
+TEST(HardTriangle, LightWithin1e7OfItsPlane) {
+  for (const double offset : {1e-7, -1e-7, 1e-15}) {
+    const Scene scene = light_by_triangle_plane(offset);
+    EXPECT_EQ(method_of(scene, 2), "three side quads (spec 2.1)");
+    expect_hard_case_holds(scene);
+  }
+}
+
+TEST(HardTriangle, DegenerateTrianglesCastNothingAndSliversTheirShadow) {
+  const Scene scene = parse_scene_text("light 0.2 0.3 1.8\n" + floor_text() +
+                                           "triangle 0.1 0.1 0  0.1 0.1 0  0.4 0.2 0\n"         // a repeated vertex
+                                           "triangle -0.5 0 0  0 0.25 0  0.5 0.5 0\n"          // collinear
+                                           "triangle 0 0 0  0 0 0  0 0 0\n"                    // a point
+                                           "triangle -0.6 -0.5 -0.2  0.6 -0.5 -0.2  0 -0.4999 -0.2\n"  // a sliver
+                                           "sphere 0 0.4 -0.6 0.2\n",
+                                       "degenerate.scene");
+  EXPECT_EQ(method_of(scene, 2), "none: degenerate (collinear vertices)");
+  EXPECT_EQ(method_of(scene, 3), "none: degenerate (collinear vertices)");
+  EXPECT_EQ(method_of(scene, 4), "none: degenerate (collinear vertices)");
+  EXPECT_EQ(method_of(scene, 5), "three side quads (spec 2.1)");
+  EXPECT_EQ(scene.warnings.size(), 3u);
+  expect_hard_case_holds(scene);
+}
+
+// --- meshes ------------------------------------------------------------------
+
+Scene mesh_scene(const std::string& light, const std::string& obj_name, const std::string& obj) {
+  return parse_scene_text(light + floor_text() + "mesh \"" + write_mesh(obj_name, obj) + "\"\n", "mesh.scene");
+}
+
+TEST(HardMesh, LightInTheirFacesPlanes) {
+  // The box [-0.3, 0.3]^2 x [-0.7, -0.1]: lights in its top face's plane, in
+  // two side faces' planes at once, and on the line of a top edge.
+  const std::string box = box_obj(-0.3, 0.3, -0.7, -0.1);
+  for (const char* light : {"light 0.9 0.2 -0.1\n", "light 0.3 0.3 1.5\n", "light 0.3 -1.2 -0.1\n"}) {
+    SCOPED_TRACE(light);
+    const Scene scene = mesh_scene(light, "box.obj", box);
+    ASSERT_EQ(scene.meshes[0].report.shadow_method(), ShadowMethod::kSilhouette);
+    expect_hard_case_holds(scene);
+  }
+}
+
+TEST(HardMesh, NearlyCoplanarNeighbours) {
+  // The top is a fan whose centre is raised 1e-12, or by one unit in the
+  // last place: its four faces are that far from coplanar, and the light lies
+  // in the plane of the box's top edges, so their sides of the light are
+  // decided within rounding.
+  const double ulp = std::nextafter(-0.1, 0.0) + 0.1;
+  for (const double bump : {1e-12, -1e-12, ulp, -ulp}) {
+    SCOPED_TRACE(bump);
+    const Scene scene = mesh_scene("light 0.8 0.5 -0.1\n", "fan.obj", test::fan_top_box_obj(-0.3, 0.3, -0.7, -0.1, bump));
+    ASSERT_EQ(scene.meshes[0].report.shadow_method(), ShadowMethod::kSilhouette);
+    expect_hard_case_holds(scene);
+  }
+}
+
+TEST(HardMesh, LightInsideAClosedMeshDarkensEverythingOutsideIt) {
+  // The physically right answer: the box blocks every ray from the light.
+  const Scene scene = parse_scene_text("light 0 0 -0.3\n" + floor_text() + "sphere 0.6 0.6 -0.8 0.1\nmesh \"" +
+                                           write_mesh("big_box.obj", box_obj(-0.5, 0.5, -0.6, 0.0)) +
+                                           "\" scale 1\n",
+                                       "inside.scene");
+  expect_sound_volumes(scene);
+  RenderSettings settings;
+  settings.width = settings.height = 80;
+  const RenderPlan plan = make_render_plan(scene, settings);
+  HeadlessContext context(80, 80);
+  ShadowRenderer renderer(scene, plan);
+  const Image mask = renderer.render_mask(0);
+  int surface = 0;
+  for (uint8_t v : mask.pixels) {
+    EXPECT_NE(v, kMaskLit);
+    surface += v != kMaskNoSurface;
+  }
+  EXPECT_GT(surface, 80 * 80 / 4);  // the floor and the box fill about 30% of the view
+  test::expect_masks_match_reference(scene, 80, 80, 64);
+}
+
+// --- scale -------------------------------------------------------------------
+
+// demo.scene with everything (camera included) multiplied by `s`.
+Scene scaled_demo(double s) {
+  Scene scene = parse_scene_file(std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene");
+  scene.camera.eye *= s;
+  scene.camera.target *= s;
+  for (Light& l : scene.lights) l.position *= s;
+  for (Sphere& sp : scene.spheres) {
+    sp.center *= s;
+    sp.radius *= s;
+  }
+  for (Triangle& t : scene.triangles) {
+    t.a *= s;
+    t.b *= s;
+    t.c *= s;
+  }
+  return scene;
+}
+
+TEST(HardScale, SceneScaledBy1e6) { expect_hard_case_holds(scaled_demo(1e6)); }
+
+TEST(HardScale, SceneScaledBy1eMinus6) { expect_hard_case_holds(scaled_demo(1e-6)); }
+
+TEST(HardScale, LightAMillionAway) {
+  Scene scene = parse_scene_file(std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene");
+  scene.lights[0].position = glm::normalize(glm::dvec3(0.3, 0.4, 1.0)) * 1e6;
+  expect_hard_case_holds(scene);
+}
+
+// --- the camera and the stencil ----------------------------------------------
+
+TEST(HardView, NearPlaneCutsThroughAVolume) {
+  // The side plane of the small triangle's volume through its edge y = 0
+  // passes through (0, -0.1, 2.2); the eye is 0.005 from it, closer than the
+  // near plane, so the near plane's rectangle straddles the volume's side.
+  const Scene scene = parse_scene_text("light 0 0.1 3\ncamera eye 0 -0.095 2.2 target 0 -0.095 0 up 0 1 0 fovy 60\n" +
+                                           floor_text() +
+                                           "triangle -0.1 0 2.6  0.1 0 2.6  0 0.2 2.6\nsphere 0.3 0.2 -0.5 0.3\n",
+                                       "near.scene");
+  expect_hard_case_holds(scene);
+}
+
+// `count` small level triangles strung along the ray from the light to the
+// floor point F = (-0.5, 0, -1), away from the camera's line of sight to F:
+// the floor round F is inside all `count` volumes.
+Scene triangles_along_a_light_ray(int count) {
+  const glm::dvec3 light(1.5, 0.0, 1.0), f(-0.5, 0.0, -1.0);
+  std::ostringstream text;
+  text.precision(17);
+  text << "light " << light.x << " " << light.y << " " << light.z << "\n" << floor_text();
+  for (int k = 0; k < count; ++k) {
+    const glm::dvec3 c = light + (0.3 + 0.3 * k / count) * (f - light);
+    text << "triangle " << c.x - 0.06 << " " << c.y - 0.05 << " " << c.z << "  " << c.x + 0.06 << " " << c.y - 0.05
+         << " " << c.z << "  " << c.x << " " << c.y + 0.07 << " " << c.z << "\n";
+  }
+  return parse_scene_text(text.str(), "stack.scene");
+}
+
+TEST(HardStencil, CountsOf255And256And300) {
+  // 256 is the case wrapping alone gets wrong (256 mod 256 = 0 reads as lit).
+  for (const int count : {255, 256, 300}) {
+    SCOPED_TRACE(count);
+    const Scene scene = triangles_along_a_light_ray(count);
+    ASSERT_TRUE(shadow_ray_blocked(scene, {-0.5, 0.0, -1.0}, 0, scene.lights[0].position));
+    test::expect_masks_match_reference(scene, 100, 100, 64);
+  }
+}
+
+TEST(HardStencil, BatchesWithAMeshAmongThem) {
+  // Two batches of triangle volumes and the mesh's own: the box shadows part
+  // of the floor while 256 triangles shadow the floor round F.
+  Scene scene = triangles_along_a_light_ray(256);
+  const Scene with_mesh = parse_scene_text(
+      "light 1.5 0 1\n" + floor_text() + "mesh \"" + write_mesh("batch_box.obj", box_obj(0.2, 0.6, -0.9, -0.5)) + "\"\n",
+      "box.scene");
+  scene.meshes = with_mesh.meshes;
+  ASSERT_EQ(plan_for(scene).lights[0].stencil_batch_ends.size(), 2u);
+  test::expect_masks_match_reference(scene, 100, 100, 64);
+}
+
+TEST(HardStencil, AMeshVolumeOverlappingItself300Times) {
+  std::ostringstream obj;
+  for (int k = 0; k < 300; ++k) obj << box_obj(-0.3, 0.3, -0.6 + 0.002 * k, -0.6 + 0.002 * k + 0.001, 8 * k);
+  const Scene scene = mesh_scene("light 0.05 0.1 1.8\n", "plates.obj", obj.str());
+  ASSERT_EQ(scene.meshes[0].report.shadow_method(), ShadowMethod::kSilhouette);
+  test::expect_masks_match_reference(scene, 100, 100, 64);
+}
+
+}  // namespace
+}  // namespace umbra
