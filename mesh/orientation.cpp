@@ -18,6 +18,15 @@ bool collinear(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
   return CGAL::collinear(point(a), point(b), point(c));
 }
 
+bool on_triangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dvec3& p) {
+  if (CGAL::orientation(point(a), point(b), point(c), point(p)) != CGAL::COPLANAR) return false;
+  if (CGAL::collinear(point(a), point(b), point(c)))  // degenerate: on one of its segments
+    return CGAL::Segment_3<Kernel>(point(a), point(b)).has_on(point(p)) ||
+           CGAL::Segment_3<Kernel>(point(b), point(c)).has_on(point(p)) ||
+           CGAL::Segment_3<Kernel>(point(a), point(c)).has_on(point(p));
+  return CGAL::Triangle_3<Kernel>(point(a), point(b), point(c)).has_on(point(p));
+}
+
 int side_of_sphere(const glm::dvec3& center, double radius, const glm::dvec3& p) {
   // Rationals hold every double and their products exactly; a scene has few
   // spheres and lights, so the exact path is cheap enough to take always.

@@ -15,6 +15,9 @@ int orientation(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, c
 // True when a, b and c lie on one line (including repeated points).
 bool collinear(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);
 
+// True when p lies on the closed triangle abc (its plane, inside or on an edge).
+bool on_triangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dvec3& p);
+
 // Sign of |p - center|^2 - radius^2, exactly: -1 inside the sphere, 0 on it,
 // +1 outside.
 int side_of_sphere(const glm::dvec3& center, double radius, const glm::dvec3& p);

@@ -3,12 +3,13 @@
 #include <cmath>
 
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include "mesh/orientation.hpp"
 
 namespace umbra {
 
-void require_lights_outside_spheres(const Scene& scene) {
+void require_lights_off_casters(const Scene& scene) {
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& light = scene.lights[i];
     const std::string light_name = "light " + std::to_string(i + 1) + " (line " + std::to_string(light.where.line) + ")";
@@ -25,6 +26,14 @@ void require_lights_outside_spheres(const Scene& scene) {
       if (side_of_sphere(s.center, s.radius, light.position) <= 0 || tangent2 <= 0.0)
         throw InputError(s.where, light_name + " is inside or on this sphere, which then has no shadow volume; "
                                                "move the light outside the sphere");
+    }
+    for (const Mesh& mesh : scene.meshes) {
+      const glm::dvec3& l = light.position;
+      if (glm::any(glm::lessThan(l, mesh.bounds_min)) || glm::any(glm::greaterThan(l, mesh.bounds_max))) continue;
+      for (const auto& tri : mesh.triangles)
+        if (on_triangle(mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]], l))
+          throw InputError(mesh.where, light_name + " is on the surface of this mesh, where its shadow volume is "
+                                                    "undefined; move the light off the surface");
     }
   }
 }

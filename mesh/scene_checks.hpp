@@ -7,7 +7,10 @@
 namespace umbra {
 
 // Throws InputError at the sphere's line when a light is inside a sphere or on
-// its surface: its tangent cone (spec 2.2) does not exist there.
-void require_lights_outside_spheres(const Scene& scene);
+// its surface: its tangent cone (spec 2.2) does not exist there. And at the
+// mesh's line when a light is on a mesh's surface: the volume would need the
+// direction from the light to itself. (A light inside a closed mesh is fine:
+// its volume is then everything outside the mesh, which is the right shadow.)
+void require_lights_off_casters(const Scene& scene);
 
 }  // namespace umbra

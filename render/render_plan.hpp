@@ -57,7 +57,7 @@ struct RenderPlan {
   std::vector<uint8_t> facing_scratch;  // classify_faces' output, kept so that a frame need not allocate it
 };
 
-// Requires the lights outside every sphere (require_lights_outside_spheres).
+// Requires the lights outside every sphere (require_lights_off_casters).
 // `meshes` is prepare_mesh_casters(scene), made once and kept across frames.
 RenderPlan make_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshes, const RenderSettings& settings);
 // The same for one frame: prepares the mesh casters itself.

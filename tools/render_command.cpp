@@ -87,7 +87,7 @@ int run_render_command(const std::vector<std::string>& argv) {
     Scene scene = parse_scene_file(options.scene_path);
     for (const Warning& w : scene.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
     rotate_lights_about_z(scene, options.light_angle_deg);
-    require_lights_outside_spheres(scene);
+    require_lights_off_casters(scene);
 
     const RenderPlan plan = make_render_plan(scene, options.settings);
     if (options.explain) print_render_plan(std::cout, scene, plan);

@@ -171,7 +171,7 @@ int run_view_command(const std::vector<std::string>& argv) {
     for (const Warning& w : parsed.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
     Scene check = parsed;
     rotate_lights_about_z(check, angle);
-    require_lights_outside_spheres(check);
+    require_lights_off_casters(check);
     scene.file = std::move(parsed);
     scene.frame = scene.file;
     if (orbited) scene.frame.camera = *orbited;  // a reload keeps the user's view
@@ -249,7 +249,7 @@ int run_view_command(const std::vector<std::string>& argv) {
     const auto place_lights = [&] {
       scene.frame.lights = scene.file.lights;
       rotate_lights_about_z(scene.frame, angle);
-      require_lights_outside_spheres(scene.frame);
+      require_lights_off_casters(scene.frame);
     };
     try {
       place_lights();

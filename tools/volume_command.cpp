@@ -106,7 +106,7 @@ int run_volume_command(const std::vector<std::string>& argv) {
       throw InputError({scene.path}, "--light " + std::to_string(options.light) + ": the scene has " +
                                          std::to_string(scene.lights.size()) + " light(s)");
     rotate_lights_about_z(scene, options.light_angle_deg);
-    require_lights_outside_spheres(scene);
+    require_lights_off_casters(scene);
     const RenderPlan plan = make_render_plan(scene, options.settings);
     const LightPlan& lp = plan.lights[size_t(options.light - 1)];
     const glm::dvec3 light = scene.lights[size_t(options.light - 1)].position;

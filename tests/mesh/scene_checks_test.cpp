@@ -9,7 +9,7 @@ namespace {
 
 std::string check_error(const std::string& text) {
   try {
-    require_lights_outside_spheres(parse_scene_text(text, "t.scene"));
+    require_lights_off_casters(parse_scene_text(text, "t.scene"));
   } catch (const InputError& e) {
     return e.what();
   }

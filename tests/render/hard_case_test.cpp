@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "hard_case_scenes.hpp"
+#include "volume_soundness.hpp"
 #include "mask_comparison.hpp"
 #include "mesh/scene_checks.hpp"
 #include "mesh/scene_parser.hpp"
@@ -22,6 +23,7 @@ namespace umbra {
 namespace {
 
 using test::box_obj;
+using test::expect_sound_volumes;
 using test::floor_text;
 using test::write_mesh;
 
@@ -29,33 +31,6 @@ RenderPlan plan_for(const Scene& scene) {
   RenderSettings settings;
   settings.width = settings.height = 120;
   return make_render_plan(scene, settings);
-}
-
-// No NaN anywhere; w is 1 (finite) or 0 (at infinity), and a point at
-// infinity is a true direction, never (0, 0, 0, 0).
-void expect_sound_volumes(const Scene& scene) {
-  const std::vector<MeshCaster> casters = prepare_mesh_casters(scene);
-  const RenderPlan plan = make_render_plan(scene, casters, RenderSettings{});
-  for (size_t i = 0; i < plan.lights.size(); ++i) {
-    const LightPlan& lp = plan.lights[i];
-    for (const glm::dvec4& v : lp.all_volumes.vertices) {
-      ASSERT_TRUE(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)) << "light " << i + 1;
-      ASSERT_TRUE(v.w == 1.0 || (v.w == 0.0 && (v.x != 0.0 || v.y != 0.0 || v.z != 0.0))) << "light " << i + 1;
-    }
-    for (const CasterEntry& e : lp.casters)
-      if (!e.volume.triangles.empty()) EXPECT_TRUE(is_closed_and_consistently_oriented(e.volume)) << e.where.str();
-    for (const MeshVolumePlan& m : lp.mesh_volumes) {
-      const std::vector<glm::dvec3>& positions = scene.meshes[m.mesh].positions;
-      for (size_t k = 0; k < m.volume.count; ++k) {
-        const uint32_t index = m.volume.buffer[k];
-        ASSERT_LT(index, 2 * positions.size());
-        if (index >= positions.size())
-          ASSERT_NE(positions[index - positions.size()], scene.lights[i].position) << "a (0, 0, 0, 0) vertex";
-      }
-      const ShadowVolume volume = mesh_shadow_volume(casters[m.mesh].adjacency, scene.lights[i].position);
-      EXPECT_TRUE(has_no_boundary(volume)) << "light " << i + 1;
-    }
-  }
 }
 
 void expect_hard_case_holds(const Scene& scene, int segments = 64) {
@@ -85,7 +60,7 @@ TEST(HardSphere, LightABillionthOfTheRadiusOutside) { expect_hard_case_holds(lig
 
 std::string sphere_error(const std::string& text) {
   try {
-    require_lights_outside_spheres(parse_scene_text(text, "s.scene"));
+    require_lights_off_casters(parse_scene_text(text, "s.scene"));
   } catch (const InputError& e) {
     return e.what();
   }
@@ -172,6 +147,23 @@ TEST(HardMesh, NearlyCoplanarNeighbours) {
     ASSERT_EQ(scene.meshes[0].report.shadow_method(), ShadowMethod::kSilhouette);
     expect_hard_case_holds(scene);
   }
+}
+
+TEST(HardMesh, LightOnTheSurfaceIsAnErrorAtTheMesh) {
+  const std::string box = write_mesh("on_box.obj", box_obj(-0.3, 0.3, -0.7, -0.1));
+  for (const char* light : {"light 0.3 0.3 -0.1\n",     // a vertex
+                            "light 0 0.3 -0.1\n",       // an edge
+                            "light 0.1 -0.2 -0.1\n"}) {  // inside the top face
+    SCOPED_TRACE(light);
+    try {
+      require_lights_off_casters(parse_scene_text(std::string(light) + "mesh \"" + box + "\"\n", "on.scene"));
+      ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+      EXPECT_STREQ(e.what(), "on.scene:2:1: light 1 (line 1) is on the surface of this mesh, where its shadow volume is "
+                             "undefined; move the light off the surface");
+    }
+  }
+  EXPECT_NO_THROW(require_lights_off_casters(parse_scene_text("light 0.3 0.3 -0.0999\nmesh \"" + box + "\"\n", "off.scene")));
 }
 
 TEST(HardMesh, LightInsideAClosedMeshDarkensEverythingOutsideIt) {

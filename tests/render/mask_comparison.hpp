@@ -104,7 +104,7 @@ inline MaskComparison compare_with_reference(const Scene& scene, const RenderPla
 // Renders each light's mask at width x height and checks every pixel.
 inline void expect_masks_match_reference(Scene scene, int width, int height, int segments, double light_angle = 0.0) {
   rotate_lights_about_z(scene, light_angle);
-  require_lights_outside_spheres(scene);
+  require_lights_off_casters(scene);
   RenderSettings settings;
   settings.width = width;
   settings.height = height;
