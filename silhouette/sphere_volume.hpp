@@ -14,7 +14,7 @@ struct TangentCircle {
 };
 
 // Requires the light strictly outside the sphere (|LC| > R); see
-// require_lights_outside_spheres.
+// require_lights_off_casters.
 TangentCircle tangent_circle(const glm::dvec3& center, double radius, const glm::dvec3& light);
 
 // Spec 2.2: the N-gon Q_k = P + cos(2 pi k / N) v + sin(2 pi k / N) u inscribed
