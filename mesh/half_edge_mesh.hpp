@@ -9,7 +9,9 @@
 // OpenMesh's vectors leave their coordinates uninitialised on purpose, which
 // GCC 12 reports from inside OpenMesh's property code; the warning is theirs.
 #pragma GCC diagnostic push
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #pragma GCC diagnostic pop
 #include <glm/vec3.hpp>

@@ -49,7 +49,7 @@ CasterEntry mesh_entry(const Scene& scene, size_t index, const MeshCaster& caste
     e.mesh_volume = int(slot++);
   } else {
     e.volume = per_triangle_volume(mesh.positions, mesh.triangles, light.position);
-    e.method = "per-triangle volumes (slower): " + mesh.report.shadow_method_reason();
+    e.method = "per-triangle volumes (slower): " + (caster.reason.empty() ? mesh.report.shadow_method_reason() : caster.reason);
   }
   return e;
 }

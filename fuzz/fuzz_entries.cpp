@@ -1,0 +1,48 @@
+#include "fuzz/fuzz_entries.hpp"
+
+#include <string>
+#include <string_view>
+
+#include "mesh/mesh_check.hpp"
+#include "mesh/mesh_file.hpp"
+#include "mesh/scene_checks.hpp"
+#include "mesh/scene_parser.hpp"
+#include "render/render_plan.hpp"
+#include "silhouette/mesh_caster.hpp"
+#include "silhouette/mesh_volume.hpp"
+
+namespace umbra::fuzz {
+
+void scene_input(const uint8_t* data, size_t size) {
+  try {
+    const Scene scene =
+        parse_scene_text(std::string(reinterpret_cast<const char*>(data), size), "/nonexistent/fuzz.scene");
+    require_lights_off_casters(scene);
+    RenderSettings settings;
+    settings.sphere_segments = 8;
+    (void)make_render_plan(scene, settings);
+  } catch (const InputError&) {
+  }
+}
+
+void mesh_input(const uint8_t* data, size_t size) {
+  if (size == 0) return;
+  static const char* const names[] = {"fuzz.obj", "fuzz.off", "fuzz.ply", "fuzz.stl"};
+  try {
+    const PolygonSoup soup =
+        parse_polygon_soup(std::string_view(reinterpret_cast<const char*>(data) + 1, size - 1), names[data[0] % 4]);
+    CheckOptions options;
+    options.self_intersection_seconds = 0.5;
+    const MeshAnalysis analysis = analyse_mesh(soup, options);
+    const glm::dvec3 light(0.3, 0.2, 5.0);
+    const MeshCaster caster = prepare_mesh_caster(analysis.report.shadow_method(), analysis.positions, analysis.triangles);
+    if (caster.method == ShadowMethod::kSilhouette) {
+      (void)mesh_shadow_volume(caster.adjacency, light);
+    } else {
+      (void)per_triangle_volume(analysis.positions, analysis.triangles, light);
+    }
+  } catch (const InputError&) {
+  }
+}
+
+}  // namespace umbra::fuzz

@@ -1,0 +1,23 @@
+#pragma once
+// What the fuzzers drive, shared with the regression test that replays every
+// input they ever crashed on (fuzz/regressions/). Each returns normally for
+// any bytes: a valid input is processed, a bad one ends in InputError, which
+// is caught here. Anything else (a crash, a sanitizer report, another
+// exception) is a bug.
+
+#include <cstddef>
+#include <cstdint>
+
+namespace umbra::fuzz {
+
+// The bytes as a scene file (in a folder that does not exist, so `mesh`
+// statements fail to open their file), then its render plan for every light
+// as the renderer would make it, all on the CPU.
+void scene_input(const uint8_t* data, size_t size);
+
+// The first byte picks the format (OBJ, OFF, PLY, STL), the rest is the file;
+// then the check's analysis, and the mesh's shadow volume from a fixed light
+// by the method the check chose.
+void mesh_input(const uint8_t* data, size_t size);
+
+}  // namespace umbra::fuzz

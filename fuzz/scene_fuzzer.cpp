@@ -1,0 +1,7 @@
+// libFuzzer target: scene files (see fuzz_entries.hpp).
+#include "fuzz/fuzz_entries.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  umbra::fuzz::scene_input(data, size);
+  return 0;
+}
