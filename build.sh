@@ -3,6 +3,10 @@
 # packages it needs (only those missing), configures and builds, then
 #   ./build.sh demo   renders scenes/demo.scene to build/demo.png
 #   ./build.sh test   runs the whole test suite (CTest)
+#   ./build.sh sanitize   builds into build-sanitize/ with AddressSanitizer and
+#                         UndefinedBehaviorSanitizer and runs the whole suite
+#   ./build.sh fuzz [SEC] builds the libFuzzer targets with clang into
+#                         build-fuzz/ and runs each for SEC seconds (default 60)
 #   ./build.sh        only builds
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -21,6 +25,7 @@ packages=(
   libbenchmark-dev                   # bench/silhouette_benchmark (Google Benchmark)
   libcgal-demo                       # CGAL's data meshes, for the tests
   admesh time bc                     # bench/check_benchmark.sh: the checker it compares with, timing
+  clang libclang-rt-14-dev           # ./build.sh fuzz: libFuzzer
 )
 missing=()
 for p in "${packages[@]}"; do
@@ -34,6 +39,44 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
+# Mesa allocates for the life of the process; leaks are not what these look for.
+export ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+sanitizers="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
+case "${1:-}" in
+  sanitize)
+    cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS="$sanitizers" \
+      -DCMAKE_C_FLAGS="$sanitizers"
+    cmake --build build-sanitize -j"$(nproc)"
+    cd build-sanitize && ctest --output-on-failure -j"$(nproc)"
+    exit
+    ;;
+  fuzz)
+    seconds="${2:-60}"
+    CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DUMBRA_FUZZERS=ON \
+      -DUMBRA_BUILD_TESTS=OFF -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link $sanitizers" -DCMAKE_C_FLAGS="$sanitizers"
+    cmake --build build-fuzz -j"$(nproc)" --target scene_fuzzer mesh_fuzzer
+    # Seed corpus: the bundled scenes, and the bundled meshes behind their format byte.
+    rm -rf build-fuzz/corpus && mkdir -p build-fuzz/corpus/scene build-fuzz/corpus/mesh build-fuzz/crashes
+    cp scenes/*.scene fuzz/regressions/scene/* build-fuzz/corpus/scene/ 2>/dev/null || true
+    cp fuzz/regressions/mesh/* build-fuzz/corpus/mesh/ 2>/dev/null || true
+    for f in scenes/meshes/*.obj scenes/meshes/*.off; do
+      case "$f" in *.obj) byte='\000' ;; *.off) byte='\001' ;; esac
+      { printf "$byte"; cat "$f"; } > "build-fuzz/corpus/mesh/$(basename "$f")"
+    done
+    for target in scene mesh; do
+      echo "fuzzing the $target input for $seconds s"
+      "build-fuzz/fuzz/${target}_fuzzer" -max_total_time="$seconds" -max_len=8192 -timeout=20 -rss_limit_mb=4096 \
+        -print_final_stats=1 -artifact_prefix="build-fuzz/crashes/$target-" "build-fuzz/corpus/$target" 2>&1 |
+        grep -E "^(Done|stat::number|stat::new|==|SUMMARY)|ERROR|Test unit written" || true
+      if compgen -G "build-fuzz/crashes/$target-*" > /dev/null; then
+        echo "the $target fuzzer found a crash: build-fuzz/crashes/ (add it to fuzz/regressions/ once fixed)" >&2
+        exit 1
+      fi
+    done
+    exit
+    ;;
+esac
+
 cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo
 cmake --build build -j"$(nproc)"
 
@@ -46,5 +89,5 @@ case "${1:-}" in
     cd build && ctest --output-on-failure -j"$(nproc)"
     ;;
   "") ;;
-  *) echo "usage: ./build.sh [demo|test]" >&2; exit 2 ;;
+  *) echo "usage: ./build.sh [demo|test|sanitize|fuzz [SECONDS]]" >&2; exit 2 ;;
 esac
