@@ -12,21 +12,21 @@ namespace umbra {
 namespace {
 
 // Both roots of |o + t d - c|^2 = R^2 for unit d, in the stable form.
-std::optional<double> hit_sphere(const Sphere& s, const glm::dvec3& o, const glm::dvec3& d) {
+std::optional<double> hit_sphere(const Sphere& s, const glm::dvec3& o, const glm::dvec3& d, double t_min) {
   const glm::dvec3 oc = o - s.center;
   const double b = glm::dot(oc, d);
   const glm::dvec3 closest = oc - b * d;
   const double h = s.radius * s.radius - glm::dot(closest, closest);
   if (h < 0.0) return std::nullopt;
   const double root = std::sqrt(h);
-  if (-b - root > 0.0) return -b - root;
-  if (-b + root > 0.0) return -b + root;
+  if (-b - root > t_min) return -b - root;
+  if (-b + root > t_min) return -b + root;
   return std::nullopt;
 }
 
 // Moller-Trumbore, accepting either side; the edges are inclusive.
 std::optional<double> hit_triangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dvec3& o,
-                                   const glm::dvec3& d) {
+                                   const glm::dvec3& d, double t_min) {
   const glm::dvec3 e1 = b - a, e2 = c - a;
   const glm::dvec3 p = glm::cross(d, e2);
   const double det = glm::dot(e1, p);
@@ -38,7 +38,7 @@ std::optional<double> hit_triangle(const glm::dvec3& a, const glm::dvec3& b, con
   const double v = glm::dot(d, q) / det;
   if (v < 0.0 || u + v > 1.0) return std::nullopt;
   const double t = glm::dot(e2, q) / det;
-  if (t > 0.0) return t;
+  if (t > t_min) return t;
   return std::nullopt;
 }
 
@@ -64,12 +64,12 @@ bool may_hit_box(const glm::dvec3& lo, const glm::dvec3& hi, const glm::dvec3& o
 }  // namespace
 
 std::optional<RayHit> nearest_hit(const Scene& scene, const glm::dvec3& origin, const glm::dvec3& direction,
-                                  int skip) {
+                                  int skip, double t_min) {
   std::optional<RayHit> best;
   const int sphere_count = int(scene.spheres.size());
   for (int i = 0; i < sphere_count; ++i) {
     if (i == skip) continue;
-    const auto t = hit_sphere(scene.spheres[size_t(i)], origin, direction);
+    const auto t = hit_sphere(scene.spheres[size_t(i)], origin, direction, t_min);
     if (t && (!best || *t < best->t)) {
       const glm::dvec3 p = origin + *t * direction;
       best = RayHit{*t, p, (p - scene.spheres[size_t(i)].center) / scene.spheres[size_t(i)].radius, i};
@@ -79,7 +79,7 @@ std::optional<RayHit> nearest_hit(const Scene& scene, const glm::dvec3& origin, 
     const int id = sphere_count + int(j);
     if (id == skip) continue;
     const Triangle& tri = scene.triangles[j];
-    const auto t = hit_triangle(tri.a, tri.b, tri.c, origin, direction);
+    const auto t = hit_triangle(tri.a, tri.b, tri.c, origin, direction, t_min);
     if (t && (!best || *t < best->t))
       best = RayHit{*t, origin + *t * direction, glm::normalize(glm::cross(tri.b - tri.a, tri.c - tri.a)), id};
   }
@@ -95,7 +95,7 @@ std::optional<RayHit> nearest_hit(const Scene& scene, const glm::dvec3& origin, 
       const glm::dvec3& a = mesh.positions[mesh.triangles[j][0]];
       const glm::dvec3& b = mesh.positions[mesh.triangles[j][1]];
       const glm::dvec3& c = mesh.positions[mesh.triangles[j][2]];
-      const auto t = hit_triangle(a, b, c, origin, direction);
+      const auto t = hit_triangle(a, b, c, origin, direction, t_min);
       if (t && (!best || *t < best->t)) best = RayHit{*t, origin + *t * direction, glm::normalize(glm::cross(b - a, c - a)), id};
     }
   }
@@ -105,9 +105,12 @@ std::optional<RayHit> nearest_hit(const Scene& scene, const glm::dvec3& origin, 
 bool shadow_ray_blocked(const Scene& scene, const glm::dvec3& point, int self, const glm::dvec3& light) {
   // A sphere cannot shadow the lit side of itself, nor a triangle itself, so
   // `self` is skipped rather than nudging the ray's origin by an epsilon.
+  // But a point on a shared edge lies on its neighbour too, which rounding
+  // may then hit at t of about 1e-16 of the distance: hits closer than
+  // kShadowRayStart of it are the point's own surface, not a blocker.
   const glm::dvec3 to_light = light - point;
   const double distance = glm::length(to_light);
-  const auto hit = nearest_hit(scene, point, to_light / distance, self);
+  const auto hit = nearest_hit(scene, point, to_light / distance, self, kShadowRayStart * distance);
   return hit && hit->t < distance;
 }
 

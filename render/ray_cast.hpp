@@ -19,11 +19,15 @@ struct RayHit {
   int object = -1;         // spheres first, then triangles, then each mesh's triangles, in file order
 };
 
-// The nearest hit with t > 0, skipping object `skip` (-1: none).
+// The nearest hit with t > t_min, skipping object `skip` (-1: none).
 std::optional<RayHit> nearest_hit(const Scene& scene, const glm::dvec3& origin, const glm::dvec3& direction,
-                                  int skip = -1);
+                                  int skip = -1, double t_min = 0.0);
 
-// True when anything lies strictly between `point` (on object `self`) and the light.
+// Where a shadow ray starts, as a fraction of its length (see shadow_ray_blocked).
+constexpr double kShadowRayStart = 1e-9;
+
+// True when anything lies strictly between `point` (on object `self`) and the
+// light, from kShadowRayStart of the way on.
 bool shadow_ray_blocked(const Scene& scene, const glm::dvec3& point, int self, const glm::dvec3& light);
 
 // The mask value for the ray through image point (px, py) (pixel centre at

@@ -4,6 +4,7 @@
 
 #include "mesh/orientation.hpp"
 #include "render/camera_transform.hpp"
+#include "render/view_culling.hpp"
 #include "silhouette/sphere_volume.hpp"
 #include "silhouette/triangle_volume.hpp"
 
@@ -36,10 +37,10 @@ CasterEntry triangle_entry(const Triangle& t, const Light& light) {
 // A mesh's entry. A silhouette volume goes to light_plan.mesh_volumes[slot],
 // whose index buffer is kept from the previous frame when there is one.
 CasterEntry mesh_entry(const Scene& scene, size_t index, const MeshCaster& caster, const Light& light, LightPlan& light_plan,
-                       size_t& slot, std::vector<uint8_t>& facing) {
+                       size_t& slot, std::vector<uint8_t>& facing, bool per_triangle_asked) {
   const Mesh& mesh = scene.meshes[index];
   CasterEntry e{"mesh", mesh.where, "", {}};
-  if (caster.method == ShadowMethod::kSilhouette) {
+  if (caster.method == ShadowMethod::kSilhouette && !per_triangle_asked) {
     if (slot == light_plan.mesh_volumes.size()) light_plan.mesh_volumes.emplace_back();
     MeshVolumePlan& volume = light_plan.mesh_volumes[slot];
     volume.mesh = index;
@@ -49,9 +50,60 @@ CasterEntry mesh_entry(const Scene& scene, size_t index, const MeshCaster& caste
     e.mesh_volume = int(slot++);
   } else {
     e.volume = per_triangle_volume(mesh.positions, mesh.triangles, light.position);
-    e.method = "per-triangle volumes (slower): " + (caster.reason.empty() ? mesh.report.shadow_method_reason() : caster.reason);
+    e.method = "per-triangle volumes (slower): " + (per_triangle_asked   ? std::string("--method triangles")
+                                                    : caster.reason.empty() ? mesh.report.shadow_method_reason()
+                                                                            : caster.reason);
   }
   return e;
+}
+
+CasterEntry culled_entry(const char* kind, const FileLoc& where) {
+  return {kind, where, "none: its shadow volume cannot reach the view", {}};
+}
+
+// Which casters auto leaves out, and whether a light may be counted with
+// z-pass: none of its kept casters can put the near-plane rectangle in shadow.
+struct LightCulling {
+  std::vector<uint8_t> spheres, triangles, meshes;  // 1: left out
+  int culled = 0;
+  const FileLoc* shadows_near_plane = nullptr;  // the first caster that may
+};
+
+LightCulling cull_for_light(const Scene& scene, const RenderPlan& plan, const glm::dvec3& light) {
+  LightCulling c;
+  const NearRectangle near = near_rectangle(plan.camera, double(plan.settings.width) / plan.settings.height);
+  const bool cull = plan.settings.method == RenderMethod::kAuto;
+  const auto visit = [&](const BoundingSphere& ball, const FileLoc& where, std::vector<uint8_t>& out) {
+    const bool left_out = cull && !volume_may_reach_view(plan.camera, near, light, ball);
+    out.push_back(left_out);
+    c.culled += left_out;
+    if (!left_out && !c.shadows_near_plane && may_shadow_near_rectangle(near, light, ball)) c.shadows_near_plane = &where;
+  };
+  for (const Sphere& s : scene.spheres) visit(bounding_sphere(s), s.where, c.spheres);
+  for (const Triangle& t : scene.triangles) visit(bounding_sphere(t), t.where, c.triangles);
+  for (const Mesh& m : scene.meshes) visit(bounding_sphere(m), m.where, c.meshes);
+  return c;
+}
+
+// Decides z-pass or z-fail for a light and says why.
+void choose_count(RenderMethod method, const LightCulling& c, LightPlan& lp) {
+  const std::string near_plane_hit =
+      c.shadows_near_plane ? "the caster at line " + std::to_string(c.shadows_near_plane->line) + " may shadow the near plane"
+                           : "the near plane is outside every volume";
+  switch (method) {
+    case RenderMethod::kZPass:
+      lp.z_pass = true;
+      lp.count_reason = "z-pass without caps (--method zpass)";
+      if (c.shadows_near_plane) lp.count_reason += "; may be wrong here: " + near_plane_hit;
+      return;
+    case RenderMethod::kAuto:
+      lp.z_pass = !c.shadows_near_plane;
+      lp.count_reason = lp.z_pass ? "z-pass without caps: " + near_plane_hit : "z-fail with caps: " + near_plane_hit;
+      return;
+    default:
+      lp.z_pass = false;
+      lp.count_reason = std::string("z-fail with caps (--method ") + method_name(method) + ")";
+  }
 }
 
 }  // namespace
@@ -76,11 +128,23 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
     const Light& light = scene.lights[i];
     LightPlan& lp = plan.lights[i];
     lp.casters.clear();
+    const LightCulling culling = cull_for_light(scene, plan, light.position);
+    lp.culled_casters = culling.culled;
+    choose_count(plan.settings.method, culling, lp);
+    const bool per_triangle = plan.settings.method == RenderMethod::kTriangles;
     size_t slot = 0;
-    for (const Sphere& s : scene.spheres) lp.casters.push_back(sphere_entry(s, light, plan.settings.sphere_segments));
-    for (const Triangle& t : scene.triangles) lp.casters.push_back(triangle_entry(t, light));
+    for (size_t k = 0; k < scene.spheres.size(); ++k) {
+      const Sphere& s = scene.spheres[k];
+      lp.casters.push_back(culling.spheres[k] ? culled_entry("sphere", s.where)
+                                              : sphere_entry(s, light, plan.settings.sphere_segments));
+    }
+    for (size_t k = 0; k < scene.triangles.size(); ++k) {
+      const Triangle& t = scene.triangles[k];
+      lp.casters.push_back(culling.triangles[k] ? culled_entry("triangle", t.where) : triangle_entry(t, light));
+    }
     for (size_t m = 0; m < scene.meshes.size(); ++m)
-      lp.casters.push_back(mesh_entry(scene, m, meshes[m], light, lp, slot, facing));
+      lp.casters.push_back(culling.meshes[m] ? culled_entry("mesh", scene.meshes[m].where)
+                                             : mesh_entry(scene, m, meshes[m], light, lp, slot, facing, per_triangle));
     lp.mesh_volumes.resize(slot);
     std::stable_sort(lp.casters.begin(), lp.casters.end(),  // file order, for --explain
                      [](const CasterEntry& a, const CasterEntry& b) { return a.where.line < b.where.line; });
@@ -88,7 +152,7 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
     lp.all_volumes.triangles.clear();
     lp.all_volumes.part_ends.clear();
     lp.all_volumes.side_quads = lp.all_volumes.light_cap_triangles = lp.all_volumes.dark_cap_triangles = 0;
-    for (const CasterEntry& e : lp.casters) append_volume(lp.all_volumes, e.volume);
+    for (const CasterEntry& e : lp.casters) append_volume(lp.all_volumes, e.volume, !lp.z_pass);
     lp.stencil_batch_ends.clear();
     const std::vector<uint32_t>& parts = lp.all_volumes.part_ends;
     for (size_t end = kVolumesPerStencilBatch; end < parts.size(); end += kVolumesPerStencilBatch)
@@ -99,6 +163,7 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
     lp.dark_cap_triangles = lp.all_volumes.dark_cap_triangles;
     for (const MeshVolumePlan& m : lp.mesh_volumes) {
       lp.side_quads += m.volume.side_quads;
+      if (lp.z_pass) continue;
       lp.light_cap_triangles += m.volume.light_cap_triangles;
       lp.dark_cap_triangles += m.volume.dark_cap_triangles;
     }
@@ -113,13 +178,16 @@ void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& 
       << " deg" << (plan.camera_is_spec_default ? " (the spec's default view)" : " (from the scene file)") << "\n";
   out << "  projection: perspective, near " << near_plane(c) << " (" << kNearPlaneFraction
       << " of the eye's distance to the target), far plane at infinity (epsilon 2^-22)\n";
-  out << "  stencil method: z-fail with light and dark caps, two-sided stencil with wrapping;\n"
-         "    correct wherever the eye is, inside a shadow volume or not\n";
+  out << "  method: " << method_name(plan.settings.method)
+      << "; two-sided stencil with wrapping, z-pass or z-fail per light\n";
   for (size_t i = 0; i < plan.lights.size(); ++i) {
     const Light& light = scene.lights[i];
     const LightPlan& lp = plan.lights[i];
     out << "  light " << i + 1 << " at " << light.position << " (line " << light.where.line << "): " << lp.side_quads
         << " side quads, " << lp.light_cap_triangles << " light-cap and " << lp.dark_cap_triangles << " dark-cap triangles\n";
+    out << "    counted by " << lp.count_reason << "\n";
+    if (lp.culled_casters > 0)
+      out << "    " << lp.culled_casters << " of " << lp.casters.size() << " casters left out: their volumes cannot reach the view\n";
     if (lp.stencil_batch_ends.size() > 1)
       out << "    counted in " << lp.stencil_batch_ends.size() + lp.mesh_volumes.size()
           << " stencil batches (at most " << kVolumesPerStencilBatch << " sphere and triangle volumes each, and one per mesh), "
@@ -128,11 +196,12 @@ void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& 
       out << "    " << e.kind << " (line " << e.where.line << "): " << e.method;
       if (e.mesh_volume >= 0) {
         const MeshVolumeIndices& v = lp.mesh_volumes[size_t(e.mesh_volume)].volume;
-        out << ", " << v.side_quads << " quads + " << v.light_cap_triangles + v.dark_cap_triangles
-            << " cap triangles (static vertices, indices per frame)";
+        out << ", " << v.side_quads << " quads";
+        if (!lp.z_pass) out << " + " << v.light_cap_triangles + v.dark_cap_triangles << " cap triangles";
+        out << " (static vertices, indices per frame)";
       } else if (!e.volume.triangles.empty()) {
-        out << ", " << e.volume.side_quads << " quads + " << e.volume.light_cap_triangles + e.volume.dark_cap_triangles
-            << " cap triangles";
+        out << ", " << e.volume.side_quads << " quads";
+        if (!lp.z_pass) out << " + " << e.volume.light_cap_triangles + e.volume.dark_cap_triangles << " cap triangles";
       }
       out << "\n";
     }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mesh/scene.hpp"
+#include "render/render_method.hpp"
 #include "silhouette/mesh_caster.hpp"
 #include "silhouette/mesh_volume.hpp"
 #include "silhouette/shadow_volume.hpp"
@@ -18,6 +19,7 @@ struct RenderSettings {
   int width = 800;
   int height = 800;
   int sphere_segments = 64;  // N of the spec's N-gon (spec 2.2)
+  RenderMethod method = RenderMethod::kAuto;  // the plan is for every method but kRaycast
 };
 
 struct CasterEntry {
@@ -46,6 +48,12 @@ struct LightPlan {
   // With more than one, every mesh volume is a batch of its own too.
   std::vector<uint32_t> stencil_batch_ends;
   std::vector<MeshVolumePlan> mesh_volumes;  // one draw call each
+  // z-pass counts where the depth test passes and needs no caps, but only
+  // where the near-plane rectangle is outside every volume; z-fail is right
+  // everywhere. The volumes above have caps only for z-fail.
+  bool z_pass = false;
+  std::string count_reason;  // why this light is counted as it is
+  int culled_casters = 0;    // casters whose volumes cannot reach the view (auto only)
   int side_quads = 0, light_cap_triangles = 0, dark_cap_triangles = 0;  // of all of them
 };
 

@@ -129,10 +129,14 @@ void ShadowRenderer::count_shadow_volumes(size_t light) {
     glDepthFunc(GL_LESS);  // a volume face level with a surface counts as behind it
     glEnable(GL_STENCIL_TEST);
     glStencilFunc(GL_ALWAYS, 0, 0xFF);
-    // z-fail (seed 002): back faces increment, front faces decrement where the
-    // depth test fails; wrapping keeps counts beyond 255 correct modulo 256.
-    glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
-    glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+    // Wrapping keeps counts beyond 255 correct modulo 256.
+    if (lp.z_pass) {  // front faces increment, back faces decrement where the depth test passes
+      glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+      glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+    } else {  // z-fail (seed 002): back faces increment, front faces decrement where it fails
+      glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+      glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+    }
     // A triangle's light cap is the triangle itself: push volumes a few depth
     // units back so the cap reliably counts as behind its own surface, which
     // leaves the surface lit, whatever the rasteriser's rounding.
@@ -154,10 +158,7 @@ void ShadowRenderer::draw_volumes(size_t light) {
   volumes_->draw();
   volume_program_->set("extrude_from_light", 1);
   volume_program_->set("light_position", f(scene_.lights[light].position));
-  for (const MeshVolumePlan& m : lp.mesh_volumes) {
-    mesh_volumes_[m.mesh]->upload_indices(m.volume.buffer.data(), m.volume.count);
-    mesh_volumes_[m.mesh]->draw();
-  }
+  for (const MeshVolumePlan& m : lp.mesh_volumes) draw_mesh_volume(lp, m);
 }
 
 // One batch of a light whose volumes are counted in several: a range of
@@ -171,10 +172,15 @@ void ShadowRenderer::draw_stencil_batch(size_t light, size_t batch) {
     volumes_->draw_triangles(batch == 0 ? 0 : ends[batch - 1], ends[batch]);
     return;
   }
-  const MeshVolumePlan& m = lp.mesh_volumes[batch - ends.size()];
   volume_program_->set("extrude_from_light", 1);
   volume_program_->set("light_position", f(scene_.lights[light].position));
-  mesh_volumes_[m.mesh]->upload_indices(m.volume.buffer.data(), m.volume.count);
+  draw_mesh_volume(lp, lp.mesh_volumes[batch - ends.size()]);
+}
+
+// A mesh's volume; for z-pass without its caps, which come first.
+void ShadowRenderer::draw_mesh_volume(const LightPlan& lp, const MeshVolumePlan& m) {
+  const size_t caps = lp.z_pass ? 3 * size_t(m.volume.light_cap_triangles + m.volume.dark_cap_triangles) : 0;
+  mesh_volumes_[m.mesh]->upload_indices(m.volume.buffer.data() + caps, m.volume.count - caps);
   mesh_volumes_[m.mesh]->draw();
 }
 

@@ -4,7 +4,9 @@
 //   1. depth + ambient for every surface;
 //   2. per light: clear the stencil; draw that light's volumes with colour and
 //      depth writes off, back faces incrementing and front faces decrementing
-//      (with wrapping) where the depth test fails; then add the light's
+//      (with wrapping) where the depth test fails (z-fail), or, where the plan
+//      says the light may use z-pass, front faces incrementing and back faces
+//      decrementing where it passes, without caps; then add the light's
 //      diffuse + specular term where the stencil is zero.
 // When a light has more volumes than one stencil count can hold (the plan's
 // stencil batches), each batch is counted on its own and the pixels it
@@ -55,6 +57,7 @@ class ShadowRenderer {
   void draw_surfaces(int pass, size_t light);
   void draw_volumes(size_t light);
   void draw_stencil_batch(size_t light, size_t batch);
+  void draw_mesh_volume(const LightPlan& lp, const MeshVolumePlan& m);
   void mark_shadowed_in_alpha();
   void leave_out_marked_pixels() const;
   Image read_pixels(int channels) const;

@@ -29,6 +29,8 @@ struct ShadowVolume {
 namespace umbra {
 
 // Appends `part` to `all` (its indices shifted), summing the face counts.
-void append_volume(ShadowVolume& all, const ShadowVolume& part);
+// Without caps, only its side quads (for z-pass): a cap is a triangle whose
+// vertices are all finite or all at infinity.
+void append_volume(ShadowVolume& all, const ShadowVolume& part, bool with_caps = true);
 
 }  // namespace umbra

@@ -37,4 +37,9 @@ void parse_size(const std::string& option, const std::string& text, int largest,
   height = parse_int_in(option + " height", text.substr(x + 1), 1, largest);
 }
 
+RenderMethod parse_method(const std::string& option, const std::string& text) {
+  if (const auto method = method_from_name(text)) return *method;
+  throw UsageError(option + " expects one of " + method_names() + ", got \"" + text + "\"");
+}
+
 }  // namespace umbra

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "render/render_method.hpp"
+
 namespace umbra {
 
 // A mistake in how the command was called; printed with a hint to --help, exit 2.
@@ -50,6 +52,8 @@ std::optional<int> parse_command_line(const char* command, const char* usage, co
 
 double parse_finite_number(const std::string& option, const std::string& text);
 int parse_int_in(const std::string& option, const std::string& text, int lowest, int highest);
+// One of method_names().
+RenderMethod parse_method(const std::string& option, const std::string& text);
 // "WxH", each between 1 and `largest`.
 void parse_size(const std::string& option, const std::string& text, int largest, int& width, int& height);
 

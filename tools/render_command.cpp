@@ -8,6 +8,7 @@
 #include "mesh/scene_parser.hpp"
 #include "render/headless_context.hpp"
 #include "render/image.hpp"
+#include "render/ray_cast_render.hpp"
 #include "render/render_plan.hpp"
 #include "render/shadow_renderer.hpp"
 #include "tools/command_line.hpp"
@@ -17,8 +18,8 @@ namespace umbra {
 const char* const kRenderUsage =
     R"(usage: umbra render SCENE -o OUT.png [options]
 
-Renders SCENE headless (OSMesa) with exact hard shadows from capped z-fail
-stencil shadow volumes and writes OUT.png.
+Renders SCENE headless (OSMesa) with exact hard shadows from stencil shadow
+volumes and writes OUT.png.
 
 options:
   -o, --output OUT.png  the image to write (required)
@@ -26,6 +27,19 @@ options:
   --light-angle DEG     rotate every light about the z axis by DEG degrees
   --segments N          sides of the N-gon that stands for a sphere's tangent
                         circle in its shadow volume (default 64, 3 to 4096)
+  --method M            how shadows are made (default auto):
+                          auto       shadow volumes; per light z-pass without
+                                     caps where the near plane is outside every
+                                     volume, capped z-fail elsewhere; casters
+                                     whose volumes cannot reach the view are
+                                     left out
+                          zfail      capped z-fail for every light (seed 002)
+                          zpass      uncapped z-pass for every light; wrong
+                                     where the near plane is in a volume
+                          triangles  z-fail, meshes cast per triangle rather
+                                     than from their silhouettes
+                          raycast    the CPU reference: exact shadow rays, true
+                                     spheres (no GL, no N-gon)
   --show-volumes        draw the shadow volumes translucently over the image
   --mask MASK.png       also write light 1's shadow mask: 8-bit grey, 128 where
                         no surface is seen, 255 where the visible point faces
@@ -64,6 +78,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     else if (a == "--size") parse_size(a, args.value_of(a), kLargestImage, o.settings.width, o.settings.height);
     else if (a == "--light-angle") o.light_angle_deg = parse_finite_number(a, args.value_of(a));
     else if (a == "--segments") o.settings.sphere_segments = parse_int_in(a, args.value_of(a), 3, 4096);
+    else if (a == "--method") o.settings.method = parse_method(a, args.value_of(a));
     else if (a == "--show-volumes") o.show_volumes = true;
     else if (a == "--explain") o.explain = true;
     else if (a.size() > 1 && a[0] == '-') throw UsageError("unknown option " + a);
@@ -74,6 +89,8 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   if (o.scene_path.empty()) throw UsageError("no scene file given");
   if (o.output.empty()) throw UsageError("no output image given (-o OUT.png)");
   if (o.mask && *o.mask == o.output) throw UsageError("--mask and -o name the same file");
+  if (o.show_volumes && o.settings.method == RenderMethod::kRaycast)
+    throw UsageError("--show-volumes needs shadow volumes; --method raycast has none");
   return o;
 }
 
@@ -89,14 +106,23 @@ int run_render_command(const std::vector<std::string>& argv) {
     rotate_lights_about_z(scene, options.light_angle_deg);
     require_lights_off_casters(scene);
 
-    const RenderPlan plan = make_render_plan(scene, options.settings);
-    if (options.explain) print_render_plan(std::cout, scene, plan);
-
-    HeadlessContext context(plan.settings.width, plan.settings.height);
-    ShadowRenderer renderer(scene, plan);
-    const Image image = renderer.render_image(options.show_volumes);
+    Image image;
     std::optional<Image> mask;
-    if (options.mask) mask = renderer.render_mask(0);
+    if (options.settings.method == RenderMethod::kRaycast) {
+      if (options.explain)
+        std::cout << "render plan for " << scene.path << "\n  method: raycast, one eye ray per pixel and an exact "
+                  << "shadow ray per light (CPU, double precision)\n";
+      RayCastFrame frame = ray_cast_frame(scene, options.settings.width, options.settings.height);
+      image = std::move(frame.image);
+      if (options.mask) mask = std::move(frame.masks[0]);
+    } else {
+      const RenderPlan plan = make_render_plan(scene, options.settings);
+      if (options.explain) print_render_plan(std::cout, scene, plan);
+      HeadlessContext context(plan.settings.width, plan.settings.height);
+      ShadowRenderer renderer(scene, plan);
+      image = renderer.render_image(options.show_volumes);
+      if (options.mask) mask = renderer.render_mask(0);
+    }
 
     write_png(image, options.output);
     if (mask) {

@@ -102,20 +102,22 @@ inline MaskComparison compare_with_reference(const Scene& scene, const RenderPla
 }
 
 // Renders each light's mask at width x height and checks every pixel.
-inline void expect_masks_match_reference(Scene scene, int width, int height, int segments, double light_angle = 0.0) {
+inline void expect_masks_match_reference(Scene scene, int width, int height, int segments, double light_angle = 0.0,
+                                         RenderMethod method = RenderMethod::kAuto) {
   rotate_lights_about_z(scene, light_angle);
   require_lights_off_casters(scene);
   RenderSettings settings;
   settings.width = width;
   settings.height = height;
   settings.sphere_segments = segments;
+  settings.method = method;
   const RenderPlan plan = make_render_plan(scene, settings);
   HeadlessContext context(width, height);
   ShadowRenderer renderer(scene, plan);
   for (size_t light = 0; light < scene.lights.size(); ++light) {
     const Image mask = renderer.render_mask(light);
     const MaskComparison r = compare_with_reference(scene, plan, mask, light);
-    EXPECT_EQ(r.unexplained, 0) << scene.path << " light " << light + 1 << ": " << r.first_unexplained << " ("
+    EXPECT_EQ(r.unexplained, 0) << scene.path << " (" << method_name(method) << ") light " << light + 1 << ": " << r.first_unexplained << " ("
                                 << r.differing << " of " << r.surface_pixels << " surface pixels differ, "
                                 << r.excused_boundary << " on an edge, " << r.excused_ngon << " in the N-gon band, " << r.excused_grazing
                                 << " lit at a grazing angle)";

@@ -1,5 +1,6 @@
 #include "render/ray_cast.hpp"
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include "mesh/scene_parser.hpp"
@@ -33,6 +34,26 @@ TEST(RayCast, ShadowRaysAgainstTheSphere) {
 
 TEST(RayCast, AnOccluderBeyondTheLightDoesNotShadow) {
   EXPECT_FALSE(shadow_ray_blocked(kScene, {0, 0, 1}, -1, {0, 0, 2}));  // sphere is behind the point
+}
+
+TEST(RayCast, APointOnASharedEdgeIsNotShadowedByItsNeighbour) {
+  // The floor of colored_lights.scene: two triangles sharing the diagonal
+  // x = y. From a rounded point on it, the neighbour was hit at t ~ 1e-16,
+  // which made the reference call a lit floor pixel shadowed.
+  const Scene floor = parse_scene_text(
+      "light -0.8 0.6 1.8\n"
+      "triangle -1 -1 -1   1 -1 -1   1 1 -1\n"
+      "triangle -1 -1 -1   1 1 -1   -1 1 -1\n",
+      "floor.scene");
+  const glm::dvec3 eye = floor.camera.eye;
+  int blocked = 0;
+  for (int k = 1; k < 2000; ++k) {  // eye rays aimed along the diagonal, hitting it as rounded
+    const double x = -1.0 + k / 1000.0;
+    const auto hit = nearest_hit(floor, eye, glm::normalize(glm::dvec3(x, x, -1.0) - eye));
+    ASSERT_TRUE(hit);
+    blocked += shadow_ray_blocked(floor, hit->point, hit->object, floor.lights[0].position);
+  }
+  EXPECT_EQ(blocked, 0);
 }
 
 TEST(RayCast, PixelRaysOfTheSpecCamera) {

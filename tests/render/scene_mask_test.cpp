@@ -10,6 +10,7 @@
 #include "mesh/scene_checks.hpp"
 #include "mesh/scene_parser.hpp"
 #include "render/headless_context.hpp"
+#include "render/ray_cast_render.hpp"
 #include "render/shadow_renderer.hpp"
 
 namespace umbra {
@@ -25,6 +26,40 @@ TEST_P(BundledScene, MaskMatchesExactShadowRays) {
 
 TEST_P(BundledScene, MaskMatchesExactShadowRaysWithTheLightRotated) {
   test::expect_masks_match_reference(parse_scene_file(scene_path(GetParam())), 160, 160, 32, 137.0);
+}
+
+TEST_P(BundledScene, ZFailForEveryLightMatchesExactShadowRays) {
+  test::expect_masks_match_reference(parse_scene_file(scene_path(GetParam())), 160, 120, 64, 0.0, RenderMethod::kZFail);
+}
+
+TEST_P(BundledScene, PerTriangleMeshVolumesMatchExactShadowRays) {
+  test::expect_masks_match_reference(parse_scene_file(scene_path(GetParam())), 160, 120, 64, 0.0, RenderMethod::kTriangles);
+}
+
+// Where auto counts a light with z-pass (the near plane outside every
+// volume), z-pass without caps and capped z-fail count the same closed
+// surfaces, so their masks agree pixel for pixel.
+TEST_P(BundledScene, ZPassAndZFailAgreeWhereverAutoChoosesZPass) {
+  for (const double angle : {0.0, 137.0}) {
+    Scene scene = parse_scene_file(scene_path(GetParam()));
+    rotate_lights_about_z(scene, angle);
+    RenderSettings settings;
+    settings.width = settings.height = 160;
+    const RenderPlan automatic = make_render_plan(scene, settings);
+    settings.method = RenderMethod::kZPass;
+    const RenderPlan zpass = make_render_plan(scene, settings);
+    settings.method = RenderMethod::kZFail;
+    const RenderPlan zfail = make_render_plan(scene, settings);
+    HeadlessContext context(settings.width, settings.height);
+    ShadowRenderer pass_renderer(scene, zpass), fail_renderer(scene, zfail);
+    for (size_t light = 0; light < scene.lights.size(); ++light) {
+      if (!automatic.lights[light].z_pass) continue;
+      const Image a = pass_renderer.render_mask(light), b = fail_renderer.render_mask(light);
+      int differing = 0;
+      for (size_t i = 0; i < a.pixels.size(); ++i) differing += a.pixels[i] != b.pixels[i];
+      EXPECT_EQ(differing, 0) << "light " << light + 1 << " at " << angle << " deg";
+    }
+  }
 }
 
 std::vector<std::string> bundled_scenes() {
@@ -48,6 +83,47 @@ TEST(ZFail, EyeInsideAShadowVolumeStillGetsCorrectShadows) {
   // The premise: the eye is in the shadow of light 1 (z-pass would miscount).
   ASSERT_TRUE(shadow_ray_blocked(scene, scene.camera.eye, -1, scene.lights[0].position));
   test::expect_masks_match_reference(scene, 200, 200, 64);
+}
+
+TEST(Auto, ChoosesZFailWhereTheEyeIsInAVolumeAndZPassWouldBeWrong) {
+  const Scene scene = parse_scene_file(scene_path("camera_in_shadow.scene"));
+  RenderSettings settings;
+  settings.width = settings.height = 120;
+  const RenderPlan automatic = make_render_plan(scene, settings);
+  EXPECT_FALSE(automatic.lights[0].z_pass);
+  EXPECT_EQ(automatic.lights[0].count_reason, "z-fail with caps: the caster at line 9 may shadow the near plane");
+  // Forced z-pass is wrong here: the test above would fail with it.
+  settings.method = RenderMethod::kZPass;
+  const RenderPlan zpass = make_render_plan(scene, settings);
+  HeadlessContext context(settings.width, settings.height);
+  ShadowRenderer renderer(scene, zpass);
+  const test::MaskComparison r = test::compare_with_reference(scene, zpass, renderer.render_mask(0), 0);
+  EXPECT_GT(r.unexplained, r.surface_pixels / 4);
+}
+
+TEST(Auto, LeavesOutCastersWhoseVolumesCannotReachTheView) {
+  // The camera looks down -z at the floor; a sphere behind the camera lit
+  // from further behind casts away from the view, one in view does not.
+  const Scene scene = parse_scene_text(
+      "light 0 0 9\n"
+      "triangle -1 -1 -1  1 -1 -1  1 1 -1\n"
+      "sphere 0 0 6 0.5\n"
+      "sphere 0 0 0 0.3\n",
+      "cull.scene");
+  RenderSettings settings;
+  settings.width = settings.height = 120;
+  const RenderPlan automatic = make_render_plan(scene, settings);
+  ASSERT_EQ(automatic.lights[0].casters.size(), 3u);
+  EXPECT_EQ(automatic.lights[0].culled_casters, 0) << "the sphere at z = 6 shadows the eye's side of the scene";
+  EXPECT_FALSE(automatic.lights[0].z_pass) << "the sphere at z = 6 puts the eye in its shadow";
+  // Light moved below the floor: the sphere at z = 6 casts upwards, away.
+  Scene below = scene;
+  below.lights[0].position = {0.0, 0.0, 3.0};
+  below.spheres[0].center = {0.0, 0.0, 5.0};
+  const RenderPlan culled = make_render_plan(below, settings);
+  EXPECT_EQ(culled.lights[0].culled_casters, 1);
+  EXPECT_EQ(culled.lights[0].casters[1].method, "none: its shadow volume cannot reach the view");
+  test::expect_masks_match_reference(below, 120, 120, 64);
 }
 
 TEST(ZFail, SphereShadowErrorIsConfinedToTheNgonBand) {
@@ -84,6 +160,54 @@ TEST(Shading, LitAndShadowedFloorPixelsHaveThePhongValues) {
       ++shadowed;
     }
   EXPECT_GT(shadowed, 20);
+}
+
+TEST(Shading, TheRayCastImageHasTheSamePhongValues) {
+  const Scene scene = parse_scene_text(
+      "light 0 0 2\n"
+      "material shiny ambient 1 1 1 diffuse 0.6 0.6 0.6 specular 0.2 0.2 0.2 shininess 1\n"
+      "triangle -1 -1 -1  1 -1 -1  1 1 -1 material shiny\n"
+      "triangle 0.2 0.2 0  0.6 0.2 0  0.2 0.6 0\n",
+      "floor.scene");
+  const RayCastFrame frame = ray_cast_frame(scene, 101, 101);
+  // Centre: floor point (0, 0, -1) with n = l = v = +z, so r . v = 1:
+  // 0.15 ambient + 0.6 diffuse + 0.2 specular = 0.95.
+  EXPECT_EQ(frame.image.at(50, 50, 0), 242);  // round(0.95 * 255)
+  EXPECT_EQ(frame.masks[0].at(50, 50), kMaskLit);
+  // Floor points in the small triangle's shadow: ambient only.
+  int shadowed = 0;
+  for (int y = 0; y < 101; ++y)
+    for (int x = 0; x < 101; ++x) {
+      const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, 101, 101, x, y));
+      if (!hit || hit->object != 0 || !shadow_ray_blocked(scene, hit->point, 0, scene.lights[0].position)) continue;
+      EXPECT_EQ(frame.masks[0].at(x, y), kMaskUnlit);
+      EXPECT_EQ(frame.image.at(x, y, 1), 38);  // round(0.15 * 255)
+      ++shadowed;
+    }
+  EXPECT_GT(shadowed, 20);
+  EXPECT_EQ(frame.masks[0].at(0, 0), kMaskNoSurface);
+  EXPECT_EQ(frame.image.at(0, 0, 2), 0);
+}
+
+// The GL image and the ray-cast one differ only where a pixel's footprint
+// straddles an edge (or by rounding of one step in 255).
+TEST(Shading, TheGLImageMatchesTheRayCastImage) {
+  const Scene scene = parse_scene_file(scene_path("demo.scene"));
+  RenderSettings settings;
+  settings.width = settings.height = 120;
+  settings.sphere_segments = 256;
+  const RenderPlan plan = make_render_plan(scene, settings);
+  HeadlessContext context(settings.width, settings.height);
+  ShadowRenderer renderer(scene, plan);
+  const Image gl = renderer.render_image(false);
+  const RayCastFrame cpu = ray_cast_frame(scene, 120, 120);
+  int close = 0, far = 0;
+  for (size_t i = 0; i < gl.pixels.size(); ++i) {
+    const int d = std::abs(int(gl.pixels[i]) - int(cpu.image.pixels[i]));
+    close += d <= 1;
+    far += d > 1;
+  }
+  EXPECT_LT(far, int(gl.pixels.size() / 30)) << close << " within 1";
 }
 
 TEST(ShowVolumes, DrawsTheVolumesOverTheImage) {

@@ -9,7 +9,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include "mesh/scene_parser.hpp"
 #include "render/image.hpp"
+#include "render/ray_cast.hpp"
 #include "tests/tools/command_fixture.hpp"
 
 namespace umbra {
@@ -105,19 +107,20 @@ TEST_F(RenderCommand, HelpListsEveryOption) {
 }
 
 TEST_F(RenderCommand, ExplainPrintsThePlan) {
-  const CommandResult r = run("render " + std::string(UMBRA_SOURCE_DIR) + "/scenes/two_spheres.scene --size 32x32 --segments 12 --explain -o " +
+  const CommandResult r = run("render " + std::string(UMBRA_SOURCE_DIR) + "/scenes/two_spheres.scene --size 32x32 --segments 12 --method zfail --explain -o " +
                     path("a.png"));
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("camera: eye (0, 0, 3.4) target (0, 0, 0) up (0, 1, 0) fovy 45 deg (the spec's default view)"),
             std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("stencil method: z-fail"), std::string::npos);
+  EXPECT_NE(r.out.find("method: zfail;"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("counted by z-fail with caps (--method zfail)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("sphere (line 7): tangent-circle 12-gon (spec 2.2), 12 quads + 24 cap triangles"), std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("triangle (line 5): three side quads (spec 2.1), 3 quads + 2 cap triangles"), std::string::npos);
 }
 
 TEST_F(RenderCommand, ExplainSaysWhichShadowMethodEachMeshGotAndWhy) {
-  const CommandResult r = run("render " + std::string(UMBRA_SOURCE_DIR) + "/scenes/mesh_open_box.scene --size 32x32 --explain -o " +
+  const CommandResult r = run("render " + std::string(UMBRA_SOURCE_DIR) + "/scenes/mesh_open_box.scene --size 32x32 --method zfail --explain -o " +
                               path("a.png"));
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("mesh (line 9): per-triangle volumes (slower): not a closed 2-manifold (4 border edges in 1 hole), "
@@ -133,6 +136,43 @@ TEST_F(RenderCommand, ExplainSaysWhichShadowMethodEachMeshGotAndWhy) {
                        "edges in 1 hole): its shadow comes from per-triangle volumes (slower)\n"),
             std::string::npos)
       << r.err;
+}
+
+TEST_F(RenderCommand, AutoExplainsEachLightsCountAndDropsTheCaps) {
+  const CommandResult r = run("render " + std::string(UMBRA_SOURCE_DIR) +
+                              "/scenes/two_spheres.scene --size 32x32 --segments 12 --explain -o " + path("a.png"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("method: auto;"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("counted by z-pass without caps: the near plane is outside every volume"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("sphere (line 7): tangent-circle 12-gon (spec 2.2), 12 quads\n"), std::string::npos) << r.out;
+  const CommandResult in_shadow = run("render " + std::string(UMBRA_SOURCE_DIR) +
+                                      "/scenes/camera_in_shadow.scene --size 32x32 --explain -o " + path("b.png"));
+  EXPECT_NE(in_shadow.out.find("counted by z-fail with caps: the caster at line 9 may shadow the near plane"),
+            std::string::npos)
+      << in_shadow.out;
+}
+
+TEST_F(RenderCommand, RaycastWritesTheReferenceImageAndMask) {
+  const std::string scene = std::string(UMBRA_SOURCE_DIR) + "/scenes/two_spheres.scene";
+  const CommandResult r = run("render " + scene + " --size 40x30 --method raycast -o " + path("r.png") + " --mask " + path("m.png"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Image mask = read_png(path("m.png"));
+  const Scene parsed = parse_scene_file(scene);
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 40; ++x) ASSERT_EQ(mask.at(x, y), reference_mask_value(parsed, 40, 30, x, y, 0)) << x << ", " << y;
+  EXPECT_EQ(read_png(path("r.png")).width, 40);
+}
+
+TEST_F(RenderCommand, UnknownMethodAndVolumesWithoutVolumesAreUsageErrors) {
+  const std::string scene = std::string(UMBRA_SOURCE_DIR) + "/scenes/two_spheres.scene";
+  const CommandResult bad = run("render " + scene + " --method zbuffer -o " + path("a.png"));
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("--method expects one of auto|zfail|zpass|triangles|raycast, got \"zbuffer\""), std::string::npos)
+      << bad.err;
+  const CommandResult shown = run("render " + scene + " --method raycast --show-volumes -o " + path("a.png"));
+  EXPECT_EQ(shown.status, 2);
+  EXPECT_NE(shown.err.find("--show-volumes needs shadow volumes; --method raycast has none"), std::string::npos) << shown.err;
+  EXPECT_FALSE(std::filesystem::exists(path("a.png")));
 }
 
 }  // namespace

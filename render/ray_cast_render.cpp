@@ -1,0 +1,74 @@
+#include "render/ray_cast_render.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <thread>
+
+#include <glm/geometric.hpp>
+
+#include "render/camera_transform.hpp"
+#include "render/ray_cast.hpp"
+
+namespace umbra {
+namespace {
+
+int material_of(const Scene& scene, int object) {
+  const size_t o = size_t(object);
+  if (o < scene.spheres.size()) return scene.spheres[o].material;
+  size_t first = scene.spheres.size();
+  if (o < first + scene.triangles.size()) return scene.triangles[o - first].material;
+  first += scene.triangles.size();
+  for (const Mesh& m : scene.meshes) {
+    if (o < first + m.triangles.size()) return m.material;
+    first += m.triangles.size();
+  }
+  return 0;
+}
+
+// 8 bits as GL stores a colour in [0, 1]: clamped, then rounded.
+uint8_t to_byte(double c) { return uint8_t(std::lround(std::clamp(c, 0.0, 1.0) * 255.0)); }
+
+// The shader's shade() for one pixel, in double precision (shaders.hpp).
+void shade_pixel(const Scene& scene, const glm::dvec3& ambient_sum, const RayHit& hit, RayCastFrame& frame, int x, int y) {
+  const Material& m = scene.materials[size_t(material_of(scene, hit.object))];
+  const glm::dvec3 eye = scene.camera.eye;
+  glm::dvec3 n = hit.normal;
+  if (glm::dot(n, eye - hit.point) < 0.0) n = -n;
+  glm::dvec3 colour = ambient_sum * m.ambient;
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    const Light& light = scene.lights[i];
+    const glm::dvec3 l = glm::normalize(light.position - hit.point);
+    const double n_dot_l = glm::dot(n, l);
+    const bool lit = n_dot_l > 0.0 && !shadow_ray_blocked(scene, hit.point, hit.object, light.position);
+    frame.masks[i].at(x, y) = lit ? kMaskLit : kMaskUnlit;
+    if (!lit) continue;
+    const glm::dvec3 v = glm::normalize(eye - hit.point);
+    const glm::dvec3 r = 2.0 * n_dot_l * n - l;  // reflect(-l, n)
+    const double s = m.shininess > 0.0 ? std::pow(std::max(glm::dot(r, v), 0.0), m.shininess) : 1.0;
+    colour += light.color * (m.diffuse * n_dot_l + m.specular * s);
+  }
+  for (int c = 0; c < 3; ++c) frame.image.at(x, y, c) = to_byte(colour[c]);
+}
+
+}  // namespace
+
+RayCastFrame ray_cast_frame(const Scene& scene, int width, int height) {
+  RayCastFrame frame{Image(width, height, 3), std::vector<Image>(scene.lights.size(), Image(width, height, 1, kMaskNoSurface))};
+  glm::dvec3 ambient_sum(0.0);
+  for (const Light& light : scene.lights) ambient_sum += light.ambient;
+  const auto rows = [&](int first, int step) {
+    for (int y = first; y < height; y += step)
+      for (int x = 0; x < width; ++x) {
+        const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, width, height, x, y));
+        if (hit) shade_pixel(scene, ambient_sum, *hit, frame, x, y);
+      }
+  };
+  const int threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  std::vector<std::thread> workers;
+  for (int t = 1; t < threads; ++t) workers.emplace_back(rows, t, threads);
+  rows(0, threads);
+  for (std::thread& w : workers) w.join();
+  return frame;
+}
+
+}  // namespace umbra

@@ -1,0 +1,21 @@
+#pragma once
+// `--method raycast`: the CPU reference drawn as a whole frame, the shaded
+// image with the GL renderer's Phong terms and every light's shadow mask, from
+// one eye ray per pixel centre and exact shadow rays (ray_cast.hpp).
+
+#include <vector>
+
+#include "mesh/scene.hpp"
+#include "render/image.hpp"
+
+namespace umbra {
+
+struct RayCastFrame {
+  Image image;               // RGB, as ShadowRenderer::render_image draws it
+  std::vector<Image> masks;  // per light, as ShadowRenderer::render_mask draws it
+};
+
+// Rows are shared among the machine's cores.
+RayCastFrame ray_cast_frame(const Scene& scene, int width, int height);
+
+}  // namespace umbra

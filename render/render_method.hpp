@@ -1,0 +1,23 @@
+#pragma once
+// The ways umbra can shadow a scene (`--method`): the shadow-volume plan and
+// its fixed variants, and the CPU ray-cast reference.
+
+#include <optional>
+#include <string>
+
+namespace umbra {
+
+enum class RenderMethod {
+  kAuto,       // shadow volumes; per light z-pass where the eye is outside every volume, z-fail elsewhere
+  kZFail,      // shadow volumes, capped z-fail for every light (seed 002)
+  kZPass,      // shadow volumes, uncapped z-pass for every light: wrong where the eye is in a volume
+  kTriangles,  // z-fail, and every mesh cast per triangle instead of from its silhouette
+  kRaycast,    // the CPU reference: exact shadow rays (seed 004)
+};
+
+const char* method_name(RenderMethod method);
+std::optional<RenderMethod> method_from_name(const std::string& name);
+// "auto|zfail|zpass|triangles|raycast", for usage text and errors.
+std::string method_names();
+
+}  // namespace umbra
