@@ -26,6 +26,7 @@ packages=(
   libcgal-demo                       # CGAL's data meshes, for the tests
   admesh time bc                     # bench/check_benchmark.sh: the checker it compares with, timing
   clang libclang-rt-14-dev           # ./build.sh fuzz: libFuzzer
+  gnuplot-nox                        # umbra bench --plot
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -37,13 +37,7 @@ ShadowRenderer::ShadowRenderer(const Scene& scene, const RenderPlan& plan) : sce
   volume_program_ = std::make_unique<ShaderProgram>("volume", shaders::kVolumeVertex, shaders::kVolumeFragment);
   surfaces_ = std::make_unique<SurfaceBuffers>(scene);
   volumes_ = std::make_unique<VolumeBuffer>();
-  mesh_volumes_.resize(scene.meshes.size());
-  for (const LightPlan& lp : plan.lights)
-    for (const MeshVolumePlan& m : lp.mesh_volumes)
-      if (!mesh_volumes_[m.mesh]) {
-        mesh_volumes_[m.mesh] = std::make_unique<VolumeBuffer>();
-        mesh_volumes_[m.mesh]->upload_mesh_vertices(scene.meshes[m.mesh].positions);
-      }
+  mesh_volumes_.resize(scene.meshes.size());  // made when a plan first casts from the mesh's silhouette
 
   glm::dvec3 ambient_sum(0.0);
   for (const Light& light : scene.lights) ambient_sum += light.ambient;
@@ -179,6 +173,10 @@ void ShadowRenderer::draw_stencil_batch(size_t light, size_t batch) {
 
 // A mesh's volume; for z-pass without its caps, which come first.
 void ShadowRenderer::draw_mesh_volume(const LightPlan& lp, const MeshVolumePlan& m) {
+  if (!mesh_volumes_[m.mesh]) {
+    mesh_volumes_[m.mesh] = std::make_unique<VolumeBuffer>();
+    mesh_volumes_[m.mesh]->upload_mesh_vertices(scene_.meshes[m.mesh].positions);
+  }
   const size_t caps = lp.z_pass ? 3 * size_t(m.volume.light_cap_triangles + m.volume.dark_cap_triangles) : 0;
   mesh_volumes_[m.mesh]->upload_indices(m.volume.buffer.data() + caps, m.volume.count - caps);
   mesh_volumes_[m.mesh]->draw();
@@ -246,6 +244,8 @@ Image ShadowRenderer::render_image(bool show_volumes) {
 }
 
 Image ShadowRenderer::read_image() const { return read_pixels(3); }
+
+void ShadowRenderer::finish() const { glFinish(); }
 
 Image ShadowRenderer::render_mask(size_t light) {
   depth_and_ambient_pass();

@@ -37,6 +37,8 @@ class ShadowRenderer {
   // light's volumes are drawn over it translucently, front faces only (the
   // spec's debugging view). The plan's camera and size are read each time.
   void draw(bool show_volumes);
+  // Waits until the GL has finished every command so far (for timing).
+  void finish() const;
   // The shaded image (RGB): draw, then read it back.
   Image render_image(bool show_volumes);
   // What the last draw left in the framebuffer (RGB).
@@ -67,7 +69,7 @@ class ShadowRenderer {
   std::unique_ptr<ShaderProgram> triangle_program_, sphere_program_, volume_program_;
   std::unique_ptr<SurfaceBuffers> surfaces_;
   std::unique_ptr<VolumeBuffer> volumes_;
-  std::vector<std::unique_ptr<VolumeBuffer>> mesh_volumes_;  // per scene mesh; null for the per-triangle method
+  std::vector<std::unique_ptr<VolumeBuffer>> mesh_volumes_;  // per scene mesh; made when first drawn
   bool shadow_marked_in_alpha_ = false;  // the last count_shadow_volumes used batches
 };
 

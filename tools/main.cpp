@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "tools/bench_command.hpp"
 #include "tools/check_command.hpp"
 #include "tools/render_command.hpp"
 #include "tools/view_command.hpp"
@@ -22,6 +23,8 @@ commands:
                             keys and mouse (see umbra view --help)
   volume SCENE -o OUT.obj   write a light's shadow volumes as a mesh to look at
                             (see umbra volume --help)
+  bench [SCENES...]         shadow error against frame time for every method
+                            (see umbra bench --help)
 
   umbra --help, umbra --version
 )";
@@ -41,6 +44,7 @@ int main(int argc, char** argv) {
   if (args[0] == "render") return umbra::run_render_command({args.begin() + 1, args.end()});
   if (args[0] == "check") return umbra::run_check_command({args.begin() + 1, args.end()});
   if (args[0] == "volume") return umbra::run_volume_command({args.begin() + 1, args.end()});
+  if (args[0] == "bench") return umbra::run_bench_command({args.begin() + 1, args.end()});
   if (args[0] == "view") return umbra::run_view_command({args.begin() + 1, args.end()});
   std::cerr << "umbra: unknown command \"" << args[0] << "\"\n" << kUsage;
   return 2;

@@ -38,7 +38,8 @@ keys:
   up, down      double or halve the light's speed
   v             show or hide the shadow volumes
   ] and [       double or halve the sphere segments N (3 to 4096)
-  m             switch method (only z-fail has landed so far)
+  m             switch method: auto, zfail, zpass, triangles (see
+                umbra render --help)
   r             return to the scene's camera
   s             return to the spec's view (eye (0, 0, 3.4), looking down -z)
   o             show or hide the overlay
@@ -48,6 +49,7 @@ mouse: drag to orbit the camera around its target, scroll to zoom
 
 options:
   --size WxH           window size (default 800x800)
+  --method M           auto (default), zfail, zpass or triangles
   --light-angle DEG    start with the lights rotated by DEG (default 0)
   --speed DEG          degrees per second the light turns (default 30)
   --paused             start with the light paused
@@ -85,6 +87,7 @@ ViewOptions parse_view_options(const std::vector<std::string>& argv) {
     else if (a == "--speed") o.speed_deg_per_s = parse_finite_number(a, args.value_of(a));
     else if (a == "--paused") o.paused = true;
     else if (a == "--segments") o.settings.sphere_segments = parse_int_in(a, args.value_of(a), 3, 4096);
+    else if (a == "--method") o.settings.method = parse_method(a, args.value_of(a));
     else if (a == "--frames") o.frames = parse_int_in(a, args.value_of(a), 1, 1 << 30);
     else if (a == "--screenshot") o.screenshot = args.value_of(a);
     else if (a == "--overlay-in-screenshot") o.overlay_in_screenshot = true;
@@ -95,6 +98,8 @@ ViewOptions parse_view_options(const std::vector<std::string>& argv) {
   if (o.help) return o;
   if (o.scene_path.empty()) throw UsageError("no scene file given");
   if (o.screenshot && o.frames == 0) throw UsageError("--screenshot needs --frames N");
+  if (o.settings.method == RenderMethod::kRaycast)
+    throw UsageError("--method raycast is not interactive; use umbra render --method raycast");
   return o;
 }
 
@@ -134,12 +139,24 @@ void orbit(Camera& camera, double yaw_deg, double pitch_deg) {
   camera.eye = camera.target + offset;
 }
 
+RenderMethod next_interactive_method(RenderMethod m) {
+  switch (m) {
+    case RenderMethod::kAuto: return RenderMethod::kZFail;
+    case RenderMethod::kZFail: return RenderMethod::kZPass;
+    case RenderMethod::kZPass: return RenderMethod::kTriangles;
+    default: return RenderMethod::kAuto;
+  }
+}
+
 // What the overlay shows: the frame, the volumes, a message (an error), the keys.
-std::vector<std::string> status_lines(const std::string& path, const LightPlan& light, double frame_ms, double angle,
-                                      bool paused, double speed, int segments, const std::string& message) {
+std::vector<std::string> status_lines(const std::string& path, const RenderPlan& plan, double frame_ms, double angle,
+                                      bool paused, double speed, const std::string& message) {
   char line[256];
   std::vector<std::string> lines = {path};
-  std::snprintf(line, sizeof line, "z-fail (the only method so far)   frame time %.1f ms", frame_ms);
+  const LightPlan& light = plan.lights[0];
+  const int segments = plan.settings.sphere_segments;
+  std::snprintf(line, sizeof line, "method %s (light 1 %s)   frame time %.1f ms", method_name(plan.settings.method),
+                light.z_pass ? "z-pass" : "z-fail", frame_ms);
   lines.push_back(line);
   std::snprintf(line, sizeof line, "light 1 at %.1f deg, %s%.3g deg/s   sphere N = %d", std::fmod(angle, 360.0),
                 paused ? "paused, " : "", speed, segments);
@@ -211,7 +228,7 @@ int run_view_command(const std::vector<std::string>& argv) {
       case Key::kV: show_volumes = !show_volumes; break;
       case Key::kRightBracket: options.settings.sphere_segments = std::min(4096, options.settings.sphere_segments * 2); break;
       case Key::kLeftBracket: options.settings.sphere_segments = std::max(3, options.settings.sphere_segments / 2); break;
-      case Key::kM: std::cerr << "umbra view: only the z-fail method has landed so far\n"; break;
+      case Key::kM: options.settings.method = next_interactive_method(options.settings.method); break;
       case Key::kR: orbited.reset(); scene.frame.camera = scene.file.camera; break;
       case Key::kS: orbited = spec_camera(); scene.frame.camera = *orbited; break;
       case Key::kO: show_overlay = !show_overlay; break;
@@ -267,6 +284,7 @@ int run_view_command(const std::vector<std::string>& argv) {
       scene.plan->settings.width = width;
       scene.plan->settings.height = height;
       scene.plan->settings.sphere_segments = options.settings.sphere_segments;
+      scene.plan->settings.method = options.settings.method;
       update_render_plan(scene.frame, scene.meshes, *scene.plan);
       scene.renderer->draw(show_volumes);
     }
@@ -276,8 +294,7 @@ int run_view_command(const std::vector<std::string>& argv) {
     const bool last_frame = options.frames > 0 && frame == options.frames;
     const auto draw_overlay = [&] {
       if (overlay && show_overlay)
-        overlay->draw(status_lines(options.scene_path, scene.plan->lights[0], frame_ms, angle, paused, speed,
-                                   options.settings.sphere_segments,
+        overlay->draw(status_lines(options.scene_path, *scene.plan, frame_ms, angle, paused, speed,
                                    !error.empty()         ? "ERROR (showing the last good scene): " + error
                                    : !light_error.empty() ? "light stopped: " + light_error
                                                           : std::string()));

@@ -10,6 +10,7 @@
 #include "mesh/scene_checks.hpp"
 #include "mesh/scene_parser.hpp"
 #include "render/headless_context.hpp"
+#include "render/mask_error.hpp"
 #include "render/ray_cast_render.hpp"
 #include "render/shadow_renderer.hpp"
 
@@ -83,6 +84,24 @@ TEST(ZFail, EyeInsideAShadowVolumeStillGetsCorrectShadows) {
   // The premise: the eye is in the shadow of light 1 (z-pass would miscount).
   ASSERT_TRUE(shadow_ray_blocked(scene, scene.camera.eye, -1, scene.lights[0].position));
   test::expect_masks_match_reference(scene, 200, 200, 64);
+}
+
+TEST(ZFail, ErrorAgainstTheReferenceFallsAsNGrows) {
+  const Scene scene = parse_scene_file(scene_path("two_spheres.scene"));
+  const RayCastFrame reference = ray_cast_frame(scene, 200, 200);
+  HeadlessContext context(200, 200);
+  long previous = -1;
+  for (const int n : {64, 32, 16, 8}) {  // coarser each time
+    RenderSettings settings;
+    settings.width = settings.height = 200;
+    settings.sphere_segments = n;
+    settings.method = RenderMethod::kZFail;
+    const RenderPlan plan = make_render_plan(scene, settings);
+    ShadowRenderer renderer(scene, plan);
+    const MaskError e = mask_error(reference.masks[0], renderer.render_mask(0));
+    EXPECT_GT(e.wrong_pixels, previous) << "N = " << n;
+    previous = e.wrong_pixels;
+  }
 }
 
 TEST(Auto, ChoosesZFailWhereTheEyeIsInAVolumeAndZPassWouldBeWrong) {

@@ -1,0 +1,83 @@
+// umbra bench as a user meets it: the table, the CSV, the plot, and what a
+// bad scene or option does.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "tests/tools/command_fixture.hpp"
+
+namespace umbra {
+namespace {
+
+namespace fs = std::filesystem;
+using test::CommandResult;
+
+class BenchCommand : public test::CommandTest {};
+
+const std::string kTwoSpheres = std::string(UMBRA_SOURCE_DIR) + "/scenes/two_spheres.scene";
+
+std::vector<std::vector<std::string>> read_csv(const std::string& path) {
+  std::vector<std::vector<std::string>> rows;
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::stringstream s(line);
+    for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+TEST_F(BenchCommand, WritesATableAndACsvRowPerMethodAndN) {
+  const CommandResult r = run("bench " + kTwoSpheres + " --size 96x96 --frames 1 --segments 8,32 --csv " + path("b.csv"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("| scene | method | N | wrong pixels | of 96x96 surface | median frame (ms) | vs zfail |"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("| two_spheres.scene | zfail | 8 | "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("| two_spheres.scene | raycast | - | 0.000% | 0 of "), std::string::npos) << r.out;
+  const auto rows = read_csv(path("b.csv"));
+  ASSERT_EQ(rows.size(), 1u + 3 * 2 + 1);  // header, zfail/zpass/auto at N = 8 and 32, raycast
+  EXPECT_EQ(rows[0][0], "scene");
+  EXPECT_EQ(rows[0][5], "error");
+  // The N-gon sits inside the true cone: N = 8 gets more pixels wrong than 32.
+  EXPECT_EQ(rows[1][1], "zfail");
+  EXPECT_EQ(rows[1][2], "8");
+  EXPECT_EQ(rows[2][2], "32");
+  EXPECT_GT(std::stol(rows[1][3]), std::stol(rows[2][3]));
+  EXPECT_EQ(rows.back()[1], "raycast");
+  EXPECT_EQ(rows.back()[3], "0");
+}
+
+TEST_F(BenchCommand, PlotsAsText) {
+  if (std::system("gnuplot --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "gnuplot is not installed";
+  const CommandResult r = run("bench " + kTwoSpheres + " --size 48x48 --frames 1 --segments 8 --plot " + path("p.txt"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream in(path("p.txt"));
+  const std::string plot((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(plot.find("two_spheres.scene"), std::string::npos);
+  EXPECT_NE(plot.find("median frame time"), std::string::npos);
+  EXPECT_FALSE(fs::exists(path("p.txt.gnuplot")));
+}
+
+TEST_F(BenchCommand, ABadSceneStopsItBeforeAnythingIsMeasured) {
+  const std::string bad = write("bad.scene", "light 0 0 2\nsphere 0 0 0\n");
+  const CommandResult r = run("bench " + kTwoSpheres + " " + bad + " --csv " + path("b.csv"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("bad.scene:2:"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_FALSE(fs::exists(path("b.csv")));
+}
+
+TEST_F(BenchCommand, UsageErrors) {
+  EXPECT_EQ(run("bench " + kTwoSpheres + " --plot out.jpg").status, 2);
+  const CommandResult r = run("bench " + kTwoSpheres + " --segments 8,2");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--segments expects a whole number from 3 to 4096, got \"2\""), std::string::npos) << r.err;
+  EXPECT_EQ(run("bench --help").status, 0);
+}
+
+}  // namespace
+}  // namespace umbra

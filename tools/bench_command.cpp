@@ -1,0 +1,236 @@
+#include "tools/bench_command.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+
+#include "mesh/scene_checks.hpp"
+#include "mesh/scene_parser.hpp"
+#include "render/headless_context.hpp"
+#include "render/mask_error.hpp"
+#include "render/ray_cast_render.hpp"
+#include "render/render_plan.hpp"
+#include "render/shadow_renderer.hpp"
+#include "tools/bench_report.hpp"
+#include "tools/command_line.hpp"
+
+namespace umbra {
+
+const char* const kBenchUsage =
+    R"(usage: umbra bench [SCENES...] [options]
+
+Shows what accuracy costs in time. For each scene, method and sphere N, it
+renders every light's shadow mask and counts the surface pixels whose class
+(lit or unlit) differs from the ray-cast reference (exact shadow rays, true
+spheres); and it times whole frames (the plan's volumes, every pass, until
+the GL has finished): the median of --frames frames after 3 warm-up frames.
+It prints a Markdown table on stdout and a progress bar on stderr.
+
+With no SCENES, every scenes/*.scene under the current folder.
+
+methods (see umbra render --help): zfail, zpass, auto, triangles (scenes with
+meshes only) and raycast, the reference itself (its error is 0 by
+definition; timed over at most 3 frames).
+
+options:
+  --size WxH          image size (default 400x400)
+  --frames K          timed frames per measurement (default 15, 1 to 1000)
+  --segments LIST     the sphere N to try, comma-separated
+                      (default 8,16,32,64,128,256; each 3 to 4096)
+  --csv OUT.csv       also write the rows as CSV
+  --plot OUT.png      also plot error against frame time, a panel per scene
+                      and a curve per method (needs gnuplot); OUT.txt plots
+                      as text
+  -h, --help          show this help
+
+A bad scene is reported as FILE:LINE:COL: message before anything is
+measured; nothing is written and the exit status is 1. A usage error exits
+with 2.
+)";
+
+namespace {
+
+struct BenchOptions {
+  std::vector<std::string> scenes;
+  int width = 400, height = 400;
+  int frames = 15;
+  std::vector<int> segments = {8, 16, 32, 64, 128, 256};
+  std::optional<std::string> csv, plot;
+  bool help = false;
+};
+
+constexpr int kWarmUpFrames = 3;
+constexpr int kMostRaycastFrames = 3;
+
+std::vector<int> parse_segment_list(const std::string& option, const std::string& text) {
+  std::vector<int> list;
+  size_t start = 0;
+  while (start <= text.size()) {
+    const size_t comma = std::min(text.find(',', start), text.size());
+    list.push_back(parse_int_in(option, text.substr(start, comma - start), 3, 4096));
+    start = comma + 1;
+  }
+  return list;
+}
+
+BenchOptions parse_bench_options(const std::vector<std::string>& argv) {
+  BenchOptions o;
+  Arguments args(argv);
+  while (!args.done()) {
+    const std::string a = args.take();
+    if (a == "-h" || a == "--help") o.help = true;
+    else if (a == "--size") parse_size(a, args.value_of(a), 16384, o.width, o.height);
+    else if (a == "--frames") o.frames = parse_int_in(a, args.value_of(a), 1, 1000);
+    else if (a == "--segments") o.segments = parse_segment_list(a, args.value_of(a));
+    else if (a == "--csv") o.csv = args.value_of(a);
+    else if (a == "--plot") o.plot = args.value_of(a);
+    else if (a.size() > 1 && a[0] == '-') throw UsageError("unknown option " + a);
+    else o.scenes.push_back(a);
+  }
+  if (o.help) return o;
+  if (o.scenes.empty()) {
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator("scenes", ec))
+      if (entry.path().extension() == ".scene") o.scenes.push_back(entry.path().string());
+    std::sort(o.scenes.begin(), o.scenes.end());
+    if (o.scenes.empty()) throw UsageError("no scenes given, and no scenes/*.scene in the current folder");
+  }
+  if (o.plot) {
+    const auto ext = std::filesystem::path(*o.plot).extension();
+    if (ext != ".png" && ext != ".txt") throw UsageError("--plot writes OUT.png or OUT.txt, got \"" + *o.plot + "\"");
+  }
+  return o;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+template <typename Frame>
+double median_frame_ms(int warm_up, int frames, Frame frame) {
+  for (int i = 0; i < warm_up; ++i) frame();
+  std::vector<double> ms;
+  for (int i = 0; i < frames; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    frame();
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  }
+  return median(ms);
+}
+
+class Progress {
+ public:
+  explicit Progress(int total) : total_(total), shown_(::isatty(STDERR_FILENO)) {}
+  ~Progress() {
+    if (shown_) std::cerr << "\r\033[K" << std::flush;
+  }
+  void step(const std::string& what) {
+    ++done_;
+    if (!shown_) return;
+    constexpr int kWidth = 30;
+    const int filled = kWidth * done_ / std::max(1, total_);
+    std::cerr << "\r\033[K[" << std::string(size_t(filled), '#') << std::string(size_t(kWidth - filled), ' ') << "] "
+              << done_ << "/" << total_ << " " << what << std::flush;
+  }
+
+ private:
+  int total_, done_ = 0;
+  bool shown_;
+};
+
+struct Measurement {
+  RenderMethod method;
+  int segments;  // 0: the scene has no sphere, N changes nothing
+};
+
+std::vector<Measurement> measurements_for(const Scene& scene, const std::vector<int>& segments) {
+  std::vector<Measurement> list;
+  std::vector<RenderMethod> methods = {RenderMethod::kZFail, RenderMethod::kZPass, RenderMethod::kAuto};
+  if (!scene.meshes.empty()) methods.push_back(RenderMethod::kTriangles);
+  for (const RenderMethod m : methods) {
+    if (scene.spheres.empty()) list.push_back({m, 0});
+    else
+      for (const int n : segments) list.push_back({m, n});
+  }
+  return list;
+}
+
+std::vector<BenchRow> bench_scene(const Scene& scene, const std::vector<MeshCaster>& meshes, const BenchOptions& o,
+                                  Progress& progress) {
+  const std::string name = std::filesystem::path(scene.path).filename().string();
+  std::vector<BenchRow> rows;
+  progress.step(name + " raycast (the reference)");
+  const RayCastFrame reference = ray_cast_frame(scene, o.width, o.height);
+  BenchRow ray{name, "raycast", 0, 0, 0, 0.0, std::min(o.frames, kMostRaycastFrames)};
+  for (const Image& mask : reference.masks) ray.surface_pixels += mask_error(mask, mask).surface_pixels;
+  ray.median_ms = median_frame_ms(0, ray.frames, [&] { ray_cast_frame(scene, o.width, o.height); });
+
+  HeadlessContext context(o.width, o.height);
+  for (const Measurement& m : measurements_for(scene, o.segments)) {
+    progress.step(name + " " + method_name(m.method) + (m.segments ? " N=" + std::to_string(m.segments) : ""));
+    RenderSettings settings;
+    settings.width = o.width;
+    settings.height = o.height;
+    settings.method = m.method;
+    if (m.segments) settings.sphere_segments = m.segments;
+    RenderPlan plan = make_render_plan(scene, meshes, settings);
+    ShadowRenderer renderer(scene, plan);
+    BenchRow row{name, method_name(m.method), m.segments, 0, 0, 0.0, o.frames};
+    row.median_ms = median_frame_ms(kWarmUpFrames, o.frames, [&] {
+      update_render_plan(scene, meshes, plan);
+      renderer.draw(false);
+      renderer.finish();
+    });
+    MaskError error;
+    for (size_t light = 0; light < scene.lights.size(); ++light)
+      error += mask_error(reference.masks[light], renderer.render_mask(light));
+    row.wrong_pixels = error.wrong_pixels;
+    row.surface_pixels = error.surface_pixels;
+    rows.push_back(row);
+  }
+  rows.push_back(ray);
+  return rows;
+}
+
+}  // namespace
+
+int run_bench_command(const std::vector<std::string>& argv) {
+  BenchOptions options;
+  if (const auto exit_status = parse_command_line("bench", kBenchUsage, argv, parse_bench_options, options))
+    return *exit_status;
+  try {
+    if (options.plot && !gnuplot_available())
+      throw std::runtime_error("--plot needs gnuplot, which is not installed (Debian: apt-get install gnuplot-nox)");
+    // Every scene is read and checked before anything is measured.
+    std::vector<Scene> scenes;
+    int total = 0;
+    for (const std::string& path : options.scenes) {
+      scenes.push_back(parse_scene_file(path));
+      require_lights_off_casters(scenes.back());
+      total += 1 + int(measurements_for(scenes.back(), options.segments).size());
+    }
+    std::vector<BenchRow> rows;
+    {
+      Progress progress(total);
+      for (const Scene& scene : scenes) {
+        const std::vector<BenchRow> scene_rows = bench_scene(scene, prepare_mesh_casters(scene), options, progress);
+        rows.insert(rows.end(), scene_rows.begin(), scene_rows.end());
+      }
+    }
+    write_markdown_table(std::cout, rows, options.width, options.height);
+    if (options.csv) write_csv(rows, options.width, options.height, *options.csv);
+    if (options.plot) write_plot(rows, *options.plot);
+    return 0;
+  } catch (const std::exception& e) {
+    std::cerr << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace umbra

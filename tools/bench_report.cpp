@@ -1,0 +1,115 @@
+#include "tools/bench_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace umbra {
+namespace {
+
+std::string fixed(double v, int digits) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(digits) << v;
+  return s.str();
+}
+
+// The scenes and, per scene, the methods, in the order first met.
+std::vector<std::string> in_order(const std::vector<BenchRow>& rows, const std::string* scene) {
+  std::vector<std::string> seen;
+  for (const BenchRow& r : rows) {
+    if (scene && r.scene != *scene) continue;
+    const std::string& key = scene ? r.method : r.scene;
+    if (std::find(seen.begin(), seen.end(), key) == seen.end()) seen.push_back(key);
+  }
+  return seen;
+}
+
+std::string quoted_for_gnuplot(const std::string& text) {
+  std::string q = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') q += '\\';
+    q += c;
+  }
+  return q + "\"";
+}
+
+std::string quoted_for_shell(const std::string& text) {
+  std::string q = "'";
+  for (const char c : text) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+}  // namespace
+
+void write_markdown_table(std::ostream& out, const std::vector<BenchRow>& rows, int width, int height) {
+  std::map<std::pair<std::string, int>, double> zfail_ms;
+  for (const BenchRow& r : rows)
+    if (r.method == "zfail") zfail_ms[{r.scene, r.segments}] = r.median_ms;
+  out << "| scene | method | N | wrong pixels | of " << width << "x" << height << " surface | median frame (ms) | vs zfail |\n"
+      << "|---|---|---:|---:|---:|---:|---:|\n";
+  for (const BenchRow& r : rows) {
+    const auto z = zfail_ms.find({r.scene, r.segments});
+    out << "| " << r.scene << " | " << r.method << " | " << (r.segments ? std::to_string(r.segments) : "-") << " | "
+        << fixed(100.0 * r.error(), 3) << "% | " << r.wrong_pixels << " of " << r.surface_pixels << " | "
+        << fixed(r.median_ms, 2) << " | "
+        << (z != zfail_ms.end() && z->second > 0.0 ? fixed(r.median_ms / z->second, 2) + "x" : "-") << " |\n";
+  }
+}
+
+void write_csv(const std::vector<BenchRow>& rows, int width, int height, const std::string& path) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error(path + ": cannot write");
+  out << "scene,method,segments,wrong_pixels,surface_pixels,error,median_ms,frames,width,height\n";
+  for (const BenchRow& r : rows)
+    out << r.scene << "," << r.method << "," << r.segments << "," << r.wrong_pixels << "," << r.surface_pixels << ","
+        << r.error() << "," << r.median_ms << "," << r.frames << "," << width << "," << height << "\n";
+  if (!out.flush()) throw std::runtime_error(path + ": cannot write");
+}
+
+bool gnuplot_available() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }
+
+void write_plot(const std::vector<BenchRow>& rows, const std::string& path) {
+  const bool text = std::filesystem::path(path).extension() == ".txt";
+  const std::vector<std::string> scenes = in_order(rows, nullptr);
+  const int columns = text ? 1 : std::min<int>(3, int(scenes.size()));
+  const int panels_down = (int(scenes.size()) + columns - 1) / columns;
+  std::ostringstream g;
+  if (text) g << "set terminal dumb size 100," << 28 * panels_down << "\n";
+  else g << "set terminal pngcairo size " << 520 * columns << "," << 400 * panels_down << " font \",10\"\n";
+  const std::string partial = path + ".part";  // renamed into place: never a partial plot
+  g << "set output " << quoted_for_gnuplot(partial) << "\n"
+    << "set multiplot layout " << panels_down << "," << columns << "\n"
+    << "set logscale x\nset xlabel \"median frame time (ms, log)\"\nset ylabel \"wrong pixels (%)\"\n"
+    << "set key top right\nset grid\nset offsets 0, 0, graph 0.05, graph 0.05\n";
+  for (const std::string& scene : scenes) {
+    g << "set title " << quoted_for_gnuplot(scene) << "\nplot ";
+    const std::vector<std::string> methods = in_order(rows, &scene);
+    for (size_t i = 0; i < methods.size(); ++i)
+      g << (i ? ", " : "") << "'-' using 1:2 with linespoints title " << quoted_for_gnuplot(methods[i]);
+    g << "\n";
+    for (const std::string& method : methods) {
+      for (const BenchRow& r : rows)
+        if (r.scene == scene && r.method == method) g << std::max(r.median_ms, 1e-3) << " " << 100.0 * r.error() << "\n";
+      g << "e\n";
+    }
+  }
+  g << "unset multiplot\nset output\n";
+  const std::string script = path + ".gnuplot";
+  std::ofstream(script) << g.str();
+  const int status = std::system(("gnuplot " + quoted_for_shell(script) + " 2>/dev/null").c_str());
+  std::filesystem::remove(script);
+  if (status != 0) {
+    std::filesystem::remove(partial);
+    throw std::runtime_error(path + ": gnuplot failed (exit " + std::to_string(status) + ")");
+  }
+  std::filesystem::rename(partial, path);
+}
+
+}  // namespace umbra
