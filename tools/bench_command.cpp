@@ -28,7 +28,9 @@ renders every light's shadow mask and counts the surface pixels whose class
 (lit or unlit) differs from the ray-cast reference (exact shadow rays, true
 spheres); and it times whole frames (the plan's volumes, every pass, until
 the GL has finished): the median of --frames frames after 3 warm-up frames.
-It prints a Markdown table on stdout and a progress bar on stderr.
+It prints a Markdown table on stdout (its last column: the frame time over
+zfail's at the same N, or for raycast at the largest N) and a progress bar
+on stderr.
 
 With no SCENES, every scenes/*.scene under the current folder.
 
@@ -38,7 +40,7 @@ definition; timed over at most 3 frames).
 
 options:
   --size WxH          image size (default 400x400)
-  --frames K          timed frames per measurement (default 15, 1 to 1000)
+  --frames K          timed frames per measurement (default 21, 1 to 1000)
   --segments LIST     the sphere N to try, comma-separated
                       (default 8,16,32,64,128,256; each 3 to 4096)
   --csv OUT.csv       also write the rows as CSV
@@ -57,7 +59,7 @@ namespace {
 struct BenchOptions {
   std::vector<std::string> scenes;
   int width = 400, height = 400;
-  int frames = 15;
+  int frames = 21;
   std::vector<int> segments = {8, 16, 32, 64, 128, 256};
   std::optional<std::string> csv, plot;
   bool help = false;

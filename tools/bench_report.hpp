@@ -19,7 +19,7 @@ struct BenchRow {
 };
 
 // One row per measurement; the last column compares the frame time with
-// zfail at the same N on the same scene.
+// zfail at the same N on the same scene (raycast: at the largest N).
 void write_markdown_table(std::ostream& out, const std::vector<BenchRow>& rows, int width, int height);
 // Throws std::runtime_error when the file cannot be written.
 void write_csv(const std::vector<BenchRow>& rows, int width, int height, const std::string& path);
