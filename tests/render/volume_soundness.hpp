@@ -23,15 +23,19 @@ inline void expect_sound_volumes(const Scene& scene) {
       ASSERT_TRUE(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)) << "light " << i + 1;
       ASSERT_TRUE(v.w == 1.0 || (v.w == 0.0 && (v.x != 0.0 || v.y != 0.0 || v.z != 0.0))) << "light " << i + 1;
     }
-    for (const CasterEntry& e : lp.casters)
-      if (!e.volume.triangles.empty()) EXPECT_TRUE(is_closed_and_consistently_oriented(e.volume)) << e.where.str();
+    for (const CasterEntry& e : lp.casters) {
+      if (!e.volume.triangles.empty()) {
+        EXPECT_TRUE(is_closed_and_consistently_oriented(e.volume)) << e.where.str();
+      }
+    }
     for (const MeshVolumePlan& m : lp.mesh_volumes) {
       const std::vector<glm::dvec3>& positions = scene.meshes[m.mesh].positions;
       for (size_t k = 0; k < m.volume.count; ++k) {
         const uint32_t index = m.volume.buffer[k];
         ASSERT_LT(index, 2 * positions.size());
-        if (index >= positions.size())
+        if (index >= positions.size()) {
           ASSERT_NE(positions[index - positions.size()], scene.lights[i].position) << "a (0, 0, 0, 0) vertex";
+        }
       }
       const ShadowVolume volume = mesh_shadow_volume(casters[m.mesh].adjacency, scene.lights[i].position);
       EXPECT_TRUE(has_no_boundary(volume)) << "light " << i + 1;
