@@ -4,7 +4,7 @@ namespace umbra {
 namespace {
 
 constexpr RenderMethod kAll[] = {RenderMethod::kAuto, RenderMethod::kZFail, RenderMethod::kZPass,
-                                 RenderMethod::kTriangles, RenderMethod::kRaycast};
+                                 RenderMethod::kTriangles, RenderMethod::kShadowMap, RenderMethod::kRaycast};
 
 }  // namespace
 
@@ -14,6 +14,7 @@ const char* method_name(RenderMethod method) {
     case RenderMethod::kZFail: return "zfail";
     case RenderMethod::kZPass: return "zpass";
     case RenderMethod::kTriangles: return "triangles";
+    case RenderMethod::kShadowMap: return "shadowmap";
     case RenderMethod::kRaycast: return "raycast";
   }
   return "?";

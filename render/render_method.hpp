@@ -12,12 +12,13 @@ enum class RenderMethod {
   kZFail,      // shadow volumes, capped z-fail for every light (seed 002)
   kZPass,      // shadow volumes, uncapped z-pass for every light: wrong where the eye is in a volume
   kTriangles,  // z-fail, and every mesh cast per triangle instead of from its silhouette
+  kShadowMap,  // a cube shadow map per light (seed 004): no volumes, error grows as the map shrinks
   kRaycast,    // the CPU reference: exact shadow rays (seed 004)
 };
 
 const char* method_name(RenderMethod method);
 std::optional<RenderMethod> method_from_name(const std::string& name);
-// "auto|zfail|zpass|triangles|raycast", for usage text and errors.
+// "auto|zfail|zpass|triangles|shadowmap|raycast", for usage text and errors.
 std::string method_names();
 
 }  // namespace umbra

@@ -106,6 +106,16 @@ void choose_count(RenderMethod method, const LightCulling& c, LightPlan& lp) {
   }
 }
 
+// Empties a light's sphere and triangle volumes (not its mesh volumes).
+void clear_volumes(LightPlan& lp) {
+  lp.all_volumes.vertices.clear();
+  lp.all_volumes.triangles.clear();
+  lp.all_volumes.part_ends.clear();
+  lp.all_volumes.side_quads = lp.all_volumes.light_cap_triangles = lp.all_volumes.dark_cap_triangles = 0;
+  lp.stencil_batch_ends = {0};
+  lp.side_quads = lp.light_cap_triangles = lp.dark_cap_triangles = 0;
+}
+
 }  // namespace
 
 RenderPlan make_render_plan(const Scene& scene, const RenderSettings& settings) {
@@ -128,6 +138,15 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
     const Light& light = scene.lights[i];
     LightPlan& lp = plan.lights[i];
     lp.casters.clear();
+    if (plan.settings.method == RenderMethod::kShadowMap) {  // no volumes at all
+      clear_volumes(lp);
+      lp.mesh_volumes.clear();
+      lp.z_pass = false;
+      lp.culled_casters = 0;
+      lp.count_reason = "no stencil: a cube shadow map of 6 x " + std::to_string(plan.settings.shadow_map_size) + "^2 " +
+                        "distances (seed 004), biased by two texels";
+      continue;
+    }
     const LightCulling culling = cull_for_light(scene, plan, light.position);
     lp.culled_casters = culling.culled;
     choose_count(plan.settings.method, culling, lp);
@@ -148,10 +167,7 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
     lp.mesh_volumes.resize(slot);
     std::stable_sort(lp.casters.begin(), lp.casters.end(),  // file order, for --explain
                      [](const CasterEntry& a, const CasterEntry& b) { return a.where.line < b.where.line; });
-    lp.all_volumes.vertices.clear();
-    lp.all_volumes.triangles.clear();
-    lp.all_volumes.part_ends.clear();
-    lp.all_volumes.side_quads = lp.all_volumes.light_cap_triangles = lp.all_volumes.dark_cap_triangles = 0;
+    clear_volumes(lp);
     for (const CasterEntry& e : lp.casters) append_volume(lp.all_volumes, e.volume, !lp.z_pass);
     lp.stencil_batch_ends.clear();
     const std::vector<uint32_t>& parts = lp.all_volumes.part_ends;
@@ -185,7 +201,7 @@ void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& 
     const LightPlan& lp = plan.lights[i];
     out << "  light " << i + 1 << " at " << light.position << " (line " << light.where.line << "): " << lp.side_quads
         << " side quads, " << lp.light_cap_triangles << " light-cap and " << lp.dark_cap_triangles << " dark-cap triangles\n";
-    out << "    counted by " << lp.count_reason << "\n";
+    out << "    shadows: " << lp.count_reason << "\n";
     if (lp.culled_casters > 0)
       out << "    " << lp.culled_casters << " of " << lp.casters.size() << " casters left out: their volumes cannot reach the view\n";
     if (lp.stencil_batch_ends.size() > 1)

@@ -20,6 +20,7 @@ struct RenderSettings {
   int height = 800;
   int sphere_segments = 64;  // N of the spec's N-gon (spec 2.2)
   RenderMethod method = RenderMethod::kAuto;  // the plan is for every method but kRaycast
+  int shadow_map_size = 1024;                 // texels along a cube face's side, for kShadowMap
 };
 
 struct CasterEntry {

@@ -5,8 +5,9 @@
 
 namespace umbra::shaders {
 
-// What a surface pass writes (uniform `pass`).
-enum SurfacePass { kAmbient = 0, kDirect = 1, kMaskSurface = 2, kMaskLit = 3 };
+// What a surface pass writes (uniform `pass`). kDistance draws a shadow map
+// face: with `eye` at the light, the distance from it.
+enum SurfacePass { kAmbient = 0, kDirect = 1, kMaskSurface = 2, kMaskLit = 3, kDistance = 4 };
 
 // Phong shading shared by triangles and spheres; `n` is the unit normal on the
 // side facing the camera, so a triangle's visible side is lit only when the
@@ -21,9 +22,26 @@ uniform vec3 material_ambient;
 uniform vec3 material_diffuse;
 uniform vec3 material_specular;
 uniform float material_shininess;
+// Shadow mapping (seed 004) instead of the stencil: a point is in shadow when
+// it lies further from the light than the map's nearest surface in its
+// direction, by more than a bias of two texels (slope-scaled).
+uniform bool shadow_map_on;
+uniform samplerCube shadow_map;
+uniform float shadow_map_texel;  // a texel's width at distance 1: 2 / size
 out vec4 frag_color;
 
+bool in_mapped_shadow(vec3 p, float n_dot_l) {
+  vec3 to_p = p - light_position;
+  float d = length(to_p);
+  float bias = 2.0 * shadow_map_texel * d / max(n_dot_l, 0.1);
+  return d - bias > texture(shadow_map, to_p).r;
+}
+
 void shade(vec3 p, vec3 n) {
+  if (pass == 4) {
+    frag_color = vec4(length(p - light_position));
+    return;
+  }
   if (dot(n, eye - p) < 0.0) n = -n;
   vec3 l = normalize(light_position - p);
   float n_dot_l = dot(n, l);
@@ -31,6 +49,7 @@ void shade(vec3 p, vec3 n) {
     frag_color = vec4(ambient_sum * material_ambient, 1.0);
   } else if (pass == 1) {
     if (n_dot_l <= 0.0) discard;
+    if (shadow_map_on && in_mapped_shadow(p, n_dot_l)) discard;
     vec3 v = normalize(eye - p);
     vec3 r = reflect(-l, n);
     float s = material_shininess > 0.0 ? pow(max(dot(r, v), 0.0), material_shininess) : 1.0;
@@ -39,6 +58,7 @@ void shade(vec3 p, vec3 n) {
     frag_color = vec4(0.0, 0.0, 0.0, 1.0);
   } else {
     if (n_dot_l <= 0.0) discard;
+    if (shadow_map_on && in_mapped_shadow(p, n_dot_l)) discard;
     frag_color = vec4(1.0);
   }
 }

@@ -1,11 +1,16 @@
 #include "render/shadow_renderer.hpp"
 
+#include <limits>
 #include <string>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include "render/camera_transform.hpp"
 #include "render/gl.hpp"
 #include "render/shader_program.hpp"
 #include "render/shaders.hpp"
+#include "render/shadow_map.hpp"
 #include "render/surface_buffers.hpp"
 
 namespace umbra {
@@ -44,7 +49,15 @@ ShadowRenderer::ShadowRenderer(const Scene& scene, const RenderPlan& plan) : sce
   for (ShaderProgram* p : {triangle_program_.get(), sphere_program_.get()}) {
     p->use();
     p->set("ambient_sum", f(ambient_sum));
+    p->set("shadow_map", 1);  // texture unit 1
   }
+
+  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  const auto grow = [&](const glm::dvec3& a, const glm::dvec3& b) { lo = glm::min(lo, a), hi = glm::max(hi, b); };
+  for (const Sphere& sp : scene.spheres) grow(sp.center - sp.radius, sp.center + sp.radius);
+  for (const Triangle& t : scene.triangles) grow(glm::min(t.a, glm::min(t.b, t.c)), glm::max(t.a, glm::max(t.b, t.c)));
+  for (const Mesh& m : scene.meshes) grow(m.bounds_min, m.bounds_max);
+  if (lo.x <= hi.x) scene_center_ = 0.5 * (lo + hi), scene_radius_ = 0.5 * glm::length(hi - lo);
 }
 
 // The plan's camera and image size, read every frame: a viewer moves the
@@ -80,6 +93,8 @@ void ShadowRenderer::draw_surfaces(int pass, size_t light) {
     p->set("pass", pass);
     p->set("light_position", f(l.position));
     p->set("light_color", f(l.color));
+    p->set("shadow_map_on", int(mapped()));
+    p->set("shadow_map_texel", 2.0f / float(plan_.settings.shadow_map_size));
   }
   triangle_program_->use();
   for (const SurfaceBuffers::TriangleGroup& group : surfaces_->triangle_groups()) {
@@ -143,6 +158,36 @@ void ShadowRenderer::count_shadow_volumes(size_t light) {
   }
 }
 
+void ShadowRenderer::shadow_light(size_t light) {
+  shadow_marked_in_alpha_ = false;
+  if (mapped()) render_shadow_map(light);
+  else count_shadow_volumes(light);
+}
+
+// The six faces from the light, each the surfaces' distances from it, then
+// the camera's view again. The near plane is well inside the nearest surface
+// for any light outside the casters, at a scale that follows the scene's.
+void ShadowRenderer::render_shadow_map(size_t light) {
+  if (!shadow_map_ || shadow_map_->size() != plan_.settings.shadow_map_size)
+    shadow_map_ = std::make_unique<ShadowMap>(plan_.settings.shadow_map_size);
+  const glm::dvec3 position = scene_.lights[light].position;
+  const double near = 1e-4 * (glm::length(position - scene_center_) + scene_radius_);
+  baseline_state();
+  for (int face = 0; face < 6; ++face) {
+    shadow_map_->begin_face(face);
+    const glm::mat4 view_projection(cube_face_view_projection(position, face, near));
+    for (ShaderProgram* p : {triangle_program_.get(), sphere_program_.get()}) {
+      p->use();
+      p->set("view_projection", view_projection);
+      p->set("eye", f(position));
+    }
+    draw_surfaces(shaders::kDistance, light);
+  }
+  shadow_map_->end();
+  apply_view();
+  shadow_map_->bind(1);
+}
+
 // Light `light`'s volumes with the volume program and the current state.
 void ShadowRenderer::draw_volumes(size_t light) {
   const LightPlan& lp = plan_.lights[light];
@@ -203,7 +248,7 @@ void ShadowRenderer::leave_out_marked_pixels() const {
 }
 
 void ShadowRenderer::direct_light_pass(size_t light) {
-  glEnable(GL_STENCIL_TEST);
+  if (!mapped()) glEnable(GL_STENCIL_TEST);
   glStencilFunc(GL_EQUAL, 0, 0xFF);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glDepthFunc(GL_EQUAL);
@@ -232,7 +277,7 @@ void ShadowRenderer::show_volumes_pass() {
 void ShadowRenderer::draw(bool show_volumes) {
   depth_and_ambient_pass();
   for (size_t i = 0; i < scene_.lights.size(); ++i) {
-    count_shadow_volumes(i);
+    shadow_light(i);
     direct_light_pass(i);
   }
   if (show_volumes) show_volumes_pass();
@@ -249,7 +294,7 @@ void ShadowRenderer::finish() const { glFinish(); }
 
 Image ShadowRenderer::render_mask(size_t light) {
   depth_and_ambient_pass();
-  count_shadow_volumes(light);
+  shadow_light(light);
   // Every visible surface starts unlit (0), then lit where it faces the light
   // and the stencil count is zero; alpha keeps any batches' marks.
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
@@ -258,7 +303,7 @@ Image ShadowRenderer::render_mask(size_t light) {
   glDepthFunc(GL_EQUAL);
   glDepthMask(GL_FALSE);
   draw_surfaces(shaders::kMaskSurface, light);
-  glEnable(GL_STENCIL_TEST);
+  if (!mapped()) glEnable(GL_STENCIL_TEST);
   glStencilFunc(GL_EQUAL, 0, 0xFF);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   leave_out_marked_pixels();  // 1 * 0 + lit, or nothing where marked

@@ -8,6 +8,8 @@
 //      says the light may use z-pass, front faces incrementing and back faces
 //      decrementing where it passes, without caps; then add the light's
 //      diffuse + specular term where the stencil is zero.
+// With the shadowmap method, step 2 instead renders the light's cube shadow
+// map and the light's pass tests each point against it.
 // When a light has more volumes than one stencil count can hold (the plan's
 // stencil batches), each batch is counted on its own and the pixels it
 // shadows are marked in the colour buffer's alpha, which the light's pass
@@ -23,6 +25,7 @@
 namespace umbra {
 
 class ShaderProgram;
+class ShadowMap;
 class SurfaceBuffers;
 class VolumeBuffer;
 
@@ -60,6 +63,10 @@ class ShadowRenderer {
   void draw_volumes(size_t light);
   void draw_stencil_batch(size_t light, size_t batch);
   void draw_mesh_volume(const LightPlan& lp, const MeshVolumePlan& m);
+  bool mapped() const { return plan_.settings.method == RenderMethod::kShadowMap; }
+  void render_shadow_map(size_t light);
+  // How far every stencil-free pass must look: light `light`'s shadows.
+  void shadow_light(size_t light);
   void mark_shadowed_in_alpha();
   void leave_out_marked_pixels() const;
   Image read_pixels(int channels) const;
@@ -69,6 +76,9 @@ class ShadowRenderer {
   std::unique_ptr<ShaderProgram> triangle_program_, sphere_program_, volume_program_;
   std::unique_ptr<SurfaceBuffers> surfaces_;
   std::unique_ptr<VolumeBuffer> volumes_;
+  std::unique_ptr<ShadowMap> shadow_map_;  // for the shadowmap method, made on first use
+  double scene_radius_ = 0.0;             // of a ball round every surface, for the map's near plane
+  glm::dvec3 scene_center_{0.0};
   std::vector<std::unique_ptr<VolumeBuffer>> mesh_volumes_;  // per scene mesh; made when first drawn
   bool shadow_marked_in_alpha_ = false;  // the last count_shadow_volumes used batches
 };

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <tuple>
 
 #include "mesh/scene_checks.hpp"
 #include "mesh/scene_parser.hpp"
@@ -29,20 +30,23 @@ renders every light's shadow mask and counts the surface pixels whose class
 spheres); and it times whole frames (the plan's volumes, every pass, until
 the GL has finished): the median of --frames frames after 3 warm-up frames.
 It prints a Markdown table on stdout (its last column: the frame time over
-zfail's at the same N, or for raycast at the largest N) and a progress bar
-on stderr.
+zfail's at the same N, or for raycast and shadowmap at the largest N) and a
+progress bar on stderr.
 
 With no SCENES, every scenes/*.scene under the current folder.
 
-methods (see umbra render --help): zfail, zpass, auto, triangles (scenes with
-meshes only) and raycast, the reference itself (its error is 0 by
-definition; timed over at most 3 frames).
+methods (see umbra render --help): zfail, zpass and auto at each N;
+triangles (scenes with meshes only); shadowmap at each map size; and
+raycast, the reference itself (its error is 0 by definition). A method whose
+first frame takes over 250 ms is timed over 3 frames after that one.
 
 options:
   --size WxH          image size (default 400x400)
   --frames K          timed frames per measurement (default 21, 1 to 1000)
   --segments LIST     the sphere N to try, comma-separated
                       (default 8,16,32,64,128,256; each 3 to 4096)
+  --map-sizes LIST    the shadow map sizes to try, comma-separated
+                      (default 256,512,1024,2048,4096; each 16 to 8192)
   --csv OUT.csv       also write the rows as CSV
   --plot OUT.png      also plot error against frame time, a panel per scene
                       and a curve per method (needs gnuplot); OUT.txt plots
@@ -61,19 +65,21 @@ struct BenchOptions {
   int width = 400, height = 400;
   int frames = 21;
   std::vector<int> segments = {8, 16, 32, 64, 128, 256};
+  std::vector<int> map_sizes = {256, 512, 1024, 2048, 4096};
   std::optional<std::string> csv, plot;
   bool help = false;
 };
 
 constexpr int kWarmUpFrames = 3;
-constexpr int kMostRaycastFrames = 3;
+constexpr double kSlowFrameMs = 250.0;
+constexpr int kSlowFrames = 3;
 
-std::vector<int> parse_segment_list(const std::string& option, const std::string& text) {
+std::vector<int> parse_int_list(const std::string& option, const std::string& text, int lowest, int highest) {
   std::vector<int> list;
   size_t start = 0;
   while (start <= text.size()) {
     const size_t comma = std::min(text.find(',', start), text.size());
-    list.push_back(parse_int_in(option, text.substr(start, comma - start), 3, 4096));
+    list.push_back(parse_int_in(option, text.substr(start, comma - start), lowest, highest));
     start = comma + 1;
   }
   return list;
@@ -87,7 +93,8 @@ BenchOptions parse_bench_options(const std::vector<std::string>& argv) {
     if (a == "-h" || a == "--help") o.help = true;
     else if (a == "--size") parse_size(a, args.value_of(a), 16384, o.width, o.height);
     else if (a == "--frames") o.frames = parse_int_in(a, args.value_of(a), 1, 1000);
-    else if (a == "--segments") o.segments = parse_segment_list(a, args.value_of(a));
+    else if (a == "--segments") o.segments = parse_int_list(a, args.value_of(a), 3, 4096);
+    else if (a == "--map-sizes") o.map_sizes = parse_int_list(a, args.value_of(a), 16, 8192);
     else if (a == "--csv") o.csv = args.value_of(a);
     else if (a == "--plot") o.plot = args.value_of(a);
     else if (a.size() > 1 && a[0] == '-') throw UsageError("unknown option " + a);
@@ -115,15 +122,23 @@ double median(std::vector<double> v) {
 }
 
 template <typename Frame>
-double median_frame_ms(int warm_up, int frames, Frame frame) {
+double frame_ms(Frame& frame) {
+  const auto start = std::chrono::steady_clock::now();
+  frame();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The median of `frames` frames after warm-up ones; a slow method (its first
+// frame over kSlowFrameMs) gets only kSlowFrames after that first one.
+// Returns the number of frames timed too.
+template <typename Frame>
+std::pair<double, int> median_frame_ms(int frames, Frame frame) {
+  int warm_up = kWarmUpFrames - 1;
+  if (frame_ms(frame) > kSlowFrameMs) warm_up = 0, frames = std::min(frames, kSlowFrames);
   for (int i = 0; i < warm_up; ++i) frame();
   std::vector<double> ms;
-  for (int i = 0; i < frames; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    frame();
-    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-  }
-  return median(ms);
+  for (int i = 0; i < frames; ++i) ms.push_back(frame_ms(frame));
+  return {median(ms), frames};
 }
 
 class Progress {
@@ -149,9 +164,11 @@ class Progress {
 struct Measurement {
   RenderMethod method;
   int segments;  // 0: the scene has no sphere, N changes nothing
+  int map_size = 0;
 };
 
-std::vector<Measurement> measurements_for(const Scene& scene, const std::vector<int>& segments) {
+std::vector<Measurement> measurements_for(const Scene& scene, const BenchOptions& o) {
+  const std::vector<int>& segments = o.segments;
   std::vector<Measurement> list;
   std::vector<RenderMethod> methods = {RenderMethod::kZFail, RenderMethod::kZPass, RenderMethod::kAuto};
   if (!scene.meshes.empty()) methods.push_back(RenderMethod::kTriangles);
@@ -160,6 +177,7 @@ std::vector<Measurement> measurements_for(const Scene& scene, const std::vector<
     else
       for (const int n : segments) list.push_back({m, n});
   }
+  for (const int size : o.map_sizes) list.push_back({RenderMethod::kShadowMap, 0, size});
   return list;
 }
 
@@ -169,22 +187,23 @@ std::vector<BenchRow> bench_scene(const Scene& scene, const std::vector<MeshCast
   std::vector<BenchRow> rows;
   progress.step(name + " raycast (the reference)");
   const RayCastFrame reference = ray_cast_frame(scene, o.width, o.height);
-  BenchRow ray{name, "raycast", 0, 0, 0, 0.0, std::min(o.frames, kMostRaycastFrames)};
+  BenchRow ray{name, "raycast"};
   for (const Image& mask : reference.masks) ray.surface_pixels += mask_error(mask, mask).surface_pixels;
-  ray.median_ms = median_frame_ms(0, ray.frames, [&] { ray_cast_frame(scene, o.width, o.height); });
+  std::tie(ray.median_ms, ray.frames) = median_frame_ms(o.frames, [&] { ray_cast_frame(scene, o.width, o.height); });
 
   HeadlessContext context(o.width, o.height);
-  for (const Measurement& m : measurements_for(scene, o.segments)) {
-    progress.step(name + " " + method_name(m.method) + (m.segments ? " N=" + std::to_string(m.segments) : ""));
+  for (const Measurement& m : measurements_for(scene, o)) {
+    BenchRow row{name, method_name(m.method), m.segments, m.map_size};
+    progress.step(name + " " + row.method + " " + row.parameter());
     RenderSettings settings;
     settings.width = o.width;
     settings.height = o.height;
     settings.method = m.method;
     if (m.segments) settings.sphere_segments = m.segments;
+    if (m.map_size) settings.shadow_map_size = m.map_size;
     RenderPlan plan = make_render_plan(scene, meshes, settings);
     ShadowRenderer renderer(scene, plan);
-    BenchRow row{name, method_name(m.method), m.segments, 0, 0, 0.0, o.frames};
-    row.median_ms = median_frame_ms(kWarmUpFrames, o.frames, [&] {
+    std::tie(row.median_ms, row.frames) = median_frame_ms(o.frames, [&] {
       update_render_plan(scene, meshes, plan);
       renderer.draw(false);
       renderer.finish();
@@ -215,7 +234,7 @@ int run_bench_command(const std::vector<std::string>& argv) {
     for (const std::string& path : options.scenes) {
       scenes.push_back(parse_scene_file(path));
       require_lights_off_casters(scenes.back());
-      total += 1 + int(measurements_for(scenes.back(), options.segments).size());
+      total += 1 + int(measurements_for(scenes.back(), options).size());
     }
     std::vector<BenchRow> rows;
     {

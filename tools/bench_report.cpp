@@ -48,6 +48,11 @@ std::string quoted_for_shell(const std::string& text) {
 
 }  // namespace
 
+std::string BenchRow::parameter() const {
+  if (map_size) return "map " + std::to_string(map_size);
+  return segments ? "N = " + std::to_string(segments) : "-";
+}
+
 void write_markdown_table(std::ostream& out, const std::vector<BenchRow>& rows, int width, int height) {
   // zfail's time per scene and N; under N = 0, its time at the largest N,
   // which is what raycast (no N) is compared with.
@@ -58,11 +63,12 @@ void write_markdown_table(std::ostream& out, const std::vector<BenchRow>& rows, 
       zfail_ms[{r.scene, r.segments}] = r.median_ms;
       if (r.segments >= largest_n[r.scene]) zfail_ms[{r.scene, 0}] = r.median_ms, largest_n[r.scene] = r.segments;
     }
-  out << "| scene | method | N | wrong pixels | of " << width << "x" << height << " surface | median frame (ms) | vs zfail |\n"
+  out << "| scene | method | parameter | wrong pixels | of " << width << "x" << height
+      << " surface | median frame (ms) | vs zfail |\n"
       << "|---|---|---:|---:|---:|---:|---:|\n";
   for (const BenchRow& r : rows) {
     const auto z = zfail_ms.find({r.scene, r.segments});
-    out << "| " << r.scene << " | " << r.method << " | " << (r.segments ? std::to_string(r.segments) : "-") << " | "
+    out << "| " << r.scene << " | " << r.method << " | " << r.parameter() << " | "
         << fixed(100.0 * r.error(), 3) << "% | " << r.wrong_pixels << " of " << r.surface_pixels << " | "
         << fixed(r.median_ms, 2) << " | "
         << (z != zfail_ms.end() && z->second > 0.0 ? fixed(r.median_ms / z->second, 2) + "x" : "-") << " |\n";
@@ -72,9 +78,9 @@ void write_markdown_table(std::ostream& out, const std::vector<BenchRow>& rows, 
 void write_csv(const std::vector<BenchRow>& rows, int width, int height, const std::string& path) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error(path + ": cannot write");
-  out << "scene,method,segments,wrong_pixels,surface_pixels,error,median_ms,frames,width,height\n";
+  out << "scene,method,segments,map_size,wrong_pixels,surface_pixels,error,median_ms,frames,width,height\n";
   for (const BenchRow& r : rows)
-    out << r.scene << "," << r.method << "," << r.segments << "," << r.wrong_pixels << "," << r.surface_pixels << ","
+    out << r.scene << "," << r.method << "," << r.segments << "," << r.map_size << "," << r.wrong_pixels << "," << r.surface_pixels << ","
         << r.error() << "," << r.median_ms << "," << r.frames << "," << width << "," << height << "\n";
   if (!out.flush()) throw std::runtime_error(path + ": cannot write");
 }

@@ -12,9 +12,11 @@ struct BenchRow {
   std::string scene;   // file name
   std::string method;  // method_name()
   int segments = 0;    // sphere N; 0 where the scene has no sphere or the method has none
+  int map_size = 0;    // shadow map texels a side, for shadowmap; else 0
   long wrong_pixels = 0, surface_pixels = 0;  // over every light's mask
   double median_ms = 0.0;
   int frames = 0;
+  std::string parameter() const;  // "N = 64", "map 1024" or "-"
   double error() const { return surface_pixels ? double(wrong_pixels) / double(surface_pixels) : 0.0; }
 };
 

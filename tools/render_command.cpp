@@ -38,8 +38,12 @@ options:
                                      where the near plane is in a volume
                           triangles  z-fail, meshes cast per triangle rather
                                      than from their silhouettes
+                          shadowmap  a cube shadow map per light (seed 004),
+                                     --map-size texels a side; no volumes
                           raycast    the CPU reference: exact shadow rays, true
                                      spheres (no GL, no N-gon)
+  --map-size N          texels along a side of each shadow map cube face
+                        (default 1024, 16 to 8192; for --method shadowmap)
   --show-volumes        draw the shadow volumes translucently over the image
   --mask MASK.png       also write light 1's shadow mask: 8-bit grey, 128 where
                         no surface is seen, 255 where the visible point faces
@@ -79,6 +83,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     else if (a == "--light-angle") o.light_angle_deg = parse_finite_number(a, args.value_of(a));
     else if (a == "--segments") o.settings.sphere_segments = parse_int_in(a, args.value_of(a), 3, 4096);
     else if (a == "--method") o.settings.method = parse_method(a, args.value_of(a));
+    else if (a == "--map-size") o.settings.shadow_map_size = parse_int_in(a, args.value_of(a), 16, 8192);
     else if (a == "--show-volumes") o.show_volumes = true;
     else if (a == "--explain") o.explain = true;
     else if (a.size() > 1 && a[0] == '-') throw UsageError("unknown option " + a);
@@ -89,8 +94,9 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   if (o.scene_path.empty()) throw UsageError("no scene file given");
   if (o.output.empty()) throw UsageError("no output image given (-o OUT.png)");
   if (o.mask && *o.mask == o.output) throw UsageError("--mask and -o name the same file");
-  if (o.show_volumes && o.settings.method == RenderMethod::kRaycast)
-    throw UsageError("--show-volumes needs shadow volumes; --method raycast has none");
+  const RenderMethod m = o.settings.method;
+  if (o.show_volumes && (m == RenderMethod::kRaycast || m == RenderMethod::kShadowMap))
+    throw UsageError(std::string("--show-volumes needs shadow volumes; --method ") + method_name(m) + " has none");
   return o;
 }
 

@@ -38,8 +38,8 @@ keys:
   up, down      double or halve the light's speed
   v             show or hide the shadow volumes
   ] and [       double or halve the sphere segments N (3 to 4096)
-  m             switch method: auto, zfail, zpass, triangles (see
-                umbra render --help)
+  m             switch method: auto, zfail, zpass, triangles, shadowmap
+                (see umbra render --help)
   r             return to the scene's camera
   s             return to the spec's view (eye (0, 0, 3.4), looking down -z)
   o             show or hide the overlay
@@ -49,7 +49,8 @@ mouse: drag to orbit the camera around its target, scroll to zoom
 
 options:
   --size WxH           window size (default 800x800)
-  --method M           auto (default), zfail, zpass or triangles
+  --method M           auto (default), zfail, zpass, triangles or shadowmap
+  --map-size N         shadow map texels a side (default 1024)
   --light-angle DEG    start with the lights rotated by DEG (default 0)
   --speed DEG          degrees per second the light turns (default 30)
   --paused             start with the light paused
@@ -88,6 +89,7 @@ ViewOptions parse_view_options(const std::vector<std::string>& argv) {
     else if (a == "--paused") o.paused = true;
     else if (a == "--segments") o.settings.sphere_segments = parse_int_in(a, args.value_of(a), 3, 4096);
     else if (a == "--method") o.settings.method = parse_method(a, args.value_of(a));
+    else if (a == "--map-size") o.settings.shadow_map_size = parse_int_in(a, args.value_of(a), 16, 8192);
     else if (a == "--frames") o.frames = parse_int_in(a, args.value_of(a), 1, 1 << 30);
     else if (a == "--screenshot") o.screenshot = args.value_of(a);
     else if (a == "--overlay-in-screenshot") o.overlay_in_screenshot = true;
@@ -144,6 +146,7 @@ RenderMethod next_interactive_method(RenderMethod m) {
     case RenderMethod::kAuto: return RenderMethod::kZFail;
     case RenderMethod::kZFail: return RenderMethod::kZPass;
     case RenderMethod::kZPass: return RenderMethod::kTriangles;
+    case RenderMethod::kTriangles: return RenderMethod::kShadowMap;
     default: return RenderMethod::kAuto;
   }
 }
@@ -155,8 +158,9 @@ std::vector<std::string> status_lines(const std::string& path, const RenderPlan&
   std::vector<std::string> lines = {path};
   const LightPlan& light = plan.lights[0];
   const int segments = plan.settings.sphere_segments;
+  const bool mapped = plan.settings.method == RenderMethod::kShadowMap;
   std::snprintf(line, sizeof line, "method %s (light 1 %s)   frame time %.1f ms", method_name(plan.settings.method),
-                light.z_pass ? "z-pass" : "z-fail", frame_ms);
+                mapped ? "shadow map" : light.z_pass ? "z-pass" : "z-fail", frame_ms);
   lines.push_back(line);
   std::snprintf(line, sizeof line, "light 1 at %.1f deg, %s%.3g deg/s   sphere N = %d", std::fmod(angle, 360.0),
                 paused ? "paused, " : "", speed, segments);
@@ -285,6 +289,7 @@ int run_view_command(const std::vector<std::string>& argv) {
       scene.plan->settings.height = height;
       scene.plan->settings.sphere_segments = options.settings.sphere_segments;
       scene.plan->settings.method = options.settings.method;
+      scene.plan->settings.shadow_map_size = options.settings.shadow_map_size;
       update_render_plan(scene.frame, scene.meshes, *scene.plan);
       scene.renderer->draw(show_volumes);
     }

@@ -104,6 +104,60 @@ TEST(ZFail, ErrorAgainstTheReferenceFallsAsNGrows) {
   }
 }
 
+// Shadow mapping's error is the map's texel: it shrinks as the map grows.
+TEST(ShadowMap, ErrorAgainstTheReferenceFallsAsTheMapGrows) {
+  const Scene scene = parse_scene_file(scene_path("demo.scene"));
+  const RayCastFrame reference = ray_cast_frame(scene, 200, 200);
+  HeadlessContext context(200, 200);
+  long previous = -1;
+  for (const int size : {2048, 256, 32}) {  // coarser each time
+    RenderSettings settings;
+    settings.width = settings.height = 200;
+    settings.method = RenderMethod::kShadowMap;
+    settings.shadow_map_size = size;
+    const RenderPlan plan = make_render_plan(scene, settings);
+    EXPECT_TRUE(plan.lights[0].casters.empty()) << "no volumes for a shadow map";
+    ShadowRenderer renderer(scene, plan);
+    const MaskError e = mask_error(reference.masks[0], renderer.render_mask(0));
+    EXPECT_GT(e.wrong_pixels, previous) << "map " << size;
+    previous = e.wrong_pixels;
+  }
+}
+
+// Away from the shadow's edge a shadow map is right: the floor under a
+// small triangle lit from the side, whose shadow (0.2, -0.3), (0.8, -0.3),
+// (0.2, 0.3) the eye sees mostly beside the triangle.
+TEST(ShadowMap, LitAndShadowedFloorAwayFromTheEdges) {
+  const Scene scene = parse_scene_text(
+      "light -1 0 2\n"
+      "triangle -1 -1 -1  1 -1 -1  1 1 -1\n"
+      "triangle -1 -1 -1  1 1 -1  -1 1 -1\n"
+      "triangle -0.2 -0.2 0  0.2 -0.2 0  -0.2 0.2 0\n",
+      "floor.scene");
+  RenderSettings settings;
+  settings.width = settings.height = 101;
+  settings.method = RenderMethod::kShadowMap;
+  settings.shadow_map_size = 512;
+  const RenderPlan plan = make_render_plan(scene, settings);
+  HeadlessContext context(101, 101);
+  ShadowRenderer renderer(scene, plan);
+  const Image mask = renderer.render_mask(0);
+  int checked = 0, shadowed = 0;
+  for (int y = 2; y < 99; ++y)
+    for (int x = 2; x < 99; ++x) {
+      const uint8_t ref = reference_mask_value(scene, 101, 101, x, y, 0);
+      bool uniform = true;  // two pixels round it in every direction agree
+      for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) uniform = uniform && reference_mask_value(scene, 101, 101, x + dx, y + dy, 0) == ref;
+      if (!uniform) continue;
+      EXPECT_EQ(mask.at(x, y), ref) << x << ", " << y;
+      ++checked;
+      shadowed += ref == kMaskUnlit;
+    }
+  EXPECT_GT(checked, 101 * 101 / 4);
+  EXPECT_GT(shadowed, 20);
+}
+
 TEST(Auto, ChoosesZFailWhereTheEyeIsInAVolumeAndZPassWouldBeWrong) {
   const Scene scene = parse_scene_file(scene_path("camera_in_shadow.scene"));
   RenderSettings settings;

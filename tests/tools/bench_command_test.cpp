@@ -31,29 +31,37 @@ std::vector<std::vector<std::string>> read_csv(const std::string& path) {
 }
 
 TEST_F(BenchCommand, WritesATableAndACsvRowPerMethodAndN) {
-  const CommandResult r = run("bench " + kTwoSpheres + " --size 96x96 --frames 1 --segments 8,32 --csv " + path("b.csv"));
+  const CommandResult r = run("bench " + kTwoSpheres + " --size 96x96 --frames 1 --segments 8,32 --map-sizes 32,512 --csv " +
+                              path("b.csv"));
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.out.find("| scene | method | N | wrong pixels | of 96x96 surface | median frame (ms) | vs zfail |"),
+  EXPECT_NE(r.out.find("| scene | method | parameter | wrong pixels | of 96x96 surface | median frame (ms) | vs zfail |"),
             std::string::npos)
       << r.out;
-  EXPECT_NE(r.out.find("| two_spheres.scene | zfail | 8 | "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("| two_spheres.scene | zfail | N = 8 | "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("| two_spheres.scene | shadowmap | map 512 | "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("| two_spheres.scene | raycast | - | 0.000% | 0 of "), std::string::npos) << r.out;
   const auto rows = read_csv(path("b.csv"));
-  ASSERT_EQ(rows.size(), 1u + 3 * 2 + 1);  // header, zfail/zpass/auto at N = 8 and 32, raycast
+  // The header; zfail, zpass and auto at N = 8 and 32; shadowmap at 32 and 512; raycast.
+  ASSERT_EQ(rows.size(), 1u + 3 * 2 + 2 + 1);
   EXPECT_EQ(rows[0][0], "scene");
-  EXPECT_EQ(rows[0][5], "error");
+  EXPECT_EQ(rows[0][6], "error");
   // The N-gon sits inside the true cone: N = 8 gets more pixels wrong than 32.
   EXPECT_EQ(rows[1][1], "zfail");
   EXPECT_EQ(rows[1][2], "8");
   EXPECT_EQ(rows[2][2], "32");
-  EXPECT_GT(std::stol(rows[1][3]), std::stol(rows[2][3]));
+  EXPECT_GT(std::stol(rows[1][4]), std::stol(rows[2][4]));
+  // A 32-texel map is far coarser than a 512 one.
+  EXPECT_EQ(rows[7][1], "shadowmap");
+  EXPECT_EQ(rows[7][3], "32");
+  EXPECT_GT(std::stol(rows[7][4]), std::stol(rows[8][4]));
   EXPECT_EQ(rows.back()[1], "raycast");
-  EXPECT_EQ(rows.back()[3], "0");
+  EXPECT_EQ(rows.back()[4], "0");
 }
 
 TEST_F(BenchCommand, PlotsAsText) {
   if (std::system("gnuplot --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "gnuplot is not installed";
-  const CommandResult r = run("bench " + kTwoSpheres + " --size 48x48 --frames 1 --segments 8 --plot " + path("p.txt"));
+  const CommandResult r =
+      run("bench " + kTwoSpheres + " --size 48x48 --frames 1 --segments 8 --map-sizes 64 --plot " + path("p.txt"));
   ASSERT_EQ(r.status, 0) << r.err;
   std::ifstream in(path("p.txt"));
   const std::string plot((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

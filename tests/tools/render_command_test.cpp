@@ -113,7 +113,7 @@ TEST_F(RenderCommand, ExplainPrintsThePlan) {
   EXPECT_NE(r.out.find("camera: eye (0, 0, 3.4) target (0, 0, 0) up (0, 1, 0) fovy 45 deg (the spec's default view)"),
             std::string::npos) << r.out;
   EXPECT_NE(r.out.find("method: zfail;"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("counted by z-fail with caps (--method zfail)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("shadows: z-fail with caps (--method zfail)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("sphere (line 7): tangent-circle 12-gon (spec 2.2), 12 quads + 24 cap triangles"), std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("triangle (line 5): three side quads (spec 2.1), 3 quads + 2 cap triangles"), std::string::npos);
@@ -143,11 +143,11 @@ TEST_F(RenderCommand, AutoExplainsEachLightsCountAndDropsTheCaps) {
                               "/scenes/two_spheres.scene --size 32x32 --segments 12 --explain -o " + path("a.png"));
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("method: auto;"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("counted by z-pass without caps: the near plane is outside every volume"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("shadows: z-pass without caps: the near plane is outside every volume"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("sphere (line 7): tangent-circle 12-gon (spec 2.2), 12 quads\n"), std::string::npos) << r.out;
   const CommandResult in_shadow = run("render " + std::string(UMBRA_SOURCE_DIR) +
                                       "/scenes/camera_in_shadow.scene --size 32x32 --explain -o " + path("b.png"));
-  EXPECT_NE(in_shadow.out.find("counted by z-fail with caps: the caster at line 9 may shadow the near plane"),
+  EXPECT_NE(in_shadow.out.find("shadows: z-fail with caps: the caster at line 9 may shadow the near plane"),
             std::string::npos)
       << in_shadow.out;
 }
@@ -167,7 +167,7 @@ TEST_F(RenderCommand, UnknownMethodAndVolumesWithoutVolumesAreUsageErrors) {
   const std::string scene = std::string(UMBRA_SOURCE_DIR) + "/scenes/two_spheres.scene";
   const CommandResult bad = run("render " + scene + " --method zbuffer -o " + path("a.png"));
   EXPECT_EQ(bad.status, 2);
-  EXPECT_NE(bad.err.find("--method expects one of auto|zfail|zpass|triangles|raycast, got \"zbuffer\""), std::string::npos)
+  EXPECT_NE(bad.err.find("--method expects one of auto|zfail|zpass|triangles|shadowmap|raycast, got \"zbuffer\""), std::string::npos)
       << bad.err;
   const CommandResult shown = run("render " + scene + " --method raycast --show-volumes -o " + path("a.png"));
   EXPECT_EQ(shown.status, 2);
