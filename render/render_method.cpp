@@ -4,7 +4,8 @@ namespace umbra {
 namespace {
 
 constexpr RenderMethod kAll[] = {RenderMethod::kAuto, RenderMethod::kZFail, RenderMethod::kZPass,
-                                 RenderMethod::kTriangles, RenderMethod::kShadowMap, RenderMethod::kRaycast};
+                                 RenderMethod::kTriangles, RenderMethod::kShadowMap, RenderMethod::kPlanar,
+                                 RenderMethod::kRaycast};
 
 }  // namespace
 
@@ -15,6 +16,7 @@ const char* method_name(RenderMethod method) {
     case RenderMethod::kZPass: return "zpass";
     case RenderMethod::kTriangles: return "triangles";
     case RenderMethod::kShadowMap: return "shadowmap";
+    case RenderMethod::kPlanar: return "planar";
     case RenderMethod::kRaycast: return "raycast";
   }
   return "?";

@@ -13,12 +13,13 @@ enum class RenderMethod {
   kZPass,      // shadow volumes, uncapped z-pass for every light: wrong where the eye is in a volume
   kTriangles,  // z-fail, and every mesh cast per triangle instead of from its silhouette
   kShadowMap,  // a cube shadow map per light (seed 004): no volumes, error grows as the map shrinks
+  kPlanar,     // casters projected onto the triangles' planes (seeds 001, 003, 004): no shadow on anything else
   kRaycast,    // the CPU reference: exact shadow rays (seed 004)
 };
 
 const char* method_name(RenderMethod method);
 std::optional<RenderMethod> method_from_name(const std::string& name);
-// "auto|zfail|zpass|triangles|shadowmap|raycast", for usage text and errors.
+// "auto|zfail|zpass|triangles|shadowmap|planar|raycast", for usage text and errors.
 std::string method_names();
 
 }  // namespace umbra

@@ -1,9 +1,11 @@
 #include "render/render_plan.hpp"
 
 #include <algorithm>
+#include <cstdint>
 
 #include "mesh/orientation.hpp"
 #include "render/camera_transform.hpp"
+#include "render/planar_receivers.hpp"
 #include "render/view_culling.hpp"
 #include "silhouette/sphere_volume.hpp"
 #include "silhouette/triangle_volume.hpp"
@@ -116,6 +118,57 @@ void clear_volumes(LightPlan& lp) {
   lp.side_quads = lp.light_cap_triangles = lp.dark_cap_triangles = 0;
 }
 
+// Planar projection: which planes receive, and what is projected onto them.
+void plan_planar_light(const Scene& scene, int segments, const Light& light, LightPlan& lp) {
+  clear_volumes(lp);
+  lp.mesh_volumes.clear();
+  lp.z_pass = false;
+  lp.culled_casters = 0;
+  std::string lines;
+  int planes = 0;
+  for (const ReceiverPlane& r : receiver_planes(scene)) {
+    const Triangle& t = scene.triangles[r.first_triangle];
+    if (orientation(t.a, t.b, t.c, light.position) == 0) continue;  // the light in the plane (exactly): no shadow on it
+    const double height = glm::dot(r.plane, glm::dvec4(light.position, 1.0));
+    lp.receiver_planes.push_back(height > 0.0 ? r.plane : -r.plane);
+    ++planes;
+    for (const int line : r.lines) lines += (lines.empty() ? "" : ", ") + std::to_string(line);
+  }
+  lp.count_reason = "no stencil count: every caster projected onto " + std::to_string(planes) +
+                    " receiver plane(s) (triangles at lines " + (lines.empty() ? std::string("none") : lines) +
+                    "); spheres and meshes receive no shadow";
+  const auto add = [&](const char* kind, const FileLoc& where, const std::string& method, const ShadowVolume& v) {
+    lp.casters.push_back({kind, where, "projected (seed 001): " + method, {}});
+    ShadowVolume finite;  // the triangles whose vertices are all finite (the light cap), and only their vertices
+    std::vector<uint32_t> index(v.vertices.size(), UINT32_MAX);
+    for (size_t k = 0; k < v.vertices.size(); ++k)
+      if (v.vertices[k].w == 1.0) index[k] = uint32_t(finite.vertices.size()), finite.vertices.push_back(v.vertices[k]);
+    for (const auto& t : v.triangles)
+      if (index[t[0]] != UINT32_MAX && index[t[1]] != UINT32_MAX && index[t[2]] != UINT32_MAX)
+        finite.triangles.push_back({index[t[0]], index[t[1]], index[t[2]]});
+    finite.part_ends = {uint32_t(finite.triangles.size())};
+    append_volume(lp.all_volumes, finite);
+  };
+  for (const Sphere& s : scene.spheres)
+    add("sphere", s.where, "its tangent " + std::to_string(segments) + "-gon disc",
+        sphere_volume(s.center, s.radius, light.position, segments));
+  for (const Triangle& t : scene.triangles) {
+    ShadowVolume v;
+    v.vertices = {glm::dvec4(t.a, 1.0), glm::dvec4(t.b, 1.0), glm::dvec4(t.c, 1.0)};
+    v.triangles = {{0, 1, 2}};
+    add("triangle", t.where, "the triangle", v);
+  }
+  for (const Mesh& m : scene.meshes) {
+    ShadowVolume v;
+    for (const glm::dvec3& p : m.positions) v.vertices.emplace_back(p, 1.0);
+    v.triangles = m.triangles;
+    add("mesh", m.where, "its " + std::to_string(m.triangles.size()) + " triangles", v);
+  }
+  lp.stencil_batch_ends = {uint32_t(lp.all_volumes.triangles.size())};
+  std::stable_sort(lp.casters.begin(), lp.casters.end(),
+                   [](const CasterEntry& a, const CasterEntry& b) { return a.where.line < b.where.line; });
+}
+
 }  // namespace
 
 RenderPlan make_render_plan(const Scene& scene, const RenderSettings& settings) {
@@ -145,6 +198,11 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
       lp.culled_casters = 0;
       lp.count_reason = "no stencil: a cube shadow map of 6 x " + std::to_string(plan.settings.shadow_map_size) + "^2 " +
                         "distances (seed 004), biased by two texels";
+      continue;
+    }
+    lp.receiver_planes.clear();
+    if (plan.settings.method == RenderMethod::kPlanar) {
+      plan_planar_light(scene, plan.settings.sphere_segments, light, lp);
       continue;
     }
     const LightCulling culling = cull_for_light(scene, plan, light.position);

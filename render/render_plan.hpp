@@ -55,6 +55,10 @@ struct LightPlan {
   bool z_pass = false;
   std::string count_reason;  // why this light is counted as it is
   int culled_casters = 0;    // casters whose volumes cannot reach the view (auto only)
+  // For kPlanar: the receivers' planes (n, d), each with the light on its
+  // positive side; all_volumes then holds the casters' finite triangles
+  // (a sphere's N-gon disc, a triangle, a mesh's triangles) to project.
+  std::vector<glm::dvec4> receiver_planes;
   int side_quads = 0, light_cap_triangles = 0, dark_cap_triangles = 0;  // of all of them
 };
 

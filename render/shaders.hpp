@@ -7,7 +7,9 @@ namespace umbra::shaders {
 
 // What a surface pass writes (uniform `pass`). kDistance draws a shadow map
 // face: with `eye` at the light, the distance from it.
-enum SurfacePass { kAmbient = 0, kDirect = 1, kMaskSurface = 2, kMaskLit = 3, kDistance = 4 };
+// kMarkReceiver keeps only the fragments of triangles in `receiver_plane`,
+// writing nothing but the stencil (planar shadows).
+enum SurfacePass { kAmbient = 0, kDirect = 1, kMaskSurface = 2, kMaskLit = 3, kDistance = 4, kMarkReceiver = 5 };
 
 // Phong shading shared by triangles and spheres; `n` is the unit normal on the
 // side facing the camera, so a triangle's visible side is lit only when the
@@ -28,6 +30,8 @@ uniform float material_shininess;
 uniform bool shadow_map_on;
 uniform samplerCube shadow_map;
 uniform float shadow_map_texel;  // a texel's width at distance 1: 2 / size
+uniform vec4 receiver_plane;     // (n, d), n unit
+uniform float receiver_tolerance;
 out vec4 frag_color;
 
 bool in_mapped_shadow(vec3 p, float n_dot_l) {
@@ -40,6 +44,12 @@ bool in_mapped_shadow(vec3 p, float n_dot_l) {
 void shade(vec3 p, vec3 n) {
   if (pass == 4) {
     frag_color = vec4(length(p - light_position));
+    return;
+  }
+  if (pass == 5) {
+    if (abs(dot(receiver_plane.xyz, n)) < 0.9999 ||
+        abs(dot(receiver_plane.xyz, p) + receiver_plane.w) > receiver_tolerance) discard;
+    frag_color = vec4(0.0);
     return;
   }
   if (dot(n, eye - p) < 0.0) n = -n;
@@ -136,6 +146,24 @@ void main() {
   vec4 p = position;
   if (extrude_from_light && position.w == 0.0) p = vec4(position.xyz - light_position, 0.0);
   gl_Position = view_projection * p;
+}
+)";
+
+// Planar shadows: a caster's triangles projected along rays from the light
+// onto a receiver's plane, clipped to the part strictly between the plane and
+// the light (what lies beyond either casts nothing onto it).
+inline constexpr const char* kPlanarVertex = R"(#version 330 core
+layout(location = 0) in vec4 position;  // w = 1
+uniform mat4 view_projection;
+uniform mat4 shadow_matrix;
+uniform vec4 plane;          // the light on its positive side
+uniform float light_height;  // dot(plane, light)
+uniform float plane_offset;  // nearer the plane or the light than this casts nothing
+void main() {
+  float h = dot(plane, position);
+  gl_ClipDistance[0] = h - plane_offset;
+  gl_ClipDistance[1] = light_height - h - plane_offset;
+  gl_Position = view_projection * (shadow_matrix * position);
 }
 )";
 

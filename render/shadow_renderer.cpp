@@ -9,6 +9,7 @@
 #include "render/camera_transform.hpp"
 #include "render/gl.hpp"
 #include "render/shader_program.hpp"
+#include "render/planar_receivers.hpp"
 #include "render/shaders.hpp"
 #include "render/shadow_map.hpp"
 #include "render/surface_buffers.hpp"
@@ -40,6 +41,7 @@ ShadowRenderer::ShadowRenderer(const Scene& scene, const RenderPlan& plan) : sce
   sphere_program_ = std::make_unique<ShaderProgram>("sphere", shaders::kSphereVertex,
                                                     fragment_source(shaders::kSphereFragmentMain));
   volume_program_ = std::make_unique<ShaderProgram>("volume", shaders::kVolumeVertex, shaders::kVolumeFragment);
+  planar_program_ = std::make_unique<ShaderProgram>("planar", shaders::kPlanarVertex, shaders::kVolumeFragment);
   surfaces_ = std::make_unique<SurfaceBuffers>(scene);
   volumes_ = std::make_unique<VolumeBuffer>();
   mesh_volumes_.resize(scene.meshes.size());  // made when a plan first casts from the mesh's silhouette
@@ -72,8 +74,10 @@ void ShadowRenderer::apply_view() {
     p->set("view_projection", view_projection);
     p->set("eye", f(plan_.camera.eye));
   }
-  volume_program_->use();
-  volume_program_->set("view_projection", view_projection);
+  for (ShaderProgram* p : {volume_program_.get(), planar_program_.get()}) {
+    p->use();
+    p->set("view_projection", view_projection);
+  }
   glViewport(0, 0, s.width, s.height);
 }
 
@@ -161,7 +165,58 @@ void ShadowRenderer::count_shadow_volumes(size_t light) {
 void ShadowRenderer::shadow_light(size_t light) {
   shadow_marked_in_alpha_ = false;
   if (mapped()) render_shadow_map(light);
+  else if (planar()) project_onto_receivers(light);
   else count_shadow_volumes(light);
+}
+
+// Per receiver plane: its visible pixels get stencil 1; the casters,
+// projected onto it, turn 1 into 2; its pixels left at 1 go back to 0, so
+// that the next plane's casters touch only that plane's pixels.
+void ShadowRenderer::project_onto_receivers(size_t light) {
+  const LightPlan& lp = plan_.lights[light];
+  const glm::dvec3 position = scene_.lights[light].position;
+  glClearStencil(0);
+  glClear(GL_STENCIL_BUFFER_BIT);
+  volumes_->upload(lp.all_volumes);
+  const double scale = glm::length(scene_center_) + scene_radius_;
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glDepthMask(GL_FALSE);
+  glEnable(GL_STENCIL_TEST);
+  for (const glm::dvec4& plane : lp.receiver_planes) {
+    glStencilFunc(GL_ALWAYS, 1, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    mark_receiver(plane);
+
+    planar_program_->use();
+    planar_program_->set("shadow_matrix", glm::mat4(planar_shadow_matrix(plane, position)));
+    planar_program_->set("plane", glm::vec4(plane));
+    planar_program_->set("light_height", float(glm::dot(plane, glm::dvec4(position, 1.0))));
+    planar_program_->set("plane_offset", float(1e-6 * scale));
+    glDisable(GL_DEPTH_TEST);  // the shadow lies in the plane: the stencil alone says where
+    glEnable(GL_CLIP_DISTANCE0);
+    glEnable(GL_CLIP_DISTANCE1);
+    glStencilFunc(GL_EQUAL, 1, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+    volumes_->draw();
+    glDisable(GL_CLIP_DISTANCE0);
+    glDisable(GL_CLIP_DISTANCE1);
+    glEnable(GL_DEPTH_TEST);
+
+    glStencilFunc(GL_EQUAL, 1, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_ZERO);
+    mark_receiver(plane);
+  }
+  baseline_state();
+}
+
+// Runs the stencil operation on the visible pixels of the triangles in `plane`.
+void ShadowRenderer::mark_receiver(const glm::dvec4& plane) {
+  glDepthFunc(GL_EQUAL);
+  triangle_program_->use();
+  triangle_program_->set("pass", int(shaders::kMarkReceiver));
+  triangle_program_->set("receiver_plane", glm::vec4(plane));
+  triangle_program_->set("receiver_tolerance", float(1e-5 * (glm::length(scene_center_) + scene_radius_)));
+  for (const SurfaceBuffers::TriangleGroup& group : surfaces_->triangle_groups()) surfaces_->draw_triangle_group(group);
 }
 
 // The six faces from the light, each the surfaces' distances from it, then
@@ -247,9 +302,17 @@ void ShadowRenderer::leave_out_marked_pixels() const {
   else glBlendFunc(GL_ONE, GL_ONE);
 }
 
+// Where a pass adds light: stencil 0 (no volume), not 2 (no planar
+// shadow), or anywhere (the shadow map decides in the shader).
+void ShadowRenderer::test_stencil_for_light() const {
+  if (mapped()) return;
+  glEnable(GL_STENCIL_TEST);
+  if (planar()) glStencilFunc(GL_NOTEQUAL, 2, 0xFF);
+  else glStencilFunc(GL_EQUAL, 0, 0xFF);
+}
+
 void ShadowRenderer::direct_light_pass(size_t light) {
-  if (!mapped()) glEnable(GL_STENCIL_TEST);
-  glStencilFunc(GL_EQUAL, 0, 0xFF);
+  test_stencil_for_light();
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glDepthFunc(GL_EQUAL);
   glDepthMask(GL_FALSE);
@@ -259,6 +322,7 @@ void ShadowRenderer::direct_light_pass(size_t light) {
 }
 
 void ShadowRenderer::show_volumes_pass() {
+  if (mapped() || planar()) return;  // no volumes
   static const glm::vec4 tints[] = {{1.0f, 0.85f, 0.1f, 0.3f}, {0.2f, 0.8f, 1.0f, 0.3f}, {1.0f, 0.3f, 0.8f, 0.3f}};
   glDepthMask(GL_FALSE);
   glEnable(GL_BLEND);
@@ -303,8 +367,7 @@ Image ShadowRenderer::render_mask(size_t light) {
   glDepthFunc(GL_EQUAL);
   glDepthMask(GL_FALSE);
   draw_surfaces(shaders::kMaskSurface, light);
-  if (!mapped()) glEnable(GL_STENCIL_TEST);
-  glStencilFunc(GL_EQUAL, 0, 0xFF);
+  test_stencil_for_light();
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   leave_out_marked_pixels();  // 1 * 0 + lit, or nothing where marked
   draw_surfaces(shaders::kMaskLit, light);

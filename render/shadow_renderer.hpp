@@ -9,7 +9,10 @@
 //      decrementing where it passes, without caps; then add the light's
 //      diffuse + specular term where the stencil is zero.
 // With the shadowmap method, step 2 instead renders the light's cube shadow
-// map and the light's pass tests each point against it.
+// map and the light's pass tests each point against it. With the planar
+// method, step 2 marks each receiver plane's visible pixels in the stencil
+// and projects every caster onto the plane, leaving 2 where it lands; the
+// light's pass skips those pixels.
 // When a light has more volumes than one stencil count can hold (the plan's
 // stencil batches), each batch is counted on its own and the pixels it
 // shadows are marked in the colour buffer's alpha, which the light's pass
@@ -64,6 +67,10 @@ class ShadowRenderer {
   void draw_stencil_batch(size_t light, size_t batch);
   void draw_mesh_volume(const LightPlan& lp, const MeshVolumePlan& m);
   bool mapped() const { return plan_.settings.method == RenderMethod::kShadowMap; }
+  bool planar() const { return plan_.settings.method == RenderMethod::kPlanar; }
+  void project_onto_receivers(size_t light);
+  void mark_receiver(const glm::dvec4& plane);
+  void test_stencil_for_light() const;
   void render_shadow_map(size_t light);
   // How far every stencil-free pass must look: light `light`'s shadows.
   void shadow_light(size_t light);
@@ -73,7 +80,7 @@ class ShadowRenderer {
 
   const Scene& scene_;
   const RenderPlan& plan_;
-  std::unique_ptr<ShaderProgram> triangle_program_, sphere_program_, volume_program_;
+  std::unique_ptr<ShaderProgram> triangle_program_, sphere_program_, volume_program_, planar_program_;
   std::unique_ptr<SurfaceBuffers> surfaces_;
   std::unique_ptr<VolumeBuffer> volumes_;
   std::unique_ptr<ShadowMap> shadow_map_;  // for the shadowmap method, made on first use

@@ -35,7 +35,7 @@ progress bar on stderr.
 
 With no SCENES, every scenes/*.scene under the current folder.
 
-methods (see umbra render --help): zfail, zpass and auto at each N;
+methods (see umbra render --help): zfail, zpass, auto and planar at each N;
 triangles (scenes with meshes only); shadowmap at each map size; and
 raycast, the reference itself (its error is 0 by definition). A method whose
 first frame takes over 250 ms is timed over 3 frames after that one.
@@ -170,7 +170,8 @@ struct Measurement {
 std::vector<Measurement> measurements_for(const Scene& scene, const BenchOptions& o) {
   const std::vector<int>& segments = o.segments;
   std::vector<Measurement> list;
-  std::vector<RenderMethod> methods = {RenderMethod::kZFail, RenderMethod::kZPass, RenderMethod::kAuto};
+  std::vector<RenderMethod> methods = {RenderMethod::kZFail, RenderMethod::kZPass, RenderMethod::kAuto,
+                                      RenderMethod::kPlanar};
   if (!scene.meshes.empty()) methods.push_back(RenderMethod::kTriangles);
   for (const RenderMethod m : methods) {
     if (scene.spheres.empty()) list.push_back({m, 0});

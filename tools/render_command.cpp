@@ -40,6 +40,10 @@ options:
                                      than from their silhouettes
                           shadowmap  a cube shadow map per light (seed 004),
                                      --map-size texels a side; no volumes
+                          planar     every caster projected onto the planes
+                                     of the scene's triangles (seeds 001,
+                                     003, 004); spheres and meshes receive
+                                     no shadow, which --explain says
                           raycast    the CPU reference: exact shadow rays, true
                                      spheres (no GL, no N-gon)
   --map-size N          texels along a side of each shadow map cube face
@@ -95,7 +99,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   if (o.output.empty()) throw UsageError("no output image given (-o OUT.png)");
   if (o.mask && *o.mask == o.output) throw UsageError("--mask and -o name the same file");
   const RenderMethod m = o.settings.method;
-  if (o.show_volumes && (m == RenderMethod::kRaycast || m == RenderMethod::kShadowMap))
+  if (o.show_volumes && (m == RenderMethod::kRaycast || m == RenderMethod::kShadowMap || m == RenderMethod::kPlanar))
     throw UsageError(std::string("--show-volumes needs shadow volumes; --method ") + method_name(m) + " has none");
   return o;
 }

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "mesh/scene_parser.hpp"
+#include "render/planar_receivers.hpp"
 #include "render/render_plan.hpp"
 
 namespace umbra {
@@ -49,6 +50,54 @@ TEST(RenderPlan, SplitsMoreThan255VolumesIntoStencilBatches) {
 
   const RenderPlan small = make_render_plan(parse_scene_text("light 0 0 2\nsphere 0 0 0 0.5\n", "one.scene"), RenderSettings{});
   EXPECT_EQ(small.lights[0].stencil_batch_ends, (std::vector<uint32_t>{uint32_t(small.lights[0].all_volumes.triangles.size())}));
+}
+
+TEST(PlanarReceivers, CoplanarTrianglesAreOnePlaneAndDegenerateOnesNone) {
+  const Scene scene = parse_scene_text(
+      "light 0 0 2\n"
+      "triangle -1 -1 -1  1 -1 -1  1 1 -1\n"
+      "triangle -1 -1 -1  1 1 -1  -1 1 -1\n"
+      "triangle -1 -1 -1  -1 1 -1  -1 1 1\n"
+      "triangle 0 0 0  1 1 1  2 2 2\n"
+      "triangle 1 1 -1  -1 -1 -1  -1 1 -1\n",  // the floor again, wound the other way
+      "planes.scene");
+  const std::vector<ReceiverPlane> planes = receiver_planes(scene);
+  ASSERT_EQ(planes.size(), 2u);
+  EXPECT_EQ(planes[0].lines, (std::vector<int>{2, 3, 6}));
+  EXPECT_EQ(planes[0].plane, glm::dvec4(0, 0, 1, 1));  // z = -1
+  EXPECT_EQ(planes[1].lines, (std::vector<int>{4}));
+  EXPECT_EQ(planes[1].plane, glm::dvec4(1, 0, 0, 1));  // x = -1
+}
+
+TEST(PlanarReceivers, TheShadowMatrixProjectsAlongTheLightRay) {
+  // Light (0, 0, 2), floor z = -1: (0.5, 0, 0) is 2 below the light of 3,
+  // so it lands at 1.5 times its offset: (0.75, 0, -1).
+  const glm::dvec4 p = planar_shadow_matrix({0, 0, 1, 1}, {0, 0, 2}) * glm::dvec4(0.5, 0, 0, 1);
+  EXPECT_DOUBLE_EQ(p.x / p.w, 0.75);
+  EXPECT_DOUBLE_EQ(p.y / p.w, 0.0);
+  EXPECT_DOUBLE_EQ(p.z / p.w, -1.0);
+}
+
+TEST(RenderPlan, PlanarListsTheReceiversSeenFromTheLightsSide) {
+  const Scene scene = parse_scene_text(
+      "light 0 0 2\n"
+      "triangle -1 -1 -1  1 -1 -1  1 1 -1\n"
+      "triangle -1 -1 0  1 -1 0  1 1 4\n"  // its plane holds the light (0, 0, 2): no receiver
+      "sphere 0 0 0 0.3\n",
+      "planar.scene");
+  RenderSettings settings;
+  settings.method = RenderMethod::kPlanar;
+  settings.sphere_segments = 8;
+  const RenderPlan plan = make_render_plan(scene, settings);
+  const LightPlan& lp = plan.lights[0];
+  ASSERT_EQ(lp.receiver_planes.size(), 1u);
+  EXPECT_EQ(lp.receiver_planes[0], glm::dvec4(0, 0, 1, 1));  // the light on its positive side
+  EXPECT_EQ(lp.count_reason,
+            "no stencil count: every caster projected onto 1 receiver plane(s) (triangles at lines 2); spheres and meshes "
+            "receive no shadow");
+  // Projected: the floor, the wall, and the sphere's 8-gon disc as a fan of 8.
+  EXPECT_EQ(lp.all_volumes.triangles.size(), 1u + 1u + 8u);
+  for (const glm::dvec4& v : lp.all_volumes.vertices) EXPECT_EQ(v.w, 1.0);
 }
 
 }  // namespace

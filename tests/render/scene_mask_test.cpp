@@ -104,6 +104,37 @@ TEST(ZFail, ErrorAgainstTheReferenceFallsAsNGrows) {
   }
 }
 
+// Planar projection is exact where every shadow falls on a plane: these
+// scenes' shadows all land on their triangles.
+TEST(Planar, MatchesExactShadowRaysWhereEveryReceiverIsAPlane) {
+  for (const char* name : {"triangles.scene", "two_spheres.scene", "camera_in_shadow.scene", "mesh_icosphere.scene"})
+    test::expect_masks_match_reference(parse_scene_file(scene_path(name)), 160, 120, 64, 0.0, RenderMethod::kPlanar);
+}
+
+// ... and leaves spheres unshadowed: in stacked.scene spheres shadow spheres.
+TEST(Planar, SpheresReceiveNoShadowAndThePlanSaysSo) {
+  const Scene scene = parse_scene_file(scene_path("stacked.scene"));
+  RenderSettings settings;
+  settings.width = settings.height = 160;
+  settings.method = RenderMethod::kPlanar;
+  const RenderPlan plan = make_render_plan(scene, settings);
+  EXPECT_NE(plan.lights[0].count_reason.find("spheres and meshes receive no shadow"), std::string::npos);
+  HeadlessContext context(160, 160);
+  ShadowRenderer renderer(scene, plan);
+  const test::MaskComparison r = test::compare_with_reference(scene, plan, renderer.render_mask(0), 0);
+  EXPECT_GT(r.unexplained, 100);
+  // Every unexplained pixel is a sphere lit by planar and shadowed by the reference.
+  const Image mask = renderer.render_mask(0);
+  for (int y = 0; y < 160; ++y)
+    for (int x = 0; x < 160; ++x) {
+      const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, 160, 160, x, y));
+      if (hit && hit->object >= int(scene.spheres.size())) continue;  // planes: the test above
+      if (mask.at(x, y) != reference_mask_value(scene, 160, 160, x, y, 0)) {
+        EXPECT_EQ(mask.at(x, y), kMaskLit);
+      }
+    }
+}
+
 // Shadow mapping's error is the map's texel: it shrinks as the map grows.
 TEST(ShadowMap, ErrorAgainstTheReferenceFallsAsTheMapGrows) {
   const Scene scene = parse_scene_file(scene_path("demo.scene"));

@@ -41,8 +41,8 @@ TEST_F(BenchCommand, WritesATableAndACsvRowPerMethodAndN) {
   EXPECT_NE(r.out.find("| two_spheres.scene | shadowmap | map 512 | "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("| two_spheres.scene | raycast | - | 0.000% | 0 of "), std::string::npos) << r.out;
   const auto rows = read_csv(path("b.csv"));
-  // The header; zfail, zpass and auto at N = 8 and 32; shadowmap at 32 and 512; raycast.
-  ASSERT_EQ(rows.size(), 1u + 3 * 2 + 2 + 1);
+  // The header; zfail, zpass, auto and planar at N = 8 and 32; shadowmap at 32 and 512; raycast.
+  ASSERT_EQ(rows.size(), 1u + 4 * 2 + 2 + 1);
   EXPECT_EQ(rows[0][0], "scene");
   EXPECT_EQ(rows[0][6], "error");
   // The N-gon sits inside the true cone: N = 8 gets more pixels wrong than 32.
@@ -51,9 +51,10 @@ TEST_F(BenchCommand, WritesATableAndACsvRowPerMethodAndN) {
   EXPECT_EQ(rows[2][2], "32");
   EXPECT_GT(std::stol(rows[1][4]), std::stol(rows[2][4]));
   // A 32-texel map is far coarser than a 512 one.
-  EXPECT_EQ(rows[7][1], "shadowmap");
-  EXPECT_EQ(rows[7][3], "32");
-  EXPECT_GT(std::stol(rows[7][4]), std::stol(rows[8][4]));
+  EXPECT_EQ(rows[7][1], "planar");
+  EXPECT_EQ(rows[9][1], "shadowmap");
+  EXPECT_EQ(rows[9][3], "32");
+  EXPECT_GT(std::stol(rows[9][4]), std::stol(rows[10][4]));
   EXPECT_EQ(rows.back()[1], "raycast");
   EXPECT_EQ(rows.back()[4], "0");
 }

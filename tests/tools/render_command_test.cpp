@@ -167,7 +167,7 @@ TEST_F(RenderCommand, UnknownMethodAndVolumesWithoutVolumesAreUsageErrors) {
   const std::string scene = std::string(UMBRA_SOURCE_DIR) + "/scenes/two_spheres.scene";
   const CommandResult bad = run("render " + scene + " --method zbuffer -o " + path("a.png"));
   EXPECT_EQ(bad.status, 2);
-  EXPECT_NE(bad.err.find("--method expects one of auto|zfail|zpass|triangles|shadowmap|raycast, got \"zbuffer\""), std::string::npos)
+  EXPECT_NE(bad.err.find("--method expects one of auto|zfail|zpass|triangles|shadowmap|planar|raycast, got \"zbuffer\""), std::string::npos)
       << bad.err;
   const CommandResult shown = run("render " + scene + " --method raycast --show-volumes -o " + path("a.png"));
   EXPECT_EQ(shown.status, 2);

@@ -1,0 +1,29 @@
+#pragma once
+// Planar projection shadows (seeds 001, 003, 004) need planar receivers: the
+// planes of the scene's triangles, coplanar triangles merged (a floor of two
+// triangles is one receiver). Spheres and meshes receive no planar shadow.
+
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
+#include "mesh/scene.hpp"
+
+namespace umbra {
+
+struct ReceiverPlane {
+  glm::dvec4 plane{0.0};    // (n, d): n . x + d = 0, n unit
+  std::vector<int> lines;   // the scene lines of its triangles
+  size_t first_triangle = 0;  // index into Scene::triangles, for exact tests
+};
+
+// Planes closer than a relative 1e-9 (in normal and offset) are one.
+// Degenerate triangles have no plane.
+std::vector<ReceiverPlane> receiver_planes(const Scene& scene);
+
+// The matrix that projects a point along the ray from `light` onto `plane`
+// (seed 001's matrix for any plane): S x = (p . l) x - (p . x) l.
+glm::dmat4 planar_shadow_matrix(const glm::dvec4& plane, const glm::dvec3& light);
+
+}  // namespace umbra
