@@ -27,6 +27,7 @@ packages=(
   admesh time bc                     # bench/check_benchmark.sh: the checker it compares with, timing
   clang libclang-rt-14-dev           # ./build.sh fuzz: libFuzzer
   gnuplot-nox                        # umbra bench --plot
+  libembree-dev                      # the ray-cast reference's hierarchy (Embree 3)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "render/camera_transform.hpp"
-#include "render/ray_cast.hpp"
+#include "render/ray_caster.hpp"
 
 namespace umbra {
 namespace {
@@ -29,7 +29,8 @@ int material_of(const Scene& scene, int object) {
 uint8_t to_byte(double c) { return uint8_t(std::lround(std::clamp(c, 0.0, 1.0) * 255.0)); }
 
 // The shader's shade() for one pixel, in double precision (shaders.hpp).
-void shade_pixel(const Scene& scene, const glm::dvec3& ambient_sum, const RayHit& hit, RayCastFrame& frame, int x, int y) {
+void shade_pixel(const Scene& scene, const RayCaster& caster, const glm::dvec3& ambient_sum, const RayHit& hit,
+                 RayCastFrame& frame, int x, int y) {
   const Material& m = scene.materials[size_t(material_of(scene, hit.object))];
   const glm::dvec3 eye = scene.camera.eye;
   glm::dvec3 n = hit.normal;
@@ -39,7 +40,7 @@ void shade_pixel(const Scene& scene, const glm::dvec3& ambient_sum, const RayHit
     const Light& light = scene.lights[i];
     const glm::dvec3 l = glm::normalize(light.position - hit.point);
     const double n_dot_l = glm::dot(n, l);
-    const bool lit = n_dot_l > 0.0 && !shadow_ray_blocked(scene, hit.point, hit.object, light.position);
+    const bool lit = n_dot_l > 0.0 && !caster.shadow_ray_blocked(hit.point, hit.object, light.position);
     frame.masks[i].at(x, y) = lit ? kMaskLit : kMaskUnlit;
     if (!lit) continue;
     const glm::dvec3 v = glm::normalize(eye - hit.point);
@@ -56,11 +57,12 @@ RayCastFrame ray_cast_frame(const Scene& scene, int width, int height) {
   RayCastFrame frame{Image(width, height, 3), std::vector<Image>(scene.lights.size(), Image(width, height, 1, kMaskNoSurface))};
   glm::dvec3 ambient_sum(0.0);
   for (const Light& light : scene.lights) ambient_sum += light.ambient;
+  const RayCaster caster(scene);
   const auto rows = [&](int first, int step) {
     for (int y = first; y < height; y += step)
       for (int x = 0; x < width; ++x) {
-        const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, width, height, x, y));
-        if (hit) shade_pixel(scene, ambient_sum, *hit, frame, x, y);
+        const auto hit = caster.nearest_hit(scene.camera.eye, pixel_ray_direction(scene.camera, width, height, x, y));
+        if (hit) shade_pixel(scene, caster, ambient_sum, *hit, frame, x, y);
       }
   };
   const int threads = int(std::max(1u, std::thread::hardware_concurrency()));

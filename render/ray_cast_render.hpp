@@ -1,7 +1,8 @@
 #pragma once
 // `--method raycast`: the CPU reference drawn as a whole frame, the shaded
 // image with the GL renderer's Phong terms and every light's shadow mask, from
-// one eye ray per pixel centre and exact shadow rays (ray_cast.hpp).
+// one eye ray per pixel centre and exact shadow rays (ray_cast.hpp), searched
+// through Embree's hierarchy (ray_caster.hpp).
 
 #include <vector>
 
