@@ -186,6 +186,14 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
   plan.camera = scene.camera;
   plan.camera_is_spec_default = !scene.camera_from.has_value();
   plan.lights.resize(scene.lights.size());
+  plan.specular_used = false;
+  plan.light_adds_direct.assign(scene.lights.size(), 0);
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    const glm::dvec3& c = scene.lights[i].color;
+    plan.light_adds_direct[i] = c.x > 0.0 || c.y > 0.0 || c.z > 0.0;
+    for (const Material& m : scene.materials)
+      plan.specular_used = plan.specular_used || (plan.light_adds_direct[i] && (m.specular.x > 0.0 || m.specular.y > 0.0 || m.specular.z > 0.0));
+  }
   std::vector<uint8_t>& facing = plan.facing_scratch;
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& light = scene.lights[i];
@@ -252,6 +260,8 @@ void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& 
       << " deg" << (plan.camera_is_spec_default ? " (the spec's default view)" : " (from the scene file)") << "\n";
   out << "  projection: perspective, near " << near_plane(c) << " (" << kNearPlaneFraction
       << " of the eye's distance to the target), far plane at infinity (epsilon 2^-22)\n";
+  out << "  shading: ambient + diffuse" << (plan.specular_used ? " + specular" : " (no material has a specular term: skipped)")
+      << "\n";
   out << "  method: " << method_name(plan.settings.method)
       << "; two-sided stencil with wrapping, z-pass or z-fail per light\n";
   for (size_t i = 0; i < plan.lights.size(); ++i) {
@@ -259,7 +269,8 @@ void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& 
     const LightPlan& lp = plan.lights[i];
     out << "  light " << i + 1 << " at " << light.position << " (line " << light.where.line << "): " << lp.side_quads
         << " side quads, " << lp.light_cap_triangles << " light-cap and " << lp.dark_cap_triangles << " dark-cap triangles\n";
-    out << "    shadows: " << lp.count_reason << "\n";
+    if (!plan.light_adds_direct[i]) out << "    no colour: ambient only, so a frame draws neither its shadows nor its direct light\n";
+    else out << "    shadows: " << lp.count_reason << "\n";
     if (lp.culled_casters > 0)
       out << "    " << lp.culled_casters << " of " << lp.casters.size() << " casters left out: their volumes cannot reach the view\n";
     if (lp.stencil_batch_ends.size() > 1)

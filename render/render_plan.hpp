@@ -66,6 +66,12 @@ struct RenderPlan {
   RenderSettings settings;
   Camera camera;
   bool camera_is_spec_default = true;
+  // Shading terms that some material and light use; the shader skips the
+  // specular term when none does, and a frame draws neither the shadows nor
+  // the direct pass of a light with no colour (its ambient term is in the
+  // first pass; its mask is still drawn on request).
+  bool specular_used = true;
+  std::vector<uint8_t> light_adds_direct;  // per light
   std::vector<LightPlan> lights;  // one per scene light, same order
   std::vector<uint8_t> facing_scratch;  // classify_faces' output, kept so that a frame need not allocate it
 };

@@ -24,6 +24,7 @@ uniform vec3 material_ambient;
 uniform vec3 material_diffuse;
 uniform vec3 material_specular;
 uniform float material_shininess;
+uniform bool specular_used;  // false when no material and light have a specular term
 // Shadow mapping (seed 004) instead of the stencil: a point is in shadow when
 // it lies further from the light than the map's nearest surface in its
 // direction, by more than a bias of two texels (slope-scaled).
@@ -60,10 +61,14 @@ void shade(vec3 p, vec3 n) {
   } else if (pass == 1) {
     if (n_dot_l <= 0.0) discard;
     if (shadow_map_on && in_mapped_shadow(p, n_dot_l)) discard;
-    vec3 v = normalize(eye - p);
-    vec3 r = reflect(-l, n);
-    float s = material_shininess > 0.0 ? pow(max(dot(r, v), 0.0), material_shininess) : 1.0;
-    frag_color = vec4(light_color * (material_diffuse * n_dot_l + material_specular * s), 1.0);
+    vec3 colour = material_diffuse * n_dot_l;
+    if (specular_used) {
+      vec3 v = normalize(eye - p);
+      vec3 r = reflect(-l, n);
+      float s = material_shininess > 0.0 ? pow(max(dot(r, v), 0.0), material_shininess) : 1.0;
+      colour += material_specular * s;
+    }
+    frag_color = vec4(light_color * colour, 1.0);
   } else if (pass == 2) {
     frag_color = vec4(0.0, 0.0, 0.0, 1.0);
   } else {

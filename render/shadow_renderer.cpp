@@ -98,6 +98,7 @@ void ShadowRenderer::draw_surfaces(int pass, size_t light) {
     p->set("light_position", f(l.position));
     p->set("light_color", f(l.color));
     p->set("shadow_map_on", int(mapped()));
+    p->set("specular_used", int(plan_.specular_used));
     p->set("shadow_map_texel", 2.0f / float(plan_.settings.shadow_map_size));
   }
   triangle_program_->use();
@@ -341,6 +342,7 @@ void ShadowRenderer::show_volumes_pass() {
 void ShadowRenderer::draw(bool show_volumes) {
   depth_and_ambient_pass();
   for (size_t i = 0; i < scene_.lights.size(); ++i) {
+    if (!plan_.light_adds_direct[i]) continue;  // adds nothing but its ambient term, already drawn
     shadow_light(i);
     direct_light_pass(i);
   }

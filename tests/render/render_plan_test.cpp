@@ -100,5 +100,25 @@ TEST(RenderPlan, PlanarListsTheReceiversSeenFromTheLightsSide) {
   for (const glm::dvec4& v : lp.all_volumes.vertices) EXPECT_EQ(v.w, 1.0);
 }
 
+TEST(RenderPlan, SaysWhichShadingTermsTheSceneUses) {
+  const Scene matte = parse_scene_text("light 0 0 2\nlight 1 0 2 color 0 0 0\nsphere 0 0 0 0.3\n", "matte.scene");
+  const RenderPlan plan = make_render_plan(matte, RenderSettings{});
+  EXPECT_FALSE(plan.specular_used);
+  EXPECT_EQ(plan.light_adds_direct, (std::vector<uint8_t>{1, 0}));
+  // Specular only counts where a light with colour meets it.
+  const Scene shiny = parse_scene_text("light 0 0 2\nmaterial m specular 0.5 0.5 0.5\nsphere 0 0 0 0.3 material m\n",
+                                       "shiny.scene");
+  EXPECT_TRUE(make_render_plan(shiny, RenderSettings{}).specular_used);
+  const Scene dark = parse_scene_text("light 0 0 2 color 0 0 0\nmaterial m specular 0.5 0.5 0.5\nsphere 0 0 0 0.3 material m\n",
+                                      "dark.scene");
+  EXPECT_FALSE(make_render_plan(dark, RenderSettings{}).specular_used);
+  std::ostringstream explain;
+  print_render_plan(explain, matte, plan);
+  EXPECT_NE(explain.str().find("shading: ambient + diffuse (no material has a specular term: skipped)"), std::string::npos);
+  EXPECT_NE(explain.str().find("no colour: ambient only, so a frame draws neither its shadows nor its direct light"),
+            std::string::npos)
+      << explain.str();
+}
+
 }  // namespace
 }  // namespace umbra

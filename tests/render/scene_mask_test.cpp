@@ -314,6 +314,29 @@ TEST(Shading, TheGLImageMatchesTheRayCastImage) {
   EXPECT_LT(far, int(gl.pixels.size() / 30)) << close << " within 1";
 }
 
+TEST(Shading, ALightWithNoColourAddsOnlyItsAmbientTerm) {
+  // Without the colourless light's pass every surface is its 0.15 ambient,
+  // shadow or not, and its mask is still the geometric one.
+  const Scene scene = parse_scene_text(
+      "light 0 0 2 color 0 0 0\n"
+      "triangle -1 -1 -1  1 -1 -1  1 1 -1\n"
+      "triangle -1 -1 -1  1 1 -1  -1 1 -1\n"
+      "sphere 0 0 0 0.3\n",
+      "dark.scene");
+  RenderSettings settings;
+  settings.width = settings.height = 64;
+  const RenderPlan plan = make_render_plan(scene, settings);
+  HeadlessContext context(64, 64);
+  ShadowRenderer renderer(scene, plan);
+  const Image image = renderer.render_image(false);
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x)
+      if (reference_mask_value(scene, 64, 64, x, y, 0) != kMaskNoSurface) {
+        ASSERT_EQ(image.at(x, y, 0), 38) << x << ", " << y;  // round(0.15 * 255)
+      }
+  EXPECT_EQ(test::compare_with_reference(scene, plan, renderer.render_mask(0), 0).unexplained, 0);
+}
+
 TEST(ShowVolumes, DrawsTheVolumesOverTheImage) {
   const Scene scene = parse_scene_file(scene_path("demo.scene"));
   RenderSettings settings;
