@@ -1,5 +1,6 @@
 #include "render/shadow_renderer.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <string>
 
@@ -8,8 +9,8 @@
 
 #include "render/camera_transform.hpp"
 #include "render/gl.hpp"
-#include "render/shader_program.hpp"
 #include "render/planar_receivers.hpp"
+#include "render/shader_program.hpp"
 #include "render/shaders.hpp"
 #include "render/shadow_map.hpp"
 #include "render/surface_buffers.hpp"
@@ -227,7 +228,8 @@ void ShadowRenderer::render_shadow_map(size_t light) {
   if (!shadow_map_ || shadow_map_->size() != plan_.settings.shadow_map_size)
     shadow_map_ = std::make_unique<ShadowMap>(plan_.settings.shadow_map_size);
   const glm::dvec3 position = scene_.lights[light].position;
-  const double near = 1e-4 * (glm::length(position - scene_center_) + scene_radius_);
+  const double near =
+      std::max(1e-4 * (glm::length(position - scene_center_) + scene_radius_), std::numeric_limits<double>::min());
   baseline_state();
   for (int face = 0; face < 6; ++face) {
     shadow_map_->begin_face(face);

@@ -76,13 +76,19 @@ void write_markdown_table(std::ostream& out, const std::vector<BenchRow>& rows, 
 }
 
 void write_csv(const std::vector<BenchRow>& rows, int width, int height, const std::string& path) {
-  std::ofstream out(path);
+  const std::string partial = path + ".part";  // renamed into place: never a partial file
+  std::ofstream out(partial);
   if (!out) throw std::runtime_error(path + ": cannot write");
   out << "scene,method,segments,map_size,wrong_pixels,surface_pixels,error,median_ms,frames,width,height\n";
   for (const BenchRow& r : rows)
     out << r.scene << "," << r.method << "," << r.segments << "," << r.map_size << "," << r.wrong_pixels << "," << r.surface_pixels << ","
         << r.error() << "," << r.median_ms << "," << r.frames << "," << width << "," << height << "\n";
-  if (!out.flush()) throw std::runtime_error(path + ": cannot write");
+  if (!out.flush()) {
+    std::filesystem::remove(partial);
+    throw std::runtime_error(path + ": cannot write");
+  }
+  out.close();
+  std::filesystem::rename(partial, path);
 }
 
 bool gnuplot_available() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }

@@ -80,6 +80,13 @@ TEST_F(BenchCommand, ABadSceneStopsItBeforeAnythingIsMeasured) {
   EXPECT_FALSE(fs::exists(path("b.csv")));
 }
 
+TEST_F(BenchCommand, AnUnwritableCsvIsAnErrorNamingIt) {
+  const CommandResult r =
+      run("bench " + kTwoSpheres + " --size 16x16 --frames 1 --segments 8 --map-sizes 16 --csv /nonexistent/dir/b.csv");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("/nonexistent/dir/b.csv: cannot write"), std::string::npos) << r.err;
+}
+
 TEST_F(BenchCommand, UsageErrors) {
   EXPECT_EQ(run("bench " + kTwoSpheres + " --plot out.jpg").status, 2);
   const CommandResult r = run("bench " + kTwoSpheres + " --segments 8,2");
