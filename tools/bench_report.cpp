@@ -102,7 +102,8 @@ void write_plot(const std::vector<BenchRow>& rows, const std::string& path) {
   if (text) g << "set terminal dumb size 100," << 28 * panels_down << "\n";
   else g << "set terminal pngcairo size " << 520 * columns << "," << 400 * panels_down << " font \",10\"\n";
   const std::string partial = path + ".part";  // renamed into place: never a partial plot
-  g << "set output " << quoted_for_gnuplot(partial) << "\n"
+  g << "set termoption noenhanced\n"  // scene names keep their underscores
+    << "set output " << quoted_for_gnuplot(partial) << "\n"
     << "set multiplot layout " << panels_down << "," << columns << "\n"
     << "set logscale x\nset xlabel \"median frame time (ms, log)\"\nset ylabel \"wrong pixels (%)\"\n"
     << "set key top right\nset grid\nset offsets 0, 0, graph 0.05, graph 0.05\n";
