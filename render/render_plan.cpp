@@ -74,12 +74,16 @@ struct LightCulling {
 LightCulling cull_for_light(const Scene& scene, const RenderPlan& plan, const glm::dvec3& light) {
   LightCulling c;
   const NearRectangle near = near_rectangle(plan.camera, double(plan.settings.width) / plan.settings.height);
-  const bool cull = plan.settings.method == RenderMethod::kAuto;
+  const RenderMethod method = plan.settings.method;
+  const bool cull = method == RenderMethod::kAuto;
+  // Only auto's choice and forced z-pass's warning need the near plane.
+  const bool test_near_plane = method == RenderMethod::kAuto || method == RenderMethod::kZPass;
   const auto visit = [&](const BoundingSphere& ball, const FileLoc& where, std::vector<uint8_t>& out) {
     const bool left_out = cull && !volume_may_reach_view(plan.camera, near, light, ball);
     out.push_back(left_out);
     c.culled += left_out;
-    if (!left_out && !c.shadows_near_plane && may_shadow_near_rectangle(near, light, ball)) c.shadows_near_plane = &where;
+    if (test_near_plane && !left_out && !c.shadows_near_plane && may_shadow_near_rectangle(near, light, ball))
+      c.shadows_near_plane = &where;
   };
   for (const Sphere& s : scene.spheres) visit(bounding_sphere(s), s.where, c.spheres);
   for (const Triangle& t : scene.triangles) visit(bounding_sphere(t), t.where, c.triangles);
@@ -119,14 +123,15 @@ void clear_volumes(LightPlan& lp) {
 }
 
 // Planar projection: which planes receive, and what is projected onto them.
-void plan_planar_light(const Scene& scene, int segments, const Light& light, LightPlan& lp) {
+void plan_planar_light(const Scene& scene, const std::vector<ReceiverPlane>& receivers, int segments, const Light& light,
+                       LightPlan& lp) {
   clear_volumes(lp);
   lp.mesh_volumes.clear();
   lp.z_pass = false;
   lp.culled_casters = 0;
   std::string lines;
   int planes = 0;
-  for (const ReceiverPlane& r : receiver_planes(scene)) {
+  for (const ReceiverPlane& r : receivers) {
     const Triangle& t = scene.triangles[r.first_triangle];
     if (orientation(t.a, t.b, t.c, light.position) == 0) continue;  // the light in the plane (exactly): no shadow on it
     const double height = glm::dot(r.plane, glm::dvec4(light.position, 1.0));
@@ -195,10 +200,14 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
       plan.specular_used = plan.specular_used || (plan.light_adds_direct[i] && (m.specular.x > 0.0 || m.specular.y > 0.0 || m.specular.z > 0.0));
   }
   std::vector<uint8_t>& facing = plan.facing_scratch;
+  // The same for every light.
+  const std::vector<ReceiverPlane> receivers =
+      plan.settings.method == RenderMethod::kPlanar ? receiver_planes(scene) : std::vector<ReceiverPlane>{};
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& light = scene.lights[i];
     LightPlan& lp = plan.lights[i];
     lp.casters.clear();
+    lp.receiver_planes.clear();
     if (plan.settings.method == RenderMethod::kShadowMap) {  // no volumes at all
       clear_volumes(lp);
       lp.mesh_volumes.clear();
@@ -208,9 +217,8 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
                         "distances (seed 004), biased by two texels";
       continue;
     }
-    lp.receiver_planes.clear();
     if (plan.settings.method == RenderMethod::kPlanar) {
-      plan_planar_light(scene, plan.settings.sphere_segments, light, lp);
+      plan_planar_light(scene, receivers, plan.settings.sphere_segments, light, lp);
       continue;
     }
     const LightCulling culling = cull_for_light(scene, plan, light.position);
