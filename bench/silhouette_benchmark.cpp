@@ -130,11 +130,13 @@ void BM_RenderFrame(benchmark::State& state) {
   mesh.report = std::move(analysis.report);
   mesh.bounds_min = mesh.report.bbox_min;
   mesh.bounds_max = mesh.report.bbox_max;
+  mesh.edges = build_edge_table(mesh.triangles, mesh.positions.size());
+  mesh.components = find_closed_components(mesh.triangles, mesh.edges, mesh.positions.size());
   scene.meshes.push_back(std::move(mesh));
-  std::vector<MeshCaster> casters = prepare_mesh_casters(scene);
-  if (!silhouette) casters[0] = MeshCaster{};  // the per-triangle method
+  const std::vector<MeshCaster> casters = prepare_mesh_casters(scene);
   RenderSettings settings;
   settings.width = settings.height = 400;
+  if (!silhouette) settings.method = RenderMethod::kTriangles;
   HeadlessContext context(400, 400);
   RenderPlan plan = make_render_plan(scene, casters, settings);
   ShadowRenderer renderer(scene, plan);

@@ -35,12 +35,8 @@ void mesh_input(const uint8_t* data, size_t size) {
     options.self_intersection_seconds = 0.5;
     const MeshAnalysis analysis = analyse_mesh(soup, options);
     const glm::dvec3 light(0.3, 0.2, 5.0);
-    const MeshCaster caster = prepare_mesh_caster(analysis.report.shadow_method(), analysis.positions, analysis.triangles);
-    if (caster.method == ShadowMethod::kSilhouette) {
-      (void)mesh_shadow_volume(caster.adjacency, light);
-    } else {
-      (void)per_triangle_volume(analysis.positions, analysis.triangles, light);
-    }
+    const MeshCaster caster = prepare_mesh_caster(analysis.positions, analysis.triangles);
+    (void)mesh_caster_volume(caster, light);
   } catch (const InputError&) {
   }
 }

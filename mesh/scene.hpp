@@ -10,6 +10,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "mesh/closed_components.hpp"
+#include "mesh/edge_table.hpp"
 #include "mesh/input_error.hpp"
 #include "mesh/mesh_report.hpp"
 
@@ -45,7 +47,9 @@ struct Triangle {
 
 // A `mesh` statement with its file loaded: the triangles in scene coordinates
 // (scale, then rotate, then translate), merged, consistently oriented where
-// the mesh allows, and the check's report that chooses its shadow method.
+// the mesh allows, with their edges and which components are closed
+// 2-manifolds (those cast their shadow from a silhouette, the rest by edge
+// multiplicity).
 struct Mesh {
   std::string path;  // as resolved against the scene file's folder
   int material = 0;
@@ -58,7 +62,9 @@ struct Mesh {
   std::vector<glm::dvec3> positions;
   std::vector<std::array<uint32_t, 3>> triangles;
   glm::dvec3 bounds_min{0.0}, bounds_max{0.0};  // of the positions, in scene coordinates
-  MeshReport report;  // topology only: the renderer does not search for self-intersections
+  EdgeTable edges;               // of `triangles`
+  ClosedComponents components;   // of `triangles`
+  MeshReport report;  // the file's topology as `umbra check` reports it, without the self-intersection search
 };
 
 struct Camera {

@@ -300,11 +300,12 @@ class SceneBuilder {
       }
       m.triangles = std::move(analysis.triangles);
       m.report = std::move(analysis.report);
+      m.edges = build_edge_table(m.triangles, m.positions.size());
+      m.components = find_closed_components(m.triangles, m.edges, m.positions.size());
       if (m.triangles.empty())
         warn(m.where, "mesh " + in_quotes(written) + " has no faces: it casts no shadow");
-      else if (m.report.shadow_method() != ShadowMethod::kSilhouette)
-        warn(m.where, "mesh " + in_quotes(written) + " is " + m.report.shadow_method_reason() +
-                          ": its shadow comes from per-triangle volumes (slower)");
+      else if (!m.components.all_closed())
+        warn(m.where, "mesh " + in_quotes(written) + " is " + m.components.phrase() + ": " + m.components.volume_phrase());
       scene_.meshes.push_back(std::move(m));
     }
   }

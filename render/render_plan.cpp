@@ -36,26 +36,25 @@ CasterEntry triangle_entry(const Triangle& t, const Light& light) {
   return e;
 }
 
-// A mesh's entry. A silhouette volume goes to light_plan.mesh_volumes[slot],
-// whose index buffer is kept from the previous frame when there is one.
+// A mesh's entry. Its volume goes to light_plan.mesh_volumes[slot], whose
+// index buffer is kept from the previous frame when there is one; with
+// --method triangles, every triangle's own volume instead.
 CasterEntry mesh_entry(const Scene& scene, size_t index, const MeshCaster& caster, const Light& light, LightPlan& light_plan,
-                       size_t& slot, std::vector<uint8_t>& facing, bool per_triangle_asked) {
+                       size_t& slot, MeshCasterScratch& scratch, bool per_triangle_asked) {
   const Mesh& mesh = scene.meshes[index];
   CasterEntry e{"mesh", mesh.where, "", {}};
-  if (caster.method == ShadowMethod::kSilhouette && !per_triangle_asked) {
-    if (slot == light_plan.mesh_volumes.size()) light_plan.mesh_volumes.emplace_back();
-    MeshVolumePlan& volume = light_plan.mesh_volumes[slot];
-    volume.mesh = index;
-    mesh_volume_indices(caster.adjacency, light.position, facing, volume.volume);
-    e.method = "silhouette of a " + mesh.report.shadow_method_reason() + " (" + std::to_string(mesh.triangles.size()) +
-               " triangles)";
-    e.mesh_volume = int(slot++);
-  } else {
+  const std::string triangles = std::to_string(mesh.triangles.size()) + " triangles";
+  if (per_triangle_asked) {
     e.volume = per_triangle_volume(mesh.positions, mesh.triangles, light.position);
-    e.method = "per-triangle volumes (slower): " + (per_triangle_asked   ? std::string("--method triangles")
-                                                    : caster.reason.empty() ? mesh.report.shadow_method_reason()
-                                                                            : caster.reason);
+    e.method = "per-triangle volumes, the slow reference (--method triangles; " + triangles + ")";
+    return e;
   }
+  if (slot == light_plan.mesh_volumes.size()) light_plan.mesh_volumes.emplace_back();
+  MeshVolumePlan& volume = light_plan.mesh_volumes[slot];
+  volume.mesh = index;
+  mesh_caster_volume_indices(caster, light.position, scratch, volume.volume);
+  e.method = caster.phrase() + " (" + triangles + ")";
+  e.mesh_volume = int(slot++);
   return e;
 }
 
@@ -199,7 +198,7 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
     for (const Material& m : scene.materials)
       plan.specular_used = plan.specular_used || (plan.light_adds_direct[i] && (m.specular.x > 0.0 || m.specular.y > 0.0 || m.specular.z > 0.0));
   }
-  std::vector<uint8_t>& facing = plan.facing_scratch;
+  MeshCasterScratch& scratch = plan.mesh_scratch;
   // The same for every light.
   const std::vector<ReceiverPlane> receivers =
       plan.settings.method == RenderMethod::kPlanar ? receiver_planes(scene) : std::vector<ReceiverPlane>{};
@@ -237,7 +236,7 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
     }
     for (size_t m = 0; m < scene.meshes.size(); ++m)
       lp.casters.push_back(culling.meshes[m] ? culled_entry("mesh", scene.meshes[m].where)
-                                             : mesh_entry(scene, m, meshes[m], light, lp, slot, facing, per_triangle));
+                                             : mesh_entry(scene, m, meshes[m], light, lp, slot, scratch, per_triangle));
     lp.mesh_volumes.resize(slot);
     std::stable_sort(lp.casters.begin(), lp.casters.end(),  // file order, for --explain
                      [](const CasterEntry& a, const CasterEntry& b) { return a.where.line < b.where.line; });

@@ -28,10 +28,10 @@ struct CasterEntry {
   FileLoc where;
   std::string method;  // how its volume was made, or why it has none
   ShadowVolume volume;  // empty when it casts no shadow from this light, or when it is a mesh_volume
-  int mesh_volume = -1;  // for a mesh cast from its silhouette: index into LightPlan::mesh_volumes
+  int mesh_volume = -1;  // for a mesh (but with --method triangles): index into LightPlan::mesh_volumes
 };
 
-// A silhouette volume as indices over the mesh's static vertex buffer.
+// A mesh's volume as indices over its static vertex buffer.
 struct MeshVolumePlan {
   size_t mesh = 0;  // index into Scene::meshes
   MeshVolumeIndices volume;
@@ -73,7 +73,7 @@ struct RenderPlan {
   bool specular_used = true;
   std::vector<uint8_t> light_adds_direct;  // per light
   std::vector<LightPlan> lights;  // one per scene light, same order
-  std::vector<uint8_t> facing_scratch;  // classify_faces' output, kept so that a frame need not allocate it
+  MeshCasterScratch mesh_scratch;  // the face classification, kept so that a frame need not allocate it
 };
 
 // Requires the lights outside every sphere (require_lights_off_casters).

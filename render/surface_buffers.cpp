@@ -25,7 +25,7 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
   for (const Mesh& mesh : scene.meshes) {
     const glm::dvec3& eye = scene.camera.eye;
     const bool eye_outside = glm::any(glm::lessThan(eye, mesh.bounds_min)) || glm::any(glm::greaterThan(eye, mesh.bounds_max));
-    const bool closed = mesh.report.shadow_method() == ShadowMethod::kSilhouette && eye_outside;
+    const bool closed = mesh.components.all_closed() && eye_outside;
     for (const auto& t : mesh.triangles)
       all.push_back({{mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]], mesh.material, mesh.where}, closed});
   }

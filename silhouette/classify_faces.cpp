@@ -4,7 +4,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "mesh/orientation.hpp"
+#include "silhouette/face_plane.hpp"
 
 namespace umbra {
 
@@ -13,17 +13,9 @@ void classify_faces(const MeshAdjacency& mesh, const glm::dvec3& light, std::vec
   facing.resize(count);
   const double light_distance = glm::length(light);
   for (size_t t = 0; t < count; ++t) {
-    const MeshAdjacency::FacePlane& plane = mesh.planes[t];
-    const double side = glm::dot(plane.normal, light) - plane.offset;
-    const double bound = double(plane.error_per_light_distance) * light_distance + double(plane.error_constant);
-    if (side > bound) {
-      facing[t] = 1;
-    } else if (side < -bound) {
-      facing[t] = 0;
-    } else {
-      const auto& tri = mesh.triangles[t];
-      facing[t] = orientation(mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]], light) > 0;
-    }
+    const auto& tri = mesh.triangles[t];
+    facing[t] = light_side(mesh.planes[t], mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]],
+                           light, light_distance) > 0;
   }
 }
 

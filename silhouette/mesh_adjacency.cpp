@@ -1,24 +1,10 @@
 #include "silhouette/mesh_adjacency.hpp"
 
-#include <cmath>
-#include <limits>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
 
 namespace umbra {
-namespace {
-
-// A generous bound on the rounding of n . x - offset against the exact
-// orient3d(a, b, c, x): n and offset carry a few roundings each of sizes
-// |b-a||c-a| and |n||a|, the evaluation a few more of |n||x|. 64 units in the
-// last place of those magnitudes covers them all several times over; inside
-// the bound the exact predicate decides.
-constexpr double kRelativeError = 64.0 * std::numeric_limits<double>::epsilon();
-
-float rounded_up(double x) { return std::nextafter(float(x), std::numeric_limits<float>::infinity()); }
-
-}  // namespace
 
 MeshAdjacency build_mesh_adjacency(const HalfEdgeMesh& mesh) {
   MeshAdjacency adjacency;
@@ -34,13 +20,8 @@ MeshAdjacency build_mesh_adjacency(const HalfEdgeMesh& mesh) {
     int k = 0;
     for (const auto v : mesh.fv_range(f)) tri[size_t(k++)] = uint32_t(v.idx());
     adjacency.triangles.push_back(tri);
-    const glm::dvec3& a = adjacency.positions[tri[0]];
-    const glm::dvec3 ab = adjacency.positions[tri[1]] - a, ac = adjacency.positions[tri[2]] - a;
-    const glm::dvec3 n = glm::cross(ab, ac);
-    const double reach = std::max({glm::length(a), glm::length(adjacency.positions[tri[1]]),
-                                   glm::length(adjacency.positions[tri[2]])});
-    const double scale = kRelativeError * glm::length(ab) * glm::length(ac);
-    adjacency.planes.push_back({n, glm::dot(n, a), rounded_up(scale), rounded_up(scale * reach)});
+    adjacency.planes.push_back(
+        face_plane(adjacency.positions[tri[0]], adjacency.positions[tri[1]], adjacency.positions[tri[2]]));
   }
   adjacency.edge_faces.reserve(mesh.n_edges());
   adjacency.edge_vertices.reserve(mesh.n_edges());

@@ -10,19 +10,12 @@
 #include <glm/vec3.hpp>
 
 #include "mesh/half_edge_mesh.hpp"
+#include "silhouette/face_plane.hpp"
 
 namespace umbra {
 
 struct MeshAdjacency {
-  // Face t's plane: n . x - offset has the sign of orient3d(a, b, c, x) for
-  // n = (b - a) x (c - a), up to the rounding bound
-  // error_per_light_distance * |x| + error_constant (both rounded up).
-  struct FacePlane {
-    glm::dvec3 normal;
-    double offset;
-    float error_per_light_distance;
-    float error_constant;
-  };
+  using FacePlane = umbra::FacePlane;
   std::vector<glm::dvec3> positions;
   std::vector<std::array<uint32_t, 3>> triangles;
   std::vector<FacePlane> planes;

@@ -3,29 +3,68 @@
 #include <stdexcept>
 
 #include "mesh/half_edge_mesh.hpp"
+#include "silhouette/classify_faces.hpp"
+#include "silhouette/mesh_volume.hpp"
 
 namespace umbra {
-
-MeshCaster prepare_mesh_caster(ShadowMethod checked, const std::vector<glm::dvec3>& positions,
-                               const std::vector<std::array<uint32_t, 3>>& triangles) {
+MeshCaster prepare_mesh_caster(const std::vector<glm::dvec3>& positions,
+                               const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeTable& edges,
+                               const ClosedComponents& components) {
   MeshCaster caster;
-  caster.method = checked;
-  if (checked != ShadowMethod::kSilhouette) return caster;
-  try {
-    caster.adjacency = build_mesh_adjacency(build_half_edge_mesh(positions, triangles));
-  } catch (const std::invalid_argument&) {
-    caster.method = ShadowMethod::kPerTriangle;
-    caster.reason = "its polygons make a closed 2-manifold, but their triangles share an edge more than twice "
-                    "(a non-planar polygon's diagonal)";
+  caster.positions = positions;
+  caster.shape = components.phrase();
+  std::vector<uint8_t> open_face(triangles.size());
+  std::vector<std::array<uint32_t, 3>> closed_triangles;
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    open_face[t] = !components.closed_face[t];
+    if (components.closed_face[t]) closed_triangles.push_back(triangles[t]);
   }
+  caster.volume_kind = components.volume_phrase();
+  if (!closed_triangles.empty()) {
+    try {
+      caster.closed = build_mesh_adjacency(build_half_edge_mesh(positions, closed_triangles));
+    } catch (const std::invalid_argument&) {
+      // The edge table proved these components closed 2-manifolds, which
+      // OpenMesh takes; should it refuse one, multiplicity is exact too.
+      open_face.assign(triangles.size(), 1);
+      caster.volume_kind = "edge-multiplicity volume (OpenMesh refused its closed components)";
+    }
+  }
+  caster.open = build_multiplicity_adjacency(positions, triangles, edges, open_face);
   return caster;
+}
+
+MeshCaster prepare_mesh_caster(const std::vector<glm::dvec3>& positions,
+                               const std::vector<std::array<uint32_t, 3>>& triangles) {
+  const EdgeTable edges = build_edge_table(triangles, positions.size());
+  return prepare_mesh_caster(positions, triangles, edges, find_closed_components(triangles, edges, positions.size()));
 }
 
 std::vector<MeshCaster> prepare_mesh_casters(const Scene& scene) {
   std::vector<MeshCaster> casters;
+  casters.reserve(scene.meshes.size());
   for (const Mesh& mesh : scene.meshes)
-    casters.push_back(prepare_mesh_caster(mesh.report.shadow_method(), mesh.positions, mesh.triangles));
+    casters.push_back(prepare_mesh_caster(mesh.positions, mesh.triangles, mesh.edges, mesh.components));
   return casters;
+}
+
+void mesh_caster_volume_indices(const MeshCaster& caster, const glm::dvec3& light, MeshCasterScratch& scratch,
+                                MeshVolumeIndices& volume) {
+  const uint32_t far = uint32_t(caster.positions.size());
+  volume.clear();
+  if (!caster.closed.triangles.empty()) classify_faces(caster.closed, light, scratch.facing);
+  classify_light_sides(caster.positions, caster.open, light, scratch.side);
+  if (!caster.closed.triangles.empty()) append_silhouette_caps(caster.closed, scratch.facing, volume);
+  append_multiplicity_caps(caster.open, scratch.side, far, volume);
+  if (!caster.closed.triangles.empty()) append_silhouette_quads(caster.closed, scratch.facing, volume);
+  append_multiplicity_quads(caster.open, scratch.side, far, volume);
+}
+
+ShadowVolume mesh_caster_volume(const MeshCaster& caster, const glm::dvec3& light) {
+  MeshCasterScratch scratch;
+  MeshVolumeIndices indices;
+  mesh_caster_volume_indices(caster, light, scratch, indices);
+  return with_vertices(indices, caster.positions, light);
 }
 
 }  // namespace umbra

@@ -1,30 +1,60 @@
 #pragma once
 // What each mesh of a scene needs to cast shadows, prepared once per scene:
-// the shadow method its check chose, and for the silhouette method the
-// adjacency that every light and frame then reads.
+// its closed 2-manifold components cast from their silhouette (over an
+// OpenMesh half-edge structure), every other face by edge multiplicity. Both
+// are exact; the silhouette volume has about half the triangles. Per light
+// and frame, only the index list of one volume over the mesh's static
+// vertices is made.
 
+#include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
+#include "mesh/closed_components.hpp"
+#include "mesh/edge_table.hpp"
 #include "mesh/scene.hpp"
 #include "silhouette/mesh_adjacency.hpp"
+#include "silhouette/multiplicity_volume.hpp"
+#include "silhouette/shadow_volume.hpp"
+#include "silhouette/volume_indices.hpp"
 
 namespace umbra {
 
 struct MeshCaster {
-  ShadowMethod method = ShadowMethod::kPerTriangle;
-  MeshAdjacency adjacency;  // filled for ShadowMethod::kSilhouette only
-  std::string reason;       // why the method differs from the check's, or empty
+  std::vector<glm::dvec3> positions;
+  MeshAdjacency closed;        // the faces of closed, consistently oriented 2-manifold components
+  MultiplicityAdjacency open;  // every other face
+  std::string shape;           // ClosedComponents::phrase(): "closed 2-manifold", "open, 3 holes", ...
+  std::string volume_kind;     // "silhouette volume", "edge-multiplicity volume", or which parts get which
+
+  // "open, 3 holes: edge-multiplicity volume"
+  std::string phrase() const { return shape + ": " + volume_kind; }
 };
 
-// The caster of one mesh: the check's method, except that a mesh whose
-// polygons are a closed 2-manifold but whose triangulation is not (a
-// non-planar polygon's diagonal that another face also uses) falls back to
-// per-triangle volumes, which are right for any triangles.
-MeshCaster prepare_mesh_caster(ShadowMethod checked, const std::vector<glm::dvec3>& positions,
+// `edges` and `components` are those of `triangles`.
+MeshCaster prepare_mesh_caster(const std::vector<glm::dvec3>& positions,
+                               const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeTable& edges,
+                               const ClosedComponents& components);
+// The same, finding the edges and components itself.
+MeshCaster prepare_mesh_caster(const std::vector<glm::dvec3>& positions,
                                const std::vector<std::array<uint32_t, 3>>& triangles);
 
 // One per scene.meshes entry, in order.
 std::vector<MeshCaster> prepare_mesh_casters(const Scene& scene);
+
+// What a frame's classification writes, kept by the caller so that a frame
+// allocates nothing once it has grown.
+struct MeshCasterScratch {
+  std::vector<uint8_t> facing;  // the closed part's faces
+  std::vector<int8_t> side;     // the open part's faces
+};
+
+// The mesh's volume for `light`, replacing `volume`'s: both parts' caps, then
+// both parts' side quads.
+void mesh_caster_volume_indices(const MeshCaster& caster, const glm::dvec3& light, MeshCasterScratch& scratch,
+                                MeshVolumeIndices& volume);
+// The same with its vertices: for tests and `umbra volume`.
+ShadowVolume mesh_caster_volume(const MeshCaster& caster, const glm::dvec3& light);
 
 }  // namespace umbra

@@ -28,16 +28,8 @@ std::vector<std::array<uint32_t, 2>> silhouette_edges(const MeshAdjacency& mesh,
   return edges;
 }
 
-void mesh_volume_indices(const MeshAdjacency& mesh, const glm::dvec3& light, std::vector<uint8_t>& facing,
-                         MeshVolumeIndices& volume) {
-  classify_faces(mesh, light, facing);
+void append_silhouette_caps(const MeshAdjacency& mesh, const std::vector<uint8_t>& facing, MeshVolumeIndices& volume) {
   const uint32_t far = uint32_t(mesh.positions.size());  // offset of the vertices at infinity
-  // Room for the most a volume can have (both caps of every face, a quad per
-  // edge), kept across frames and written through a pointer.
-  const size_t most = 6 * (mesh.triangles.size() + mesh.edge_faces.size());
-  if (volume.buffer.size() < most) volume.buffer.resize(most);
-  uint32_t* out = volume.buffer.data();
-  int caps = 0, quads = 0;
   for (size_t t = 0; t < mesh.triangles.size(); ++t) {
     if (facing[t]) continue;
     const auto& tri = mesh.triangles[t];
@@ -46,11 +38,16 @@ void mesh_volume_indices(const MeshAdjacency& mesh, const glm::dvec3& light, std
     // is then never on its boundary (no self-shadowing where rasterisation
     // rounds differently for a surface and its cap, as at outlines). The far
     // cap is the same faces at infinity, already facing away.
+    uint32_t* out = volume.append(6);
     out[0] = tri[0], out[1] = tri[2], out[2] = tri[1];
     out[3] = tri[0] + far, out[4] = tri[1] + far, out[5] = tri[2] + far;
-    out += 6;
-    ++caps;
+    ++volume.light_cap_triangles;
+    ++volume.dark_cap_triangles;
   }
+}
+
+void append_silhouette_quads(const MeshAdjacency& mesh, const std::vector<uint8_t>& facing, MeshVolumeIndices& volume) {
+  const uint32_t far = uint32_t(mesh.positions.size());
   uint32_t a = 0, b = 0;
   for (size_t e = 0; e < mesh.edge_faces.size(); ++e) {
     if (!oriented_silhouette_edge(mesh, facing.data(), e, a, b)) continue;
@@ -58,29 +55,26 @@ void mesh_volume_indices(const MeshAdjacency& mesh, const glm::dvec3& light, std
     // a -> b too): seen from the light that is counter-clockwise, so the quad
     // (b, a, a', b') faces outward, as for a triangle's sides
     // (extrude_to_infinity).
+    uint32_t* out = volume.append(6);
     out[0] = b, out[1] = a, out[2] = a + far;
     out[3] = b, out[4] = a + far, out[5] = b + far;
-    out += 6;
-    ++quads;
+    ++volume.side_quads;
   }
-  volume.count = size_t(out - volume.buffer.data());
-  volume.light_cap_triangles = volume.dark_cap_triangles = caps;
-  volume.side_quads = quads;
+}
+
+void mesh_volume_indices(const MeshAdjacency& mesh, const glm::dvec3& light, std::vector<uint8_t>& facing,
+                         MeshVolumeIndices& volume) {
+  classify_faces(mesh, light, facing);
+  volume.clear();
+  append_silhouette_caps(mesh, facing, volume);
+  append_silhouette_quads(mesh, facing, volume);
 }
 
 ShadowVolume mesh_shadow_volume(const MeshAdjacency& mesh, const glm::dvec3& light) {
   std::vector<uint8_t> facing;
   MeshVolumeIndices indices;
   mesh_volume_indices(mesh, light, facing, indices);
-  ShadowVolume volume;
-  for (const glm::dvec3& p : mesh.positions) volume.vertices.emplace_back(p, 1.0);
-  for (const glm::dvec3& p : mesh.positions) volume.vertices.emplace_back(p - light, 0.0);
-  for (size_t i = 0; i < indices.count; i += 3)
-    volume.triangles.push_back({indices.buffer[i], indices.buffer[i + 1], indices.buffer[i + 2]});
-  volume.side_quads = indices.side_quads;
-  volume.light_cap_triangles = indices.light_cap_triangles;
-  volume.dark_cap_triangles = indices.dark_cap_triangles;
-  return volume;
+  return with_vertices(indices, mesh.positions, light);
 }
 
 ShadowVolume per_triangle_volume(const std::vector<glm::dvec3>& positions,

@@ -15,29 +15,21 @@
 
 #include "silhouette/mesh_adjacency.hpp"
 #include "silhouette/shadow_volume.hpp"
+#include "silhouette/volume_indices.hpp"
 
 namespace umbra {
-
-// The volume as indices into the mesh's 2N vertices: v < N is mesh vertex v,
-// v >= N is mesh vertex v - N at infinity, (P - L, 0). The vertices never
-// change with the light, so a renderer keeps them in a static buffer and
-// sends only these indices each frame.
-struct MeshVolumeIndices {
-  // Triangles, counter-clockwise seen from outside the volume: the first
-  // `count` entries. The buffer keeps the largest size a volume of the mesh
-  // can have, so a frame neither allocates nor clears memory.
-  std::vector<uint32_t> buffer;
-  size_t count = 0;
-  int side_quads = 0;
-  int light_cap_triangles = 0;  // the near cap
-  int dark_cap_triangles = 0;
-};
 
 // The silhouette edges, each as (a, b) in the direction the facing face runs along it.
 std::vector<std::array<uint32_t, 2>> silhouette_edges(const MeshAdjacency& mesh, const std::vector<uint8_t>& facing);
 
-// `facing` is scratch space (classify_faces' output), kept by the caller so
-// that a frame allocates nothing once the buffers have grown.
+// The volume's parts for a given classify_faces output, appended to
+// `volume`: the caps, then (after every other part's caps) the side quads.
+void append_silhouette_caps(const MeshAdjacency& mesh, const std::vector<uint8_t>& facing, MeshVolumeIndices& volume);
+void append_silhouette_quads(const MeshAdjacency& mesh, const std::vector<uint8_t>& facing, MeshVolumeIndices& volume);
+
+// The whole volume, replacing `volume`'s. `facing` is scratch space
+// (classify_faces' output), kept by the caller so that a frame allocates
+// nothing once the buffers have grown.
 void mesh_volume_indices(const MeshAdjacency& mesh, const glm::dvec3& light, std::vector<uint8_t>& facing,
                          MeshVolumeIndices& volume);
 
@@ -45,9 +37,8 @@ void mesh_volume_indices(const MeshAdjacency& mesh, const glm::dvec3& light, std
 // fallback's common path.
 ShadowVolume mesh_shadow_volume(const MeshAdjacency& mesh, const glm::dvec3& light);
 
-// The slower method for a mesh that is not a closed, consistently oriented
-// 2-manifold: every triangle's own volume (spec 2.1), which is correct for
-// any triangle soup.
+// The reference method for any mesh: every triangle's own volume (spec 2.1),
+// correct for any triangle soup, and slow (`--method triangles`).
 ShadowVolume per_triangle_volume(const std::vector<glm::dvec3>& positions,
                                  const std::vector<std::array<uint32_t, 3>>& triangles, const glm::dvec3& light);
 

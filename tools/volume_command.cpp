@@ -119,7 +119,7 @@ int run_volume_command(const std::vector<std::string>& argv) {
     for (const CasterEntry& e : lp.casters) {
       ShadowVolume volume = e.volume;
       if (e.mesh_volume >= 0) {
-        // A silhouette volume: indices over the mesh's points, then the same points at infinity.
+        // A mesh volume: indices over the mesh's points, then the same points at infinity.
         const MeshVolumePlan& m = lp.mesh_volumes[size_t(e.mesh_volume)];
         const std::vector<glm::dvec3>& positions = scene.meshes[m.mesh].positions;
         for (const glm::dvec3& p : positions) volume.vertices.emplace_back(p, 1.0);

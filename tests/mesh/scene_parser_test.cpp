@@ -192,19 +192,18 @@ TEST_F(SceneMeshes, MeshIsLoadedRelativeToTheSceneAndTransformedScaleRotateTrans
   EXPECT_NEAR(m.positions[1].y, 4.0, 1e-15);
   EXPECT_NEAR(m.positions[1].z, 3.0, 1e-15);
   EXPECT_EQ(m.triangles.size(), 4u);
-  EXPECT_EQ(m.report.shadow_method(), ShadowMethod::kSilhouette);
+  EXPECT_TRUE(m.components.all_closed());
   EXPECT_TRUE(scene.warnings.empty());
 }
 
-TEST_F(SceneMeshes, OpenMeshGetsAWarningThatNamesItsFallback) {
+TEST_F(SceneMeshes, OpenMeshGetsAWarningThatSaysHowItCastsItsShadow) {
   write("open.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n");
   const Scene scene = parse("light 0 0 5\nmesh open.obj\n");
   ASSERT_EQ(scene.warnings.size(), 1u);
   EXPECT_EQ(scene.warnings[0].where.str(), folder_ + "s.scene:2:1");
   EXPECT_EQ(scene.warnings[0].message,
-            "mesh \"open.obj\" is not a closed 2-manifold (3 border edges in 1 hole): its shadow comes from per-triangle "
-            "volumes (slower)");
-  EXPECT_EQ(scene.meshes[0].report.shadow_method(), ShadowMethod::kPerTriangle);
+            "mesh \"open.obj\" is open, 1 hole: edge-multiplicity volume");
+  EXPECT_FALSE(scene.meshes[0].components.all_closed());
 }
 
 TEST_F(SceneMeshes, ErrorInsideTheMeshFileNamesThatFileAndTheStatement) {

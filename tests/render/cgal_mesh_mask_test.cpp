@@ -35,7 +35,7 @@ Scene scene_with(const std::string& mesh_name, double rotate_x_deg) {
 
 struct CgalMeshCase {
   const char* file;
-  ShadowMethod method;
+  bool closed;  // every component a closed 2-manifold: cast from the silhouette
 };
 
 void PrintTo(const CgalMeshCase& c, std::ostream* out) { *out << c.file; }
@@ -45,7 +45,7 @@ class CgalMeshScene : public testing::TestWithParam<CgalMeshCase> {};
 TEST_P(CgalMeshScene, MaskMatchesExactShadowRays) {
   const Scene scene = scene_with(GetParam().file, 0.0);
   ASSERT_EQ(scene.meshes.size(), 1u);
-  EXPECT_EQ(scene.meshes[0].report.shadow_method(), GetParam().method);
+  EXPECT_EQ(scene.meshes[0].components.all_closed(), GetParam().closed);
   test::expect_masks_match_reference(scene, 160, 120, 64);
 }
 
@@ -54,9 +54,9 @@ TEST_P(CgalMeshScene, MaskMatchesExactShadowRaysTurnedAndWithTheLightRotated) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, CgalMeshScene,
-                         testing::Values(CgalMeshCase{"double-torus-example.off", ShadowMethod::kSilhouette},
-                                         CgalMeshCase{"double-torus-3-holes.off", ShadowMethod::kPerTriangle},
-                                         CgalMeshCase{"bones.off", ShadowMethod::kSilhouette}),
+                         testing::Values(CgalMeshCase{"double-torus-example.off", true},
+                                         CgalMeshCase{"double-torus-3-holes.off", false},
+                                         CgalMeshCase{"bones.off", true}),
                          [](const testing::TestParamInfo<CgalMeshCase>& info) {
                            std::string name = info.param.file;
                            name = name.substr(0, name.find('.'));
@@ -69,11 +69,11 @@ TEST(CgalMeshVolumes, SilhouetteVolumesHaveNoBoundaryForManyLights) {
   for (const char* file : {"double-torus-example.off", "bones.off"}) {
     const Scene scene = scene_with(file, 30.0);
     const std::vector<MeshCaster> casters = prepare_mesh_casters(scene);
-    ASSERT_EQ(casters[0].method, ShadowMethod::kSilhouette) << file;
+    ASSERT_FALSE(casters[0].closed.triangles.empty()) << file;
     for (int i = 0; i < 24; ++i) {
       const double angle = 0.2618 * i;
       const glm::dvec3 light(1.5 * std::cos(angle), 1.5 * std::sin(angle), 0.3 + 0.1 * i);
-      EXPECT_TRUE(has_no_boundary(mesh_shadow_volume(casters[0].adjacency, light))) << file << ", light " << i;
+      EXPECT_TRUE(has_no_boundary(mesh_caster_volume(casters[0], light))) << file << ", light " << i;
     }
   }
 }

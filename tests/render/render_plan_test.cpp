@@ -15,9 +15,14 @@ TEST(RenderPlan, UpdateForAMovedLightEqualsAFreshPlanAndReusesTheIndexBuffers) {
   Scene scene = parse_scene_file(std::string(UMBRA_SOURCE_DIR) + "/scenes/mesh_open_box.scene");
   const std::vector<MeshCaster> casters = prepare_mesh_casters(scene);
   RenderPlan plan = make_render_plan(scene, casters, RenderSettings{});
-  ASSERT_EQ(plan.lights[0].mesh_volumes.size(), 1u);  // the pair; the open box uses per-triangle volumes
+  ASSERT_EQ(plan.lights[0].mesh_volumes.size(), 2u);  // the open box and the pair
+  // The buffers only grow: once they have held the volumes at 40 degrees,
+  // going back to 0 and forth again reallocates nothing.
+  rotate_lights_about_z(scene, 40.0);
+  update_render_plan(scene, casters, plan);
+  rotate_lights_about_z(scene, -40.0);
+  update_render_plan(scene, casters, plan);
   const uint32_t* buffer = plan.lights[0].mesh_volumes[0].volume.buffer.data();
-
   rotate_lights_about_z(scene, 40.0);
   update_render_plan(scene, casters, plan);
   const RenderPlan fresh = make_render_plan(scene, casters, RenderSettings{});

@@ -37,7 +37,7 @@ inline void expect_sound_volumes(const Scene& scene) {
           ASSERT_NE(positions[index - positions.size()], scene.lights[i].position) << "a (0, 0, 0, 0) vertex";
         }
       }
-      const ShadowVolume volume = mesh_shadow_volume(casters[m.mesh].adjacency, scene.lights[i].position);
+      const ShadowVolume volume = mesh_caster_volume(casters[m.mesh], scene.lights[i].position);
       EXPECT_TRUE(has_no_boundary(volume)) << "light " << i + 1;
     }
   }

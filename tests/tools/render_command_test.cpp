@@ -123,17 +123,24 @@ TEST_F(RenderCommand, ExplainSaysWhichShadowMethodEachMeshGotAndWhy) {
   const CommandResult r = run("render " + std::string(UMBRA_SOURCE_DIR) + "/scenes/mesh_open_box.scene --size 32x32 --method zfail --explain -o " +
                               path("a.png"));
   EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.out.find("mesh (line 9): per-triangle volumes (slower): not a closed 2-manifold (4 border edges in 1 hole), "
-                       "30 quads + 20 cap triangles\n"),
-            std::string::npos)
-      << r.out;
-  // The pair of closed pieces: 9 silhouette edges, the 7 faces turned away in each cap.
-  EXPECT_NE(r.out.find("mesh (line 10): silhouette of a closed 2-manifold (16 triangles), 9 quads + 14 cap triangles "
+  // The open box, lit from above and outside its +y wall: the light sees the
+  // inside of the bottom and of three walls, and the outside of the +y wall.
+  // Once each face is oriented toward the light, the 4 rim edges have one
+  // face (m = 1), the +y wall's bottom edge and its two corner edges have
+  // two faces running the same way (m = 2, drawn twice), every other edge
+  // two faces running opposite ways (m = 0): 4 + 3 * 2 = 10 quads, and both
+  // caps of all 10 faces.
+  EXPECT_NE(r.out.find("mesh (line 9): open, 1 hole: edge-multiplicity volume (10 triangles), 10 quads + 20 cap triangles "
                        "(static vertices, indices per frame)\n"),
             std::string::npos)
       << r.out;
-  EXPECT_NE(r.err.find("mesh_open_box.scene:9:1: warning: mesh \"meshes/open_box.obj\" is not a closed 2-manifold (4 border "
-                       "edges in 1 hole): its shadow comes from per-triangle volumes (slower)\n"),
+  // The pair of closed pieces: 9 silhouette edges, the 7 faces turned away in each cap.
+  EXPECT_NE(r.out.find("mesh (line 10): closed 2-manifold: silhouette volume (16 triangles), 9 quads + 14 cap triangles "
+                       "(static vertices, indices per frame)\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.err.find("mesh_open_box.scene:9:1: warning: mesh \"meshes/open_box.obj\" is open, 1 hole: "
+                       "edge-multiplicity volume\n"),
             std::string::npos)
       << r.err;
 }

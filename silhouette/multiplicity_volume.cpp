@@ -1,0 +1,112 @@
+#include "silhouette/multiplicity_volume.hpp"
+
+#include <cstdlib>
+#include <limits>
+
+namespace umbra {
+namespace {
+
+constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+
+// A use's share of its edge's multiplicity: the face's side, negated when the
+// face runs from the edge's second vertex to its first.
+inline int share(const std::vector<int8_t>& side, uint32_t use) {
+  const int s = side[EdgeTable::face_of(use)];
+  return EdgeTable::runs_forward(use) ? s : -s;
+}
+
+// |m| copies of edge (u, v)'s side quad: for m > 0 the oriented faces run
+// u -> v, counter-clockwise seen from the light, so the quad is (v, u, u', v')
+// as for a triangle's sides (extrude_to_infinity); for m < 0 the reverse.
+inline void append_quads(uint32_t u, uint32_t v, int m, uint32_t far, MeshVolumeIndices& volume) {
+  if (m < 0) std::swap(u, v);
+  for (int k = std::abs(m); k > 0; --k) {
+    uint32_t* out = volume.append(6);
+    out[0] = v, out[1] = u, out[2] = u + far;
+    out[3] = v, out[4] = u + far, out[5] = v + far;
+    ++volume.side_quads;
+  }
+}
+
+}  // namespace
+
+MultiplicityAdjacency build_multiplicity_adjacency(const std::vector<glm::dvec3>& positions,
+                                                   const std::vector<std::array<uint32_t, 3>>& triangles,
+                                                   const EdgeTable& edges, const std::vector<uint8_t>& in_subset) {
+  MultiplicityAdjacency mesh;
+  std::vector<uint32_t> local(triangles.size(), kNone);
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    if (!in_subset[t]) continue;
+    local[t] = uint32_t(mesh.triangles.size());
+    const auto& tri = triangles[t];
+    mesh.triangles.push_back(tri);
+    mesh.planes.push_back(face_plane(positions[tri[0]], positions[tri[1]], positions[tri[2]]));
+  }
+  const auto local_use = [&](uint32_t use) { return local[EdgeTable::face_of(use)] << 1 | (use & 1); };
+  for (size_t e = 0; e < edges.size(); ++e) {
+    const uint32_t* use = edges.uses.data() + edges.first_use[e];
+    const uint32_t count = edges.use_count(e);
+    if (local[EdgeTable::face_of(use[0])] == kNone) continue;
+    if (count == 2) {
+      mesh.pair_uses.push_back({local_use(use[0]), local_use(use[1])});
+      mesh.pair_vertices.push_back(edges.vertices[e]);
+      continue;
+    }
+    for (uint32_t k = 0; k < count; ++k) mesh.other_uses.push_back(local_use(use[k]));
+    mesh.other_first_use.push_back(uint32_t(mesh.other_uses.size()));
+    mesh.other_vertices.push_back(edges.vertices[e]);
+  }
+  return mesh;
+}
+
+void classify_light_sides(const std::vector<glm::dvec3>& positions, const MultiplicityAdjacency& mesh,
+                          const glm::dvec3& light, std::vector<int8_t>& side) {
+  side.resize(mesh.triangles.size());
+  const double light_distance = glm::length(light);
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    side[t] = int8_t(light_side(mesh.planes[t], positions[tri[0]], positions[tri[1]], positions[tri[2]], light,
+                                light_distance));
+  }
+}
+
+void append_multiplicity_caps(const MultiplicityAdjacency& mesh, const std::vector<int8_t>& side, uint32_t far,
+                              MeshVolumeIndices& volume) {
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    if (side[t] == 0) continue;  // its plane holds the light: no volume
+    const auto& tri = mesh.triangles[t];
+    // Oriented toward the light: counter-clockwise seen from it.
+    const uint32_t a = tri[0], b = side[t] > 0 ? tri[1] : tri[2], c = side[t] > 0 ? tri[2] : tri[1];
+    uint32_t* out = volume.append(6);
+    out[0] = a, out[1] = b, out[2] = c;                    // light cap, facing the light
+    out[3] = a + far, out[4] = c + far, out[5] = b + far;  // dark cap, facing away
+    ++volume.light_cap_triangles;
+    ++volume.dark_cap_triangles;
+  }
+}
+
+void append_multiplicity_quads(const MultiplicityAdjacency& mesh, const std::vector<int8_t>& side, uint32_t far,
+                               MeshVolumeIndices& volume) {
+  for (size_t e = 0; e < mesh.pair_uses.size(); ++e) {
+    const int m = share(side, mesh.pair_uses[e][0]) + share(side, mesh.pair_uses[e][1]);
+    if (m != 0) append_quads(mesh.pair_vertices[e][0], mesh.pair_vertices[e][1], m, far, volume);
+  }
+  for (size_t e = 0; e < mesh.other_vertices.size(); ++e) {
+    int m = 0;
+    for (uint32_t k = mesh.other_first_use[e]; k < mesh.other_first_use[e + 1]; ++k) m += share(side, mesh.other_uses[k]);
+    if (m != 0) append_quads(mesh.other_vertices[e][0], mesh.other_vertices[e][1], m, far, volume);
+  }
+}
+
+ShadowVolume multiplicity_shadow_volume(const std::vector<glm::dvec3>& positions, const MultiplicityAdjacency& mesh,
+                                        const glm::dvec3& light) {
+  std::vector<int8_t> side;
+  classify_light_sides(positions, mesh, light, side);
+  MeshVolumeIndices indices;
+  const uint32_t far = uint32_t(positions.size());
+  append_multiplicity_caps(mesh, side, far, indices);
+  append_multiplicity_quads(mesh, side, far, indices);
+  return with_vertices(indices, positions, light);
+}
+
+}  // namespace umbra
