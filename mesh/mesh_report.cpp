@@ -74,11 +74,13 @@ std::string json_string(const std::string& s) {
 }
 
 const char* shadow_method_name(ShadowMethod method) {
-  return method == ShadowMethod::kSilhouette ? "silhouette" : "per-triangle";
+  return method == ShadowMethod::kSilhouette ? "silhouette" : "edge-multiplicity";
 }
 
 ShadowMethod MeshReport::shadow_method() const {
-  return topology_problems().empty() ? ShadowMethod::kSilhouette : ShadowMethod::kPerTriangle;
+  const bool closed_2_manifold = !components.empty() && border_edges == 0 && non_manifold_edges == 0 &&
+                                 non_manifold_vertices == 0 && non_orientable_components == 0;
+  return closed_2_manifold ? ShadowMethod::kSilhouette : ShadowMethod::kEdgeMultiplicity;
 }
 
 std::string MeshReport::shadow_method_reason() const {
@@ -129,10 +131,12 @@ std::string MeshReport::verdict() const {
     if (inward_components > 0) s += " (oriented inward, which shadows the same; --repair turns it outward)";
     return s;
   }
-  s = silhouette ? "closed and consistently oriented, but not clean (" : "not a closed 2-manifold (";
+  const bool oriented = inconsistent_edges == 0;
+  s = silhouette && oriented ? "closed and consistently oriented, but not clean (" : "not a closed 2-manifold (";
   for (size_t i = 0; i < why.size(); ++i) s += (i ? ", " : "") + why[i];
-  s += silhouette ? "): still casts its shadow from silhouette edges" : "): shadow from per-triangle volumes (slower)";
-  return s;
+  if (!silhouette) return s + "): shadow from an edge-multiplicity volume (exact for any triangles)";
+  return s + (oriented ? "): still casts its shadow from silhouette edges"
+                       : "): casts its shadow from silhouette edges once the renderer flips those faces");
 }
 
 void MeshReport::print_text(std::ostream& out) const {

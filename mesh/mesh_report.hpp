@@ -48,7 +48,9 @@ struct SelfIntersectionReport {
   double time_limit_seconds = 0.0;
 };
 
-enum class ShadowMethod { kSilhouette, kPerTriangle };
+// How the renderer casts a mesh's shadow: from the silhouette of a closed
+// 2-manifold (once its faces are flipped to agree), or by edge multiplicity.
+enum class ShadowMethod { kSilhouette, kEdgeMultiplicity };
 const char* shadow_method_name(ShadowMethod method);
 
 // `s` as a JSON string literal, quotes included.
@@ -99,8 +101,10 @@ struct MeshReport {
   // The problems that decide the shadow method: no faces, border, non-manifold
   // edges or vertices, orientation.
   std::vector<std::string> topology_problems() const;
-  // The shadow method the renderer uses for this mesh, and why in a phrase:
-  // "closed 2-manifold" or "not a closed 2-manifold (4 border edges in 1 hole)".
+  // The shadow method the renderer uses for this mesh (whether the faces
+  // agree on their orientation or not: it flips them to agree first), and
+  // why in a phrase: "closed 2-manifold" or "not a closed 2-manifold (4
+  // border edges in 1 hole)".
   ShadowMethod shadow_method() const;
   std::string shadow_method_reason() const;
   // "closed 2-manifold: ..." or "not a closed 2-manifold (...): ..."

@@ -45,7 +45,7 @@ TEST_F(CheckCommand, SeveralMeshesAreReportedInTheOrderGiven) {
   EXPECT_LT(first, second);
   EXPECT_LT(second, third);
   EXPECT_NE(third, std::string::npos);
-  EXPECT_NE(r.out.find("not a closed 2-manifold (4 border edges in 1 hole): shadow from per-triangle volumes (slower)"),
+  EXPECT_NE(r.out.find("not a closed 2-manifold (4 border edges in 1 hole): shadow from an edge-multiplicity volume (exact for any triangles)"),
             std::string::npos);
 }
 
@@ -78,7 +78,7 @@ TEST_F(CheckCommand, JsonIsOneValidObjectPerMeshPerLine) {
   EXPECT_EQ(read(path("fields.txt")),
             "good.obj True 0 silhouette False []\n"
             "bad \"name\".off None None None True None\n"
-            "flipped.obj False 1 per-triangle False [{'face': 7, 'line': 16}]\n");
+            "flipped.obj False 1 silhouette False [{'face': 7, 'line': 16}]\n");
 }
 
 TEST_F(CheckCommand, RepairFixesOrientationAndDuplicatesAndLeavesTheInputAlone) {
