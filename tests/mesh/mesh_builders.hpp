@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "mesh/polygon_soup.hpp"
@@ -140,6 +142,37 @@ inline PolygonSoup moebius_strip(int n) {
     const uint32_t c = i + 1 < n ? a + 2 : 1, d = i + 1 < n ? a + 3 : 0;
     faces.push_back({a, c, d, b});
   }
+  return make_soup(points, faces);
+}
+
+// The soup as OBJ text, points and polygons in order.
+inline std::string obj_text(const PolygonSoup& soup) {
+  std::ostringstream out;
+  out.precision(17);
+  for (const glm::dvec3& p : soup.points) out << "v " << p.x << " " << p.y << " " << p.z << "\n";
+  for (size_t f = 0; f < soup.polygon_count(); ++f) {
+    out << "f";
+    for (uint32_t k = 0; k < soup.corner_count(f); ++k) out << " " << soup.polygon(f)[k] + 1;
+    out << "\n";
+  }
+  return out.str();
+}
+
+// The lower half (z <= 0) of a unit sphere of `rings` x `segments` quads: a
+// bowl, open at its rim.
+inline PolygonSoup bowl(int rings, int segments) {
+  std::vector<glm::dvec3> points{{0, 0, -1}};
+  const double pi = 3.141592653589793;
+  for (int i = 1; i <= rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const double polar = pi - 0.5 * pi * i / rings, azimuth = 2 * pi * j / segments;
+      points.push_back({std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth), std::cos(polar)});
+    }
+  const auto at = [segments](int i, int j) { return uint32_t(1 + (i - 1) * segments + (j % segments)); };
+  std::vector<Face> faces;
+  for (int j = 0; j < segments; ++j) faces.push_back({0, at(1, j + 1), at(1, j)});
+  for (int i = 1; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) faces.push_back({at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i + 1, j)});
   return make_soup(points, faces);
 }
 

@@ -1,6 +1,6 @@
 // Real meshes from Debian's CGAL data as scene meshes: a closed genus-2
-// surface, the same kind of surface with three holes, and a file of 26 closed
-// pieces. Each is fitted over a floor; every light's mask must match exact
+// surface, the same kind of surface with three holes, a file of 26 closed
+// pieces, and open scans and models. Each is fitted over a floor; every light's mask must match exact
 // shadow rays, with the method the check chose.
 #include <gtest/gtest.h>
 
@@ -56,7 +56,12 @@ TEST_P(CgalMeshScene, MaskMatchesExactShadowRaysTurnedAndWithTheLightRotated) {
 INSTANTIATE_TEST_SUITE_P(Meshes, CgalMeshScene,
                          testing::Values(CgalMeshCase{"double-torus-example.off", true},
                                          CgalMeshCase{"double-torus-3-holes.off", false},
-                                         CgalMeshCase{"bones.off", true}),
+                                         CgalMeshCase{"bones.off", true},
+                                         // Real open meshes: 106 holes and 65 non-manifold vertices; a
+                                         // scan with one hole; one hole and 1643 self-intersecting face pairs.
+                                         CgalMeshCase{"elephant-with-holes.off", false},
+                                         CgalMeshCase{"nefertiti.off", false},
+                                         CgalMeshCase{"mannequin-devil.off", false}),
                          [](const testing::TestParamInfo<CgalMeshCase>& info) {
                            std::string name = info.param.file;
                            name = name.substr(0, name.find('.'));

@@ -13,16 +13,7 @@ namespace {
 using test::CommandResult;
 namespace fs = std::filesystem;
 
-std::string obj_text(const PolygonSoup& soup) {
-  std::ostringstream out;
-  for (const glm::dvec3& p : soup.points) out << "v " << p.x << " " << p.y << " " << p.z << "\n";
-  for (size_t f = 0; f < soup.polygon_count(); ++f) {
-    out << "f";
-    for (uint32_t k = 0; k < soup.corner_count(f); ++k) out << " " << soup.polygon(f)[k] + 1;
-    out << "\n";
-  }
-  return out.str();
-}
+using test::obj_text;
 
 class CheckCommand : public test::CommandTest {};
 
