@@ -23,23 +23,14 @@ if [ ! -f "$data/bunny-1M.stl" ]; then
   $build/bench/make_subdivided_mesh "$data/data/meshes/bunny00.off" "$data/bunny-1M.stl" "$data/bunny-1M.obj" 2
 fi
 
-# median of the numbers on stdin
-median() { sort -n | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }
+. bench/timing.sh
 
 # measure NAME COMMAND...: runs it $runs times, prints a table row
 measure() {
   local name=$1; shift
-  local times=() memories=()
-  for ((i = 0; i < runs; i++)); do
-    /usr/bin/time -f "%e %M" -o "$data/time.txt" "$@" >/dev/null 2>&1 || true
-    # the last line: GNU time puts "Command exited with non-zero status" before it
-    read -r seconds kilobytes < <(tail -n 1 "$data/time.txt")
-    times+=("$seconds"); memories+=("$kilobytes")
-  done
-  local t m
-  t=$(printf '%s\n' "${times[@]}" | median)
-  m=$(printf '%s\n' "${memories[@]}" | median)
-  printf '| %s | %s | %.0f |\n' "$name" "$t" "$(echo "$m / 1024" | bc -l)"
+  rm -f "$data/time.txt"
+  for ((i = 0; i < runs; i++)); do time_once "$data/time.txt" "$@"; done
+  printf '| %s | %s | %.0f |\n' "$name" "$(median_of "$data/time.txt" 1)" "$(echo "$(median_of "$data/time.txt" 2) / 1024" | bc -l)"
 }
 
 echo "mesh: $(stat -c %s "$data/bunny-1M.stl") bytes of binary STL, 1206528 triangles; $runs runs each; $(nproc) cores"

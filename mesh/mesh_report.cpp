@@ -91,6 +91,13 @@ std::string MeshReport::shadow_method_reason() const {
   return s + ")";
 }
 
+std::string MeshReport::loading_changes() const {
+  std::string s;
+  if (duplicate_faces > 0) s = plural(duplicate_faces, "duplicate face", "duplicate faces") + " dropped";
+  if (faces_to_flip > 0) s += (s.empty() ? "" : ", ") + plural(faces_to_flip, "face", "faces") + " flipped to agree";
+  return s;
+}
+
 bool MeshReport::is_closed_manifold() const { return problems().empty(); }
 
 std::vector<std::string> MeshReport::topology_problems() const {

@@ -107,6 +107,9 @@ struct MeshReport {
   // border edges in 1 hole)".
   ShadowMethod shadow_method() const;
   std::string shadow_method_reason() const;
+  // What loading the mesh for rendering changes, or "": "366 duplicate faces
+  // dropped, 1234 faces flipped to agree".
+  std::string loading_changes() const;
   // "closed 2-manifold: ..." or "not a closed 2-manifold (...): ..."
   std::string verdict() const;
 

@@ -43,8 +43,11 @@ MeshCaster prepare_mesh_caster(const std::vector<glm::dvec3>& positions,
 std::vector<MeshCaster> prepare_mesh_casters(const Scene& scene) {
   std::vector<MeshCaster> casters;
   casters.reserve(scene.meshes.size());
-  for (const Mesh& mesh : scene.meshes)
+  for (const Mesh& mesh : scene.meshes) {
     casters.push_back(prepare_mesh_caster(mesh.positions, mesh.triangles, mesh.edges, mesh.components));
+    const std::string changes = mesh.report.loading_changes();
+    if (!changes.empty()) casters.back().shape += " (" + changes + ")";
+  }
   return casters;
 }
 

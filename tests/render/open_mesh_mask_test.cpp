@@ -98,3 +98,21 @@ INSTANTIATE_TEST_SUITE_P(Meshes, OpenMeshScene, testing::ValuesIn(kCases),
 
 }  // namespace
 }  // namespace umbra
+
+namespace umbra {
+namespace {
+
+TEST(MeshCasterPhrase, SaysWhatLoadingChangedBeforeTheSilhouettePath) {
+  // A box with one face wound the other way and one face repeated: loading
+  // flips the one and drops the other, and the rest is a closed 2-manifold.
+  PolygonSoup soup = test::reversed(test::box_triangles(glm::dvec3(0.0), glm::dvec3(1.0)), {3});
+  soup.corners.insert(soup.corners.end(), soup.polygon(0), soup.polygon(0) + 3);
+  soup.end_polygon(0);
+  const Scene scene = scene_with("flipped_box", soup, 0.0);
+  const MeshCaster caster = prepare_mesh_casters(scene)[0];
+  EXPECT_EQ(caster.phrase(), "closed 2-manifold (1 duplicate face dropped, 1 face flipped to agree): silhouette volume");
+  EXPECT_TRUE(caster.open.empty());
+}
+
+}  // namespace
+}  // namespace umbra
