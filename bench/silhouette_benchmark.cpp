@@ -79,6 +79,30 @@ void BM_ClassifyAndExtract(benchmark::State& state) {
 // 250 x 200 quads: 100,000 triangles; 800 x 640: 1,024,000.
 BENCHMARK(BM_ClassifyAndExtract)->Args({250, 200})->Args({800, 640})->Unit(benchmark::kMillisecond);
 
+// The same torus through the mesh caster, closed (argument 2 = 0: the
+// silhouette volume) or with one face removed (1: open, so the whole mesh
+// takes the edge-multiplicity volume): what a frame costs on the CPU for a
+// closed mesh and for an open one.
+void BM_CasterVolume(benchmark::State& state) {
+  std::vector<glm::dvec3> positions;
+  std::vector<std::array<uint32_t, 3>> triangles;
+  torus(int(state.range(0)), int(state.range(1)), positions, triangles);
+  if (state.range(2) != 0) triangles.pop_back();
+  const MeshCaster caster = prepare_mesh_caster(positions, triangles);
+  MeshCasterScratch scratch;
+  MeshVolumeIndices volume;
+  double angle = 0.0;
+  for (auto _ : state) {
+    angle += 0.01;
+    mesh_caster_volume_indices(caster, {3.0 * std::cos(angle), 3.0 * std::sin(angle), 2.0}, scratch, volume);
+    benchmark::DoNotOptimize(volume.buffer.data());
+  }
+  state.counters["side_quads"] = volume.side_quads;
+  state.counters["volume_triangles"] = double(volume.count / 3);
+}
+BENCHMARK(BM_CasterVolume)->Args({250, 200, 0})->Args({250, 200, 1})->Args({800, 640, 0})->Args({800, 640, 1})
+    ->Unit(benchmark::kMillisecond);
+
 // The bound: streaming through as many bytes as one pass touches, reading
 // 8 bytes at a time and summing, which is what the memory system allows.
 void BM_MemoryBandwidth(benchmark::State& state) {
@@ -108,13 +132,16 @@ void BM_PerTriangleVolumes(benchmark::State& state) {
 }
 BENCHMARK(BM_PerTriangleVolumes)->Args({250, 200})->Unit(benchmark::kMillisecond);
 
-// A frame through OSMesa (400 x 400, one light): a torus over a floor, its
-// shadow from the silhouette (argument 1) or from per-triangle volumes (0).
+// A frame of `umbra view` through OSMesa (400 x 400, one light orbiting, so
+// the plan is updated, then drawn and finished): a torus over a floor, its
+// shadow from per-triangle volumes (argument 2 = 0), from the silhouette (1),
+// or, with one face removed, by edge multiplicity (2).
 void BM_RenderFrame(benchmark::State& state) {
-  const bool silhouette = state.range(2) != 0;
+  const bool per_triangle = state.range(2) == 0;
   std::vector<glm::dvec3> positions;
   std::vector<std::array<uint32_t, 3>> triangles;
   torus(int(state.range(0)), int(state.range(1)), positions, triangles);
+  if (state.range(2) == 2) triangles.pop_back();
   Scene scene = parse_scene_text("light 0.5 0.9 1.8\ntriangle -1 -1 -1 1 -1 -1 1 1 -1\ntriangle -1 -1 -1 1 1 -1 -1 1 -1\n",
                                  "bench.scene");
   PolygonSoup soup;
@@ -136,15 +163,20 @@ void BM_RenderFrame(benchmark::State& state) {
   const std::vector<MeshCaster> casters = prepare_mesh_casters(scene);
   RenderSettings settings;
   settings.width = settings.height = 400;
-  if (!silhouette) settings.method = RenderMethod::kTriangles;
+  if (per_triangle) settings.method = RenderMethod::kTriangles;
   HeadlessContext context(400, 400);
   RenderPlan plan = make_render_plan(scene, casters, settings);
   ShadowRenderer renderer(scene, plan);
-  for (auto _ : state) benchmark::DoNotOptimize(renderer.render_image(false).pixels.data());
+  for (auto _ : state) {
+    rotate_lights_about_z(scene, 1.0);
+    update_render_plan(scene, casters, plan);
+    renderer.draw(false);
+    renderer.finish();
+  }
   state.counters["volume_triangles"] = double(plan.lights[0].side_quads * 2 + plan.lights[0].light_cap_triangles +
                                               plan.lights[0].dark_cap_triangles);
 }
-BENCHMARK(BM_RenderFrame)->Args({250, 200, 1})->Args({250, 200, 0})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RenderFrame)->Args({250, 200, 1})->Args({250, 200, 2})->Args({250, 200, 0})->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace umbra

@@ -52,7 +52,7 @@ CasterEntry mesh_entry(const Scene& scene, size_t index, const MeshCaster& caste
   if (slot == light_plan.mesh_volumes.size()) light_plan.mesh_volumes.emplace_back();
   MeshVolumePlan& volume = light_plan.mesh_volumes[slot];
   volume.mesh = index;
-  mesh_caster_volume_indices(caster, light.position, scratch, volume.volume);
+  mesh_caster_volume_indices(caster, light.position, scratch, volume.volume, !light_plan.z_pass);
   e.method = caster.phrase() + " (" + triangles + ")";
   e.mesh_volume = int(slot++);
   return e;

@@ -255,7 +255,7 @@ void ShadowRenderer::draw_volumes(size_t light) {
   volumes_->draw();
   volume_program_->set("extrude_from_light", 1);
   volume_program_->set("light_position", f(scene_.lights[light].position));
-  for (const MeshVolumePlan& m : lp.mesh_volumes) draw_mesh_volume(lp, m);
+  for (const MeshVolumePlan& m : lp.mesh_volumes) draw_mesh_volume(m);
 }
 
 // One batch of a light whose volumes are counted in several: a range of
@@ -271,17 +271,16 @@ void ShadowRenderer::draw_stencil_batch(size_t light, size_t batch) {
   }
   volume_program_->set("extrude_from_light", 1);
   volume_program_->set("light_position", f(scene_.lights[light].position));
-  draw_mesh_volume(lp, lp.mesh_volumes[batch - ends.size()]);
+  draw_mesh_volume(lp.mesh_volumes[batch - ends.size()]);
 }
 
-// A mesh's volume; for z-pass without its caps, which come first.
-void ShadowRenderer::draw_mesh_volume(const LightPlan& lp, const MeshVolumePlan& m) {
+// A mesh's volume; for z-pass the plan made it without caps.
+void ShadowRenderer::draw_mesh_volume(const MeshVolumePlan& m) {
   if (!mesh_volumes_[m.mesh]) {
     mesh_volumes_[m.mesh] = std::make_unique<VolumeBuffer>();
     mesh_volumes_[m.mesh]->upload_mesh_vertices(scene_.meshes[m.mesh].positions);
   }
-  const size_t caps = lp.z_pass ? 3 * size_t(m.volume.light_cap_triangles + m.volume.dark_cap_triangles) : 0;
-  mesh_volumes_[m.mesh]->upload_indices(m.volume.buffer.data() + caps, m.volume.count - caps);
+  mesh_volumes_[m.mesh]->upload_indices(m.volume.buffer.data(), m.volume.count);
   mesh_volumes_[m.mesh]->draw();
 }
 

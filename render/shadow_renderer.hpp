@@ -65,7 +65,7 @@ class ShadowRenderer {
   void draw_surfaces(int pass, size_t light);
   void draw_volumes(size_t light);
   void draw_stencil_batch(size_t light, size_t batch);
-  void draw_mesh_volume(const LightPlan& lp, const MeshVolumePlan& m);
+  void draw_mesh_volume(const MeshVolumePlan& m);
   bool mapped() const { return plan_.settings.method == RenderMethod::kShadowMap; }
   bool planar() const { return plan_.settings.method == RenderMethod::kPlanar; }
   void project_onto_receivers(size_t light);

@@ -52,13 +52,15 @@ std::vector<MeshCaster> prepare_mesh_casters(const Scene& scene) {
 }
 
 void mesh_caster_volume_indices(const MeshCaster& caster, const glm::dvec3& light, MeshCasterScratch& scratch,
-                                MeshVolumeIndices& volume) {
+                                MeshVolumeIndices& volume, bool with_caps) {
   const uint32_t far = uint32_t(caster.positions.size());
   volume.clear();
   if (!caster.closed.triangles.empty()) classify_faces(caster.closed, light, scratch.facing);
   classify_light_sides(caster.positions, caster.open, light, scratch.side);
-  if (!caster.closed.triangles.empty()) append_silhouette_caps(caster.closed, scratch.facing, volume);
-  append_multiplicity_caps(caster.open, scratch.side, far, volume);
+  if (with_caps) {
+    if (!caster.closed.triangles.empty()) append_silhouette_caps(caster.closed, scratch.facing, volume);
+    append_multiplicity_caps(caster.open, scratch.side, far, volume);
+  }
   if (!caster.closed.triangles.empty()) append_silhouette_quads(caster.closed, scratch.facing, volume);
   append_multiplicity_quads(caster.open, scratch.side, far, volume);
 }

@@ -51,9 +51,10 @@ struct MeshCasterScratch {
 };
 
 // The mesh's volume for `light`, replacing `volume`'s: both parts' caps, then
-// both parts' side quads.
+// both parts' side quads; without caps for a light counted with z-pass,
+// which draws none.
 void mesh_caster_volume_indices(const MeshCaster& caster, const glm::dvec3& light, MeshCasterScratch& scratch,
-                                MeshVolumeIndices& volume);
+                                MeshVolumeIndices& volume, bool with_caps = true);
 // The same with its vertices: for tests and `umbra volume`.
 ShadowVolume mesh_caster_volume(const MeshCaster& caster, const glm::dvec3& light);
 
