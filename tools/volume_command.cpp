@@ -107,7 +107,10 @@ int run_volume_command(const std::vector<std::string>& argv) {
                                          std::to_string(scene.lights.size()) + " light(s)");
     rotate_lights_about_z(scene, options.light_angle_deg);
     require_lights_off_casters(scene);
-    const RenderPlan plan = make_render_plan(scene, options.settings);
+    // The whole closed volume, caps included, whatever count a render would choose.
+    RenderSettings settings = options.settings;
+    settings.method = RenderMethod::kZFail;
+    const RenderPlan plan = make_render_plan(scene, settings);
     const LightPlan& lp = plan.lights[size_t(options.light - 1)];
     const glm::dvec3 light = scene.lights[size_t(options.light - 1)].position;
 
