@@ -16,6 +16,7 @@
 #include "render/render_plan.hpp"
 #include "render/shadow_renderer.hpp"
 #include "silhouette/mesh_adjacency.hpp"
+#include "silhouette/layer_bound.hpp"
 #include "silhouette/mesh_caster.hpp"
 #include "silhouette/mesh_volume.hpp"
 
@@ -131,6 +132,23 @@ void BM_PerTriangleVolumes(benchmark::State& state) {
   state.counters["volume_triangles"] = double(volume.triangles.size());
 }
 BENCHMARK(BM_PerTriangleVolumes)->Args({250, 200})->Unit(benchmark::kMillisecond);
+
+// The layer bound of the torus for one light (what a frame pays when its
+// light has moved; a frame whose light has not reuses it).
+void BM_LayerBound(benchmark::State& state) {
+  std::vector<glm::dvec3> positions;
+  std::vector<std::array<uint32_t, 3>> triangles;
+  torus(int(state.range(0)), int(state.range(1)), positions, triangles);
+  double angle = 0.0;
+  int bound = 0;
+  for (auto _ : state) {
+    angle += 0.01;
+    bound = layer_bound(positions, triangles, {3.0 * std::cos(angle), 3.0 * std::sin(angle), 2.0}, 255);
+    benchmark::DoNotOptimize(bound);
+  }
+  state.counters["bound"] = bound;
+}
+BENCHMARK(BM_LayerBound)->Args({250, 200})->Args({800, 640})->Unit(benchmark::kMillisecond);
 
 // A frame of `umbra view` through OSMesa (400 x 400, one light orbiting, so
 // the plan is updated, then drawn and finished): a torus over a floor, its

@@ -1,12 +1,15 @@
 #include "render/render_plan.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <utility>
 
 #include "mesh/orientation.hpp"
 #include "render/camera_transform.hpp"
 #include "render/planar_receivers.hpp"
 #include "render/view_culling.hpp"
+#include "silhouette/layer_bound.hpp"
 #include "silhouette/sphere_volume.hpp"
 #include "silhouette/triangle_volume.hpp"
 
@@ -38,24 +41,70 @@ CasterEntry triangle_entry(const Triangle& t, const Light& light) {
 
 // A mesh's entry. Its volume goes to light_plan.mesh_volumes[slot], whose
 // index buffer is kept from the previous frame when there is one; with
-// --method triangles, every triangle's own volume instead.
+// --method triangles, or when more than a stencil count's 255 of its layers
+// may lie over a point, every triangle's own volume instead (each adds at
+// most 1, so they can be counted in batches). `bound` caches the mesh's
+// layer bound for the light position it was found for.
 CasterEntry mesh_entry(const Scene& scene, size_t index, const MeshCaster& caster, const Light& light, LightPlan& light_plan,
-                       size_t& slot, MeshCasterScratch& scratch, bool per_triangle_asked) {
+                       size_t& slot, MeshCasterScratch& scratch, bool per_triangle_asked, std::pair<glm::dvec3, int>& bound) {
   const Mesh& mesh = scene.meshes[index];
   CasterEntry e{"mesh", mesh.where, "", {}};
   const std::string triangles = std::to_string(mesh.triangles.size()) + " triangles";
-  if (per_triangle_asked) {
+  if (!per_triangle_asked && bound.first != light.position) {
+    bound = {light.position, mesh.triangles.empty() ? 0 : layer_bound(mesh.positions, mesh.triangles, light.position, kMaxStencilCount)};
+  }
+  if (per_triangle_asked || bound.second > kMaxStencilCount) {
     e.volume = per_triangle_volume(mesh.positions, mesh.triangles, light.position);
-    e.method = "per-triangle volumes, the slow reference (--method triangles; " + triangles + ")";
+    e.method = per_triangle_asked ? "per-triangle volumes, the slow reference (--method triangles; " + triangles + ")"
+                                  : caster.phrase() + ", but more than " + std::to_string(kMaxStencilCount) +
+                                        " of its layers may lie over a point: per-triangle volumes (" + triangles + ")";
     return e;
   }
   if (slot == light_plan.mesh_volumes.size()) light_plan.mesh_volumes.emplace_back();
   MeshVolumePlan& volume = light_plan.mesh_volumes[slot];
   volume.mesh = index;
+  volume.max_count = bound.second;
   mesh_caster_volume_indices(caster, light.position, scratch, volume.volume, !light_plan.z_pass);
   e.method = caster.phrase() + " (" + triangles + ")";
   e.mesh_volume = int(slot++);
   return e;
+}
+
+// Appends each caster's volume to lp.all_volumes, in file order, and splits
+// what is counted into batches whose counts cannot sum past 255: a sphere's
+// or triangle's volume (each part of all_volumes) adds at most 1, a mesh
+// volume at most its layer bound.
+void batch_volumes(LightPlan& lp) {
+  lp.stencil_batches.assign(1, StencilBatch{});
+  const auto room_for = [&lp](int count) {
+    StencilBatch& current = lp.stencil_batches.back();
+    if (current.max_count + count <= kMaxStencilCount || current.max_count == 0) return;
+    const uint32_t end = uint32_t(lp.all_volumes.part_ends.empty() ? 0 : lp.all_volumes.part_ends.back());
+    current.end_triangle = end;
+    lp.stencil_batches.push_back({end, end, {}, 0});
+  };
+  for (const CasterEntry& e : lp.casters) {
+    if (e.mesh_volume >= 0) {
+      const int count = lp.mesh_volumes[size_t(e.mesh_volume)].max_count;
+      room_for(count);
+      lp.stencil_batches.back().mesh_volumes.push_back(uint32_t(e.mesh_volume));
+      lp.stencil_batches.back().max_count += count;
+      continue;
+    }
+    ShadowVolume& all = lp.all_volumes;
+    const size_t first_part = all.part_ends.size();
+    append_volume(all, e.volume, !lp.z_pass);
+    // Each new part adds at most 1; a part that does not fit moves, with the
+    // rest, to a new batch that starts where the last part that fits ends.
+    const std::vector<uint32_t> ends(all.part_ends.begin() + std::ptrdiff_t(first_part), all.part_ends.end());
+    all.part_ends.resize(first_part);
+    for (const uint32_t end : ends) {
+      room_for(1);
+      all.part_ends.push_back(end);
+      lp.stencil_batches.back().max_count += 1;
+    }
+  }
+  lp.stencil_batches.back().end_triangle = uint32_t(lp.all_volumes.triangles.size());
 }
 
 CasterEntry culled_entry(const char* kind, const FileLoc& where) {
@@ -117,7 +166,7 @@ void clear_volumes(LightPlan& lp) {
   lp.all_volumes.triangles.clear();
   lp.all_volumes.part_ends.clear();
   lp.all_volumes.side_quads = lp.all_volumes.light_cap_triangles = lp.all_volumes.dark_cap_triangles = 0;
-  lp.stencil_batch_ends = {0};
+  lp.stencil_batches.assign(1, StencilBatch{});
   lp.side_quads = lp.light_cap_triangles = lp.dark_cap_triangles = 0;
 }
 
@@ -168,7 +217,7 @@ void plan_planar_light(const Scene& scene, const std::vector<ReceiverPlane>& rec
     v.triangles = m.triangles;
     add("mesh", m.where, "its " + std::to_string(m.triangles.size()) + " triangles", v);
   }
-  lp.stencil_batch_ends = {uint32_t(lp.all_volumes.triangles.size())};
+  lp.stencil_batches = {{0, uint32_t(lp.all_volumes.triangles.size()), {}, 1}};
   std::stable_sort(lp.casters.begin(), lp.casters.end(),
                    [](const CasterEntry& a, const CasterEntry& b) { return a.where.line < b.where.line; });
 }
@@ -234,19 +283,17 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
       const Triangle& t = scene.triangles[k];
       lp.casters.push_back(culling.triangles[k] ? culled_entry("triangle", t.where) : triangle_entry(t, light));
     }
+    plan.layer_bounds.resize(scene.lights.size());
+    plan.layer_bounds[i].resize(scene.meshes.size(), {glm::dvec3(std::nan("")), 0});
     for (size_t m = 0; m < scene.meshes.size(); ++m)
       lp.casters.push_back(culling.meshes[m] ? culled_entry("mesh", scene.meshes[m].where)
-                                             : mesh_entry(scene, m, meshes[m], light, lp, slot, scratch, per_triangle));
+                                             : mesh_entry(scene, m, meshes[m], light, lp, slot, scratch, per_triangle,
+                                                          plan.layer_bounds[i][m]));
     lp.mesh_volumes.resize(slot);
     std::stable_sort(lp.casters.begin(), lp.casters.end(),  // file order, for --explain
                      [](const CasterEntry& a, const CasterEntry& b) { return a.where.line < b.where.line; });
     clear_volumes(lp);
-    for (const CasterEntry& e : lp.casters) append_volume(lp.all_volumes, e.volume, !lp.z_pass);
-    lp.stencil_batch_ends.clear();
-    const std::vector<uint32_t>& parts = lp.all_volumes.part_ends;
-    for (size_t end = kVolumesPerStencilBatch; end < parts.size(); end += kVolumesPerStencilBatch)
-      lp.stencil_batch_ends.push_back(parts[end - 1]);
-    lp.stencil_batch_ends.push_back(uint32_t(lp.all_volumes.triangles.size()));
+    batch_volumes(lp);
     lp.side_quads = lp.all_volumes.side_quads;
     lp.light_cap_triangles = lp.all_volumes.light_cap_triangles;
     lp.dark_cap_triangles = lp.all_volumes.dark_cap_triangles;
@@ -280,10 +327,15 @@ void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& 
     else out << "    shadows: " << lp.count_reason << "\n";
     if (lp.culled_casters > 0)
       out << "    " << lp.culled_casters << " of " << lp.casters.size() << " casters left out: their volumes cannot reach the view\n";
-    if (lp.stencil_batch_ends.size() > 1)
-      out << "    counted in " << lp.stencil_batch_ends.size() + lp.mesh_volumes.size()
-          << " stencil batches (at most " << kVolumesPerStencilBatch << " sphere and triangle volumes each, and one per mesh), "
-          << "so that no count wraps to zero\n";
+    if (lp.stencil_batches.size() > 1) {
+      out << "    counted in " << lp.stencil_batches.size() << " stencil batches, so that no count reaches 256 (a sphere or "
+          << "triangle adds at most 1 layer over a point";
+      for (const MeshVolumePlan& m : lp.mesh_volumes)
+        out << ", the mesh at line " << scene.meshes[m.mesh].where.line << " at most " << m.max_count;
+      out << "):";
+      for (const StencilBatch& b : lp.stencil_batches) out << " " << b.max_count;
+      out << " layers\n";
+    }
     for (const CasterEntry& e : lp.casters) {
       out << "    " << e.kind << " (line " << e.where.line << "): " << e.method;
       if (e.mesh_volume >= 0) {

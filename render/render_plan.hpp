@@ -35,20 +35,29 @@ struct CasterEntry {
 struct MeshVolumePlan {
   size_t mesh = 0;  // index into Scene::meshes
   MeshVolumeIndices volume;
+  int max_count = 0;  // layer_bound: the most it adds to a count at any point
 };
 
-// The 8-bit stencil counts modulo 256, so a point inside exactly 256 volumes
-// would read as lit. Sphere and triangle volumes (each counts a point 0 or 1
-// times) are therefore counted in batches of at most 255.
-constexpr size_t kVolumesPerStencilBatch = 255;
+// The 8-bit stencil counts modulo 256, so a point whose count reaches 256
+// would read as lit. A sphere's or triangle's volume adds at most 1 at any
+// point, a mesh's at most its layer bound; volumes are counted together only
+// while those sum to at most 255.
+constexpr int kMaxStencilCount = 255;
+
+// Volumes counted together: a range of LightPlan::all_volumes and some mesh
+// volumes, whose counts at any point sum to at most max_count.
+struct StencilBatch {
+  uint32_t first_triangle = 0, end_triangle = 0;
+  std::vector<uint32_t> mesh_volumes;  // indices into LightPlan::mesh_volumes
+  int max_count = 0;
+};
 
 struct LightPlan {
   std::vector<CasterEntry> casters;
   ShadowVolume all_volumes;                  // every other caster's volume, one draw call
-  // all_volumes' batches for the stencil: one past the last triangle of each.
-  // With more than one, every mesh volume is a batch of its own too.
-  std::vector<uint32_t> stencil_batch_ends;
   std::vector<MeshVolumePlan> mesh_volumes;  // one draw call each
+  // In file order; with one batch, everything is counted at once.
+  std::vector<StencilBatch> stencil_batches;
   // z-pass counts where the depth test passes and needs no caps, but only
   // where the near-plane rectangle is outside every volume; z-fail is right
   // everywhere. The volumes above have caps only for z-fail.
@@ -74,6 +83,9 @@ struct RenderPlan {
   std::vector<uint8_t> light_adds_direct;  // per light
   std::vector<LightPlan> lights;  // one per scene light, same order
   MeshCasterScratch mesh_scratch;  // the face classification, kept so that a frame need not allocate it
+  // Per light and mesh, the light position its layer bound was found for and
+  // the bound: a frame whose light has not moved reuses it.
+  std::vector<std::vector<std::pair<glm::dvec3, int>>> layer_bounds;
 };
 
 // Requires the lights outside every sphere (require_lights_off_casters).

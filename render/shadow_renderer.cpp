@@ -127,8 +127,7 @@ void ShadowRenderer::depth_and_ambient_pass() {
 
 void ShadowRenderer::count_shadow_volumes(size_t light) {
   const LightPlan& lp = plan_.lights[light];
-  const size_t batches =
-      lp.stencil_batch_ends.size() > 1 ? lp.stencil_batch_ends.size() + lp.mesh_volumes.size() : 1;
+  const size_t batches = lp.stencil_batches.size();
   shadow_marked_in_alpha_ = batches > 1;
   if (shadow_marked_in_alpha_) {  // nothing is marked yet
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
@@ -259,19 +258,16 @@ void ShadowRenderer::draw_volumes(size_t light) {
 }
 
 // One batch of a light whose volumes are counted in several: a range of
-// all_volumes (already uploaded), or one mesh's volume.
+// all_volumes (already uploaded) and its mesh volumes.
 void ShadowRenderer::draw_stencil_batch(size_t light, size_t batch) {
   const LightPlan& lp = plan_.lights[light];
+  const StencilBatch& b = lp.stencil_batches[batch];
   volume_program_->use();
-  const std::vector<uint32_t>& ends = lp.stencil_batch_ends;
-  if (batch < ends.size()) {
-    volume_program_->set("extrude_from_light", 0);
-    volumes_->draw_triangles(batch == 0 ? 0 : ends[batch - 1], ends[batch]);
-    return;
-  }
+  volume_program_->set("extrude_from_light", 0);
+  volumes_->draw_triangles(b.first_triangle, b.end_triangle);
   volume_program_->set("extrude_from_light", 1);
   volume_program_->set("light_position", f(scene_.lights[light].position));
-  draw_mesh_volume(lp.mesh_volumes[batch - ends.size()]);
+  for (const uint32_t m : b.mesh_volumes) draw_mesh_volume(lp.mesh_volumes[m]);
 }
 
 // A mesh's volume; for z-pass the plan made it without caps.

@@ -265,8 +265,99 @@ TEST(HardStencil, BatchesWithAMeshAmongThem) {
       "light 1.5 0 1\n" + floor_text() + "mesh \"" + write_mesh("batch_box.obj", box_obj(0.2, 0.6, -0.9, -0.5)) + "\"\n",
       "box.scene");
   scene.meshes = with_mesh.meshes;
-  ASSERT_EQ(plan_for(scene).lights[0].stencil_batch_ends.size(), 2u);
+  // The floor's 2 and the 256 triangles, then the box's volume (12
+  // triangles, so at most 12 layers): 255 in the first batch, then 3 + 12.
+  const RenderPlan plan = plan_for(scene);
+  ASSERT_EQ(plan.lights[0].stencil_batches.size(), 2u);
+  EXPECT_EQ(plan.lights[0].stencil_batches[1].max_count, 15);
   test::expect_masks_match_reference(scene, 100, 100, 64);
+}
+
+// One mesh of `count` level squares (open, two triangles each) strung along
+// the ray from the light to the floor point F = (-0.5, 0, -1), as in
+// triangles_along_a_light_ray: the floor round F, which the camera sees, lies
+// behind every one.
+std::string squares_along_a_light_ray(int count) {
+  const glm::dvec3 light(1.5, 0.0, 1.0), f(-0.5, 0.0, -1.0);
+  std::ostringstream obj;
+  obj.precision(17);
+  for (int k = 0; k < count; ++k) {
+    const glm::dvec3 c = light + (0.3 + 0.3 * k / count) * (f - light);
+    for (const auto& [dx, dy] : {std::pair{-0.05, -0.05}, {0.05, -0.05}, {0.05, 0.05}, {-0.05, 0.05}})
+      obj << "v " << c.x + dx << " " << c.y + dy << " " << c.z << "\n";
+    obj << "f " << 4 * k + 1 << " " << 4 * k + 2 << " " << 4 * k + 3 << "\nf " << 4 * k + 1 << " " << 4 * k + 3 << " "
+        << 4 * k + 4 << "\n";
+  }
+  return obj.str();
+}
+
+// The same with thin closed boxes: one mesh of `count` closed components.
+std::string boxes_along_a_light_ray(int count) {
+  const glm::dvec3 light(1.5, 0.0, 1.0), f(-0.5, 0.0, -1.0);
+  std::ostringstream obj;
+  obj.precision(17);
+  for (int k = 0; k < count; ++k) {
+    const glm::dvec3 c = light + (0.3 + 0.3 * k / count) * (f - light);
+    const double x0 = c.x - 0.05, x1 = c.x + 0.05, y0 = -0.05, y1 = 0.05, z0 = c.z, z1 = c.z + 0.0005;
+    for (const double z : {z0, z1})
+      obj << "v " << x0 << " " << y0 << " " << z << "\nv " << x1 << " " << y0 << " " << z << "\nv " << x1 << " " << y1
+          << " " << z << "\nv " << x0 << " " << y1 << " " << z << "\n";
+    static const int faces[12][3] = {{1, 4, 3}, {1, 3, 2}, {5, 6, 7}, {5, 7, 8}, {1, 2, 6}, {1, 6, 5},
+                                     {2, 3, 7}, {2, 7, 6}, {3, 4, 8}, {3, 8, 7}, {4, 1, 5}, {4, 5, 8}};
+    for (const auto& face : faces) obj << "f " << face[0] + 8 * k << " " << face[1] + 8 * k << " " << face[2] + 8 * k << "\n";
+  }
+  return obj.str();
+}
+
+// The number of the scene's mesh triangles the segment from `point` to the light crosses.
+int mesh_layers_over(const Scene& scene, const glm::dvec3& point) {
+  Scene just_meshes = scene;
+  just_meshes.triangles.clear();
+  just_meshes.spheres.clear();
+  int layers = 0;
+  for (const Mesh& m : scene.meshes)
+    for (const auto& t : m.triangles) {
+      Scene one = just_meshes;
+      one.meshes.clear();
+      one.triangles.push_back({m.positions[t[0]], m.positions[t[1]], m.positions[t[2]], 0, {}});
+      layers += shadow_ray_blocked(one, point, -1, scene.lights[0].position);
+    }
+  return layers;
+}
+
+TEST(HardStencil, OneOpenMeshOf256And300LayersOverVisiblePixels) {
+  for (const int count : {256, 300}) {
+    SCOPED_TRACE(count);
+    const Scene scene = parse_scene_text(
+        "light 1.5 0 1\n" + floor_text() + "mesh \"" + write_mesh("squares.obj", squares_along_a_light_ray(count)) + "\"\n",
+        "squares.scene");
+    ASSERT_FALSE(scene.meshes[0].components.all_closed());
+    ASSERT_GE(mesh_layers_over(scene, {-0.5, 0.0, -1.0}), count);
+    test::expect_masks_match_reference(scene, 100, 100, 64);
+  }
+}
+
+TEST(HardStencil, OneClosedMeshOf256LayersOverVisiblePixels) {
+  const Scene scene = parse_scene_text(
+      "light 1.5 0 1\n" + floor_text() + "mesh \"" + write_mesh("boxes.obj", boxes_along_a_light_ray(256)) + "\"\n",
+      "boxes.scene");
+  ASSERT_TRUE(scene.meshes[0].components.all_closed());
+  // Each box is crossed twice on the way to the light, of which its silhouette volume counts one.
+  ASSERT_GE(mesh_layers_over(scene, {-0.5, 0.0, -1.0}), 2 * 256);
+  test::expect_masks_match_reference(scene, 100, 100, 64);
+}
+
+TEST(HardStencil, AMeshOf255LayersAndATriangleShareNoCountThatReaches256) {
+  // The reviewer's case: 255 closed plates in one mesh and one triangle on
+  // the same light rays, 256 layers in all.
+  Scene scene = triangles_along_a_light_ray(1);
+  const Scene plates = parse_scene_text(
+      "light 1.5 0 1\n" + floor_text() + "mesh \"" + write_mesh("plates255.obj", boxes_along_a_light_ray(255)) + "\"\n",
+      "plates.scene");
+  scene.meshes = plates.meshes;
+  ASSERT_TRUE(shadow_ray_blocked(scene, {-0.5, 0.0, -1.0}, -1, scene.lights[0].position));
+  for (const RenderMethod method : {RenderMethod::kAuto, RenderMethod::kZFail})
+    test::expect_masks_match_reference(scene, 100, 100, 64, 0.0, method);
 }
 
 TEST(HardStencil, AMeshVolumeOverlappingItself300Times) {

@@ -45,16 +45,23 @@ TEST(RenderPlan, SplitsMoreThan255VolumesIntoStencilBatches) {
   for (int k = 0; k < 600; ++k) text += "triangle -0.1 -0.1 " + std::to_string(k * 0.001) + "  0.1 -0.1 " +
                                         std::to_string(k * 0.001) + "  0 0.1 " + std::to_string(k * 0.001) + "\n";
   const RenderPlan plan = make_render_plan(parse_scene_text(text, "many.scene"), RenderSettings{});
-  EXPECT_EQ(plan.lights[0].stencil_batch_ends, (std::vector<uint32_t>{255 * 8, 510 * 8, 600 * 8}));
+  const std::vector<StencilBatch>& batches = plan.lights[0].stencil_batches;
+  ASSERT_EQ(batches.size(), 3u);
+  EXPECT_EQ(batches[0].first_triangle, 0u);
+  EXPECT_EQ(batches[0].end_triangle, 255u * 8);
+  EXPECT_EQ(batches[1].end_triangle, 510u * 8);
+  EXPECT_EQ(batches[2].end_triangle, 600u * 8);
+  EXPECT_EQ(batches[2].max_count, 90);
   std::ostringstream out;
   print_render_plan(out, parse_scene_text(text, "many.scene"), plan);
-  EXPECT_NE(out.str().find("counted in 3 stencil batches (at most 255 sphere and triangle volumes each, and one per "
-                           "mesh), so that no count wraps to zero\n"),
+  EXPECT_NE(out.str().find("counted in 3 stencil batches, so that no count reaches 256 (a sphere or triangle adds at "
+                           "most 1 layer over a point): 255 255 90 layers\n"),
             std::string::npos)
       << out.str();
 
   const RenderPlan small = make_render_plan(parse_scene_text("light 0 0 2\nsphere 0 0 0 0.5\n", "one.scene"), RenderSettings{});
-  EXPECT_EQ(small.lights[0].stencil_batch_ends, (std::vector<uint32_t>{uint32_t(small.lights[0].all_volumes.triangles.size())}));
+  ASSERT_EQ(small.lights[0].stencil_batches.size(), 1u);
+  EXPECT_EQ(small.lights[0].stencil_batches[0].end_triangle, small.lights[0].all_volumes.triangles.size());
 }
 
 TEST(PlanarReceivers, CoplanarTrianglesAreOnePlaneAndDegenerateOnesNone) {

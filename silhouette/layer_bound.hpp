@@ -1,0 +1,29 @@
+#pragma once
+// How many of a mesh's triangles one ray from a light can cross, bounded from
+// above: the most a mesh's shadow volume can add to a stencil count at any
+// point (an edge-multiplicity volume counts every triangle between a point
+// and the light, a silhouette volume only those turned away from it). The
+// 8-bit stencil counts modulo 256, so volumes whose bounds sum to more than
+// 255 must not share a count.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace umbra {
+
+// The directions from `light` are split into cells (one grid over the cone
+// round the mesh's bounding sphere, or the six faces of a cube round the
+// light when that cone is wide or the light is inside the sphere), each
+// triangle is counted in every cell its projection's bounding box touches,
+// and the bound is the largest count. Any ray lies in a cell, and every
+// triangle it crosses was counted there, so no ray crosses more. The cells
+// are about as many as the triangles, so that a cell holds a few triangles
+// per layer. Returns `limit` + 1 as soon as the bound exceeds `limit`, and the
+// triangle count without any grid when that is no more than `limit`.
+int layer_bound(const std::vector<glm::dvec3>& positions, const std::vector<std::array<uint32_t, 3>>& triangles,
+                const glm::dvec3& light, int limit);
+
+}  // namespace umbra
