@@ -1,5 +1,7 @@
 #include "fuzz/fuzz_entries.hpp"
 
+#include <cmath>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
@@ -10,6 +12,7 @@
 #include "render/render_plan.hpp"
 #include "silhouette/mesh_caster.hpp"
 #include "silhouette/mesh_volume.hpp"
+#include "silhouette/volume_topology.hpp"
 
 namespace umbra::fuzz {
 
@@ -34,9 +37,17 @@ void mesh_input(const uint8_t* data, size_t size) {
     CheckOptions options;
     options.self_intersection_seconds = 0.5;
     const MeshAnalysis analysis = analyse_mesh(soup, options);
-    const glm::dvec3 light(0.3, 0.2, 5.0);
     const MeshCaster caster = prepare_mesh_caster(analysis.positions, analysis.triangles);
-    (void)mesh_caster_volume(caster, light);
+    for (const glm::dvec3 light : {glm::dvec3(0.3, 0.2, 5.0), glm::dvec3(-7.0, 0.5, -0.25), glm::dvec3(0.01, -0.02, 0.03)}) {
+      const ShadowVolume volume = mesh_caster_volume(caster, light);
+      for (const glm::dvec4& v : volume.vertices) {
+        const bool finite = std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+        if (!finite || !(v.w == 1.0 || (v.w == 0.0 && (v.x != 0.0 || v.y != 0.0 || v.z != 0.0))))
+          throw std::logic_error("a shadow volume vertex is not finite, or (0, 0, 0, 0)");
+      }
+      if (!volume.triangles.empty() && !has_no_boundary(volume))
+        throw std::logic_error("a mesh's shadow volume has a boundary");
+    }
   } catch (const InputError&) {
   }
 }

@@ -16,8 +16,10 @@ namespace umbra::fuzz {
 void scene_input(const uint8_t* data, size_t size);
 
 // The first byte picks the format (OBJ, OFF, PLY, STL), the rest is the file;
-// then the check's analysis, and the mesh's shadow volume from a fixed light
-// by the method the check chose.
+// then the check's analysis, and the mesh's shadow volume from a few fixed
+// lights, which must have no boundary and only finite vertices (or true
+// directions at infinity): a volume that breaks either throws
+// std::logic_error, which the fuzzer reports as a crash.
 void mesh_input(const uint8_t* data, size_t size);
 
 }  // namespace umbra::fuzz

@@ -17,12 +17,15 @@ namespace umbra {
 // The directions from `light` are split into cells (one grid over the cone
 // round the mesh's bounding sphere, or the six faces of a cube round the
 // light when that cone is wide or the light is inside the sphere), each
-// triangle is counted in every cell its projection's bounding box touches,
-// and the bound is the largest count. Any ray lies in a cell, and every
-// triangle it crosses was counted there, so no ray crosses more. The cells
-// are about as many as the triangles, so that a cell holds a few triangles
-// per layer. Returns `limit` + 1 as soon as the bound exceeds `limit`, and the
-// triangle count without any grid when that is no more than `limit`.
+// triangle is counted in every cell its footprint (the triangle clipped to
+// the cell grid's pyramid of directions, projected) may overlap, and the
+// bound is the largest count. Any ray lies in a cell, and every triangle it
+// crosses was counted there, so no ray crosses more. The cells are about as
+// many as the triangles; a cell that holds many footprints is split, since
+// where rays graze the surface many edge-on triangles pass through a cell
+// that no ray crosses more than a few of. Returns `limit` + 1 when the bound
+// exceeds `limit`, and the triangle count without any grid when that is no
+// more than `limit`.
 int layer_bound(const std::vector<glm::dvec3>& positions, const std::vector<std::array<uint32_t, 3>>& triangles,
                 const glm::dvec3& light, int limit);
 
