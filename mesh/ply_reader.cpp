@@ -242,12 +242,29 @@ void read_body(Cursor& cursor, const PlyHeader& header, const PlyLayout& layout,
   }
 }
 
+// Where the line that is "end_header" (give or take spaces and a carriage
+// return) ends, at its '\n' or at the end of the bytes; npos when no line is.
+// A comment that mentions end_header does not end the header.
+size_t end_of_end_header_line(std::string_view bytes) {
+  for (size_t start = 0; start < bytes.size();) {
+    const size_t end = std::min(bytes.find('\n', start), bytes.size());
+    std::string_view line = bytes.substr(start, end - start);
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) line.remove_suffix(1);
+    while (!line.empty() && (line.front() == ' ' || line.front() == '\t')) line.remove_prefix(1);
+    if (line == "end_header") return end;
+    start = end + 1;
+  }
+  return std::string_view::npos;
+}
+
 }  // namespace
 
 PolygonSoup read_ply(std::string_view bytes, const std::string& path) {
-  // The header is text whatever the body's encoding; it ends at "end_header".
-  const size_t header_end = bytes.find("end_header");
-  const size_t body = header_end == std::string_view::npos ? bytes.size() : bytes.find('\n', header_end);
+  // The header is text whatever the body's encoding; it ends at the line "end_header".
+  const size_t header_line_end = end_of_end_header_line(bytes);
+  const size_t body = header_line_end == std::string_view::npos ? bytes.size()
+                      : header_line_end == bytes.size()          ? std::string_view::npos
+                                                                 : header_line_end;
   TextScanner header_scanner(bytes.substr(0, body == std::string_view::npos ? bytes.size() : body), path);
   const PlyHeader header = read_header(header_scanner);
   const PlyLayout layout = find_layout(header, path);

@@ -121,6 +121,31 @@ TEST(MeshFile, PlyAsciiLittleAndBigEndianGiveTheSameSoup) {
   EXPECT_EQ(parse_polygon_soup(ply("ascii"), "t.ply").polygon_lines, (std::vector<int>{18, 19, 20, 21}));
 }
 
+TEST(MeshFile, PlyHeaderEndsOnlyAtTheLineEndHeader) {
+  // A comment that mentions end_header, in ascii and in binary: the header
+  // ends at the line that is end_header, give or take spaces and a CR.
+  const std::string header =
+      "ply\nformat FORMAT 1.0\ncomment written before end_header, by an exporter\nelement vertex 3\n"
+      "property float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+      "end_header \r\n";
+  std::string ascii = header;
+  ascii.replace(ascii.find("FORMAT"), 6, "ascii");
+  const PolygonSoup a = parse_polygon_soup(ascii + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "c.ply");
+  EXPECT_EQ(a.points.size(), 3u);
+  ASSERT_EQ(a.polygon_count(), 1u);
+  EXPECT_EQ(a.polygon_line(0), 14);
+  std::string binary = header;
+  binary.replace(binary.find("FORMAT"), 6, "binary_little_endian");
+  const float xyz[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  binary.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
+  const int32_t face[3] = {0, 1, 2};
+  binary += char(3);
+  binary.append(reinterpret_cast<const char*>(face), sizeof face);
+  const PolygonSoup b = parse_polygon_soup(binary, "c.ply");
+  EXPECT_EQ(b.points, a.points);
+  EXPECT_EQ(b.corners, a.corners);
+}
+
 TEST(MeshFile, BadFilesGetTheirExactLocatedError) {
   EXPECT_EQ(error_of("v 0 0 0\nf 1 0 1\n", "a.obj"),
             "a.obj:2:5: vertex indices count from 1 (or from -1 backwards); 0 is not an index");
