@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <glm/common.hpp>
+
 namespace umbra {
 
 std::string FileLoc::str() const {
@@ -14,6 +16,19 @@ std::string FileLoc::str() const {
 Camera spec_camera() {
   // tan(45deg / 2) * (3.4 - 1) = 0.994: the face z = 1 spans 99.4% of the height.
   return Camera{{0.0, 0.0, 3.4}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 45.0};
+}
+
+SceneBounds surface_bounds(const Scene& scene) {
+  SceneBounds b;
+  const auto grow = [&b](const glm::dvec3& lo, const glm::dvec3& hi) {
+    if (b.empty()) b.lo = lo, b.hi = hi;
+    else b.lo = glm::min(b.lo, lo), b.hi = glm::max(b.hi, hi);
+  };
+  for (const Sphere& s : scene.spheres) grow(s.center - s.radius, s.center + s.radius);
+  for (const Triangle& t : scene.triangles) grow(glm::min(t.a, glm::min(t.b, t.c)), glm::max(t.a, glm::max(t.b, t.c)));
+  for (const Mesh& m : scene.meshes)
+    if (!m.triangles.empty()) grow(m.bounds_min, m.bounds_max);
+  return b;
 }
 
 void rotate_lights_about_z(Scene& scene, double degrees) {

@@ -95,6 +95,14 @@ struct Scene {
   std::vector<Warning> warnings;
 };
 
+// The box round every surface (spheres, triangles, meshes); empty (lo > hi)
+// when the scene has none.
+struct SceneBounds {
+  glm::dvec3 lo{1.0}, hi{-1.0};
+  bool empty() const { return lo.x > hi.x; }
+};
+SceneBounds surface_bounds(const Scene& scene);
+
 // The spec's light motion: every light rotated about the z axis.
 void rotate_lights_about_z(Scene& scene, double degrees);
 

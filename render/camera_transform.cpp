@@ -1,13 +1,29 @@
 #include "render/camera_transform.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace umbra {
 
-double near_plane(const Camera& camera) { return kNearPlaneFraction * glm::length(camera.target - camera.eye); }
+double near_plane(const Camera& camera, const SceneBounds& surfaces) {
+  if (surfaces.empty()) return kNearPlaneFraction * glm::length(camera.target - camera.eye);
+  const glm::dvec3 centre = 0.5 * (surfaces.lo + surfaces.hi);
+  const double radius = 0.5 * glm::length(surfaces.hi - surfaces.lo);
+  const double farthest = glm::length(centre - camera.eye) + radius;
+  double nearest = std::numeric_limits<double>::max();  // view depth of the box's nearest corner
+  const glm::dvec3 forward = glm::normalize(camera.target - camera.eye);
+  for (int k = 0; k < 8; ++k) {
+    const glm::dvec3 corner(k & 1 ? surfaces.hi.x : surfaces.lo.x, k & 2 ? surfaces.hi.y : surfaces.lo.y,
+                            k & 4 ? surfaces.hi.z : surfaces.lo.z);
+    nearest = std::min(nearest, glm::dot(corner - camera.eye, forward));
+  }
+  const double near = kNearPlaneFraction * farthest;
+  return nearest > 0.0 ? std::min(near, 0.99 * nearest) : near;
+}
 
 glm::dmat4 view_matrix(const Camera& camera) { return glm::lookAt(camera.eye, camera.target, camera.up); }
 

@@ -8,12 +8,15 @@
 
 namespace umbra {
 
-// The near plane is at this fraction of the eye's distance to its target,
-// so that a scene scaled by 1e6 or 1e-6 with its camera keeps the same depth
-// precision; for the spec's view (eye 3.4 from the origin) it is 0.05.
-constexpr double kNearPlaneFraction = 0.05 / 3.4;
-// The far plane is at infinity.
-double near_plane(const Camera& camera);
+// The near plane, from the scene's surfaces as the eye sees them, whatever
+// the camera's target: at this fraction of the distance from the eye to the
+// far side of the surfaces' bounding sphere, so that a scene scaled by 1e6 or
+// 1e-6 with its camera keeps the same depth precision (for the spec's view
+// of a scene that fills the cube [-1,1]^3 it is 0.05, as it always was);
+// but never beyond the nearest corner of their bounding box in front of the
+// eye, so nothing visible is clipped. The far plane is at infinity.
+constexpr double kNearPlaneFraction = 0.05 / (3.4 + 1.7320508075688772);
+double near_plane(const Camera& camera, const SceneBounds& surfaces);
 
 // Everitt and Kilgard: with the far plane at infinity, a vertex at infinity
 // lands exactly on the far plane and rounding may clip it. Scaling depth by

@@ -121,7 +121,7 @@ struct LightCulling {
 
 LightCulling cull_for_light(const Scene& scene, const RenderPlan& plan, const glm::dvec3& light) {
   LightCulling c;
-  const NearRectangle near = near_rectangle(plan.camera, double(plan.settings.width) / plan.settings.height);
+  const NearRectangle near = near_rectangle(plan.camera, double(plan.settings.width) / plan.settings.height, plan.near_plane);
   const RenderMethod method = plan.settings.method;
   const bool cull = method == RenderMethod::kAuto;
   // Only auto's choice and forced z-pass's warning need the near plane.
@@ -237,6 +237,7 @@ RenderPlan make_render_plan(const Scene& scene, const std::vector<MeshCaster>& m
 
 void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshes, RenderPlan& plan) {
   plan.camera = scene.camera;
+  plan.near_plane = near_plane(plan.camera, surface_bounds(scene));
   plan.camera_is_spec_default = !scene.camera_from.has_value();
   plan.lights.resize(scene.lights.size());
   plan.specular_used = false;
@@ -312,8 +313,8 @@ void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& 
   out << "  image: " << plan.settings.width << "x" << plan.settings.height << "\n";
   out << "  camera: eye " << c.eye << " target " << c.target << " up " << c.up << " fovy " << c.fovy_deg
       << " deg" << (plan.camera_is_spec_default ? " (the spec's default view)" : " (from the scene file)") << "\n";
-  out << "  projection: perspective, near " << near_plane(c) << " (" << kNearPlaneFraction
-      << " of the eye's distance to the target), far plane at infinity (epsilon 2^-22)\n";
+  out << "  projection: perspective, near " << plan.near_plane << " (from the surfaces' bounds as the eye sees them), "
+      << "far plane at infinity (epsilon 2^-22)\n";
   out << "  shading: ambient + diffuse" << (plan.specular_used ? " + specular" : " (no material has a specular term: skipped)")
       << "\n";
   out << "  method: " << method_name(plan.settings.method)

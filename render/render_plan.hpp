@@ -75,6 +75,7 @@ struct RenderPlan {
   RenderSettings settings;
   Camera camera;
   bool camera_is_spec_default = true;
+  double near_plane = 0.05;  // near_plane(camera, the scene's surface bounds)
   // Shading terms that some material and light use; the shader skips the
   // specular term when none does, and a frame draws neither the shadows nor
   // the direct pass of a light with no colour (its ambient term is in the

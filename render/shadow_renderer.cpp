@@ -55,12 +55,8 @@ ShadowRenderer::ShadowRenderer(const Scene& scene, const RenderPlan& plan) : sce
     p->set("shadow_map", 1);  // texture unit 1
   }
 
-  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-  const auto grow = [&](const glm::dvec3& a, const glm::dvec3& b) { lo = glm::min(lo, a), hi = glm::max(hi, b); };
-  for (const Sphere& sp : scene.spheres) grow(sp.center - sp.radius, sp.center + sp.radius);
-  for (const Triangle& t : scene.triangles) grow(glm::min(t.a, glm::min(t.b, t.c)), glm::max(t.a, glm::max(t.b, t.c)));
-  for (const Mesh& m : scene.meshes) grow(m.bounds_min, m.bounds_max);
-  if (lo.x <= hi.x) scene_center_ = 0.5 * (lo + hi), scene_radius_ = 0.5 * glm::length(hi - lo);
+  const SceneBounds bounds = surface_bounds(scene);
+  if (!bounds.empty()) scene_center_ = 0.5 * (bounds.lo + bounds.hi), scene_radius_ = 0.5 * glm::length(bounds.hi - bounds.lo);
 }
 
 // The plan's camera and image size, read every frame: a viewer moves the
@@ -68,7 +64,7 @@ ShadowRenderer::ShadowRenderer(const Scene& scene, const RenderPlan& plan) : sce
 void ShadowRenderer::apply_view() {
   const RenderSettings& s = plan_.settings;
   const glm::mat4 view_projection(infinite_perspective(plan_.camera.fovy_deg, double(s.width) / s.height,
-                                                       near_plane(plan_.camera)) *
+                                                       plan_.near_plane) *
                                   view_matrix(plan_.camera));
   for (ShaderProgram* p : {triangle_program_.get(), sphere_program_.get()}) {
     p->use();

@@ -51,8 +51,7 @@ BoundingSphere bounding_sphere(const Mesh& m) {
   return {c, 0.5 * glm::length(m.bounds_max - m.bounds_min)};
 }
 
-NearRectangle near_rectangle(const Camera& camera, double aspect) {
-  const double n = near_plane(camera);
+NearRectangle near_rectangle(const Camera& camera, double aspect, double n) {
   const double half_h = n * std::tan(glm::radians(camera.fovy_deg) / 2.0), half_w = half_h * aspect;
   const glm::dmat4 view = view_matrix(camera);
   const glm::dvec3 right{view[0][0], view[1][0], view[2][0]};

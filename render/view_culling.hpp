@@ -23,7 +23,7 @@ BoundingSphere bounding_sphere(const Mesh& m);
 struct NearRectangle {
   glm::dvec3 corners[4];
 };
-NearRectangle near_rectangle(const Camera& camera, double aspect);
+NearRectangle near_rectangle(const Camera& camera, double aspect, double near);
 
 // False only when no point of the near rectangle can be in the shadow volume
 // that a caster inside `caster` casts from `light`: then no segment from the

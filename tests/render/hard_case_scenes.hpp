@@ -42,6 +42,14 @@ inline std::string fan_top_box_obj(double lo, double hi, double z0, double z1, d
   return obj.str();
 }
 
+// The whole of a text file.
+inline std::string read_file(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 // Writes `text` to a file named `name` in this process's temporary folder
 // (CTest runs tests in parallel processes); returns its path.
 inline std::string write_mesh(const std::string& name, const std::string& text) {

@@ -220,6 +220,35 @@ TEST(HardScale, LightAMillionAway) {
 
 // --- the camera and the stencil ----------------------------------------------
 
+TEST(HardView, TheNearPlaneDoesNotDependOnWhereTheTargetLies) {
+  // The spec's view, looking at points 300 away, 1e-3 away, or at the
+  // origin: the same near plane, and the whole scene in view.
+  const std::string demo = test::read_file(std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene");
+  const RenderPlan spec_view = plan_for(parse_scene_text(demo, "demo.scene"));
+  for (const char* target : {"0 0 -300", "0 0 3.399", "0 0 0"}) {
+    SCOPED_TRACE(target);
+    const Scene scene = parse_scene_text(demo + "camera eye 0 0 3.4 target " + target + " up 0 1 0 fovy 45\n", "demo.scene");
+    EXPECT_EQ(plan_for(scene).near_plane, spec_view.near_plane);
+    expect_hard_case_holds(scene);
+  }
+}
+
+TEST(HardView, TheNearPlaneStaysInFrontOfTheNearestSurface) {
+  // The eye 0.005 in front of the demo's surfaces' box, looking into it: a
+  // fraction of the scene's size (0.03) would put the near plane behind the
+  // nearest surface.
+  const std::string demo = test::read_file(std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene");
+  const SceneBounds b = surface_bounds(parse_scene_text(demo, "demo.scene"));
+  std::ostringstream camera;
+  camera.precision(17);
+  camera << "camera eye 0.1 0.2 " << b.hi.z + 0.005 << " target 0.1 0.2 " << b.lo.z << " up 0 1 0 fovy 90\n";
+  const Scene scene = parse_scene_text(demo + camera.str(), "demo.scene");
+  const RenderPlan plan = plan_for(scene);
+  EXPECT_LT(plan.near_plane, 0.005);
+  EXPECT_GT(plan.near_plane, 0.004);
+  expect_hard_case_holds(scene);
+}
+
 TEST(HardView, NearPlaneCutsThroughAVolume) {
   // The side plane of the small triangle's volume through its edge y = 0
   // passes through (0, -0.1, 2.2); the eye is 0.005 from it, closer than the
