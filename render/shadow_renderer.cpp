@@ -66,6 +66,7 @@ void ShadowRenderer::apply_view() {
   const glm::mat4 view_projection(infinite_perspective(plan_.camera.fovy_deg, double(s.width) / s.height,
                                                        plan_.near_plane) *
                                   view_matrix(plan_.camera));
+  viewpoint_ = plan_.camera.eye;
   for (ShaderProgram* p : {triangle_program_.get(), sphere_program_.get()}) {
     p->use();
     p->set("view_projection", view_projection);
@@ -101,7 +102,7 @@ void ShadowRenderer::draw_surfaces(int pass, size_t light) {
   triangle_program_->use();
   for (const SurfaceBuffers::TriangleGroup& group : surfaces_->triangle_groups()) {
     set_material(*triangle_program_, group.material);
-    surfaces_->draw_triangle_group(group);
+    surfaces_->draw_triangle_group(group, viewpoint_);
   }
   sphere_program_->use();
   for (const Sphere& sphere : scene_.spheres) {
@@ -213,7 +214,8 @@ void ShadowRenderer::mark_receiver(const glm::dvec4& plane) {
   triangle_program_->set("pass", int(shaders::kMarkReceiver));
   triangle_program_->set("receiver_plane", glm::vec4(plane));
   triangle_program_->set("receiver_tolerance", float(1e-5 * (glm::length(scene_center_) + scene_radius_)));
-  for (const SurfaceBuffers::TriangleGroup& group : surfaces_->triangle_groups()) surfaces_->draw_triangle_group(group);
+  for (const SurfaceBuffers::TriangleGroup& group : surfaces_->triangle_groups())
+    surfaces_->draw_triangle_group(group, viewpoint_);
 }
 
 // The six faces from the light, each the surfaces' distances from it, then
@@ -229,6 +231,7 @@ void ShadowRenderer::render_shadow_map(size_t light) {
   for (int face = 0; face < 6; ++face) {
     shadow_map_->begin_face(face);
     const glm::mat4 view_projection(cube_face_view_projection(position, face, near));
+    viewpoint_ = position;
     for (ShaderProgram* p : {triangle_program_.get(), sphere_program_.get()}) {
       p->use();
       p->set("view_projection", view_projection);

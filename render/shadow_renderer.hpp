@@ -85,6 +85,7 @@ class ShadowRenderer {
   std::unique_ptr<VolumeBuffer> volumes_;
   std::unique_ptr<ShadowMap> shadow_map_;  // for the shadowmap method, made on first use
   double scene_radius_ = 0.0;             // of a ball round every surface, for the map's near plane
+  glm::dvec3 viewpoint_{0.0};             // where the surfaces are drawn from: the eye, or a light for its shadow map
   glm::dvec3 scene_center_{0.0};
   std::vector<std::unique_ptr<VolumeBuffer>> mesh_volumes_;  // per scene mesh; made when first drawn
   bool shadow_marked_in_alpha_ = false;  // the last count_shadow_volumes used batches

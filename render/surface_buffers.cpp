@@ -12,34 +12,36 @@ namespace umbra {
 SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
   // The spec's triangles and every mesh's, grouped by material and by
   // whether they belong to a closed mesh, one draw call per group; flat
-  // normals, as the shadows are flat-faced. A closed mesh's back faces are
-  // culled when the eye is outside its bounding box: then they are never
-  // visible, and where rasterisation lets one show at an outline pixel,
-  // two-sided shading would paint it unlit.
+  // normals, as the shadows are flat-faced.
   struct Drawn {
     Triangle triangle;
-    bool closed;
+    const Mesh* closed_mesh;  // the closed mesh it belongs to, if any
   };
   std::vector<Drawn> all;
-  for (const Triangle& t : scene.triangles) all.push_back({t, false});
+  for (const Triangle& t : scene.triangles) all.push_back({t, nullptr});
   for (const Mesh& mesh : scene.meshes) {
-    const glm::dvec3& eye = scene.camera.eye;
-    const bool eye_outside = glm::any(glm::lessThan(eye, mesh.bounds_min)) || glm::any(glm::greaterThan(eye, mesh.bounds_max));
-    const bool closed = mesh.components.all_closed() && eye_outside;
+    const Mesh* closed = mesh.components.all_closed() ? &mesh : nullptr;
     for (const auto& t : mesh.triangles)
       all.push_back({{mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]], mesh.material, mesh.where}, closed});
   }
   std::stable_sort(all.begin(), all.end(), [](const Drawn& a, const Drawn& b) {
-    return a.triangle.material != b.triangle.material ? a.triangle.material < b.triangle.material : a.closed < b.closed;
+    return a.triangle.material != b.triangle.material ? a.triangle.material < b.triangle.material
+                                                      : (a.closed_mesh != nullptr) < (b.closed_mesh != nullptr);
   });
   std::vector<float> data;  // position xyz, normal xyz
-  for (const auto& [t, closed] : all) {
+  for (const auto& [t, closed_mesh] : all) {
     const glm::dvec3 n = glm::cross(t.b - t.a, t.c - t.a);  // flipped toward the eye in the shader
     for (const glm::dvec3& p : {t.a, t.b, t.c})
       data.insert(data.end(), {float(p.x), float(p.y), float(p.z), float(n.x), float(n.y), float(n.z)});
-    if (groups_.empty() || groups_.back().material != t.material || groups_.back().closed != closed)
-      groups_.push_back({t.material, closed, int(data.size() / 6) - 3, 0});
-    groups_.back().vertex_count += 3;
+    const bool closed = closed_mesh != nullptr;
+    if (groups_.empty() || groups_.back().material != t.material || groups_.back().closed != closed) {
+      groups_.push_back({t.material, closed, glm::dvec3(0.0), glm::dvec3(0.0), int(data.size() / 6) - 3, 0});
+      if (closed) groups_.back().closed_lo = closed_mesh->bounds_min, groups_.back().closed_hi = closed_mesh->bounds_max;
+    }
+    TriangleGroup& group = groups_.back();
+    if (closed)
+      group.closed_lo = glm::min(group.closed_lo, closed_mesh->bounds_min), group.closed_hi = glm::max(group.closed_hi, closed_mesh->bounds_max);
+    group.vertex_count += 3;
   }
   glGenVertexArrays(1, &triangle_vao_);
   glGenBuffers(1, &triangle_vbo_);
@@ -74,8 +76,9 @@ SurfaceBuffers::~SurfaceBuffers() {
   glDeleteVertexArrays(2, arrays);
 }
 
-void SurfaceBuffers::draw_triangle_group(const TriangleGroup& group) const {
-  if (group.closed) {
+void SurfaceBuffers::draw_triangle_group(const TriangleGroup& group, const glm::dvec3& viewpoint) const {
+  const bool outside = glm::any(glm::lessThan(viewpoint, group.closed_lo)) || glm::any(glm::greaterThan(viewpoint, group.closed_hi));
+  if (group.closed && outside) {
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
   }

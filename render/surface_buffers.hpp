@@ -20,12 +20,20 @@ class SurfaceBuffers {
 
   struct TriangleGroup {
     int material = 0;
-    bool closed = false;  // from closed meshes, facing outward: back faces are culled
+    // From closed meshes, facing outward: their back faces are culled when
+    // seen from outside the box [closed_lo, closed_hi] round those meshes.
+    bool closed = false;
+    glm::dvec3 closed_lo{0.0}, closed_hi{0.0};
     int first_vertex = 0;
     int vertex_count = 0;
   };
   const std::vector<TriangleGroup>& triangle_groups() const { return groups_; }
-  void draw_triangle_group(const TriangleGroup& group) const;
+  // Seen from `viewpoint` (the eye, or the light for a shadow map): a closed
+  // group's back faces are culled when the viewpoint is outside its box, where
+  // they are never visible (and where rasterisation lets one show at an
+  // outline pixel, two-sided shading would paint it unlit); from inside, as
+  // when a viewer zooms into a mesh, they are drawn.
+  void draw_triangle_group(const TriangleGroup& group, const glm::dvec3& viewpoint) const;
   void draw_sphere_box() const;
 
  private:

@@ -249,6 +249,29 @@ TEST(HardView, TheNearPlaneStaysInFrontOfTheNearestSurface) {
   expect_hard_case_holds(scene);
 }
 
+TEST(HardView, ACameraMovedIntoAClosedMeshSeesItsInside) {
+  // Culling is decided per frame from where the eye is: a renderer made for
+  // the spec's view (outside the box, so back faces are culled), then the
+  // camera moved inside the box, as zooming in `umbra view` does. Lit from
+  // inside, the walls the eye now sees are the mesh's back faces.
+  Scene scene = mesh_scene("light 0.2 0.1 0.1\n", "room.obj", box_obj(-0.6, 0.6, -0.9, 0.3));
+  ASSERT_TRUE(scene.meshes[0].components.all_closed());
+  require_lights_off_casters(scene);
+  RenderSettings settings;
+  settings.width = settings.height = 100;
+  const std::vector<MeshCaster> casters = prepare_mesh_casters(scene);
+  RenderPlan plan = make_render_plan(scene, casters, settings);
+  HeadlessContext context(100, 100);
+  ShadowRenderer renderer(scene, plan);
+  (void)renderer.render_mask(0);
+  scene.camera = Camera{{0.1, -0.1, 0.0}, {0.0, 0.0, -1.0}, {0.0, 1.0, 0.0}, 60.0};
+  update_render_plan(scene, casters, plan);
+  const Image mask = renderer.render_mask(0);
+  const test::MaskComparison r = test::compare_with_reference(scene, plan, mask, 0);
+  EXPECT_EQ(r.unexplained, 0) << r.first_unexplained << " (" << r.differing << " of " << r.surface_pixels << " differ)";
+  EXPECT_EQ(r.surface_pixels, 100 * 100);  // the walls all round
+}
+
 TEST(HardView, NearPlaneCutsThroughAVolume) {
   // The side plane of the small triangle's volume through its edge y = 0
   // passes through (0, -0.1, 2.2); the eye is 0.005 from it, closer than the
