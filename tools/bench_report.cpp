@@ -69,7 +69,8 @@ void write_markdown_table(std::ostream& out, const std::vector<BenchRow>& rows, 
   for (const BenchRow& r : rows) {
     const auto z = zfail_ms.find({r.scene, r.segments});
     out << "| " << r.scene << " | " << r.method << " | " << r.parameter() << " | "
-        << fixed(100.0 * r.error(), 3) << "% | " << r.wrong_pixels << " of " << r.surface_pixels << " | "
+        << (r.reference ? std::string("reference") : fixed(100.0 * r.error(), 3) + "%") << " | "
+        << (r.reference ? std::string("-") : std::to_string(r.wrong_pixels)) << " of " << r.surface_pixels << " | "
         << fixed(r.median_ms, 2) << " | "
         << (z != zfail_ms.end() && z->second > 0.0 ? fixed(r.median_ms / z->second, 2) + "x" : "-") << " |\n";
   }
@@ -79,10 +80,13 @@ void write_csv(const std::vector<BenchRow>& rows, int width, int height, const s
   const std::string partial = path + ".part";  // renamed into place: never a partial file
   std::ofstream out(partial);
   if (!out) throw std::runtime_error(path + ": cannot write");
-  out << "scene,method,segments,map_size,wrong_pixels,surface_pixels,error,median_ms,frames,width,height\n";
-  for (const BenchRow& r : rows)
-    out << r.scene << "," << r.method << "," << r.segments << "," << r.map_size << "," << r.wrong_pixels << "," << r.surface_pixels << ","
-        << r.error() << "," << r.median_ms << "," << r.frames << "," << width << "," << height << "\n";
+  out << "scene,method,segments,map_size,wrong_pixels,surface_pixels,error,median_ms,frames,width,height,reference\n";
+  for (const BenchRow& r : rows) {
+    out << r.scene << "," << r.method << "," << r.segments << "," << r.map_size << ",";
+    if (r.reference) out << "," << r.surface_pixels << ",,";  // no error of its own
+    else out << r.wrong_pixels << "," << r.surface_pixels << "," << r.error() << ",";
+    out << r.median_ms << "," << r.frames << "," << width << "," << height << "," << int(r.reference) << "\n";
+  }
   if (!out.flush()) {
     std::filesystem::remove(partial);
     throw std::runtime_error(path + ": cannot write");
@@ -110,8 +114,14 @@ void write_plot(const std::vector<BenchRow>& rows, const std::string& path) {
   for (const std::string& scene : scenes) {
     g << "set title " << quoted_for_gnuplot(scene) << "\nplot ";
     const std::vector<std::string> methods = in_order(rows, &scene);
-    for (size_t i = 0; i < methods.size(); ++i)
-      g << (i ? ", " : "") << "'-' using 1:2 with linespoints title " << quoted_for_gnuplot(methods[i]);
+    for (size_t i = 0; i < methods.size(); ++i) {
+      // The reference's point sits at 0 by definition, not by measurement.
+      const bool reference = std::any_of(rows.begin(), rows.end(), [&](const BenchRow& r) {
+        return r.scene == scene && r.method == methods[i] && r.reference;
+      });
+      g << (i ? ", " : "") << "'-' using 1:2 with linespoints title "
+        << quoted_for_gnuplot(reference ? methods[i] + " (the reference: 0 by definition)" : methods[i]);
+    }
     g << "\n";
     for (const std::string& method : methods) {
       for (const BenchRow& r : rows)

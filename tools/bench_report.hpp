@@ -14,6 +14,10 @@ struct BenchRow {
   int segments = 0;    // sphere N; 0 where the scene has no sphere or the method has none
   int map_size = 0;    // shadow map texels a side, for shadowmap; else 0
   long wrong_pixels = 0, surface_pixels = 0;  // over every light's mask
+  // The ray-cast reference itself: the others' errors are measured against
+  // it, and it has none to report (the table says "reference", the CSV
+  // leaves its error empty).
+  bool reference = false;
   double median_ms = 0.0;
   int frames = 0;
   std::string parameter() const;  // "N = 64", "map 1024" or "-"

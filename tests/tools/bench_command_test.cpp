@@ -39,7 +39,8 @@ TEST_F(BenchCommand, WritesATableAndACsvRowPerMethodAndN) {
       << r.out;
   EXPECT_NE(r.out.find("| two_spheres.scene | zfail | N = 8 | "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("| two_spheres.scene | shadowmap | map 512 | "), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("| two_spheres.scene | raycast | - | 0.000% | 0 of "), std::string::npos) << r.out;
+  // The reference is labelled as such: it has no error of its own to report.
+  EXPECT_NE(r.out.find("| two_spheres.scene | raycast | - | reference | - of "), std::string::npos) << r.out;
   const auto rows = read_csv(path("b.csv"));
   // The header; zfail, zpass, auto and planar at N = 8 and 32; shadowmap at 32 and 512; raycast.
   ASSERT_EQ(rows.size(), 1u + 4 * 2 + 2 + 1);
@@ -55,8 +56,12 @@ TEST_F(BenchCommand, WritesATableAndACsvRowPerMethodAndN) {
   EXPECT_EQ(rows[9][1], "shadowmap");
   EXPECT_EQ(rows[9][3], "32");
   EXPECT_GT(std::stol(rows[9][4]), std::stol(rows[10][4]));
+  EXPECT_EQ(rows[0][11], "reference");
+  EXPECT_EQ(rows[1][11], "0");
   EXPECT_EQ(rows.back()[1], "raycast");
-  EXPECT_EQ(rows.back()[4], "0");
+  EXPECT_EQ(rows.back()[4], "");   // wrong pixels: none measured
+  EXPECT_EQ(rows.back()[6], "");   // error
+  EXPECT_EQ(rows.back()[11], "1");
 }
 
 TEST_F(BenchCommand, PlotsAsText) {
