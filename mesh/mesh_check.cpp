@@ -11,6 +11,7 @@
 #include "mesh/point_merging.hpp"
 #include "mesh/polygon_triangulation.hpp"
 #include "mesh/self_intersections.hpp"
+#include "mesh/solid_orientation.hpp"
 #include "mesh/union_find.hpp"
 
 namespace umbra {
@@ -184,8 +185,7 @@ class MeshAnalyser {
   std::vector<std::array<uint32_t, 2>> parity_counts;
   std::vector<uint8_t> parity_of;
   std::vector<uint32_t> flip_root;
-  // triangulate
-  std::vector<double> component_volume;
+
 };
 
 void MeshAnalyser::describe_file() {
@@ -398,8 +398,6 @@ void MeshAnalyser::orient_faces() {
 // Triangles for the geometric tests and the renderer, oriented as after the
 // flips. Faces whose corners are collinear stay: a closed mesh needs them.
 void MeshAnalyser::triangulate() {
-  component_volume.assign(comps.size(), 0.0);
-  const glm::dvec3 centre = 0.5 * (report.bbox_min + report.bbox_max);  // keeps the volume sums well conditioned
   for (uint32_t f = 0; f < face_count; ++f) {
     if (!faces.in_topology(f)) continue;
     const size_t first = triangles.size();
@@ -407,11 +405,7 @@ void MeshAnalyser::triangulate() {
     const bool flip = must_flip(f) && !component_conflict[component_of[f]];
     for (size_t t = first; t < triangles.size(); ++t) {
       triangle_face.push_back(f);
-      auto& tri = triangles[t];
-      if (flip) std::swap(tri[1], tri[2]);
-      const glm::dvec3 a = merged.positions[tri[0]] - centre, b = merged.positions[tri[1]] - centre,
-                       c = merged.positions[tri[2]] - centre;
-      component_volume[component_of[f]] += glm::dot(a, glm::cross(b, c)) / 6.0;
+      if (flip) std::swap(triangles[t][1], triangles[t][2]);
     }
   }
   report.triangles = triangles.size();
@@ -419,6 +413,13 @@ void MeshAnalyser::triangulate() {
 
 // Per component: closed, manifold, orientable, genus, outward.
 void MeshAnalyser::summarise_components() {
+  std::vector<uint8_t> closed_and_orientable(comps.size(), 0);
+  for (size_t i = 0; i < comps.size(); ++i)
+    closed_and_orientable[i] = comps[i].border_edges == 0 && !component_non_manifold[i] && !component_conflict[i];
+  std::vector<uint32_t> component_of_triangle(triangles.size());
+  for (size_t t = 0; t < triangles.size(); ++t) component_of_triangle[t] = component_of[triangle_face[t]];
+  const std::vector<uint8_t> facing_in =
+      wrongly_facing_closed_components(merged.positions, triangles, component_of_triangle, comps.size(), closed_and_orientable);
   for (size_t i = 0; i < comps.size(); ++i) {
     ComponentReport& c = comps[i];
     c.euler_characteristic = int64_t(c.vertices) - int64_t(c.edges) + int64_t(c.faces);
@@ -428,7 +429,7 @@ void MeshAnalyser::summarise_components() {
     c.consistently_oriented = c.orientable && component_inconsistent[i] == 0;
     if (c.manifold && c.orientable) c.genus = (2 - c.euler_characteristic - int64_t(c.border_loops)) / 2;
     if (c.closed && c.orientable) {
-      c.outward = component_volume[i] > 0.0;
+      c.outward = !facing_in[i];
       if (!*c.outward) ++report.inward_components;
     }
     if (!c.orientable) ++report.non_orientable_components;

@@ -18,6 +18,7 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include "mesh/input_error.hpp"
+#include "mesh/solid_orientation.hpp"
 
 namespace umbra {
 namespace {
@@ -50,33 +51,36 @@ size_t remove_degenerate_polygons(std::vector<Polygon>& polygons) {
   return before - polygons.size();
 }
 
-// Signed volume enclosed by the faces of one component (positive when they face out).
-double signed_volume(const Mesh& mesh, const std::vector<Mesh::Face_index>& faces) {
-  double volume = 0.0;
-  for (const Mesh::Face_index f : faces) {
-    const auto h = mesh.halfedge(f);
-    const Point& a = mesh.point(mesh.source(h));
-    const Point& b = mesh.point(mesh.target(h));
-    const Point& c = mesh.point(mesh.target(mesh.next(h)));
-    volume += CGAL::scalar_product(a - CGAL::ORIGIN, CGAL::cross_product(b - CGAL::ORIGIN, c - CGAL::ORIGIN)) / 6.0;
-  }
-  return volume;
-}
-
-// Reverses every closed component that encloses negative volume; returns how many.
+// Reverses every closed component that faces into the solid it bounds
+// (wrongly_facing_closed_components); returns how many.
 size_t orient_closed_components_outward(Mesh& mesh) {
   auto component = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:component", 0).first;
   const std::size_t count = PMP::connected_components(mesh, component);
   std::vector<std::vector<Mesh::Face_index>> faces(count);
-  std::vector<bool> closed(count, true);
+  std::vector<uint8_t> closed(count, 1);
+  std::vector<glm::dvec3> positions(mesh.number_of_vertices());
+  for (const Mesh::Vertex_index v : mesh.vertices()) {
+    const Point& p = mesh.point(v);
+    positions[size_t(v)] = {p.x(), p.y(), p.z()};
+  }
+  std::vector<std::array<uint32_t, 3>> triangles;  // each face as a fan, for the volumes
+  std::vector<uint32_t> component_of;
   for (const Mesh::Face_index f : mesh.faces()) {
     faces[component[f]].push_back(f);
-    for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh))
-      if (mesh.is_border(mesh.opposite(h))) closed[component[f]] = false;
+    std::vector<uint32_t> corners;
+    for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      if (mesh.is_border(mesh.opposite(h))) closed[component[f]] = 0;
+      corners.push_back(uint32_t(mesh.source(h)));
+    }
+    for (size_t k = 1; k + 1 < corners.size(); ++k) {
+      triangles.push_back({corners[0], corners[k], corners[k + 1]});
+      component_of.push_back(uint32_t(component[f]));
+    }
   }
+  const std::vector<uint8_t> wrong = wrongly_facing_closed_components(positions, triangles, component_of, count, closed);
   size_t reversed = 0;
   for (std::size_t c = 0; c < count; ++c) {
-    if (!closed[c] || signed_volume(mesh, faces[c]) >= 0.0) continue;
+    if (!wrong[c]) continue;
     PMP::reverse_face_orientations(faces[c], mesh);
     ++reversed;
   }

@@ -37,7 +37,10 @@ struct ComponentReport {
   bool orientable = false;             // faces can be flipped to agree on every edge
   bool consistently_oriented = false;  // they already agree
   std::optional<int64_t> genus;        // manifold and orientable: (2 - chi - loops) / 2
-  std::optional<bool> outward;         // closed and orientable: does the (repaired) orientation enclose positive volume
+  // Closed and orientable: do its faces (once they agree) point away from the
+  // solid it bounds? Outward for a shell round solid; into the cavity for a
+  // hollow solid's inner shell, whose volume is then negative.
+  std::optional<bool> outward;
 };
 
 struct SelfIntersectionReport {
@@ -75,7 +78,7 @@ struct MeshReport {
   size_t inconsistent_edges = 0;    // two faces traverse the edge in the same direction
   size_t faces_to_flip = 0;         // the fewest flips that make every orientable component consistent
   size_t non_orientable_components = 0;
-  size_t inward_components = 0;     // closed, orientable components that enclose negative volume
+  size_t inward_components = 0;     // closed, orientable components that face into the solid they bound
   int64_t euler_characteristic = 0;
   SelfIntersectionReport self_intersections;
   glm::dvec3 bbox_min{0.0}, bbox_max{0.0};

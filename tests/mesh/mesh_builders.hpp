@@ -65,6 +65,19 @@ inline PolygonSoup box_triangles(glm::dvec3 lo, glm::dvec3 hi) {
 
 inline PolygonSoup unit_cube() { return box_triangles(glm::dvec3(0.0), glm::dvec3(1.0)); }
 
+// The volume its faces enclose, summed about `about` (triangles and convex polygons as fans).
+inline double signed_volume(const PolygonSoup& soup, const glm::dvec3& about) {
+  double volume = 0.0;
+  for (size_t f = 0; f < soup.polygon_count(); ++f) {
+    const uint32_t* v = soup.polygon(f);
+    for (uint32_t k = 1; k + 1 < soup.corner_count(f); ++k) {
+      const glm::dvec3 a = soup.points[v[0]] - about, b = soup.points[v[k]] - about, c = soup.points[v[k + 1]] - about;
+      volume += a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x);
+    }
+  }
+  return volume / 6.0;
+}
+
 inline PolygonSoup reversed(PolygonSoup soup, std::vector<size_t> faces) {
   for (size_t f : faces) std::reverse(soup.corners.begin() + soup.polygon_starts[f], soup.corners.begin() + soup.polygon_starts[f + 1]);
   return soup;
@@ -73,6 +86,12 @@ inline PolygonSoup reversed(PolygonSoup soup, std::vector<size_t> faces) {
 inline PolygonSoup all_reversed(PolygonSoup soup) {
   for (size_t f = 0; f < soup.polygon_count(); ++f) soup = reversed(std::move(soup), {f});
   return soup;
+}
+
+// A hollow solid, correctly oriented: the box [0, 3]^3 facing out, and the
+// cavity [1, 2]^3 whose shell faces into the cavity. Its volume is 27 - 1.
+inline PolygonSoup hollow_cube() {
+  return combine(box_triangles(glm::dvec3(0.0), glm::dvec3(3.0)), all_reversed(box_triangles(glm::dvec3(1.0), glm::dvec3(2.0))));
 }
 
 inline PolygonSoup without_faces(const PolygonSoup& soup, std::vector<size_t> drop) {

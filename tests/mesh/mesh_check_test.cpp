@@ -140,6 +140,23 @@ TEST(MeshCheck, OneFlippedFaceIsNamedAsTheFaceToFlip) {
                          "silhouette edges once the renderer flips those faces");
 }
 
+TEST(MeshCheck, AHollowSolidsInnerShellFacingItsCavityIsNotInward) {
+  const MeshReport right = check_mesh(test::hollow_cube());
+  ASSERT_EQ(right.components.size(), 2u);
+  EXPECT_EQ(right.inward_components, 0u);
+  EXPECT_EQ(right.components[0].outward, true);
+  EXPECT_EQ(right.components[1].outward, true);  // it faces away from the solid: into the cavity
+  // The inner shell facing into the solid instead is the one that is wrong.
+  const MeshReport wrong = check_mesh(test::combine(test::box_triangles(glm::dvec3(0.0), glm::dvec3(3.0)),
+                                                    test::box_triangles(glm::dvec3(1.0), glm::dvec3(2.0))));
+  EXPECT_EQ(wrong.inward_components, 1u);
+  EXPECT_EQ(wrong.components[0].outward, true);
+  EXPECT_EQ(wrong.components[1].outward, false);
+  // Three nested shells: the innermost (depth 2) is solid again and faces out.
+  const MeshReport three = check_mesh(test::combine(test::hollow_cube(), test::box_triangles(glm::dvec3(1.25), glm::dvec3(1.75))));
+  EXPECT_EQ(three.inward_components, 0u);
+}
+
 TEST(MeshCheck, InwardCubeIsAClosedManifoldThatSaysItFacesInward) {
   const MeshReport r = check_mesh(all_reversed(unit_cube()));
   expect_clean_closed_manifold(r);

@@ -4,6 +4,7 @@
 
 #include <sstream>
 
+#include "mesh/mesh_file.hpp"
 #include "tests/mesh/mesh_builders.hpp"
 #include "tests/tools/command_fixture.hpp"
 
@@ -94,6 +95,26 @@ TEST_F(CheckCommand, RepairTurnsAnInwardMeshOutward) {
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("  turned 1 closed component outward\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("component 0        4 faces, closed, chi 2, genus 0, outward\n"), std::string::npos) << r.out;
+}
+
+TEST_F(CheckCommand, RepairKeepsAHollowSolidsCavityFacingTheCavity) {
+  const std::string input = write("hollow.obj", obj_text(test::hollow_cube()));
+  const CommandResult r = run("check " + input + " --repair " + path("out.obj"));
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("  nothing to change\n"), std::string::npos) << r.out;
+  EXPECT_NEAR(test::signed_volume(read_polygon_soup(path("out.obj")), glm::dvec3(1.5)), 26.0, 1e-9);
+}
+
+TEST_F(CheckCommand, RepairKeepsASmallBoxFarFromTheOriginOutward) {
+  // A box of 1.5 x 0.5 x 1 with its corner at (9e8, 1.1e9, 7e8): summed about
+  // the origin, its volume's terms (about 1e27 each) cancel to noise.
+  PolygonSoup box = test::box_quads({9e8, 1.1e9, 7e8}, {9e8 + 1.5, 1.1e9 + 0.5, 7e8 + 1.0});
+  const std::string input = write("far.obj", obj_text(box));
+  ASSERT_NE(run("check " + input).out.find("genus 0, outward\n"), std::string::npos);
+  const CommandResult r = run("check " + input + " --repair " + path("out.obj"));
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("closed, chi 2, genus 0, outward\n"), std::string::npos) << r.out;
+  EXPECT_NEAR(test::signed_volume(read_polygon_soup(path("out.obj")), {9e8, 1.1e9, 7e8}), 0.75, 1e-9);
 }
 
 TEST_F(CheckCommand, RepairSaysWhatRemainsWhenAHoleCannotBeStitched) {
