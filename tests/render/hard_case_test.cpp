@@ -269,6 +269,7 @@ TEST(HardView, ACameraMovedIntoAClosedMeshSeesItsInside) {
   const Image mask = renderer.render_mask(0);
   const test::MaskComparison r = test::compare_with_reference(scene, plan, mask, 0);
   EXPECT_EQ(r.unexplained, 0) << r.first_unexplained << " (" << r.differing << " of " << r.surface_pixels << " differ)";
+  EXPECT_TRUE(test::within_boundary_bound(r)) << r.excused_boundary << " excused of " << r.boundary_pixels;
   EXPECT_EQ(r.surface_pixels, 100 * 100);  // the walls all round
 }
 

@@ -1,13 +1,16 @@
 #pragma once
 // Compares a rendered shadow mask with the CPU reference pixel by pixel. A
 // pixel may differ only where the exact answer itself changes within the
-// pixel (its footprint straddles a shadow, silhouette or terminator edge), or
+// pixel (its footprint straddles a shadow, silhouette or terminator edge; at
+// most a quarter of such pixels, within_boundary_bound), or
 // where the point's shadow ray passes through the sliver between a sphere's
 // true tangent cone and the cone of its inscribed N-gon (spec 2.2), the one
 // approximation in the volumes; or where the surface is lit at a grazing angle
 // the shader's float arithmetic cannot resolve (kGrazing).
 
+#include <array>
 #include <cmath>
+#include <vector>
 #include <sstream>
 #include <string>
 
@@ -29,6 +32,7 @@ struct MaskComparison {
   int surface_pixels = 0;
   int differing = 0;
   int excused_boundary = 0;
+  int boundary_pixels = 0;  // pixels whose footprint straddles a change of the reference's class
   int excused_ngon = 0;
   int excused_grazing = 0;
   int unexplained = 0;
@@ -61,21 +65,38 @@ inline bool grazing(const RayHit& hit, const glm::dvec3& light) {
   return std::abs(glm::dot(hit.normal, glm::normalize(light - hit.point))) < kGrazing;
 }
 
+// Pixels excused on an edge may be at most a quarter of those whose
+// footprint straddles a change of the reference's class. Renders that are
+// right excuse at most 13.5% of them (two_spheres.scene; most scenes under
+// 6%): a pixel whose centre lies within rounding of an edge. A mask shifted
+// by a whole pixel differs along every edge, about half of them.
+inline bool within_boundary_bound(const MaskComparison& r) { return 4 * r.excused_boundary <= r.boundary_pixels; }
+
 inline MaskComparison compare_with_reference(const Scene& scene, const RenderPlan& plan, const Image& mask,
                                              size_t light) {
   MaskComparison r;
   const int w = mask.width, h = mask.height;
   const glm::dvec3 l = scene.lights[light].position;
+  // The reference at every pixel corner, once: corner (i, j) is (i - 0.5, j - 0.5).
+  std::vector<uint8_t> corner(size_t(w + 1) * size_t(h + 1));
+  for (int j = 0; j <= h; ++j)
+    for (int i = 0; i <= w; ++i) corner[size_t(j) * size_t(w + 1) + size_t(i)] = reference_mask_value(scene, w, h, i - 0.5, j - 0.5, light);
+  const auto corners_of = [&](int x, int y) {
+    const size_t row = size_t(w + 1);
+    return std::array<uint8_t, 4>{corner[size_t(y) * row + size_t(x)], corner[size_t(y) * row + size_t(x + 1)],
+                                  corner[size_t(y + 1) * row + size_t(x)], corner[size_t(y + 1) * row + size_t(x + 1)]};
+  };
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const uint8_t gl = mask.at(x, y);
       const uint8_t ref = reference_mask_value(scene, w, h, x, y, light);
+      const std::array<uint8_t, 4> c = corners_of(x, y);
+      const bool straddles = c[0] != ref || c[1] != ref || c[2] != ref || c[3] != ref;
+      r.boundary_pixels += straddles;
       if (ref != kMaskNoSurface) ++r.surface_pixels;
       if (gl == ref) continue;
       ++r.differing;
-      bool boundary = false;
-      for (const double dx : {-0.5, 0.5})
-        for (const double dy : {-0.5, 0.5}) boundary = boundary || reference_mask_value(scene, w, h, x + dx, y + dy, light) == gl;
+      const bool boundary = c[0] == gl || c[1] == gl || c[2] == gl || c[3] == gl;
       if (boundary) {
         ++r.excused_boundary;
         continue;
@@ -121,6 +142,9 @@ inline void expect_masks_match_reference(Scene scene, int width, int height, int
                                 << r.differing << " of " << r.surface_pixels << " surface pixels differ, "
                                 << r.excused_boundary << " on an edge, " << r.excused_ngon << " in the N-gon band, " << r.excused_grazing
                                 << " lit at a grazing angle)";
+    EXPECT_TRUE(within_boundary_bound(r)) << scene.path << " (" << method_name(method) << ") light " << light + 1 << ": "
+                                          << r.excused_boundary << " pixels excused on an edge, of "
+                                          << r.boundary_pixels << " whose footprint straddles one";
     EXPECT_GT(r.surface_pixels, width * height / 10) << "the scene should fill the view";
   }
 }

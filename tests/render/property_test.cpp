@@ -147,6 +147,7 @@ TEST(Property, RigidMotionOfEverythingKeepsTheMask) {
     const Image mask = mask_of(other, 96);
     const test::MaskComparison r = test::compare_with_reference(scene, plan, mask, 0);
     EXPECT_EQ(r.unexplained, 0) << r.first_unexplained << " (" << r.differing << " of " << r.surface_pixels << " differ)";
+    EXPECT_TRUE(test::within_boundary_bound(r)) << r.excused_boundary << " excused of " << r.boundary_pixels;
     test::expect_sound_volumes(other);
   }
 }

@@ -21,6 +21,30 @@ std::string scene_path(const std::string& name) { return std::string(UMBRA_SOURC
 
 class BundledScene : public testing::TestWithParam<std::string> {};
 
+TEST(MaskComparison, AMaskShiftedByOnePixelFailsWhereTheRightOnePasses) {
+  const Scene scene = parse_scene_file(scene_path("demo.scene"));
+  RenderSettings settings;
+  settings.width = settings.height = 120;
+  const RenderPlan plan = make_render_plan(scene, settings);
+  HeadlessContext context(120, 120);
+  ShadowRenderer renderer(scene, plan);
+  const Image mask = renderer.render_mask(0);
+  const test::MaskComparison right = test::compare_with_reference(scene, plan, mask, 0);
+  EXPECT_EQ(right.unexplained, 0);
+  EXPECT_TRUE(test::within_boundary_bound(right));
+  for (const auto& [dx, dy] : {std::pair{1, 0}, {0, 1}, {-1, 0}, {0, -1}}) {
+    Image shifted = mask;
+    for (int y = 0; y < 120; ++y)
+      for (int x = 0; x < 120; ++x) shifted.at(x, y) = mask.at(std::clamp(x - dx, 0, 119), std::clamp(y - dy, 0, 119));
+    const test::MaskComparison wrong = test::compare_with_reference(scene, plan, shifted, 0);
+    // The bound alone catches it (about a third of the boundary pixels are
+    // excused), and so do the pixels a whole pixel from any edge.
+    EXPECT_FALSE(test::within_boundary_bound(wrong))
+        << dx << ", " << dy << ": " << wrong.excused_boundary << " excused of " << wrong.boundary_pixels;
+    EXPECT_GT(wrong.unexplained, 0);
+  }
+}
+
 TEST_P(BundledScene, MaskMatchesExactShadowRays) {
   test::expect_masks_match_reference(parse_scene_file(scene_path(GetParam())), 240, 180, 64);
 }
@@ -334,7 +358,9 @@ TEST(Shading, ALightWithNoColourAddsOnlyItsAmbientTerm) {
       if (reference_mask_value(scene, 64, 64, x, y, 0) != kMaskNoSurface) {
         ASSERT_EQ(image.at(x, y, 0), 38) << x << ", " << y;  // round(0.15 * 255)
       }
-  EXPECT_EQ(test::compare_with_reference(scene, plan, renderer.render_mask(0), 0).unexplained, 0);
+  const test::MaskComparison r = test::compare_with_reference(scene, plan, renderer.render_mask(0), 0);
+  EXPECT_EQ(r.unexplained, 0);
+  EXPECT_TRUE(test::within_boundary_bound(r)) << r.excused_boundary << " excused of " << r.boundary_pixels;
 }
 
 TEST(ShowVolumes, DrawsTheVolumesOverTheImage) {
