@@ -11,6 +11,8 @@
 #include "mesh/scene_parser.hpp"
 #include "render/headless_context.hpp"
 #include "render/mask_error.hpp"
+#include "render/camera_transform.hpp"
+#include "render/ray_cast.hpp"
 #include "render/ray_cast_render.hpp"
 #include "render/shadow_renderer.hpp"
 
@@ -317,25 +319,49 @@ TEST(Shading, TheRayCastImageHasTheSamePhongValues) {
   EXPECT_EQ(frame.image.at(0, 0, 2), 0);
 }
 
-// The GL image and the ray-cast one differ only where a pixel's footprint
-// straddles an edge (or by rounding of one step in 255).
-TEST(Shading, TheGLImageMatchesTheRayCastImage) {
-  const Scene scene = parse_scene_file(scene_path("demo.scene"));
-  RenderSettings settings;
-  settings.width = settings.height = 120;
-  settings.sphere_segments = 256;
-  const RenderPlan plan = make_render_plan(scene, settings);
-  HeadlessContext context(settings.width, settings.height);
-  ShadowRenderer renderer(scene, plan);
-  const Image gl = renderer.render_image(false);
-  const RayCastFrame cpu = ray_cast_frame(scene, 120, 120);
-  int close = 0, far = 0;
-  for (size_t i = 0; i < gl.pixels.size(); ++i) {
-    const int d = std::abs(int(gl.pixels[i]) - int(cpu.image.pixels[i]));
-    close += d <= 1;
-    far += d > 1;
+// The GL image and the ray-cast one, every bundled scene: a channel differs
+// by more than one level in 255 (more than rounding) only at a pixel where
+// some light's shadow mask differs, which the mask tests explain, or whose
+// footprint straddles an edge between surfaces (a corner of it sees another
+// object, or none), where the two sample the pixel differently. Measured,
+// every such difference is one of those; nothing else differs.
+TEST(Shading, TheGLImageMatchesTheRayCastImageWhereMasksAgreeAwayFromEdges) {
+  int compared = 0, explained = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(UMBRA_SOURCE_DIR) + "/scenes")) {
+    if (entry.path().extension() != ".scene") continue;
+    const Scene scene = parse_scene_file(entry.path().string());
+    RenderSettings settings;
+    settings.width = settings.height = 120;
+    settings.sphere_segments = 256;
+    const RenderPlan plan = make_render_plan(scene, settings);
+    HeadlessContext context(settings.width, settings.height);
+    ShadowRenderer renderer(scene, plan);
+    const Image gl = renderer.render_image(false);
+    std::vector<Image> masks;
+    for (size_t light = 0; light < scene.lights.size(); ++light) masks.push_back(renderer.render_mask(light));
+    const RayCastFrame cpu = ray_cast_frame(scene, 120, 120);
+    const auto object_at = [&](double x, double y) {
+      const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, 120, 120, x, y));
+      return hit ? hit->object : -1;
+    };
+    for (int y = 0; y < 120; ++y)
+      for (int x = 0; x < 120; ++x) {
+        ++compared;
+        int d = 0;
+        for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(int(gl.at(x, y, c)) - int(cpu.image.at(x, y, c))));
+        if (d <= 1) continue;
+        bool mask_differs = false;
+        for (size_t light = 0; light < masks.size(); ++light) mask_differs = mask_differs || masks[light].at(x, y) != cpu.masks[light].at(x, y);
+        const int object = object_at(x, y);
+        bool straddles = false;
+        for (const double dx : {-0.5, 0.5})
+          for (const double dy : {-0.5, 0.5}) straddles = straddles || object_at(x + dx, y + dy) != object;
+        EXPECT_TRUE(mask_differs || straddles) << entry.path().filename() << " pixel (" << x << ", " << y << ") differs by " << d;
+        ++explained;
+      }
   }
-  EXPECT_LT(far, int(gl.pixels.size() / 30)) << close << " within 1";
+  EXPECT_EQ(compared, 10 * 120 * 120);
+  EXPECT_LT(explained, compared / 200);  // about 30 pixels in all, measured
 }
 
 TEST(Shading, ALightWithNoColourAddsOnlyItsAmbientTerm) {
