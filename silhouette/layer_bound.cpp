@@ -148,10 +148,14 @@ constexpr size_t kSplitAbove = 64;
 constexpr int kSplitDepth = 4;
 
 // The most footprints `members` (indices into `all`) over any subcell of the
-// square [x, x + w]^2, splitting it while that helps.
+// square [x, x + w]^2, splitting it while that helps; as soon as a subcell
+// holds more than `limit` however far it is split, that count. Each
+// footprint tested against a subcell spends one of `budget`; with none left,
+// a cell is not split (its count is still a bound, only a looser one).
 size_t refined_count(const std::vector<Footprint>& all, const std::vector<uint32_t>& members, double x, double y, double w,
-                     double margin, int depth) {
-  if (depth == kSplitDepth) return members.size();
+                     double margin, int depth, size_t limit, long& budget) {
+  if (depth == kSplitDepth || budget <= 0) return members.size();
+  budget -= long(members.size());
   std::vector<uint32_t> sub[16];
   const double s = w / 4.0;
   for (const uint32_t m : members)
@@ -161,8 +165,9 @@ size_t refined_count(const std::vector<Footprint>& all, const std::vector<uint32
   for (int k = 0; k < 16; ++k) {
     size_t count = sub[k].size();
     if (count > kSplitAbove && count < members.size())
-      count = refined_count(all, sub[k], x + (k % 4) * s, y + (k / 4) * s, s, margin, depth + 1);
+      count = refined_count(all, sub[k], x + (k % 4) * s, y + (k / 4) * s, s, margin, depth + 1, limit, budget);
     most = std::max(most, count);
+    if (most > limit) break;
   }
   return most;
 }
@@ -223,10 +228,16 @@ int layer_bound(const std::vector<glm::dvec3>& positions, const std::vector<std:
         }
       if (kept) hot_footprints.push_back(footprint_of(t, p));
     }
-    for (size_t k = 0; k < count.size(); ++k) {
-      if (hot_index[k] < 0) continue;
+    // The fullest cells first: a stack deeper than the limit shows at once.
+    std::vector<size_t> hot_cells;
+    for (size_t k = 0; k < count.size(); ++k)
+      if (hot_index[k] >= 0) hot_cells.push_back(k);
+    std::sort(hot_cells.begin(), hot_cells.end(), [&](size_t a, size_t b) { return count[a] > count[b]; });
+    long budget = 64 * long(triangles.size());
+    for (const size_t k : hot_cells) {
       const double x = -p.range + double(k % size_t(n)) * w, y = -p.range + double(k / size_t(n)) * w;
-      most = std::max(most, int(refined_count(hot_footprints, hot_members[size_t(hot_index[k])], x, y, w, margin, 0)));
+      most = std::max(most, int(refined_count(hot_footprints, hot_members[size_t(hot_index[k])], x, y, w, margin, 0,
+                                              size_t(limit), budget)));
       if (most > limit) return limit + 1;
     }
   }

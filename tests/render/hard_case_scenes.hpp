@@ -9,23 +9,30 @@
 
 #include <unistd.h>
 
+#include <glm/vec3.hpp>
+
 namespace umbra::test {
 
 // The spec's floor: the square z = -1 of the cube [-1, 1]^3, two triangles.
 inline std::string floor_text() { return "triangle -1 -1 -1  1 -1 -1  1 1 -1\ntriangle -1 -1 -1  1 1 -1  -1 1 -1\n"; }
 
-// The box [lo, hi]^2 x [z0, z1] as OBJ, faces counter-clockwise seen from
-// outside; its vertex numbers start after `first` earlier vertices.
-inline std::string box_obj(double lo, double hi, double z0, double z1, int first = 0) {
+// The box [lo, hi] as OBJ, faces counter-clockwise seen from outside; its
+// vertex numbers start after `first` earlier vertices.
+inline std::string box_obj(const glm::dvec3& lo, const glm::dvec3& hi, int first = 0) {
   std::ostringstream obj;
   obj.precision(17);
-  for (const double z : {z0, z1})
-    obj << "v " << lo << " " << lo << " " << z << "\nv " << hi << " " << lo << " " << z << "\nv " << hi << " " << hi
-        << " " << z << "\nv " << lo << " " << hi << " " << z << "\n";
+  for (const double z : {lo.z, hi.z})
+    obj << "v " << lo.x << " " << lo.y << " " << z << "\nv " << hi.x << " " << lo.y << " " << z << "\nv " << hi.x << " " << hi.y
+        << " " << z << "\nv " << lo.x << " " << hi.y << " " << z << "\n";
   static const int faces[12][3] = {{1, 4, 3}, {1, 3, 2}, {5, 6, 7}, {5, 7, 8}, {1, 2, 6}, {1, 6, 5},
                                    {2, 3, 7}, {2, 7, 6}, {3, 4, 8}, {3, 8, 7}, {4, 1, 5}, {4, 5, 8}};
   for (const auto& f : faces) obj << "f " << f[0] + first << " " << f[1] + first << " " << f[2] + first << "\n";
   return obj.str();
+}
+
+// The box [lo, hi]^2 x [z0, z1].
+inline std::string box_obj(double lo, double hi, double z0, double z1, int first = 0) {
+  return box_obj(glm::dvec3(lo, lo, z0), glm::dvec3(hi, hi, z1), first);
 }
 
 // The same box with its top made of four triangles round a centre vertex

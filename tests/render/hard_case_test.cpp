@@ -284,16 +284,22 @@ TEST(HardView, NearPlaneCutsThroughAVolume) {
   expect_hard_case_holds(scene);
 }
 
-// `count` small level triangles strung along the ray from the light to the
-// floor point F = (-0.5, 0, -1), away from the camera's line of sight to F:
-// the floor round F is inside all `count` volumes.
-Scene triangles_along_a_light_ray(int count) {
+// The k-th of `count` points strung along the ray from the light (1.5, 0, 1)
+// to the floor point F = (-0.5, 0, -1), away from the camera's line of sight
+// to F, between 0.3 and 0.6 of the way.
+glm::dvec3 on_the_light_ray(int k, int count) {
   const glm::dvec3 light(1.5, 0.0, 1.0), f(-0.5, 0.0, -1.0);
+  return light + (0.3 + 0.3 * k / count) * (f - light);
+}
+
+// `count` small level triangles strung along that ray: the floor round F is
+// inside all `count` volumes.
+Scene triangles_along_a_light_ray(int count) {
   std::ostringstream text;
   text.precision(17);
-  text << "light " << light.x << " " << light.y << " " << light.z << "\n" << floor_text();
+  text << "light 1.5 0 1\n" << floor_text();
   for (int k = 0; k < count; ++k) {
-    const glm::dvec3 c = light + (0.3 + 0.3 * k / count) * (f - light);
+    const glm::dvec3 c = on_the_light_ray(k, count);
     text << "triangle " << c.x - 0.06 << " " << c.y - 0.05 << " " << c.z << "  " << c.x + 0.06 << " " << c.y - 0.05
          << " " << c.z << "  " << c.x << " " << c.y + 0.07 << " " << c.z << "\n";
   }
@@ -331,11 +337,10 @@ TEST(HardStencil, BatchesWithAMeshAmongThem) {
 // triangles_along_a_light_ray: the floor round F, which the camera sees, lies
 // behind every one.
 std::string squares_along_a_light_ray(int count) {
-  const glm::dvec3 light(1.5, 0.0, 1.0), f(-0.5, 0.0, -1.0);
   std::ostringstream obj;
   obj.precision(17);
   for (int k = 0; k < count; ++k) {
-    const glm::dvec3 c = light + (0.3 + 0.3 * k / count) * (f - light);
+    const glm::dvec3 c = on_the_light_ray(k, count);
     for (const auto& [dx, dy] : {std::pair{-0.05, -0.05}, {0.05, -0.05}, {0.05, 0.05}, {-0.05, 0.05}})
       obj << "v " << c.x + dx << " " << c.y + dy << " " << c.z << "\n";
     obj << "f " << 4 * k + 1 << " " << 4 * k + 2 << " " << 4 * k + 3 << "\nf " << 4 * k + 1 << " " << 4 * k + 3 << " "
@@ -346,20 +351,12 @@ std::string squares_along_a_light_ray(int count) {
 
 // The same with thin closed boxes: one mesh of `count` closed components.
 std::string boxes_along_a_light_ray(int count) {
-  const glm::dvec3 light(1.5, 0.0, 1.0), f(-0.5, 0.0, -1.0);
-  std::ostringstream obj;
-  obj.precision(17);
+  std::string obj;
   for (int k = 0; k < count; ++k) {
-    const glm::dvec3 c = light + (0.3 + 0.3 * k / count) * (f - light);
-    const double x0 = c.x - 0.05, x1 = c.x + 0.05, y0 = -0.05, y1 = 0.05, z0 = c.z, z1 = c.z + 0.0005;
-    for (const double z : {z0, z1})
-      obj << "v " << x0 << " " << y0 << " " << z << "\nv " << x1 << " " << y0 << " " << z << "\nv " << x1 << " " << y1
-          << " " << z << "\nv " << x0 << " " << y1 << " " << z << "\n";
-    static const int faces[12][3] = {{1, 4, 3}, {1, 3, 2}, {5, 6, 7}, {5, 7, 8}, {1, 2, 6}, {1, 6, 5},
-                                     {2, 3, 7}, {2, 7, 6}, {3, 4, 8}, {3, 8, 7}, {4, 1, 5}, {4, 5, 8}};
-    for (const auto& face : faces) obj << "f " << face[0] + 8 * k << " " << face[1] + 8 * k << " " << face[2] + 8 * k << "\n";
+    const glm::dvec3 c = on_the_light_ray(k, count);
+    obj += box_obj(c - glm::dvec3(0.05, 0.05, 0.0), c + glm::dvec3(0.05, 0.05, 0.0005), 8 * k);
   }
-  return obj.str();
+  return obj;
 }
 
 // The number of the scene's mesh triangles the segment from `point` to the light crosses.
