@@ -36,8 +36,9 @@ options:
                           zfail      capped z-fail for every light (seed 002)
                           zpass      uncapped z-pass for every light; wrong
                                      where the near plane is in a volume
-                          triangles  z-fail, meshes cast per triangle rather
-                                     than from their silhouettes
+                          triangles  z-fail, every mesh cast per triangle
+                                     (the slow reference) rather than from
+                                     its silhouette or by edge multiplicity
                           shadowmap  a cube shadow map per light (seed 004),
                                      --map-size texels a side; no volumes
                           planar     every caster projected onto the planes
