@@ -40,33 +40,60 @@ CasterEntry triangle_entry(const Triangle& t, const Light& light) {
 }
 
 // A mesh's entry. Its volume goes to light_plan.mesh_volumes[slot], whose
-// index buffer is kept from the previous frame when there is one; with
-// --method triangles, or when more than a stencil count's 255 of its layers
-// may lie over a point, every triangle's own volume instead (each adds at
-// most 1, so they can be counted in batches). `bound` caches the mesh's
-// layer bound for the light position it was found for.
+// index buffer is kept from the previous frame when there is one; when more
+// than a stencil count's 255 of its layers may lie over a point, one
+// edge-multiplicity volume per run of its faces whose layers fit (each then
+// counted on its own); with --method triangles, every triangle's own volume.
+// `cached` holds what depends on the light's position alone.
 CasterEntry mesh_entry(const Scene& scene, size_t index, const MeshCaster& caster, const Light& light, LightPlan& light_plan,
-                       size_t& slot, MeshCasterScratch& scratch, bool per_triangle_asked, std::pair<glm::dvec3, int>& bound) {
+                       size_t& slot, MeshCasterScratch& scratch, bool per_triangle_asked, RenderPlan::LayerBounds& cached) {
   const Mesh& mesh = scene.meshes[index];
   CasterEntry e{"mesh", mesh.where, "", {}};
   const std::string triangles = std::to_string(mesh.triangles.size()) + " triangles";
-  if (!per_triangle_asked && bound.first != light.position) {
-    bound = {light.position, mesh.triangles.empty() ? 0 : layer_bound(mesh.positions, mesh.triangles, light.position, kMaxStencilCount)};
-  }
-  if (per_triangle_asked || bound.second > kMaxStencilCount) {
+  if (per_triangle_asked) {
     e.volume = per_triangle_volume(mesh.positions, mesh.triangles, light.position);
-    e.method = per_triangle_asked ? "per-triangle volumes, the slow reference (--method triangles; " + triangles + ")"
-                                  : caster.phrase() + ", but more than " + std::to_string(kMaxStencilCount) +
-                                        " of its layers may lie over a point: per-triangle volumes (" + triangles + ")";
+    e.method = "per-triangle volumes, the slow reference (--method triangles; " + triangles + ")";
     return e;
   }
-  if (slot == light_plan.mesh_volumes.size()) light_plan.mesh_volumes.emplace_back();
-  MeshVolumePlan& volume = light_plan.mesh_volumes[slot];
-  volume.mesh = index;
-  volume.max_count = bound.second;
-  mesh_caster_volume_indices(caster, light.position, scratch, volume.volume, !light_plan.z_pass);
-  e.method = caster.phrase() + " (" + triangles + ")";
-  e.mesh_volume = int(slot++);
+  if (cached.light != light.position) {
+    cached = {light.position, 0, {}, {}};
+    if (!mesh.triangles.empty()) cached.bound = layer_bound(mesh.positions, mesh.triangles, light.position, kMaxStencilCount);
+    if (cached.bound > kMaxStencilCount) {
+      cached.runs = layer_bounded_runs(mesh.positions, mesh.triangles, light.position, kMaxStencilCount);
+      for (const FaceRun& run : cached.runs) {
+        std::vector<uint8_t> in_run(mesh.triangles.size(), 0);
+        std::fill(in_run.begin() + run.first, in_run.begin() + run.end, uint8_t(1));
+        cached.run_volumes.push_back(build_multiplicity_adjacency(mesh.positions, mesh.triangles, mesh.edges, in_run));
+      }
+    }
+  }
+  const auto next_volume = [&]() -> MeshVolumePlan& {
+    if (slot == light_plan.mesh_volumes.size()) light_plan.mesh_volumes.emplace_back();
+    MeshVolumePlan& volume = light_plan.mesh_volumes[slot++];
+    volume.mesh = index;
+    return volume;
+  };
+  e.mesh_volume = int(slot);
+  if (cached.runs.empty()) {
+    MeshVolumePlan& volume = next_volume();
+    volume.max_count = cached.bound;
+    mesh_caster_volume_indices(caster, light.position, scratch, volume.volume, !light_plan.z_pass);
+    e.method = caster.phrase() + " (" + triangles + ")";
+  } else {
+    const uint32_t far = uint32_t(mesh.positions.size());
+    for (size_t k = 0; k < cached.runs.size(); ++k) {
+      MeshVolumePlan& volume = next_volume();
+      volume.max_count = cached.runs[k].bound;
+      volume.volume.clear();
+      classify_light_sides(mesh.positions, cached.run_volumes[k], light.position, scratch.side);
+      if (!light_plan.z_pass) append_multiplicity_caps(cached.run_volumes[k], scratch.side, far, volume.volume);
+      append_multiplicity_quads(cached.run_volumes[k], scratch.side, far, volume.volume);
+    }
+    e.method = caster.shape + ", but more than " + std::to_string(kMaxStencilCount) + " of its layers may lie over a point: " +
+               std::to_string(cached.runs.size()) + " runs of its faces, each an edge-multiplicity volume counted on its own (" +
+               triangles + ")";
+  }
+  e.mesh_volume_count = int(slot) - e.mesh_volume;
   return e;
 }
 
@@ -85,10 +112,12 @@ void batch_volumes(LightPlan& lp) {
   };
   for (const CasterEntry& e : lp.casters) {
     if (e.mesh_volume >= 0) {
-      const int count = lp.mesh_volumes[size_t(e.mesh_volume)].max_count;
-      room_for(count);
-      lp.stencil_batches.back().mesh_volumes.push_back(uint32_t(e.mesh_volume));
-      lp.stencil_batches.back().max_count += count;
+      for (int v = e.mesh_volume; v < e.mesh_volume + e.mesh_volume_count; ++v) {
+        const int count = lp.mesh_volumes[size_t(v)].max_count;
+        room_for(count);
+        lp.stencil_batches.back().mesh_volumes.push_back(uint32_t(v));
+        lp.stencil_batches.back().max_count += count;
+      }
       continue;
     }
     ShadowVolume& all = lp.all_volumes;
@@ -285,7 +314,7 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
       lp.casters.push_back(culling.triangles[k] ? culled_entry("triangle", t.where) : triangle_entry(t, light));
     }
     plan.layer_bounds.resize(scene.lights.size());
-    plan.layer_bounds[i].resize(scene.meshes.size(), {glm::dvec3(std::nan("")), 0});
+    plan.layer_bounds[i].resize(scene.meshes.size());
     for (size_t m = 0; m < scene.meshes.size(); ++m)
       lp.casters.push_back(culling.meshes[m] ? culled_entry("mesh", scene.meshes[m].where)
                                              : mesh_entry(scene, m, meshes[m], light, lp, slot, scratch, per_triangle,
@@ -332,7 +361,7 @@ void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& 
       out << "    counted in " << lp.stencil_batches.size() << " stencil batches, so that no count reaches 256 (a sphere or "
           << "triangle adds at most 1 layer over a point";
       for (const MeshVolumePlan& m : lp.mesh_volumes)
-        out << ", the mesh at line " << scene.meshes[m.mesh].where.line << " at most " << m.max_count;
+        out << ", a volume of the mesh at line " << scene.meshes[m.mesh].where.line << " at most " << m.max_count;
       out << "):";
       for (const StencilBatch& b : lp.stencil_batches) out << " " << b.max_count;
       out << " layers\n";
@@ -340,9 +369,13 @@ void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& 
     for (const CasterEntry& e : lp.casters) {
       out << "    " << e.kind << " (line " << e.where.line << "): " << e.method;
       if (e.mesh_volume >= 0) {
-        const MeshVolumeIndices& v = lp.mesh_volumes[size_t(e.mesh_volume)].volume;
-        out << ", " << v.side_quads << " quads";
-        if (!lp.z_pass) out << " + " << v.light_cap_triangles + v.dark_cap_triangles << " cap triangles";
+        int quads = 0, caps = 0;
+        for (int k = e.mesh_volume; k < e.mesh_volume + e.mesh_volume_count; ++k) {
+          const MeshVolumeIndices& v = lp.mesh_volumes[size_t(k)].volume;
+          quads += v.side_quads, caps += v.light_cap_triangles + v.dark_cap_triangles;
+        }
+        out << ", " << quads << " quads";
+        if (!lp.z_pass) out << " + " << caps << " cap triangles";
         out << " (static vertices, indices per frame)";
       } else if (!e.volume.triangles.empty()) {
         out << ", " << e.volume.side_quads << " quads";

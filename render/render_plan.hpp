@@ -9,6 +9,9 @@
 
 #include "mesh/scene.hpp"
 #include "render/render_method.hpp"
+#include <cmath>
+
+#include "silhouette/layer_bound.hpp"
 #include "silhouette/mesh_caster.hpp"
 #include "silhouette/mesh_volume.hpp"
 #include "silhouette/shadow_volume.hpp"
@@ -28,7 +31,11 @@ struct CasterEntry {
   FileLoc where;
   std::string method;  // how its volume was made, or why it has none
   ShadowVolume volume;  // empty when it casts no shadow from this light, or when it is a mesh_volume
-  int mesh_volume = -1;  // for a mesh (but with --method triangles): index into LightPlan::mesh_volumes
+  // For a mesh (but with --method triangles): its volumes are
+  // LightPlan::mesh_volumes[mesh_volume, mesh_volume + mesh_volume_count),
+  // one, or one per run of faces when more than 255 layers may lie over a point.
+  int mesh_volume = -1;
+  int mesh_volume_count = 0;
 };
 
 // A mesh's volume as indices over its static vertex buffer.
@@ -84,9 +91,15 @@ struct RenderPlan {
   std::vector<uint8_t> light_adds_direct;  // per light
   std::vector<LightPlan> lights;  // one per scene light, same order
   MeshCasterScratch mesh_scratch;  // the face classification, kept so that a frame need not allocate it
-  // Per light and mesh, the light position its layer bound was found for and
-  // the bound: a frame whose light has not moved reuses it.
-  std::vector<std::vector<std::pair<glm::dvec3, int>>> layer_bounds;
+  // Per light and mesh, what depends on the light's position alone: a frame
+  // whose light has not moved reuses it.
+  struct LayerBounds {
+    glm::dvec3 light{std::nan("")};
+    int bound = 0;                                   // layer_bound of the whole mesh
+    std::vector<FaceRun> runs;                       // when that exceeds 255: runs whose bounds fit
+    std::vector<MultiplicityAdjacency> run_volumes;  // and each run's faces
+  };
+  std::vector<std::vector<LayerBounds>> layer_bounds;
 };
 
 // Requires the lights outside every sphere (require_lights_off_casters).

@@ -244,4 +244,25 @@ int layer_bound(const std::vector<glm::dvec3>& positions, const std::vector<std:
   return std::min(most, limit + 1);
 }
 
+std::vector<FaceRun> layer_bounded_runs(const std::vector<glm::dvec3>& positions,
+                                        const std::vector<std::array<uint32_t, 3>>& triangles, const glm::dvec3& light,
+                                        int limit) {
+  std::vector<FaceRun> runs;
+  std::vector<std::pair<uint32_t, uint32_t>> pending{{0, uint32_t(triangles.size())}};
+  while (!pending.empty()) {
+    const auto [first, end] = pending.back();
+    pending.pop_back();
+    const std::vector<std::array<uint32_t, 3>> run(triangles.begin() + first, triangles.begin() + end);
+    const int bound = run.empty() ? 0 : layer_bound(positions, run, light, limit);
+    if (bound <= limit) {
+      runs.push_back({first, end, bound});
+      continue;
+    }
+    const uint32_t middle = first + (end - first) / 2;
+    pending.push_back({middle, end});  // popped after the first half: runs come out in order
+    pending.push_back({first, middle});
+  }
+  return runs;
+}
+
 }  // namespace umbra

@@ -29,4 +29,16 @@ namespace umbra {
 int layer_bound(const std::vector<glm::dvec3>& positions, const std::vector<std::array<uint32_t, 3>>& triangles,
                 const glm::dvec3& light, int limit);
 
+// Runs of a mesh's faces in file order, [first, end), whose layer bounds are
+// each at most `limit`: the whole mesh when it fits, else each half, and so
+// on (a run of `limit` faces or fewer always fits). A mesh of many stacked
+// layers is then cast as several volumes, each its own stencil batch.
+struct FaceRun {
+  uint32_t first = 0, end = 0;
+  int bound = 0;
+};
+std::vector<FaceRun> layer_bounded_runs(const std::vector<glm::dvec3>& positions,
+                                        const std::vector<std::array<uint32_t, 3>>& triangles, const glm::dvec3& light,
+                                        int limit);
+
 }  // namespace umbra

@@ -42,17 +42,20 @@ MultiplicityAdjacency build_multiplicity_adjacency(const std::vector<glm::dvec3>
     mesh.triangles.push_back(tri);
     mesh.planes.push_back(face_plane(positions[tri[0]], positions[tri[1]], positions[tri[2]]));
   }
-  const auto local_use = [&](uint32_t use) { return local[EdgeTable::face_of(use)] << 1 | (use & 1); };
+  std::vector<uint32_t> kept;  // the uses of one edge by the subset's faces, renumbered
   for (size_t e = 0; e < edges.size(); ++e) {
-    const uint32_t* use = edges.uses.data() + edges.first_use[e];
-    const uint32_t count = edges.use_count(e);
-    if (local[EdgeTable::face_of(use[0])] == kNone) continue;
-    if (count == 2) {
-      mesh.pair_uses.push_back({local_use(use[0]), local_use(use[1])});
+    kept.clear();
+    for (uint32_t k = edges.first_use[e]; k < edges.first_use[e + 1]; ++k) {
+      const uint32_t use = edges.uses[k];
+      if (local[EdgeTable::face_of(use)] != kNone) kept.push_back(local[EdgeTable::face_of(use)] << 1 | (use & 1));
+    }
+    if (kept.empty()) continue;
+    if (kept.size() == 2) {
+      mesh.pair_uses.push_back({kept[0], kept[1]});
       mesh.pair_vertices.push_back(edges.vertices[e]);
       continue;
     }
-    for (uint32_t k = 0; k < count; ++k) mesh.other_uses.push_back(local_use(use[k]));
+    mesh.other_uses.insert(mesh.other_uses.end(), kept.begin(), kept.end());
     mesh.other_first_use.push_back(uint32_t(mesh.other_uses.size()));
     mesh.other_vertices.push_back(edges.vertices[e]);
   }

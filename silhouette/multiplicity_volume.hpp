@@ -52,9 +52,9 @@ struct MultiplicityAdjacency {
   bool empty() const { return triangles.empty(); }
 };
 
-// The faces t with in_subset[t] = 1 of a mesh whose edge table is `edges`.
-// Every edge must have all of its faces in the subset or none (as the faces
-// of whole components do).
+// The faces t with in_subset[t] = 1 of a mesh whose edge table is `edges`:
+// any subset, whose volume counts only its own faces (an edge counts the
+// uses of the subset's faces alone).
 MultiplicityAdjacency build_multiplicity_adjacency(const std::vector<glm::dvec3>& positions,
                                                    const std::vector<std::array<uint32_t, 3>>& triangles,
                                                    const EdgeTable& edges, const std::vector<uint8_t>& in_subset);

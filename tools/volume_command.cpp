@@ -121,14 +121,16 @@ int run_volume_command(const std::vector<std::string>& argv) {
     size_t written = 0, groups = 0;
     for (const CasterEntry& e : lp.casters) {
       ShadowVolume volume = e.volume;
-      if (e.mesh_volume >= 0) {
+      for (int k = e.mesh_volume; k >= 0 && k < e.mesh_volume + e.mesh_volume_count; ++k) {
         // A mesh volume: indices over the mesh's points, then the same points at infinity.
-        const MeshVolumePlan& m = lp.mesh_volumes[size_t(e.mesh_volume)];
+        const MeshVolumePlan& m = lp.mesh_volumes[size_t(k)];
         const std::vector<glm::dvec3>& positions = scene.meshes[m.mesh].positions;
+        const uint32_t base = uint32_t(volume.vertices.size());
         for (const glm::dvec3& p : positions) volume.vertices.emplace_back(p, 1.0);
         for (const glm::dvec3& p : positions) volume.vertices.emplace_back(p - light, 0.0);
         const uint32_t* indices = m.volume.buffer.data();
-        for (size_t i = 0; i < m.volume.count; i += 3) volume.triangles.push_back({indices[i], indices[i + 1], indices[i + 2]});
+        for (size_t i = 0; i < m.volume.count; i += 3)
+          volume.triangles.push_back({base + indices[i], base + indices[i + 1], base + indices[i + 2]});
       }
       if (volume.triangles.empty()) continue;
       write_group(out, e.kind + "_line_" + std::to_string(e.where.line), finite_vertices(volume, light, options.far),

@@ -383,6 +383,15 @@ TEST(HardStencil, OneOpenMeshOf256And300LayersOverVisiblePixels) {
         "squares.scene");
     ASSERT_FALSE(scene.meshes[0].components.all_closed());
     ASSERT_GE(mesh_layers_over(scene, {-0.5, 0.0, -1.0}), count);
+    // Never per-triangle volumes: runs of its faces, each an edge-multiplicity
+    // volume whose layers fit a count, each counted on its own.
+    const RenderPlan plan = plan_for(scene);
+    const CasterEntry& mesh = plan.lights[0].casters.back();
+    ASSERT_EQ(mesh.kind, "mesh");
+    EXPECT_GE(mesh.mesh_volume_count, 2);
+    EXPECT_TRUE(mesh.volume.triangles.empty());
+    EXPECT_NE(mesh.method.find("runs of its faces, each an edge-multiplicity volume"), std::string::npos) << mesh.method;
+    for (const StencilBatch& b : plan.lights[0].stencil_batches) EXPECT_LE(b.max_count, 255);
     test::expect_masks_match_reference(scene, 100, 100, 64);
   }
 }
