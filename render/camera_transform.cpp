@@ -28,14 +28,7 @@ double near_plane(const Camera& camera, const SceneBounds& surfaces) {
 glm::dmat4 view_matrix(const Camera& camera) { return glm::lookAt(camera.eye, camera.target, camera.up); }
 
 glm::dmat4 infinite_perspective(double fovy_deg, double aspect, double near) {
-  const double f = 1.0 / std::tan(glm::radians(fovy_deg) / 2.0);
-  glm::dmat4 p(0.0);
-  p[0][0] = f / aspect;
-  p[1][1] = f;
-  p[2][2] = -(1.0 - kInfiniteFarEpsilon);
-  p[2][3] = -1.0;
-  p[3][2] = -(2.0 - kInfiniteFarEpsilon) * near;
-  return p;
+  return glm::tweakedInfinitePerspective(glm::radians(fovy_deg), aspect, near, kInfiniteFarEpsilon);
 }
 
 glm::dvec3 pixel_ray_direction(const Camera& camera, int width, int height, double px, double py) {

@@ -26,8 +26,9 @@ constexpr double kInfiniteFarEpsilon = 1.0 / (1 << 22);
 
 glm::dmat4 view_matrix(const Camera& camera);
 
-// Perspective projection whose far plane is at infinity (seed 002, eq. 2 with
-// A = -(1 - eps), B = -(2 - eps) near).
+// Perspective projection whose far plane is at infinity, with depth scaled by
+// (1 - eps) (Everitt and Kilgard 2002): GLM's tweakedInfinitePerspective,
+// whose third row gives A = -(1 - eps), B = -(2 - eps) near.
 glm::dmat4 infinite_perspective(double fovy_deg, double aspect, double near);
 
 // The world-space ray through the centre of pixel (px, py) of a width x height

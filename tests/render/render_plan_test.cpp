@@ -2,10 +2,14 @@
 // plan made afresh, without reallocating the mesh volumes' index buffers.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
+
+#include <glm/trigonometric.hpp>
 
 #include "mesh/scene_parser.hpp"
 #include "render/planar_receivers.hpp"
+#include "render/camera_transform.hpp"
 #include "render/render_plan.hpp"
 
 namespace umbra {
@@ -130,6 +134,30 @@ TEST(RenderPlan, SaysWhichShadingTermsTheSceneUses) {
   EXPECT_NE(explain.str().find("no colour: ambient only, so a frame draws neither its shadows nor its direct light"),
             std::string::npos)
       << explain.str();
+}
+
+}  // namespace
+}  // namespace umbra
+
+namespace umbra {
+namespace {
+
+TEST(Projection, PointsAtInfinityLandJustInsideTheFarPlane) {
+  // Everitt and Kilgard: A = -(1 - eps), B = -(2 - eps) near, so a point at
+  // infinity straight ahead has depth 1 - eps, not 1 (which rounding could clip).
+  const glm::dmat4 p = infinite_perspective(45.0, 1.5, 0.05);
+  EXPECT_DOUBLE_EQ(p[2][2], -(1.0 - kInfiniteFarEpsilon));
+  EXPECT_DOUBLE_EQ(p[3][2], -(2.0 - kInfiniteFarEpsilon) * 0.05);
+  EXPECT_EQ(p[2][3], -1.0);
+  EXPECT_DOUBLE_EQ(p[1][1], 1.0 / std::tan(glm::radians(22.5)));
+  EXPECT_DOUBLE_EQ(p[0][0], p[1][1] / 1.5);
+  for (const glm::dvec4& at_infinity : {glm::dvec4(0, 0, -1, 0), glm::dvec4(0.3, -0.2, -1, 0)}) {
+    const glm::dvec4 clip = p * at_infinity;
+    EXPECT_DOUBLE_EQ(clip.z / clip.w, 1.0 - kInfiniteFarEpsilon);
+  }
+  // The near plane maps to depth -1.
+  const glm::dvec4 near = p * glm::dvec4(0, 0, -0.05, 1);
+  EXPECT_NEAR(near.z / near.w, -1.0, 1e-12);
 }
 
 }  // namespace
