@@ -9,7 +9,6 @@
 #include <cmath>
 #include <numeric>
 
-#include "mesh/half_edge_mesh.hpp"
 #include "mesh/mesh_check.hpp"
 #include "mesh/scene_parser.hpp"
 #include "render/headless_context.hpp"
@@ -46,7 +45,7 @@ const MeshAdjacency& torus_adjacency(int n, int m) {
     std::vector<glm::dvec3> positions;
     std::vector<std::array<uint32_t, 3>> triangles;
     torus(n, m, positions, triangles);
-    it = cache.emplace(std::make_pair(n, m), build_mesh_adjacency(build_half_edge_mesh(positions, triangles))).first;
+    it = cache.emplace(std::make_pair(n, m), build_mesh_adjacency(positions, triangles)).first;
   }
   return it->second;
 }

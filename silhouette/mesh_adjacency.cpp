@@ -1,12 +1,16 @@
 #include "silhouette/mesh_adjacency.hpp"
 
+#include "mesh/half_edge_mesh.hpp"
+
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
 
 namespace umbra {
 
-MeshAdjacency build_mesh_adjacency(const HalfEdgeMesh& mesh) {
+MeshAdjacency build_mesh_adjacency(const std::vector<glm::dvec3>& positions,
+                                   const std::vector<std::array<uint32_t, 3>>& triangles) {
+  const HalfEdgeMesh mesh = build_half_edge_mesh(positions, triangles);
   MeshAdjacency adjacency;
   adjacency.positions.reserve(mesh.n_vertices());
   for (const auto v : mesh.vertices()) {

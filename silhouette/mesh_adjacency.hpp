@@ -1,7 +1,8 @@
 #pragma once
 // What a silhouette pass reads, as flat arrays built once per mesh from its
-// OpenMesh half-edge structure: per light and frame only classify_faces and
-// the extraction run, streaming over these arrays.
+// OpenMesh half-edge structure (which no interface above this one sees): per
+// light and frame only classify_faces and the extraction run, streaming over
+// these arrays.
 
 #include <array>
 #include <cstdint>
@@ -9,7 +10,6 @@
 
 #include <glm/vec3.hpp>
 
-#include "mesh/half_edge_mesh.hpp"
 #include "silhouette/face_plane.hpp"
 
 namespace umbra {
@@ -27,7 +27,11 @@ struct MeshAdjacency {
   std::vector<std::array<uint32_t, 2>> edge_vertices;
 };
 
-// Requires a closed triangle mesh (every halfedge has a face).
-MeshAdjacency build_mesh_adjacency(const HalfEdgeMesh& mesh);
+// The arrays of a closed, consistently oriented 2-manifold triangle mesh,
+// walked from its OpenMesh half-edge structure (build_half_edge_mesh), which
+// stays inside this function. Throws std::invalid_argument when OpenMesh
+// refuses a triangle or a halfedge has no face.
+MeshAdjacency build_mesh_adjacency(const std::vector<glm::dvec3>& positions,
+                                   const std::vector<std::array<uint32_t, 3>>& triangles);
 
 }  // namespace umbra

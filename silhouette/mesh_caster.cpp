@@ -2,7 +2,6 @@
 
 #include <stdexcept>
 
-#include "mesh/half_edge_mesh.hpp"
 #include "silhouette/classify_faces.hpp"
 #include "silhouette/mesh_volume.hpp"
 
@@ -22,7 +21,7 @@ MeshCaster prepare_mesh_caster(const std::vector<glm::dvec3>& positions,
   caster.volume_kind = components.volume_phrase();
   if (!closed_triangles.empty()) {
     try {
-      caster.closed = build_mesh_adjacency(build_half_edge_mesh(positions, closed_triangles));
+      caster.closed = build_mesh_adjacency(positions, closed_triangles);
     } catch (const std::invalid_argument&) {
       // The edge table proved these components closed 2-manifolds, which
       // OpenMesh takes; should it refuse one, multiplicity is exact too.

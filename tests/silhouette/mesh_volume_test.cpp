@@ -9,7 +9,6 @@
 #include <random>
 #include <set>
 
-#include "mesh/half_edge_mesh.hpp"
 #include "mesh/mesh_file.hpp"
 #include "mesh/mesh_check.hpp"
 #include "mesh/orientation.hpp"
@@ -25,7 +24,7 @@ using namespace umbra::test;
 
 MeshAdjacency adjacency_of(const PolygonSoup& soup) {
   const MeshAnalysis a = analyse_mesh(soup);
-  return build_mesh_adjacency(build_half_edge_mesh(a.positions, a.triangles));
+  return build_mesh_adjacency(a.positions, a.triangles);
 }
 
 bool less_point(const glm::dvec3& a, const glm::dvec3& b) {
@@ -188,7 +187,7 @@ TEST(MeshVolume, EveryBundledClosedMeshGivesVolumesWithoutBoundaryForManyLights)
     const MeshAnalysis a = analyse_mesh(read_polygon_soup(entry.path().string()));
     if (!a.report.topology_problems().empty()) continue;
     ++meshes;
-    const MeshAdjacency mesh = build_mesh_adjacency(build_half_edge_mesh(a.positions, a.triangles));
+    const MeshAdjacency mesh = build_mesh_adjacency(a.positions, a.triangles);
     for (const glm::dvec3& light : lights_around(100, 6)) {
       const ShadowVolume v = mesh_shadow_volume(mesh, light);
       EXPECT_TRUE(has_no_boundary(v)) << entry.path() << ", light " << light.x << " " << light.y << " " << light.z;
