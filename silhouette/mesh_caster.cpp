@@ -6,6 +6,7 @@
 #include "silhouette/mesh_volume.hpp"
 
 namespace umbra {
+
 MeshCaster prepare_mesh_caster(const std::vector<glm::dvec3>& positions,
                                const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeTable& edges,
                                const ClosedComponents& components) {
