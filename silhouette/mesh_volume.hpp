@@ -37,7 +37,8 @@ void mesh_volume_indices(const MeshAdjacency& mesh, const glm::dvec3& light, std
 // fallback's common path.
 ShadowVolume mesh_shadow_volume(const MeshAdjacency& mesh, const glm::dvec3& light);
 
-// The reference method for any mesh: every triangle's own volume (spec 2.1),
+// The reference method for any mesh: every triangle's own volume (Crow 1977,
+// "Shadow algorithms for computer graphics"),
 // correct for any triangle soup, and slow (`--method triangles`).
 ShadowVolume per_triangle_volume(const std::vector<glm::dvec3>& positions,
                                  const std::vector<std::array<uint32_t, 3>>& triangles, const glm::dvec3& light);

@@ -9,7 +9,7 @@
 // second once oriented, -1 for one that runs back. The edge's side quad is
 // drawn |m| times, wound as the sign says, and not at all where m = 0; every
 // oriented face is a light cap, and its image at infinity a dark cap. That is
-// the sum of the faces' own volumes (spec 2.1) with every quad that two faces
+// the sum of the faces' own volumes (Crow 1977) with every quad that two faces
 // share in opposite directions cancelled, so the stencil count at a point is
 // the number of faces between it and the light, as per-triangle volumes count
 // it (Aldridge and Woods 2004, "Robust, geometry-independent shadow volumes";
