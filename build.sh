@@ -28,6 +28,9 @@ packages=(
   clang libclang-rt-14-dev           # ./build.sh fuzz: libFuzzer
   gnuplot-nox                        # umbra bench --plot
   libembree-dev                      # the ray-cast reference's hierarchy (Embree 3)
+  libtbb-dev                         # the self-intersection search on every core
+  libfast-float-dev                  # fast, exact number parsing in the mesh readers
+  parallel                           # docs/batch-checks.md: sharded checks with GNU parallel (tested)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -4,17 +4,16 @@
 #include <chrono>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
+#include <tbb/enumerable_thread_specific.h>
+
+#include "mesh/box_overlaps.hpp"
 
 namespace umbra {
 namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
-using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, uint32_t>;
-
-struct TimeLimitReached {};
 
 // Do two triangles intersect anywhere but in the vertices they share? The
 // cases follow CGAL's own self-intersection test (PMP::self_intersections):
@@ -67,42 +66,41 @@ SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positio
   std::vector<Point> points;
   points.reserve(positions.size());
   for (const glm::dvec3& p : positions) points.emplace_back(p.x, p.y, p.z);
-  std::vector<Box> boxes;
+  std::vector<FloatBox> boxes;
+  std::vector<uint32_t> triangle_of_box;
   boxes.reserve(triangles.size());
+  triangle_of_box.reserve(triangles.size());
   for (uint32_t t = 0; t < triangles.size(); ++t) {
     const auto& tri = triangles[t];
     // A triangle with collinear corners has no plane: the exact tests are
     // undefined for it (the check reports its face as degenerate instead).
     if (CGAL::collinear(points[tri[0]], points[tri[1]], points[tri[2]])) continue;
-    boxes.emplace_back(points[tri[0]].bbox() + points[tri[1]].bbox() + points[tri[2]].bbox(), t);
+    boxes.push_back(enclosing_box(positions[tri[0]], positions[tri[1]], positions[tri[2]]));
+    triangle_of_box.push_back(t);
   }
 
-  std::vector<std::pair<uint32_t, uint32_t>> face_pairs;
-  size_t calls = 0;
-  // The sweep moves pointers (8 bytes) rather than boxes (56), as PMP does.
-  std::vector<const Box*> box_pointers;
-  box_pointers.reserve(boxes.size());
-  for (const Box& b : boxes) box_pointers.push_back(&b);
-  const auto test = [&](const Box* x, const Box* y) {
-    if ((++calls & 1023) == 0 && Clock::now() > deadline) throw TimeLimitReached{};
-    const uint32_t s = x->info(), t = y->info();
-    uint32_t fs = triangle_face[s], ft = triangle_face[t];
-    if (fs == ft) return;
+  struct WorkerState {
+    std::vector<std::pair<uint32_t, uint32_t>> face_pairs;
+    size_t calls = 0;
+  };
+  tbb::enumerable_thread_specific<WorkerState> workers;
+  const auto test = [&](uint32_t x, uint32_t y) {
+    WorkerState& state = workers.local();
+    if ((++state.calls & 1023) == 0 && Clock::now() > deadline) return false;
+    const uint32_t s = triangle_of_box[x], t = triangle_of_box[y];
+    const uint32_t fs = triangle_face[s], ft = triangle_face[t];
+    if (fs == ft) return true;
     const auto& is = triangles[s];
     const auto& it = triangles[t];
     if (triangles_intersect({points[is[0]], points[is[1]], points[is[2]]}, is, {points[it[0]], points[it[1]], points[it[2]]}, it))
-      face_pairs.emplace_back(std::min(fs, ft), std::max(fs, ft));
+      state.face_pairs.emplace_back(std::min(fs, ft), std::max(fs, ft));
+    return true;
   };
 
   SelfIntersections result;
-  try {
-    // Closed boxes: triangles that only touch still count as intersecting.
-    // Below 2000 boxes the sweep scans instead of splitting further (PMP's value).
-    CGAL::box_self_intersection_d<CGAL::Sequential_tag>(box_pointers.begin(), box_pointers.end(), test, std::ptrdiff_t(2000),
-                                                        CGAL::Box_intersection_d::CLOSED);
-  } catch (const TimeLimitReached&) {
-    result.complete = false;
-  }
+  result.complete = for_each_overlapping_pair(boxes, test);
+  std::vector<std::pair<uint32_t, uint32_t>> face_pairs;
+  for (const WorkerState& state : workers) face_pairs.insert(face_pairs.end(), state.face_pairs.begin(), state.face_pairs.end());
   std::sort(face_pairs.begin(), face_pairs.end());
   face_pairs.erase(std::unique(face_pairs.begin(), face_pairs.end()), face_pairs.end());
   result.face_pairs = face_pairs.size();

@@ -1,0 +1,176 @@
+#include "mesh/box_overlaps.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
+namespace umbra {
+namespace {
+
+constexpr size_t kLeafSize = 4;  // boxes per leaf of the hierarchy
+
+float rounded_down(double x) {
+  const float f = float(x);
+  return double(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+float rounded_up(double x) {
+  const float f = float(x);
+  return double(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+
+FloatBox united(const FloatBox& a, const FloatBox& b) {
+  FloatBox u;
+  for (int k = 0; k < 3; ++k) {
+    u.lo[size_t(k)] = std::min(a.lo[size_t(k)], b.lo[size_t(k)]);
+    u.hi[size_t(k)] = std::max(a.hi[size_t(k)], b.hi[size_t(k)]);
+  }
+  return u;
+}
+
+// The 21 bits of x spread to every third bit of 63.
+uint64_t spread_bits(uint64_t x) {
+  x &= 0x1fffff;
+  x = (x | x << 32) & 0x1f00000000ffffull;
+  x = (x | x << 16) & 0x1f0000ff0000ffull;
+  x = (x | x << 8) & 0x100f00f00f00f00full;
+  x = (x | x << 4) & 0x10c30c30c30c30c3ull;
+  x = (x | x << 2) & 0x1249249249249249ull;
+  return x;
+}
+
+struct MortonKeyed {
+  std::vector<uint64_t> codes;  // sorted
+  std::vector<uint32_t> order;  // the box index of each code
+};
+
+// Box indices sorted along the Morton curve through their centres, so that
+// boxes near in the order are near in space.
+MortonKeyed morton_order(const std::vector<FloatBox>& boxes) {
+  FloatBox all = boxes[0];
+  for (const FloatBox& b : boxes) all = united(all, b);
+  std::vector<std::pair<uint64_t, uint32_t>> keyed(boxes.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, boxes.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i < r.end(); ++i) {
+      uint64_t code = 0;
+      for (int k = 0; k < 3; ++k) {
+        const double extent = double(all.hi[size_t(k)]) - double(all.lo[size_t(k)]);
+        const double centre = 0.5 * (double(boxes[i].lo[size_t(k)]) + double(boxes[i].hi[size_t(k)]));
+        const double unit = extent > 0.0 ? (centre - double(all.lo[size_t(k)])) / extent : 0.0;
+        code |= spread_bits(uint64_t(std::clamp(unit, 0.0, 1.0) * double((1 << 21) - 1))) << k;
+      }
+      keyed[i] = {code, uint32_t(i)};
+    }
+  });
+  tbb::parallel_sort(keyed.begin(), keyed.end());
+  MortonKeyed result;
+  result.codes.resize(keyed.size());
+  result.order.resize(keyed.size());
+  for (size_t i = 0; i < keyed.size(); ++i) result.codes[i] = keyed[i].first, result.order[i] = keyed[i].second;
+  return result;
+}
+
+// A binary tree over the sorted boxes, each node split where the highest bit
+// of the Morton codes in its range changes (Karras, "Maximizing Parallelism
+// in the Construction of BVHs, Octrees, and k-d Trees", 2012), so that a node
+// bounds one cell of the Morton grid rather than whatever its range spans.
+struct Hierarchy {
+  struct Node {
+    FloatBox box;
+    uint32_t first, end;  // the sorted boxes under it
+    uint32_t left, right;  // the children; right is 0 for a leaf (the root is no one's child)
+  };
+  std::vector<FloatBox> sorted;  // the boxes in Morton order
+  std::vector<Node> nodes;       // nodes[0] is the root
+
+  Hierarchy(std::vector<FloatBox> sorted_boxes, const std::vector<uint64_t>& codes) : sorted(std::move(sorted_boxes)) {
+    nodes.reserve(2 * (sorted.size() / kLeafSize + 1));
+    build(0, uint32_t(sorted.size()), codes);
+  }
+
+  // Builds the node over sorted[first, end) and returns its index.
+  uint32_t build(uint32_t first, uint32_t end, const std::vector<uint64_t>& codes) {
+    const uint32_t index = uint32_t(nodes.size());
+    nodes.push_back({sorted[first], first, end, 0, 0});
+    if (end - first <= kLeafSize) {
+      for (uint32_t i = first + 1; i < end; ++i) nodes[index].box = united(nodes[index].box, sorted[i]);
+      return index;
+    }
+    const uint32_t split = split_of(first, end, codes);
+    const uint32_t left = build(first, split, codes);
+    const uint32_t right = build(split, end, codes);
+    nodes[index].left = left;
+    nodes[index].right = right;
+    nodes[index].box = united(nodes[left].box, nodes[right].box);
+    return index;
+  }
+
+  // The first position in (first, end) whose code differs from codes[first]
+  // in the highest bit where codes[first] and codes[end - 1] differ; the
+  // middle where they are equal.
+  static uint32_t split_of(uint32_t first, uint32_t end, const std::vector<uint64_t>& codes) {
+    const uint64_t differing = codes[first] ^ codes[end - 1];
+    if (differing == 0) return first + (end - first) / 2;
+    const int bit = 63 - __builtin_clzll(differing);
+    const uint64_t prefix = codes[first] >> bit;
+    return uint32_t(std::upper_bound(codes.begin() + first, codes.begin() + end, prefix,
+                                     [bit](uint64_t value, uint64_t code) { return value < (code >> bit); }) -
+                    codes.begin());
+  }
+
+  // Calls visit(q) for every q > p whose box overlaps sorted[p]; false when a
+  // call returned false.
+  template <typename Visit>
+  bool overlaps_after(size_t p, Visit&& visit) const {
+    const FloatBox& box = sorted[p];
+    uint32_t stack[192];  // deeper than any tree: 63 code bits, then halving up to 2^32 boxes
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& node = nodes[stack[--top]];
+      if (node.end <= p + 1 || !node.box.overlaps(box)) continue;
+      if (node.right == 0) {
+        for (size_t q = std::max(p + 1, size_t(node.first)); q < node.end; ++q)
+          if (sorted[q].overlaps(box) && !visit(q)) return false;
+        continue;
+      }
+      stack[top++] = node.right;
+      stack[top++] = node.left;
+    }
+    return true;
+  }
+};
+
+}  // namespace
+
+FloatBox enclosing_box(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+  FloatBox box;
+  for (int k = 0; k < 3; ++k) {
+    box.lo[size_t(k)] = rounded_down(std::min({a[k], b[k], c[k]}));
+    box.hi[size_t(k)] = rounded_up(std::max({a[k], b[k], c[k]}));
+  }
+  return box;
+}
+
+bool for_each_overlapping_pair(const std::vector<FloatBox>& boxes, const std::function<bool(uint32_t, uint32_t)>& visit) {
+  if (boxes.size() < 2) return true;
+  const MortonKeyed keyed = morton_order(boxes);
+  const std::vector<uint32_t>& order = keyed.order;
+  std::vector<FloatBox> sorted(boxes.size());
+  for (size_t i = 0; i < order.size(); ++i) sorted[i] = boxes[order[i]];
+  const Hierarchy hierarchy(std::move(sorted), keyed.codes);
+  std::atomic<bool> stopped{false};
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, boxes.size(), 2048), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t p = r.begin(); p < r.end() && !stopped.load(std::memory_order_relaxed); ++p) {
+      const bool finished = hierarchy.overlaps_after(p, [&](size_t q) { return visit(order[p], order[q]); });
+      if (!finished) stopped = true;
+    }
+  });
+  return !stopped;
+}
+
+}  // namespace umbra

@@ -1,0 +1,98 @@
+#include "mesh/box_overlaps.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <mutex>
+#include <random>
+#include <set>
+
+#include <gtest/gtest.h>
+
+namespace umbra {
+namespace {
+
+using PairSet = std::set<std::pair<uint32_t, uint32_t>>;
+
+PairSet brute_force_pairs(const std::vector<FloatBox>& boxes) {
+  PairSet pairs;
+  for (uint32_t i = 0; i < boxes.size(); ++i)
+    for (uint32_t j = i + 1; j < boxes.size(); ++j)
+      if (boxes[i].overlaps(boxes[j])) pairs.insert({i, j});
+  return pairs;
+}
+
+// Every pair the search visits, each as (smaller, larger), counting repeats.
+std::multiset<std::pair<uint32_t, uint32_t>> searched_pairs(const std::vector<FloatBox>& boxes) {
+  std::mutex lock;
+  std::multiset<std::pair<uint32_t, uint32_t>> pairs;
+  const bool complete = for_each_overlapping_pair(boxes, [&](uint32_t i, uint32_t j) {
+    std::lock_guard<std::mutex> guard(lock);
+    pairs.insert({std::min(i, j), std::max(i, j)});
+    return true;
+  });
+  EXPECT_TRUE(complete);
+  return pairs;
+}
+
+FloatBox box_at(const glm::dvec3& lo, const glm::dvec3& size) { return enclosing_box(lo, lo + size, lo + size); }
+
+TEST(BoxOverlaps, RandomBoxesOfMixedSizesGiveExactlyTheBruteForcePairsEachOnce) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> where(-10.0, 10.0), small(0.0, 0.8);
+  std::vector<FloatBox> boxes;
+  for (int i = 0; i < 3000; ++i) boxes.push_back(box_at({where(rng), where(rng), where(rng)}, {small(rng), small(rng), small(rng)}));
+  for (int i = 0; i < 5; ++i) boxes.push_back(box_at({where(rng), -10.0, where(rng)}, {0.1, 20.0, 0.1}));  // long slivers
+  boxes.push_back(box_at({-11.0, -11.0, -11.0}, {22.0, 22.0, 22.0}));  // one box round all the others
+  for (int i = 0; i < 40; ++i) boxes.push_back(boxes[size_t(i)]);      // exact copies, whose centres coincide
+  const PairSet expected = brute_force_pairs(boxes);
+  const auto found = searched_pairs(boxes);
+  EXPECT_EQ(found.size(), expected.size());  // none twice
+  EXPECT_EQ(PairSet(found.begin(), found.end()), expected);
+  EXPECT_GT(expected.size(), boxes.size());
+}
+
+TEST(BoxOverlaps, BoxesThatOnlyTouchOverlapAndBoxesApartByOneFloatDoNot) {
+  // Unit cubes side by side on a grid share faces, edges and corners.
+  std::vector<FloatBox> boxes;
+  for (int x = 0; x < 4; ++x)
+    for (int y = 0; y < 4; ++y)
+      for (int z = 0; z < 4; ++z) boxes.push_back(box_at({x, y, z}, {1.0, 1.0, 1.0}));
+  const auto found = searched_pairs(boxes);
+  EXPECT_EQ(PairSet(found.begin(), found.end()), brute_force_pairs(boxes));
+  // Each cube touches the cubes at most one step away along every axis.
+  size_t touching = 0;
+  for (int a = 0; a < 64; ++a)
+    for (int b = a + 1; b < 64; ++b)
+      touching += std::abs(a / 16 - b / 16) <= 1 && std::abs(a / 4 % 4 - b / 4 % 4) <= 1 && std::abs(a % 4 - b % 4) <= 1;
+  EXPECT_EQ(found.size(), touching);
+
+  const FloatBox left = box_at({0.0, 0.0, 0.0}, {1.0, 1.0, 1.0});
+  const FloatBox right = box_at({std::nextafter(1.0f, 2.0f), 0.0, 0.0}, {1.0, 1.0, 1.0});
+  EXPECT_TRUE(searched_pairs({left, right}).empty());
+}
+
+TEST(BoxOverlaps, FloatBoxesContainTheDoublePointsTheyBound) {
+  const glm::dvec3 a(0.1, -1e-30, 1.0 / 3.0), b(1e20, 0.7, -2.0 / 3.0), c(-0.3, 1e-300, 5.0);
+  const FloatBox box = enclosing_box(a, b, c);
+  for (const glm::dvec3& p : {a, b, c})
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_LE(double(box.lo[size_t(k)]), p[k]);
+      EXPECT_GE(double(box.hi[size_t(k)]), p[k]);
+    }
+}
+
+TEST(BoxOverlaps, AVisitThatReturnsFalseStopsTheSearchAndSaysItIsIncomplete) {
+  std::vector<FloatBox> boxes(5000, box_at({0.0, 0.0, 0.0}, {1.0, 1.0, 1.0}));  // every pair overlaps
+  std::atomic<size_t> visits{0};
+  const bool complete = for_each_overlapping_pair(boxes, [&](uint32_t, uint32_t) { return ++visits < 100; });
+  EXPECT_FALSE(complete);
+  EXPECT_LT(visits.load(), size_t(5000) * 4999 / 2 / 10);
+}
+
+TEST(BoxOverlaps, NoneOrOneBoxHasNoPairs) {
+  EXPECT_TRUE(searched_pairs({}).empty());
+  EXPECT_TRUE(searched_pairs({box_at({0.0, 0.0, 0.0}, {1.0, 1.0, 1.0})}).empty());
+}
+
+}  // namespace
+}  // namespace umbra
