@@ -156,15 +156,17 @@ FloatBox enclosing_box(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec
   return box;
 }
 
-bool for_each_overlapping_pair(const std::vector<FloatBox>& boxes, const std::function<bool(uint32_t, uint32_t)>& visit) {
+bool for_each_overlapping_pair(std::vector<FloatBox> boxes, const std::function<bool(uint32_t, uint32_t)>& visit) {
   if (boxes.size() < 2) return true;
-  const MortonKeyed keyed = morton_order(boxes);
-  const std::vector<uint32_t>& order = keyed.order;
+  MortonKeyed keyed = morton_order(boxes);
+  const std::vector<uint32_t> order = std::move(keyed.order);
   std::vector<FloatBox> sorted(boxes.size());
   for (size_t i = 0; i < order.size(); ++i) sorted[i] = boxes[order[i]];
+  std::vector<FloatBox>().swap(boxes);
   const Hierarchy hierarchy(std::move(sorted), keyed.codes);
+  std::vector<uint64_t>().swap(keyed.codes);
   std::atomic<bool> stopped{false};
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, boxes.size(), 2048), [&](const tbb::blocked_range<size_t>& r) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, order.size(), 2048), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t p = r.begin(); p < r.end() && !stopped.load(std::memory_order_relaxed); ++p) {
       const bool finished = hierarchy.overlaps_after(p, [&](size_t q) { return visit(order[p], order[q]); });
       if (!finished) stopped = true;

@@ -29,6 +29,6 @@ FloatBox enclosing_box(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec
 // to call concurrently. When a call returns false the search stops early
 // (calls already under way finish) and the function returns false; it
 // returns true when every pair was visited.
-bool for_each_overlapping_pair(const std::vector<FloatBox>& boxes, const std::function<bool(uint32_t, uint32_t)>& visit);
+bool for_each_overlapping_pair(std::vector<FloatBox> boxes, const std::function<bool(uint32_t, uint32_t)>& visit);
 
 }  // namespace umbra

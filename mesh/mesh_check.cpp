@@ -40,41 +40,38 @@ bool all_collinear(const std::vector<glm::dvec3>& positions, const uint32_t* v, 
   return true;
 }
 
-// Marks every face whose vertex set equals an earlier face's: faces are
-// sorted by a hash of their sorted vertices, and only equal hashes compared.
+// Marks every face whose vertex set equals an earlier face's: one pass in
+// file order over an open-addressing table of the faces seen so far, keyed by
+// a hash of their sorted vertices; only faces of equal hash are compared.
 void find_duplicates(const PolygonSoup& soup, Faces& faces) {
   const auto sorted_vertices = [&](uint32_t f, std::vector<uint32_t>& out) {
     const uint32_t* v = faces.corners.data() + soup.polygon_starts[f];
     out.assign(v, v + soup.corner_count(f));
     std::sort(out.begin(), out.end());
   };
-  std::vector<std::pair<uint64_t, uint32_t>> keyed;  // (hash, face)
+  const auto hash_of = [](const std::vector<uint32_t>& sorted) {
+    uint64_t hash = 1469598103934665603ull;  // FNV-1a over the sorted indices
+    for (uint32_t v : sorted) hash = (hash ^ v) * 1099511628211ull;
+    return hash ^ (hash >> 29);
+  };
+  size_t slots = 16;
+  while (slots < 2 * soup.polygon_count()) slots *= 2;
+  std::vector<std::pair<uint64_t, uint32_t>> table(slots, {0, kNone});  // (hash, face)
   std::vector<uint32_t> a, b;
   for (uint32_t f = 0; f < soup.polygon_count(); ++f) {
     if (faces.repeats_vertex[f]) continue;
     sorted_vertices(f, a);
-    uint64_t hash = 1469598103934665603ull;  // FNV-1a over the sorted indices
-    for (uint32_t v : a) hash = (hash ^ v) * 1099511628211ull;
-    keyed.push_back({hash, f});
-  }
-  std::sort(keyed.begin(), keyed.end());
-  for (size_t start = 0; start < keyed.size();) {
-    size_t end = start + 1;
-    while (end < keyed.size() && keyed[end].first == keyed[start].first) ++end;
-    // Within a run of equal hashes (almost always one face), compare in full;
-    // faces are in file order, so the first match is the earlier face.
-    for (size_t i = start + 1; i < end; ++i) {
-      sorted_vertices(keyed[i].second, a);
-      for (size_t j = start; j < i; ++j) {
-        if (faces.duplicate[keyed[j].second]) continue;
-        sorted_vertices(keyed[j].second, b);
-        if (a != b) continue;
-        faces.duplicate[keyed[i].second] = 1;
-        faces.duplicate_of[keyed[i].second] = keyed[j].second;
-        break;
-      }
+    const uint64_t hash = hash_of(a);
+    size_t slot = hash & (slots - 1);
+    for (; table[slot].second != kNone; slot = (slot + 1) & (slots - 1)) {
+      if (table[slot].first != hash) continue;
+      sorted_vertices(table[slot].second, b);
+      if (a != b) continue;
+      faces.duplicate[f] = 1;
+      faces.duplicate_of[f] = table[slot].second;  // the first face with these vertices
+      break;
     }
-    start = end;
+    if (!faces.duplicate[f]) table[slot] = {hash, f};
   }
 }
 
@@ -96,8 +93,10 @@ uint32_t next_corner(const PolygonSoup& soup, uint32_t face, uint32_t corner) {
 // the earlier ones left in the members below.
 class MeshAnalyser {
  public:
-  MeshAnalyser(const PolygonSoup& soup, MeshAnalysis& analysis)
+  // With `disposable_points`, the soup's points are freed once merged.
+  MeshAnalyser(const PolygonSoup& soup, MeshAnalysis& analysis, std::vector<glm::dvec3>* disposable_points)
       : soup(soup),
+        disposable_points(disposable_points),
         analysis(analysis),
         report(analysis.report),
         examples(analysis.report.examples),
@@ -114,6 +113,7 @@ class MeshAnalyser {
 
   void run(const CheckOptions& options) {
     describe_file();
+    if (disposable_points) std::vector<glm::dvec3>().swap(*disposable_points);
     sort_faces();
     group_edges();
     label_components();
@@ -122,6 +122,7 @@ class MeshAnalyser {
     orient_faces();
     triangulate();
     summarise_components();
+    release_topology();
     search_self_intersections(options);
     analysis.positions = std::move(merged.positions);
   }
@@ -136,6 +137,7 @@ class MeshAnalyser {
   void orient_faces();
   void triangulate();
   void summarise_components();
+  void release_topology();
   void search_self_intersections(const CheckOptions& options);
 
   ElementRef vertex_ref(uint32_t v) const {
@@ -154,6 +156,7 @@ class MeshAnalyser {
   }
 
   const PolygonSoup& soup;
+  std::vector<glm::dvec3>* disposable_points;
   MeshAnalysis& analysis;
   MeshReport& report;
   MeshReport::Examples& examples;
@@ -207,6 +210,7 @@ void MeshAnalyser::describe_file() {
 void MeshAnalyser::sort_faces() {
   faces.corners.resize(soup.corners.size());
   for (size_t c = 0; c < soup.corners.size(); ++c) faces.corners[c] = merged.vertex_of_point[soup.corners[c]];
+  std::vector<uint32_t>().swap(merged.vertex_of_point);
   faces.repeats_vertex.assign(face_count, 0);
   faces.collinear.assign(face_count, 0);
   faces.duplicate.assign(face_count, 0);
@@ -237,18 +241,42 @@ void MeshAnalyser::sort_faces() {
 void MeshAnalyser::group_edges() {
   orientation_conflict.assign(face_count, 0);
   on_non_manifold_edge.assign(vertex_count, 0);
-  std::vector<EdgeUse> uses;
-  uses.reserve(faces.corners.size());
+  // A counting sort by the smaller vertex, then each vertex's few uses by
+  // the larger one: linear, and in the order (edge, face) that a full sort
+  // would give, since faces are taken in order.
+  std::vector<uint32_t> bucket_start(vertex_count + 1, 0);
   for (uint32_t f = 0; f < face_count; ++f) {
     if (!faces.in_topology(f)) continue;
-    for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c) {
-      const uint32_t a = faces.corners[c], b = faces.corners[next_corner(soup, f, c)];
-      uses.push_back({(uint64_t(std::min(a, b)) << 32) | std::max(a, b), f, (c << 1) | uint32_t(a < b)});
+    for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c)
+      ++bucket_start[std::min(faces.corners[c], faces.corners[next_corner(soup, f, c)]) + 1];
+  }
+  for (size_t v = 0; v < vertex_count; ++v) bucket_start[v + 1] += bucket_start[v];
+  std::vector<EdgeUse> uses(bucket_start[vertex_count]);
+  {
+    std::vector<uint32_t> fill(bucket_start.begin(), bucket_start.end() - 1);
+    for (uint32_t f = 0; f < face_count; ++f) {
+      if (!faces.in_topology(f)) continue;
+      for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c) {
+        const uint32_t a = faces.corners[c], b = faces.corners[next_corner(soup, f, c)];
+        uses[fill[std::min(a, b)]++] = {(uint64_t(std::min(a, b)) << 32) | std::max(a, b), f, (c << 1) | uint32_t(a < b)};
+      }
     }
   }
-  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
-    return x.key != y.key ? x.key < y.key : x.face < y.face;
-  });
+  for (size_t v = 0; v < vertex_count; ++v) {
+    if (bucket_start[v + 1] - bucket_start[v] > 32) {  // a vertex of high degree, the hub of a fan
+      std::sort(uses.begin() + bucket_start[v], uses.begin() + bucket_start[v + 1], [](const EdgeUse& x, const EdgeUse& y) {
+        return x.key != y.key ? x.key < y.key : x.face < y.face;
+      });
+      continue;
+    }
+    for (uint32_t i = bucket_start[v] + 1; i < bucket_start[v + 1]; ++i) {
+      const EdgeUse use = uses[i];
+      uint32_t j = i;
+      for (; j > bucket_start[v] && uses[j - 1].key > use.key; --j) uses[j] = uses[j - 1];
+      uses[j] = use;  // insertion sort: stable, and most buckets hold a handful
+    }
+  }
+  std::vector<uint32_t>().swap(bucket_start);
 
   for (size_t i = 0; i < uses.size();) {
     size_t j = i + 1;
@@ -448,6 +476,18 @@ void MeshAnalyser::summarise_components() {
   report.euler_characteristic = int64_t(topology_vertices) - int64_t(edges.size()) + int64_t(topology_faces);
 }
 
+// What only the topological stages need, freed before the search (the
+// largest stage) allocates its own.
+void MeshAnalyser::release_topology() {
+  std::vector<EdgeRun>().swap(edges);
+  components = UnionFind(0);
+  flips = ParityUnionFind(0);
+  fans = UnionFind(0);
+  border_graph = UnionFind(0);
+  std::vector<uint32_t>().swap(faces.corners);
+  std::vector<uint32_t>().swap(component_of_vertex);
+}
+
 void MeshAnalyser::search_self_intersections(const CheckOptions& options) {
   if (options.self_intersection_seconds > 0.0) {
     const SelfIntersections found = find_self_intersections(merged.positions, triangles, triangle_face,
@@ -463,14 +503,21 @@ void MeshAnalyser::search_self_intersections(const CheckOptions& options) {
 
 }  // namespace
 
-MeshReport check_mesh(const PolygonSoup& soup, const CheckOptions& options) { return analyse_mesh(soup, options).report; }
+namespace {
 
-MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options) {
+MeshAnalysis analyse(const PolygonSoup& soup, std::vector<glm::dvec3>* disposable_points, const CheckOptions& options) {
   if (soup.corners.size() >= (size_t(1) << 31))
     throw InputError({soup.path, 0, 0}, "too large to check: more than 2^31 face corners");
   MeshAnalysis analysis;
-  MeshAnalyser(soup, analysis).run(options);
+  MeshAnalyser(soup, analysis, disposable_points).run(options);
   return analysis;
 }
+
+}  // namespace
+
+MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options) { return analyse(soup, nullptr, options); }
+MeshAnalysis analyse_mesh(PolygonSoup&& soup, const CheckOptions& options) { return analyse(soup, &soup.points, options); }
+MeshReport check_mesh(const PolygonSoup& soup, const CheckOptions& options) { return analyse_mesh(soup, options).report; }
+MeshReport check_mesh(PolygonSoup&& soup, const CheckOptions& options) { return analyse_mesh(std::move(soup), options).report; }
 
 }  // namespace umbra

@@ -1,11 +1,9 @@
 #include "mesh/mesh_file.hpp"
 
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 
 #include "mesh/input_error.hpp"
+#include "mesh/mapped_file.hpp"
 #include "mesh/mesh_readers.hpp"
 
 namespace umbra {
@@ -32,19 +30,8 @@ PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path) 
 PolygonSoup read_polygon_soup(const std::string& path) {
   if (mesh_format_of(path).empty())
     throw InputError({path, 0, 0}, "unknown mesh format: the file name must end in .obj, .off, .ply or .stl");
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError({path, 0, 0}, "is a folder, not a mesh file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({path, 0, 0}, std::string("cannot open: ") + std::strerror(errno));
-  // One read into one buffer: a mesh file can be hundreds of megabytes.
-  std::string bytes;
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  if (size < 0) throw InputError({path, 0, 0}, "cannot read the file");
-  bytes.resize(size_t(size));
-  in.seekg(0);
-  if (!in.read(bytes.data(), size)) throw InputError({path, 0, 0}, "cannot read the file");
-  return parse_polygon_soup(bytes, path);
+  const MappedFile file(path);
+  return parse_polygon_soup(file.bytes(), path);
 }
 
 void require_corners_in_range(const PolygonSoup& soup) {

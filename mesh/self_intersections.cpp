@@ -63,9 +63,7 @@ SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positio
   const Clock::time_point start = Clock::now();
   const auto deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(time_limit_seconds));
 
-  std::vector<Point> points;
-  points.reserve(positions.size());
-  for (const glm::dvec3& p : positions) points.emplace_back(p.x, p.y, p.z);
+  const auto point = [&positions](uint32_t v) { return Point(positions[v].x, positions[v].y, positions[v].z); };
   std::vector<FloatBox> boxes;
   std::vector<uint32_t> triangle_of_box;
   boxes.reserve(triangles.size());
@@ -74,7 +72,7 @@ SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positio
     const auto& tri = triangles[t];
     // A triangle with collinear corners has no plane: the exact tests are
     // undefined for it (the check reports its face as degenerate instead).
-    if (CGAL::collinear(points[tri[0]], points[tri[1]], points[tri[2]])) continue;
+    if (CGAL::collinear(point(tri[0]), point(tri[1]), point(tri[2]))) continue;
     boxes.push_back(enclosing_box(positions[tri[0]], positions[tri[1]], positions[tri[2]]));
     triangle_of_box.push_back(t);
   }
@@ -92,13 +90,13 @@ SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positio
     if (fs == ft) return true;
     const auto& is = triangles[s];
     const auto& it = triangles[t];
-    if (triangles_intersect({points[is[0]], points[is[1]], points[is[2]]}, is, {points[it[0]], points[it[1]], points[it[2]]}, it))
+    if (triangles_intersect({point(is[0]), point(is[1]), point(is[2])}, is, {point(it[0]), point(it[1]), point(it[2])}, it))
       state.face_pairs.emplace_back(std::min(fs, ft), std::max(fs, ft));
     return true;
   };
 
   SelfIntersections result;
-  result.complete = for_each_overlapping_pair(boxes, test);
+  result.complete = for_each_overlapping_pair(std::move(boxes), test);
   std::vector<std::pair<uint32_t, uint32_t>> face_pairs;
   for (const WorkerState& state : workers) face_pairs.insert(face_pairs.end(), state.face_pairs.begin(), state.face_pairs.end());
   std::sort(face_pairs.begin(), face_pairs.end());

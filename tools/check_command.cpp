@@ -91,8 +91,7 @@ CheckOutcome check_one(const std::string& path, const CheckCommandOptions& optio
   CheckOutcome outcome;
   std::ostringstream out, err;
   try {
-    const PolygonSoup soup = read_polygon_soup(path);
-    const MeshReport report = check_mesh(soup, options.check);
+    const MeshReport report = check_mesh(read_polygon_soup(path), options.check);
     options.json ? report.print_json(out) : report.print_text(out);
     outcome.status = report.is_closed_manifold() ? 0 : 1;
   } catch (const InputError& e) {
