@@ -1,35 +1,29 @@
 #include "mesh/mesh_file.hpp"
 
-#include <filesystem>
-
 #include "mesh/input_error.hpp"
 #include "mesh/mapped_file.hpp"
+#include "mesh/mesh_format.hpp"
 #include "mesh/mesh_readers.hpp"
 
 namespace umbra {
 
-std::string mesh_format_of(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl") return ext.substr(1);
-  return "";
-}
-
 PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path) {
-  const std::string format = mesh_format_of(path);
+  // The content decides; the extension only names the reader whose located
+  // errors best explain a file too broken for its content to say.
+  std::string format = detect_mesh_format(bytes);
+  // Not OBJ, though: any text would read as an OBJ without faces.
+  if (format.empty() && mesh_format_of(path) != "obj") format = mesh_format_of(path);
   PolygonSoup soup;
   if (format == "obj") soup = read_obj(bytes, path);
   else if (format == "off") soup = read_off(bytes, path);
   else if (format == "ply") soup = read_ply(bytes, path);
   else if (format == "stl") soup = read_stl(bytes, path);
-  else throw InputError({path, 0, 0}, "unknown mesh format: the file name must end in .obj, .off, .ply or .stl");
+  else throw InputError({path, 0, 0}, "not a mesh file (OBJ, OFF, PLY or STL): " + describe_content(bytes));
   require_corners_in_range(soup);
   return soup;
 }
 
 PolygonSoup read_polygon_soup(const std::string& path) {
-  if (mesh_format_of(path).empty())
-    throw InputError({path, 0, 0}, "unknown mesh format: the file name must end in .obj, .off, .ply or .stl");
   const MappedFile file(path);
   return parse_polygon_soup(file.bytes(), path);
 }

@@ -1,10 +1,11 @@
 #pragma once
-// Reading a mesh file (OBJ, OFF, PLY or STL, chosen by the file's extension)
-// into a polygon soup, exactly as written.
+// Reading a mesh file (OBJ, OFF, PLY or STL, told by its content; see
+// mesh_format.hpp) into a polygon soup, exactly as written.
 
 #include <string>
 #include <string_view>
 
+#include "mesh/mesh_format.hpp"
 #include "mesh/polygon_soup.hpp"
 
 namespace umbra {
@@ -13,12 +14,8 @@ namespace umbra {
 // cannot be opened or is not a valid mesh of its format.
 PolygonSoup read_polygon_soup(const std::string& path);
 
-// The same from bytes already in memory; `path` names them in errors and
-// chooses the format by its extension.
+// The same from bytes already in memory; `path` names them in errors, and
+// its extension chooses the reader when the content is too broken to tell.
 PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path);
-
-// "obj", "off", "ply", "stl" for a path with one of those extensions (any
-// case), or "" for any other.
-std::string mesh_format_of(const std::string& path);
 
 }  // namespace umbra

@@ -181,7 +181,37 @@ TEST(MeshFile, BadFilesGetTheirExactLocatedError) {
   EXPECT_EQ(error_of("ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
                      "element face 1\nproperty list uchar float vertex_indices\nend_header\n", "d.ply"),
             "d.ply: the face's vertex indices must have an integer type");
-  EXPECT_EQ(error_of("", "e.dae"), "e.dae: unknown mesh format: the file name must end in .obj, .off, .ply or .stl");
+  EXPECT_EQ(error_of("", "e.dae"), "e.dae: not a mesh file (OBJ, OFF, PLY or STL): the file is empty");
+}
+
+TEST(MeshFormat, ContentDecidesTheFormatWhateverTheName) {
+  EXPECT_EQ(detect_mesh_format("ply\nformat ascii 1.0\n"), "ply");
+  EXPECT_EQ(detect_mesh_format("# made by hand\n\nCOFF\n3 1 0\n"), "off");
+  EXPECT_EQ(detect_mesh_format("OFF 3 1 0\n"), "off");
+  EXPECT_EQ(detect_mesh_format("solid part\n  facet normal 0 0 1\n"), "stl");
+  EXPECT_EQ(detect_mesh_format(binary_stl({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}})), "stl");
+  EXPECT_EQ(detect_mesh_format("# exporter 1.0\nmtllib a.mtl\no cube\nv 0 0 0\n"), "obj");
+  EXPECT_EQ(detect_mesh_format("f 1 2 3\n"), "obj");
+  // Not meshes: prose, a binary STL one byte short, a JPEG, UTF-16, JSON.
+  EXPECT_EQ(detect_mesh_format("# umbra\nThis is a README.\nv 1 2 3\n"), "");
+  EXPECT_EQ(detect_mesh_format(binary_stl({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}}).substr(0, 133)), "");
+  EXPECT_EQ(detect_mesh_format(std::string("\xff\xd8\xff\xe0\0\x10JFIF", 10)), "");
+  EXPECT_EQ(detect_mesh_format(std::string("\xff\xfev\0 \0", 6)), "");
+  EXPECT_EQ(detect_mesh_format("{\"asset\": {\"version\": \"2.0\"}}"), "");
+
+  // Read by content: an OFF named .stl, an STL with no extension.
+  EXPECT_EQ(parse_polygon_soup("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "mislabelled.stl").format, "OFF");
+  EXPECT_EQ(parse_polygon_soup(binary_stl({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}}), "part").polygon_count(), 1u);
+}
+
+TEST(MeshFormat, FilesThatAreNoMeshSayWhatTheyAre) {
+  EXPECT_EQ(error_of("# umbra\nThis is a README.\n", "README.obj"),
+            "README.obj: not a mesh file (OBJ, OFF, PLY or STL): text starting with \"#\"");
+  EXPECT_EQ(error_of("Just words\n", "notes"), "notes: not a mesh file (OBJ, OFF, PLY or STL): text starting with \"Just\"");
+  EXPECT_EQ(error_of(std::string("\xff\xfev\0 \0", 6), "u16.obj"), "u16.obj: not a mesh file (OBJ, OFF, PLY or STL): UTF-16 text");
+  EXPECT_EQ(error_of(std::string("\xff\xd8\xff\xe0\0\x10JFIF", 10), "photo.obj"),
+            "photo.obj: not a mesh file (OBJ, OFF, PLY or STL): binary data");
+  EXPECT_EQ(error_of("", "empty.obj"), "empty.obj: not a mesh file (OBJ, OFF, PLY or STL): the file is empty");
 }
 
 TEST(MeshFile, MissingFileAndFolderAreReportedByName) {
