@@ -1,7 +1,5 @@
 #include "tools/bench_command.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
@@ -18,6 +16,7 @@
 #include "render/shadow_renderer.hpp"
 #include "tools/bench_report.hpp"
 #include "tools/command_line.hpp"
+#include "tools/progress_bar.hpp"
 
 namespace umbra {
 
@@ -141,26 +140,6 @@ std::pair<double, int> median_frame_ms(int frames, Frame frame) {
   return {median(ms), frames};
 }
 
-class Progress {
- public:
-  explicit Progress(int total) : total_(total), shown_(::isatty(STDERR_FILENO)) {}
-  ~Progress() {
-    if (shown_) std::cerr << "\r\033[K" << std::flush;
-  }
-  void step(const std::string& what) {
-    ++done_;
-    if (!shown_) return;
-    constexpr int kWidth = 30;
-    const int filled = kWidth * done_ / std::max(1, total_);
-    std::cerr << "\r\033[K[" << std::string(size_t(filled), '#') << std::string(size_t(kWidth - filled), ' ') << "] "
-              << done_ << "/" << total_ << " " << what << std::flush;
-  }
-
- private:
-  int total_, done_ = 0;
-  bool shown_;
-};
-
 struct Measurement {
   RenderMethod method;
   int segments;  // 0: the scene has no sphere, N changes nothing
@@ -183,7 +162,7 @@ std::vector<Measurement> measurements_for(const Scene& scene, const BenchOptions
 }
 
 std::vector<BenchRow> bench_scene(const Scene& scene, const std::vector<MeshCaster>& meshes, const BenchOptions& o,
-                                  Progress& progress) {
+                                  ProgressBar& progress) {
   const std::string name = std::filesystem::path(scene.path).filename().string();
   std::vector<BenchRow> rows;
   progress.step(name + " raycast (the reference)");
@@ -241,7 +220,7 @@ int run_bench_command(const std::vector<std::string>& argv) {
     }
     std::vector<BenchRow> rows;
     {
-      Progress progress(total);
+      ProgressBar progress{size_t(total)};
       for (const Scene& scene : scenes) {
         const std::vector<BenchRow> scene_rows = bench_scene(scene, prepare_mesh_casters(scene), options, progress);
         rows.insert(rows.end(), scene_rows.begin(), scene_rows.end());

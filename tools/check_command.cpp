@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <future>
 #include <iostream>
@@ -9,27 +11,44 @@
 #include <sstream>
 #include <thread>
 
+#include <tbb/global_control.h>
+
 #include "mesh/input_error.hpp"
 #include "mesh/mesh_check.hpp"
 #include "mesh/mesh_file.hpp"
 #include "mesh/mesh_repair.hpp"
 #include "tools/command_line.hpp"
+#include "tools/mesh_paths.hpp"
+#include "tools/progress_bar.hpp"
 
 namespace umbra {
 
 const char* const kCheckUsage =
-    R"(usage: umbra check MESH... [--json] [--repair OUT] [--time-limit SEC]
+    R"(usage: umbra check PATH... [--json] [--jobs N] [--shard K/N] [--time-limit SEC]
+       umbra check MESH --repair OUT
 
-Checks that each mesh (OBJ, OFF, PLY or STL) is a closed, consistently
-oriented 2-manifold without self-intersections, which is what casting a
-shadow from silhouette edges needs, and says exactly why not: border edges
-and holes, non-manifold edges and vertices, duplicate and degenerate faces,
-faces to flip, self-intersecting face pairs, with a few of each named by
-their index in the file (counting from 0) and line. Several meshes are
-checked in parallel.
+Checks that each mesh (OBJ, OFF, PLY or STL, told by its content) is a
+closed, consistently oriented 2-manifold without self-intersections, which
+is what casting a shadow from silhouette edges needs, and says exactly why
+not: border edges and holes, non-manifold edges and vertices, duplicate and
+degenerate faces, faces to flip, self-intersecting face pairs, with a few of
+each named by their index in the file (counting from 0) and line.
+
+A PATH is a mesh file or a folder, searched recursively for mesh files (by
+content, or by a .obj, .off, .ply or .stl name), each folder's files in
+sorted order. Reports come in the order of the list, each as soon as it and
+those before it are done; with more than one mesh, a summary line follows
+on stderr.
 
 options:
-  --json            one JSON object per mesh per line (keys in docs/check.md)
+  --json            one JSON object per mesh per line, JSON Lines (keys in
+                    docs/check.md)
+  --jobs N          check N meshes at a time, using at most N threads in all
+                    (default: the number of cores)
+  --shard K/N       check only part K (counting from 0) of N disjoint parts
+                    of the list: N machines with K = 0 ... N-1 check it all,
+                    and their outputs, concatenated in order of K, are this
+                    command's output without --shard (docs/batch-checks.md)
   --repair OUT      (one MESH only) write a repaired copy to OUT (OBJ, OFF,
                     PLY or STL by its extension): merge repeated vertices,
                     drop degenerate and duplicate faces, stitch borders,
@@ -39,16 +58,18 @@ options:
                     per mesh and report that it stopped (default 60; 0 skips)
   -h, --help        show this help
 
-exit status: 0 every mesh is a closed 2-manifold, 1 one is not (after the
-repair, with --repair), 2 one could not be read, the repaired mesh could not
-be written, or a usage error.
+exit status: 0 every mesh is a closed 2-manifold; 1 one is not (after the
+repair, with --repair); 2 one could not be read (every other mesh is still
+reported), the repaired mesh could not be written, or a usage error.
 )";
 
 namespace {
 
 struct CheckCommandOptions {
-  std::vector<std::string> meshes;
+  std::vector<std::string> meshes;  // as given: files and folders
   bool json = false;
+  size_t jobs = std::max(1u, std::thread::hardware_concurrency());
+  std::optional<Shard> shard;
   std::optional<std::string> repair_output;
   CheckOptions check;
   bool help = false;
@@ -62,6 +83,8 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
     if (a == "-h" || a == "--help") o.help = true;
     else if (a == "--json") o.json = true;
     else if (a == "--repair") o.repair_output = args.value_of(a);
+    else if (a == "--jobs") o.jobs = size_t(parse_int_in(a, args.value_of(a), 1, 4096));
+    else if (a == "--shard") o.shard = parse_shard(a, args.value_of(a));
     else if (a == "--time-limit") {
       o.check.self_intersection_seconds = parse_finite_number(a, args.value_of(a));
       if (o.check.self_intersection_seconds < 0.0) throw UsageError("--time-limit must not be negative");
@@ -71,7 +94,8 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
   if (o.help) return o;
   if (o.meshes.empty()) throw UsageError("no mesh file given");
   if (o.repair_output) {
-    if (o.meshes.size() != 1) throw UsageError("--repair takes one mesh at a time");
+    if (o.meshes.size() != 1 || std::filesystem::is_directory(o.meshes[0])) throw UsageError("--repair takes one mesh file at a time");
+    if (o.shard) throw UsageError("--repair checks one mesh: --shard does not apply");
     if (mesh_format_of(*o.repair_output).empty())
       throw UsageError("--repair needs an output ending in .obj, .off, .ply or .stl, got \"" + *o.repair_output + "\"");
     std::error_code ec;
@@ -141,27 +165,52 @@ int run_check_command(const std::vector<std::string>& argv) {
     return *exit_status;
   if (options.repair_output) return repair_one(options.meshes[0], *options.repair_output, options);
 
-  // Workers take meshes in order; results are printed in order as they finish.
-  const size_t count = options.meshes.size();
+  const std::vector<std::string> all = expand_mesh_paths(options.meshes);
+  const std::vector<std::string> meshes = options.shard ? shard_of(all, *options.shard) : all;
+  const auto start = std::chrono::steady_clock::now();
+  // --jobs bounds the threads of the whole process: the meshes checked at once
+  // and the self-intersection searches inside them share them.
+  const tbb::global_control threads(tbb::global_control::max_allowed_parallelism, options.jobs);
+
+  // Workers take meshes in order; reports are printed in order, each as soon
+  // as it and those before it are done.
+  const size_t count = meshes.size();
   std::vector<std::promise<CheckOutcome>> promises(count);
   std::vector<std::future<CheckOutcome>> results;
   for (auto& p : promises) results.push_back(p.get_future());
-  std::atomic<size_t> next{0};
-  const size_t worker_count = std::min<size_t>(count, std::max(1u, std::thread::hardware_concurrency()));
+  std::atomic<size_t> next{0}, finished{0};
   std::vector<std::thread> workers;
-  for (size_t w = 0; w < worker_count; ++w) {
+  for (size_t w = 0; w < std::min(count, options.jobs); ++w) {
     workers.emplace_back([&] {
-      for (size_t i = next++; i < count; i = next++) promises[i].set_value(check_one(options.meshes[i], options));
+      for (size_t i = next++; i < count; i = next++) {
+        promises[i].set_value(check_one(meshes[i], options));
+        ++finished;
+      }
     });
   }
+  ProgressBar progress(count);
+  size_t closed = 0, open = 0, unreadable = 0;
   int status = 0;
-  for (auto& result : results) {
-    const CheckOutcome outcome = result.get();
+  for (size_t i = 0; i < count; ++i) {
+    while (results[i].wait_for(std::chrono::milliseconds(200)) != std::future_status::ready)
+      progress.update(finished, meshes[i]);
+    const CheckOutcome outcome = results[i].get();
+    progress.clear();
     std::cout << outcome.out << std::flush;
     std::cerr << outcome.err << std::flush;
     status = std::max(status, outcome.status);
+    (outcome.status == 0 ? closed : outcome.status == 1 ? open : unreadable) += 1;
   }
   for (std::thread& t : workers) t.join();
+  if (count > 1 || all.size() != options.meshes.size() || options.shard) {
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    char elapsed[32];
+    std::snprintf(elapsed, sizeof elapsed, "%.1f s", seconds);
+    std::cerr << "umbra check: " << count << (count == 1 ? " mesh" : " meshes")
+              << (options.shard ? " (shard " + std::to_string(options.shard->index) + "/" + std::to_string(options.shard->count) + " of " + std::to_string(all.size()) + ")" : "")
+              << " in " << elapsed << ": " << closed << " closed 2-manifold" << (closed == 1 ? "" : "s") << ", " << open
+              << " not, " << unreadable << " unreadable\n";
+  }
   return status;
 }
 

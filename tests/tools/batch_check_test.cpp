@@ -1,0 +1,143 @@
+// `umbra check` over many meshes: folders, JSON Lines in order under --jobs,
+// shards that split the list exactly, exit codes for a mix, and the same
+// reports as before on CGAL's data meshes.
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "tests/mesh/mesh_builders.hpp"
+#include "tests/tools/command_fixture.hpp"
+
+namespace umbra {
+namespace {
+
+using test::CommandResult;
+using test::obj_text;
+namespace fs = std::filesystem;
+
+class BatchCheck : public test::CommandTest {
+ protected:
+  // A folder of meshes in subfolders, with files that are no mesh beside them.
+  std::string mesh_folder() {
+    fs::create_directories(path("meshes/b/deep"));
+    write("meshes/a-closed.obj", obj_text(test::unit_cube()));
+    write("meshes/b/open.obj", obj_text(test::without_faces(test::unit_cube(), {4, 5})));
+    write("meshes/b/deep/tet", obj_text(test::tetrahedron()));  // no extension: found by content
+    write("meshes/b/deep/tet.mtl", "newmtl red\nKd 1 0 0\n");
+    write("meshes/README.txt", "These are test meshes.\n");
+    return path("meshes");
+  }
+
+  // Paths and verdicts of JSON Lines, one "name closed_manifold" line per object.
+  std::string verdicts(const std::string& json_lines) {
+    std::ofstream(path("lines.json")) << json_lines;
+    std::ofstream(path("verdicts.py")) << "import json,sys\n"
+                                          "for line in open(sys.argv[1]):\n"
+                                          "  o = json.loads(line)\n"
+                                          "  print(o['path'].split('/meshes/')[-1], o.get('closed_manifold', 'error'))\n";
+    EXPECT_EQ(std::system(("python3 " + path("verdicts.py") + " " + path("lines.json") + " >" + path("v.txt")).c_str()), 0);
+    return read(path("v.txt"));
+  }
+
+  static std::string without_time(const std::string& text) {
+    return std::regex_replace(text, std::regex(" in [0-9]+\\.[0-9] s:"), " in T s:");
+  }
+  // JSON Lines with every "seconds" value blanked, for comparing runs.
+  static std::string without_seconds(const std::string& text) {
+    return std::regex_replace(text, std::regex("\"seconds\":[0-9.e+-]+"), "\"seconds\":0");
+  }
+};
+
+TEST_F(BatchCheck, AFolderIsSearchedRecursivelyForMeshesByContentInSortedOrder) {
+  const CommandResult r = run("check --json " + mesh_folder());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(verdicts(r.out), "a-closed.obj True\nb/deep/tet True\nb/open.obj False\n");
+  EXPECT_EQ(without_time(r.err), "umbra check: 3 meshes in T s: 2 closed 2-manifolds, 1 not, 0 unreadable\n");
+}
+
+TEST_F(BatchCheck, AMixOfGoodOpenAndUnreadableMeshesIsAllReportedAndExitsTwo) {
+  const std::string folder = mesh_folder();
+  const std::string broken = write("meshes/broken.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n");
+  const CommandResult r = run("check --json " + folder);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(verdicts(r.out), "a-closed.obj True\nb/deep/tet True\nb/open.obj False\nbroken.off error\n");
+  EXPECT_EQ(without_time(r.err), broken + ":4: the file ends before vertex 2 of 3\n"
+                                          "umbra check: 4 meshes in T s: 2 closed 2-manifolds, 1 not, 1 unreadable\n");
+  // Without the unreadable one, the open one decides: exit 1; with only closed ones, 0.
+  EXPECT_EQ(run("check " + folder + "/a-closed.obj " + folder + "/b").status, 1);
+  EXPECT_EQ(run("check " + folder + "/a-closed.obj " + folder + "/b/deep").status, 0);
+}
+
+TEST_F(BatchCheck, JsonLinesUnderJobsAreInInputOrderAndComplete) {
+  // Meshes of very different sizes, so that they finish out of order.
+  fs::create_directories(path("meshes"));
+  std::string expected;
+  for (int i = 0; i < 24; ++i) {
+    const std::string name = "m" + std::string(i < 10 ? "0" : "") + std::to_string(i) + ".obj";
+    const bool open = i % 3 == 0;
+    const PolygonSoup sphere = test::uv_sphere(i % 4 == 1 ? 96 : 6, i % 4 == 1 ? 96 : 6);
+    write("meshes/" + name, obj_text(open ? test::without_faces(sphere, {1}) : sphere));
+    expected += name + (open ? " False\n" : " True\n");
+  }
+  const CommandResult one = run("check --json --jobs 1 " + path("meshes"));
+  const CommandResult two = run("check --json --jobs 2 " + path("meshes"));
+  const CommandResult many = run("check --json --jobs 7 " + path("meshes"));
+  EXPECT_EQ(verdicts(two.out), expected);
+  EXPECT_EQ(without_seconds(two.out), without_seconds(one.out));
+  EXPECT_EQ(without_seconds(many.out), without_seconds(one.out));
+  EXPECT_EQ(two.status, 1);
+}
+
+TEST_F(BatchCheck, ShardsSplitTheListIntoDisjointPartsThatConcatenateToTheWhole) {
+  fs::create_directories(path("meshes"));
+  for (int i = 0; i < 11; ++i) write("meshes/t" + std::to_string(i) + ".obj", obj_text(test::tetrahedron()));
+  const std::string whole = without_seconds(run("check --json " + path("meshes")).out);
+  ASSERT_EQ(std::count(whole.begin(), whole.end(), '\n'), 11);
+  for (const int count : {1, 2, 3, 4, 11, 15}) {
+    std::string joined;
+    for (int k = 0; k < count; ++k) {
+      const CommandResult part = run("check --json --shard " + std::to_string(k) + "/" + std::to_string(count) + " " + path("meshes"));
+      EXPECT_EQ(part.status, 0) << part.err;
+      joined += without_seconds(part.out);
+    }
+    EXPECT_EQ(joined, whole) << count << " shards";
+  }
+  const CommandResult summary = run("check --shard 1/4 " + path("meshes"));
+  EXPECT_EQ(without_time(summary.err), "umbra check: 3 meshes (shard 1/4 of 11) in T s: 3 closed 2-manifolds, 0 not, 0 unreadable\n");
+}
+
+TEST_F(BatchCheck, TheGnuParallelRecipeRunsShardsAtOnceAndConcatenatesToTheWhole) {
+  ASSERT_EQ(std::system("command -v parallel >/dev/null"), 0) << "GNU parallel is missing: ./build.sh installs it";
+  const std::string folder = mesh_folder();
+  const std::string whole = without_seconds(run("check --json " + folder).out);
+  // docs/batch-checks.md: -k keeps the shards' outputs in the order of K.
+  const std::string recipe = "parallel -k --will-cite " + std::string(UMBRA_EXECUTABLE) + " check --json --shard {}/3 " +
+                             folder + " ::: 0 1 2 >" + path("sharded.jsonl") + " 2>/dev/null";
+  EXPECT_EQ(WEXITSTATUS(std::system(recipe.c_str())), 1);  // parallel exits with the number of failed jobs: one shard holds the open mesh
+  EXPECT_EQ(without_seconds(read(path("sharded.jsonl"))), whole);
+}
+
+TEST_F(BatchCheck, UsageErrorsForJobsAndShards) {
+  const std::string mesh = write("t.obj", obj_text(test::tetrahedron()));
+  EXPECT_EQ(run("check --shard 3/3 " + mesh).err,
+            "umbra check: --shard counts parts from 0: K must be below N, got \"3/3\"\n(see umbra check --help)\n");
+  EXPECT_EQ(run("check --shard 2 " + mesh).err,
+            "umbra check: --shard expects K/N such as 0/4 (the first of four parts), got \"2\"\n(see umbra check --help)\n");
+  EXPECT_EQ(run("check --jobs 0 " + mesh).err,
+            "umbra check: --jobs expects a whole number from 1 to 4096, got \"0\"\n(see umbra check --help)\n");
+  EXPECT_EQ(run("check --jobs 0 " + mesh).status, 2);
+}
+
+// The reports of every mesh in CGAL's data, as the check gave them before it
+// was made parallel and faster (tests/data/cgal_check_reports.tsv, made by
+// tests/tools/report_digests.py), checked as one folder on every core.
+TEST_F(BatchCheck, CgalDataMeshesGetTheSameReportsAsBefore) {
+  const std::string folder = std::string(UMBRA_CGAL_DATA) + "/meshes";
+  const std::string command = std::string(UMBRA_EXECUTABLE) + " check --json " + folder + " 2>/dev/null | python3 " +
+                              UMBRA_SOURCE_DIR + "/tests/tools/report_digests.py " + folder + " >" + path("digests.tsv");
+  std::system(command.c_str());
+  EXPECT_EQ(read(path("digests.tsv")), read(std::string(UMBRA_SOURCE_DIR) + "/tests/data/cgal_check_reports.tsv"));
+}
+
+}  // namespace
+}  // namespace umbra
