@@ -26,7 +26,14 @@ EdgeTable build_edge_table(const std::vector<std::array<uint32_t, 3>>& triangles
   table.first_use.reserve(filed.size() / 2 + 2);
   for (size_t v = 0; v < vertex_count; ++v) {
     const auto begin = filed.begin() + bucket_start[v], end = filed.begin() + bucket_start[v + 1];
-    std::sort(begin, end);  // by the other vertex, then by face: a handful of entries
+    // By the other vertex, then by face: insertion sort for the handful of
+    // entries most vertices have, std::sort for the hub of a fan.
+    if (end - begin > 32) {
+      std::sort(begin, end);
+    } else {
+      for (auto it = begin + (begin != end); it < end; ++it)
+        for (auto j = it; j > begin && *(j - 1) > *j; --j) std::iter_swap(j - 1, j);
+    }
     for (auto it = begin; it != end; ++it) {
       const uint32_t other = uint32_t(*it >> 32);
       if (it == begin || uint32_t(*(it - 1) >> 32) != other) {

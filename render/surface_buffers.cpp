@@ -13,35 +13,47 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
   // The spec's triangles and every mesh's, grouped by material and by
   // whether they belong to a closed mesh, one draw call per group; flat
   // normals, as the shadows are flat-faced.
-  struct Drawn {
-    Triangle triangle;
-    const Mesh* closed_mesh;  // the closed mesh it belongs to, if any
+  // Sorted as runs (a spec triangle, or a whole mesh) rather than triangle by
+  // triangle: a million-triangle mesh is one run, copied once.
+  struct Run {
+    int material;
+    const Mesh* closed_mesh;  // the closed mesh it is, if any
+    const Triangle* triangle;  // a spec triangle, or
+    const Mesh* mesh;          // every triangle of a mesh
   };
-  std::vector<Drawn> all;
-  for (const Triangle& t : scene.triangles) all.push_back({t, nullptr});
+  std::vector<Run> runs;
+  size_t triangle_count = scene.triangles.size();
+  for (const Triangle& t : scene.triangles) runs.push_back({t.material, nullptr, &t, nullptr});
   for (const Mesh& mesh : scene.meshes) {
-    const Mesh* closed = mesh.components.all_closed() ? &mesh : nullptr;
-    for (const auto& t : mesh.triangles)
-      all.push_back({{mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]], mesh.material, mesh.where}, closed});
+    runs.push_back({mesh.material, mesh.components.all_closed() ? &mesh : nullptr, nullptr, &mesh});
+    triangle_count += mesh.triangles.size();
   }
-  std::stable_sort(all.begin(), all.end(), [](const Drawn& a, const Drawn& b) {
-    return a.triangle.material != b.triangle.material ? a.triangle.material < b.triangle.material
-                                                      : (a.closed_mesh != nullptr) < (b.closed_mesh != nullptr);
+  std::stable_sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) {
+    return a.material != b.material ? a.material < b.material : (a.closed_mesh != nullptr) < (b.closed_mesh != nullptr);
   });
   std::vector<float> data;  // position xyz, normal xyz
-  for (const auto& [t, closed_mesh] : all) {
-    const glm::dvec3 n = glm::cross(t.b - t.a, t.c - t.a);  // flipped toward the eye in the shader
-    for (const glm::dvec3& p : {t.a, t.b, t.c})
-      data.insert(data.end(), {float(p.x), float(p.y), float(p.z), float(n.x), float(n.y), float(n.z)});
-    const bool closed = closed_mesh != nullptr;
-    if (groups_.empty() || groups_.back().material != t.material || groups_.back().closed != closed) {
-      groups_.push_back({t.material, closed, glm::dvec3(0.0), glm::dvec3(0.0), int(data.size() / 6) - 3, 0});
-      if (closed) groups_.back().closed_lo = closed_mesh->bounds_min, groups_.back().closed_hi = closed_mesh->bounds_max;
+  data.reserve(triangle_count * 18);
+  const auto add = [&data](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+    const glm::dvec3 n = glm::cross(b - a, c - a);  // flipped toward the eye in the shader
+    for (const glm::dvec3& p : {a, b, c}) data.insert(data.end(), {float(p.x), float(p.y), float(p.z), float(n.x), float(n.y), float(n.z)});
+  };
+  for (const Run& run : runs) {
+    const bool closed = run.closed_mesh != nullptr;
+    if (groups_.empty() || groups_.back().material != run.material || groups_.back().closed != closed) {
+      groups_.push_back({run.material, closed, glm::dvec3(0.0), glm::dvec3(0.0), int(data.size() / 6), 0});
+      if (closed) groups_.back().closed_lo = run.closed_mesh->bounds_min, groups_.back().closed_hi = run.closed_mesh->bounds_max;
     }
     TriangleGroup& group = groups_.back();
     if (closed)
-      group.closed_lo = glm::min(group.closed_lo, closed_mesh->bounds_min), group.closed_hi = glm::max(group.closed_hi, closed_mesh->bounds_max);
-    group.vertex_count += 3;
+      group.closed_lo = glm::min(group.closed_lo, run.closed_mesh->bounds_min), group.closed_hi = glm::max(group.closed_hi, run.closed_mesh->bounds_max);
+    if (run.triangle) {
+      add(run.triangle->a, run.triangle->b, run.triangle->c);
+      group.vertex_count += 3;
+      continue;
+    }
+    const std::vector<glm::dvec3>& p = run.mesh->positions;
+    for (const auto& t : run.mesh->triangles) add(p[t[0]], p[t[1]], p[t[2]]);
+    group.vertex_count += 3 * int(run.mesh->triangles.size());
   }
   glGenVertexArrays(1, &triangle_vao_);
   glGenBuffers(1, &triangle_vbo_);
