@@ -8,9 +8,10 @@
 
 namespace umbra {
 
-MeshAdjacency build_mesh_adjacency(const std::vector<glm::dvec3>& positions,
-                                   const std::vector<std::array<uint32_t, 3>>& triangles) {
-  const HalfEdgeMesh mesh = build_half_edge_mesh(positions, triangles);
+namespace {
+
+// The flat arrays, walked from the half-edge structure.
+MeshAdjacency flatten(const HalfEdgeMesh& mesh) {
   MeshAdjacency adjacency;
   adjacency.positions.reserve(mesh.n_vertices());
   for (const auto v : mesh.vertices()) {
@@ -38,6 +39,19 @@ MeshAdjacency build_mesh_adjacency(const std::vector<glm::dvec3>& positions,
     adjacency.edge_vertices.push_back({uint32_t(mesh.from_vertex_handle(h).idx()), uint32_t(mesh.to_vertex_handle(h).idx())});
   }
   return adjacency;
+}
+
+}  // namespace
+
+MeshAdjacency build_mesh_adjacency(const std::vector<glm::dvec3>& positions,
+                                   const std::vector<std::array<uint32_t, 3>>& triangles) {
+  return flatten(build_half_edge_mesh(positions, triangles));
+}
+
+MeshAdjacency build_mesh_adjacency(const std::vector<glm::dvec3>& positions,
+                                   const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeTable& edges,
+                                   const std::vector<uint8_t>& closed_face) {
+  return flatten(link_half_edge_mesh(positions, triangles, edges, closed_face));
 }
 
 }  // namespace umbra

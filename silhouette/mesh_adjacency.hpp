@@ -10,6 +10,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "mesh/edge_table.hpp"
 #include "silhouette/face_plane.hpp"
 
 namespace umbra {
@@ -33,5 +34,12 @@ struct MeshAdjacency {
 // refuses a triangle or a halfedge has no face.
 MeshAdjacency build_mesh_adjacency(const std::vector<glm::dvec3>& positions,
                                    const std::vector<std::array<uint32_t, 3>>& triangles);
+
+// The same for the triangles marked in closed_face, which
+// find_closed_components proved closed (link_half_edge_mesh): what the
+// renderer uses, in linear time from the edge table it already has.
+MeshAdjacency build_mesh_adjacency(const std::vector<glm::dvec3>& positions,
+                                   const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeTable& edges,
+                                   const std::vector<uint8_t>& closed_face);
 
 }  // namespace umbra

@@ -14,18 +14,14 @@ MeshCaster prepare_mesh_caster(const std::vector<glm::dvec3>& positions,
   caster.positions = positions;
   caster.shape = components.phrase();
   std::vector<uint8_t> open_face(triangles.size());
-  std::vector<std::array<uint32_t, 3>> closed_triangles;
-  for (size_t t = 0; t < triangles.size(); ++t) {
-    open_face[t] = !components.closed_face[t];
-    if (components.closed_face[t]) closed_triangles.push_back(triangles[t]);
-  }
+  for (size_t t = 0; t < triangles.size(); ++t) open_face[t] = !components.closed_face[t];
   caster.volume_kind = components.volume_phrase();
-  if (!closed_triangles.empty()) {
+  if (components.closed_components > 0) {
     try {
-      caster.closed = build_mesh_adjacency(positions, closed_triangles);
+      caster.closed = build_mesh_adjacency(positions, triangles, edges, components.closed_face);
     } catch (const std::invalid_argument&) {
-      // The edge table proved these components closed 2-manifolds, which
-      // OpenMesh takes; should it refuse one, multiplicity is exact too.
+      // The edge table proved these components closed 2-manifolds; should
+      // linking one fail, multiplicity is exact too.
       open_face.assign(triangles.size(), 1);
       caster.volume_kind = "edge-multiplicity volume (OpenMesh refused its closed components)";
     }
