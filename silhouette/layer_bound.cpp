@@ -6,6 +6,9 @@
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
 
 namespace umbra {
 namespace {
@@ -192,17 +195,23 @@ int layer_bound(const std::vector<glm::dvec3>& positions, const std::vector<std:
     const double w = 2.0 * p.range / n, margin = 1e-9 * p.range;
     // Each cell's count of footprints (16 bits, stopping past the limit),
     // and each footprint's box of cells for the second pass.
-    std::vector<uint16_t> count(size_t(n) * size_t(n), 0);
+    // On every core, each thread counting into its own grid, summed after.
     std::vector<CellBox> boxes(triangles.size());
     const uint16_t stop = uint16_t(std::min(limit + 1, 65535));
-    for (size_t t = 0; t < triangles.size(); ++t) {
-      const Footprint f = footprint_of(t, p);
-      boxes[t] = cell_box(f, -p.range, -p.range, w, n, margin);
-      for_each_cell(f, boxes[t], -p.range, -p.range, w, margin, [&](int i, int j) {
-        uint16_t& c = count[size_t(j) * size_t(n) + size_t(i)];
-        c = std::min<uint16_t>(stop, uint16_t(c + 1));
-      });
-    }
+    const auto add = [stop](uint16_t& c, int more) { c = uint16_t(std::min<int>(stop, c + more)); };
+    tbb::enumerable_thread_specific<std::vector<uint16_t>> counts([n] { return std::vector<uint16_t>(size_t(n) * size_t(n), 0); });
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, triangles.size(), 8192), [&](const tbb::blocked_range<size_t>& r) {
+      std::vector<uint16_t>& local = counts.local();
+      for (size_t t = r.begin(); t < r.end(); ++t) {
+        const Footprint f = footprint_of(t, p);
+        boxes[t] = cell_box(f, -p.range, -p.range, w, n, margin);
+        for_each_cell(f, boxes[t], -p.range, -p.range, w, margin,
+                      [&](int i, int j) { add(local[size_t(j) * size_t(n) + size_t(i)], 1); });
+      }
+    });
+    std::vector<uint16_t> count(size_t(n) * size_t(n), 0);
+    for (const std::vector<uint16_t>& local : counts)
+      for (size_t k = 0; k < count.size(); ++k) add(count[k], local[k]);
     // Split the cells that hold many, with the footprints whose boxes touch them.
     std::vector<int32_t> hot_index(count.size(), -1);
     std::vector<std::vector<uint32_t>> hot_members;
