@@ -1,5 +1,7 @@
 #include "mesh/orientation.hpp"
 
+#include <algorithm>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 
@@ -19,6 +21,10 @@ bool collinear(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
 }
 
 bool on_triangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dvec3& p) {
+  // Outside the triangle's box (compared exactly, as doubles) it cannot be on
+  // it: the exact predicates are left for the few triangles whose box holds p.
+  for (int k = 0; k < 3; ++k)
+    if (p[k] < std::min({a[k], b[k], c[k]}) || p[k] > std::max({a[k], b[k], c[k]})) return false;
   if (CGAL::orientation(point(a), point(b), point(c), point(p)) != CGAL::COPLANAR) return false;
   if (CGAL::collinear(point(a), point(b), point(c)))  // degenerate: on one of its segments
     return CGAL::Segment_3<Kernel>(point(a), point(b)).has_on(point(p)) ||

@@ -281,9 +281,17 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
   // The same for every light.
   const std::vector<ReceiverPlane> receivers =
       plan.settings.method == RenderMethod::kPlanar ? receiver_planes(scene) : std::vector<ReceiverPlane>{};
+  const RenderSettings& s = plan.settings;
+  const Camera& c = plan.camera;
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& light = scene.lights[i];
     LightPlan& lp = plan.lights[i];
+    std::vector<double> inputs = {light.position.x, light.position.y, light.position.z, c.eye.x, c.eye.y, c.eye.z,
+                                  c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z, c.fovy_deg, plan.near_plane,
+                                  double(s.width), double(s.height), double(s.sphere_segments), double(s.method),
+                                  double(s.shadow_map_size)};
+    if (inputs == lp.made_for) continue;
+    lp.made_for = std::move(inputs);
     lp.casters.clear();
     lp.receiver_planes.clear();
     if (plan.settings.method == RenderMethod::kShadowMap) {  // no volumes at all

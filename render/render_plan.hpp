@@ -76,6 +76,10 @@ struct LightPlan {
   // (a sphere's N-gon disc, a triangle, a mesh's triangles) to project.
   std::vector<glm::dvec4> receiver_planes;
   int side_quads = 0, light_cap_triangles = 0, dark_cap_triangles = 0;  // of all of them
+  // What this plan was made for: the light's position, the view and the
+  // settings. A frame that changes none of them (a paused viewer, or a
+  // light that stays while another moves) keeps it as it is.
+  std::vector<double> made_for;
 };
 
 struct RenderPlan {

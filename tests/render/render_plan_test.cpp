@@ -42,6 +42,34 @@ TEST(RenderPlan, UpdateForAMovedLightEqualsAFreshPlanAndReusesTheIndexBuffers) {
     EXPECT_EQ(plan.lights[0].casters[i].method, fresh.lights[0].casters[i].method);
 }
 
+TEST(RenderPlan, AFrameThatChangesNothingForALightKeepsItsPlanAndAnyChangeRemakesIt) {
+  Scene scene = parse_scene_file(std::string(UMBRA_SOURCE_DIR) + "/scenes/mesh_open_box.scene");
+  scene.lights.push_back(scene.lights[0]);
+  scene.lights[1].position.z += 0.5;
+  const std::vector<MeshCaster> casters = prepare_mesh_casters(scene);
+  RenderPlan plan = make_render_plan(scene, casters, RenderSettings{});
+  const std::string reason = plan.lights[0].count_reason;
+  // A marker in each light's plan shows whether the next update remade it.
+  const auto mark = [&plan] { plan.lights[0].count_reason = plan.lights[1].count_reason = "kept"; };
+  mark();
+  update_render_plan(scene, casters, plan);
+  EXPECT_EQ(plan.lights[0].count_reason, "kept");
+  EXPECT_EQ(plan.lights[1].count_reason, "kept");
+  scene.lights[1].position.x += 0.1;  // only the second light moves
+  update_render_plan(scene, casters, plan);
+  EXPECT_EQ(plan.lights[0].count_reason, "kept");
+  EXPECT_NE(plan.lights[1].count_reason, "kept");
+  mark();
+  scene.camera.eye.x += 0.2;  // the view changes what auto culls and how it counts
+  update_render_plan(scene, casters, plan);
+  EXPECT_EQ(plan.lights[0].count_reason, reason);
+  EXPECT_NE(plan.lights[1].count_reason, "kept");
+  mark();
+  plan.settings.method = RenderMethod::kZPass;
+  update_render_plan(scene, casters, plan);
+  EXPECT_NE(plan.lights[0].count_reason, "kept");
+}
+
 TEST(RenderPlan, SplitsMoreThan255VolumesIntoStencilBatches) {
   // 600 level triangles over one point (8 volume triangles each) and one
   // degenerate triangle (no volume): batches end after volumes 255 and 510.
