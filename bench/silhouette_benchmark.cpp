@@ -9,13 +9,16 @@
 #include <cmath>
 #include <numeric>
 
+#include "mesh/half_edge_mesh.hpp"
 #include "mesh/mesh_check.hpp"
 #include "mesh/scene_parser.hpp"
 #include "render/headless_context.hpp"
 #include "render/render_plan.hpp"
 #include "render/shadow_renderer.hpp"
-#include "silhouette/mesh_adjacency.hpp"
+#include "silhouette/classify_faces.hpp"
+#include "silhouette/face_plane.hpp"
 #include "silhouette/layer_bound.hpp"
+#include "silhouette/mesh_adjacency.hpp"
 #include "silhouette/mesh_caster.hpp"
 #include "silhouette/mesh_volume.hpp"
 
@@ -78,6 +81,60 @@ void BM_ClassifyAndExtract(benchmark::State& state) {
 }
 // 250 x 200 quads: 100,000 triangles; 800 x 640: 1,024,000.
 BENCHMARK(BM_ClassifyAndExtract)->Args({250, 200})->Args({800, 640})->Unit(benchmark::kMillisecond);
+
+// Silhouette edges found two ways, for the same torus and light: over the
+// flat arrays the renderer uses (faces classified into a byte array, then
+// each edge's two faces looked up), and by walking the OpenMesh half-edge
+// structure itself (faces classified into an OpenMesh property, then each
+// edge's two half-edges' faces). Argument 2: 0 flat arrays, 1 OpenMesh.
+void BM_SilhouetteEdges(benchmark::State& state) {
+  const int n = int(state.range(0)), m = int(state.range(1));
+  std::vector<glm::dvec3> positions;
+  std::vector<std::array<uint32_t, 3>> triangles;
+  torus(n, m, positions, triangles);
+  const MeshAdjacency& flat = torus_adjacency(n, m);
+  HalfEdgeMesh mesh = build_half_edge_mesh(positions, triangles);
+  OpenMesh::FPropHandleT<FacePlane> plane;
+  OpenMesh::FPropHandleT<uint8_t> facing_property;
+  mesh.add_property(plane);
+  mesh.add_property(facing_property);
+  for (const auto f : mesh.faces()) {
+    std::array<glm::dvec3, 3> p;
+    int k = 0;
+    for (const auto v : mesh.fv_range(f)) p[size_t(k++)] = positions[size_t(v.idx())];
+    mesh.property(plane, f) = face_plane(p[0], p[1], p[2]);
+  }
+  std::vector<uint8_t> facing;
+  std::vector<std::array<uint32_t, 2>> silhouette;
+  double angle = 0.0;
+  for (auto _ : state) {
+    angle += 0.01;
+    const glm::dvec3 light(3.0 * std::cos(angle), 3.0 * std::sin(angle), 2.0);
+    const double light_distance = glm::length(light);
+    silhouette.clear();
+    if (state.range(2) == 0) {
+      classify_faces(flat, light, facing);
+      for (size_t e = 0; e < flat.edge_faces.size(); ++e)
+        if (facing[flat.edge_faces[e][0]] != facing[flat.edge_faces[e][1]]) silhouette.push_back(flat.edge_vertices[e]);
+    } else {
+      for (const auto f : mesh.faces()) {
+        std::array<glm::dvec3, 3> p;
+        int k = 0;
+        for (const auto v : mesh.fv_range(f)) p[size_t(k++)] = positions[size_t(v.idx())];
+        mesh.property(facing_property, f) = light_side(mesh.property(plane, f), p[0], p[1], p[2], light, light_distance) > 0;
+      }
+      for (const auto e : mesh.edges()) {
+        const auto h = mesh.halfedge_handle(e, 0);
+        if (mesh.property(facing_property, mesh.face_handle(h)) != mesh.property(facing_property, mesh.opposite_face_handle(h)))
+          silhouette.push_back({uint32_t(mesh.from_vertex_handle(h).idx()), uint32_t(mesh.to_vertex_handle(h).idx())});
+      }
+    }
+    benchmark::DoNotOptimize(silhouette.data());
+  }
+  state.counters["silhouette_edges"] = double(silhouette.size());
+}
+BENCHMARK(BM_SilhouetteEdges)->Args({250, 200, 0})->Args({250, 200, 1})->Args({800, 640, 0})->Args({800, 640, 1})
+    ->Unit(benchmark::kMillisecond);
 
 // The same torus through the mesh caster, closed (argument 2 = 0: the
 // silhouette volume) or with one face removed (1: open, so the whole mesh
