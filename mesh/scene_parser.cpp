@@ -158,8 +158,8 @@ class SceneBuilder {
                                               " (expected light, material, sphere, triangle, mesh or camera)");
   }
 
-  Scene finish() {
-    load_meshes();
+  Scene finish(const MeshLoadProgress& progress) {
+    load_meshes(progress);
     if (scene_.lights.empty())
       throw InputError({scene_.path}, "the scene has no light: add a line such as \"light 0.6 0.8 1.6\"");
     return std::move(scene_);
@@ -271,11 +271,12 @@ class SceneBuilder {
 
   // Reads every mesh file once the whole scene has parsed, so that a typo
   // later in the scene is reported before a large file is read.
-  void load_meshes() {
+  void load_meshes(const MeshLoadProgress& progress) {
     const std::filesystem::path folder = std::filesystem::path(scene_.path).parent_path();
     for (auto& [m, path_at] : pending_meshes_) {
       const std::string written = m.path;
       m.path = (folder / written).lexically_normal().string();
+      if (progress) progress(scene_.meshes.size(), pending_meshes_.size(), m.path);
       MeshAnalysis analysis;
       try {
         CheckOptions topology_only;
@@ -353,7 +354,7 @@ class SceneBuilder {
 
 }  // namespace
 
-Scene parse_scene_text(const std::string& text, const std::string& name) {
+Scene parse_scene_text(const std::string& text, const std::string& name, const MeshLoadProgress& progress) {
   SceneBuilder builder(name);
   std::istringstream in(text);
   std::string line;
@@ -368,16 +369,16 @@ Scene parse_scene_text(const std::string& text, const std::string& name) {
     if (!reader.done())
       reader.fail_at_next("unexpected " + reader.got() + " after the end of the " + reader.keyword() + " statement");
   }
-  return builder.finish();
+  return builder.finish(progress);
 }
 
-Scene parse_scene_file(const std::string& path) {
+Scene parse_scene_file(const std::string& path, const MeshLoadProgress& progress) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError({path}, "cannot open the scene file");
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError({path}, "cannot read the scene file");
-  return parse_scene_text(text.str(), path);
+  return parse_scene_text(text.str(), path, progress);
 }
 
 }  // namespace umbra

@@ -192,8 +192,7 @@ int run_check_command(const std::vector<std::string>& argv) {
   size_t closed = 0, open = 0, unreadable = 0;
   int status = 0;
   for (size_t i = 0; i < count; ++i) {
-    while (results[i].wait_for(std::chrono::milliseconds(200)) != std::future_status::ready)
-      progress.update(finished, meshes[i]);
+    progress.update(finished, meshes[i]);
     const CheckOutcome outcome = results[i].get();
     progress.clear();
     std::cout << outcome.out << std::flush;

@@ -12,6 +12,7 @@
 #include "render/render_plan.hpp"
 #include "render/shadow_renderer.hpp"
 #include "tools/command_line.hpp"
+#include "tools/progress_bar.hpp"
 
 namespace umbra {
 
@@ -112,8 +113,14 @@ int run_render_command(const std::vector<std::string>& argv) {
   if (const auto exit_status = parse_command_line("render", kRenderUsage, argv, parse_render_options, options))
     return *exit_status;
   try {
-    Scene scene = parse_scene_file(options.scene_path);
+    // Loading, planning and drawing: three steps, the first per mesh file.
+    std::optional<ProgressBar> progress(std::in_place, 3);
+    Scene scene = parse_scene_file(options.scene_path, [&](size_t loaded, size_t total, const std::string& path) {
+      progress->update(0, "loading mesh " + std::to_string(loaded + 1) + " of " + std::to_string(total) + ": " + path);
+    });
+    progress->clear();
     for (const Warning& w : scene.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
+    progress->update(1, "planning shadow volumes");
     rotate_lights_about_z(scene, options.light_angle_deg);
     require_lights_off_casters(scene);
 
@@ -121,20 +128,25 @@ int run_render_command(const std::vector<std::string>& argv) {
     std::optional<Image> mask;
     if (options.settings.method == RenderMethod::kRaycast) {
       if (options.explain)
-        std::cout << "render plan for " << scene.path << "\n  method: raycast, one eye ray per pixel and an exact "
+        progress->clear(), std::cout << "render plan for " << scene.path << "\n  method: raycast, one eye ray per pixel and an exact "
                   << "shadow ray per light (CPU, double precision)\n";
       RayCastFrame frame = ray_cast_frame(scene, options.settings.width, options.settings.height);
       image = std::move(frame.image);
       if (options.mask) mask = std::move(frame.masks[0]);
     } else {
       const RenderPlan plan = make_render_plan(scene, options.settings);
-      if (options.explain) print_render_plan(std::cout, scene, plan);
+      progress->update(2, "drawing");
+      if (options.explain) {
+        progress.reset();
+        print_render_plan(std::cout, scene, plan);
+      }
       HeadlessContext context(plan.settings.width, plan.settings.height);
       ShadowRenderer renderer(scene, plan);
       image = renderer.render_image(options.show_volumes);
       if (options.mask) mask = renderer.render_mask(0);
     }
 
+    progress.reset();
     write_png(image, options.output);
     if (mask) {
       try {

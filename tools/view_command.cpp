@@ -20,6 +20,7 @@
 #include "render/text_overlay.hpp"
 #include "render/window_context.hpp"
 #include "tools/command_line.hpp"
+#include "tools/progress_bar.hpp"
 
 namespace umbra {
 
@@ -188,8 +189,13 @@ int run_view_command(const std::vector<std::string>& argv) {
   std::optional<Camera> orbited;  // the user's camera, kept across reloads
   // Lights are checked at `angle`, where the next frame will draw them.
   const auto load = [&](double angle) {
-    Scene parsed = parse_scene_file(options.scene_path);
+    std::optional<ProgressBar> progress(std::in_place, 2);  // loading, then preparing the shadows
+    Scene parsed = parse_scene_file(options.scene_path, [&](size_t loaded, size_t total, const std::string& path) {
+      progress->update(0, "loading mesh " + std::to_string(loaded + 1) + " of " + std::to_string(total) + ": " + path);
+    });
+    progress->clear();
     for (const Warning& w : parsed.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
+    progress->update(1, "preparing shadow volumes");
     Scene check = parsed;
     rotate_lights_about_z(check, angle);
     require_lights_off_casters(check);
@@ -199,6 +205,7 @@ int run_view_command(const std::vector<std::string>& argv) {
     scene.meshes = prepare_mesh_casters(scene.frame);
     scene.plan = std::make_unique<RenderPlan>(make_render_plan(scene.frame, scene.meshes, options.settings));
     scene.renderer = std::make_unique<ShadowRenderer>(scene.frame, *scene.plan);
+    progress.reset();
   };
 
   try {

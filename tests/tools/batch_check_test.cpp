@@ -117,6 +117,22 @@ TEST_F(BatchCheck, TheGnuParallelRecipeRunsShardsAtOnceAndConcatenatesToTheWhole
   EXPECT_EQ(without_seconds(read(path("sharded.jsonl"))), whole);
 }
 
+TEST_F(BatchCheck, AProgressBarShowsOnATerminalOnlyOnceTheCheckHasRunForASecond) {
+  fs::create_directories(path("meshes"));
+  for (int i = 0; i < 16; ++i) write("meshes/s" + std::to_string(i) + ".obj", obj_text(test::uv_sphere(200, 200)));
+  // script(1) gives umbra a terminal; its output holds what was drawn there.
+  const std::string command = "script -qec '" + std::string(UMBRA_EXECUTABLE) + " check --jobs 1 " + path("meshes") +
+                              " >/dev/null' " + path("typescript") + " >/dev/null";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  const std::string terminal = read(path("typescript"));
+  EXPECT_NE(terminal.find("] "), std::string::npos) << terminal;
+  EXPECT_NE(terminal.find("/16 "), std::string::npos) << terminal;
+  EXPECT_NE(terminal.find("\r\033[K"), std::string::npos);  // each redraw erases the line first
+  // Without a terminal, stderr holds the summary alone (the other tests check it exactly).
+  const CommandResult piped = run("check --jobs 1 " + path("meshes"));
+  EXPECT_EQ(piped.err.find('['), std::string::npos);
+}
+
 TEST_F(BatchCheck, UsageErrorsForJobsAndShards) {
   const std::string mesh = write("t.obj", obj_text(test::tetrahedron()));
   EXPECT_EQ(run("check --shard 3/3 " + mesh).err,
