@@ -7,6 +7,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/parallel_sort.h>
 
 namespace umbra {
@@ -122,27 +123,104 @@ struct Hierarchy {
                     codes.begin());
   }
 
-  // Calls visit(q) for every q > p whose box overlaps sorted[p]; false when a
-  // call returned false.
-  template <typename Visit>
-  bool overlaps_after(size_t p, Visit&& visit) const {
-    const FloatBox& box = sorted[p];
-    uint32_t stack[192];  // deeper than any tree: 63 code bits, then halving up to 2^32 boxes
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-      const Node& node = nodes[stack[--top]];
-      if (node.end <= p + 1 || !node.box.overlaps(box)) continue;
-      if (node.right == 0) {
-        for (size_t q = std::max(p + 1, size_t(node.first)); q < node.end; ++q)
-          if (sorted[q].overlaps(box) && !visit(q)) return false;
-        continue;
-      }
-      stack[top++] = node.right;
-      stack[top++] = node.left;
-    }
-    return true;
+  bool is_leaf(const Node& node) const { return node.right == 0; }
+};
+
+// Every overlapping pair, by descending the hierarchy against itself: a
+// node's pairs are its children's own and those between the two children,
+// and two nodes whose boxes do not overlap hold no pair between them. The top
+// levels run as parallel tasks; pairs are handed over in batches.
+class SelfCollision {
+ public:
+  SelfCollision(const Hierarchy& hierarchy, const std::vector<uint32_t>& order, const OverlapVisitor& visit)
+      : h_(hierarchy), order_(order), visit_(visit) {}
+
+  bool run() {
+    within(0, 0);
+    return !stopped_;
   }
+
+ private:
+  static constexpr int kParallelDepth = 10;  // tasks below the root: up to a few thousand
+  static constexpr size_t kBatch = 512;
+
+  struct Batch {
+    std::vector<std::pair<uint32_t, uint32_t>> pairs;
+  };
+
+  void emit(Batch& out, uint32_t p, uint32_t q) {
+    out.pairs.emplace_back(order_[p], order_[q]);
+    if (out.pairs.size() >= kBatch) flush(out);
+  }
+  void flush(Batch& out) {
+    if (!out.pairs.empty() && !stopped_.load(std::memory_order_relaxed) && !visit_(out.pairs.data(), out.pairs.size()))
+      stopped_ = true;
+    out.pairs.clear();
+  }
+  // Runs `f(batch)` with a batch of its own, flushed at the end.
+  template <typename F>
+  void with_batch(F&& f) {
+    Batch batch;
+    batch.pairs.reserve(kBatch);
+    f(batch);
+    flush(batch);
+  }
+
+  void within(uint32_t a, int depth) {
+    if (depth >= kParallelDepth) return with_batch([&](Batch& out) { within(a, out); });
+    const Hierarchy::Node& node = h_.nodes[a];
+    if (h_.is_leaf(node)) return with_batch([&](Batch& out) { within(a, out); });
+    tbb::parallel_invoke([&] { within(node.left, depth + 1); }, [&] { within(node.right, depth + 1); },
+                         [&] { between(node.left, node.right, depth + 1); });
+  }
+  void between(uint32_t a, uint32_t b, int depth) {
+    if (depth >= kParallelDepth) return with_batch([&](Batch& out) { between(a, b, out); });
+    const Hierarchy::Node &x = h_.nodes[a], &y = h_.nodes[b];
+    if (stopped_.load(std::memory_order_relaxed) || !x.box.overlaps(y.box)) return;
+    if (h_.is_leaf(x) && h_.is_leaf(y)) return with_batch([&](Batch& out) { between(a, b, out); });
+    const bool split_x = !h_.is_leaf(x) && (h_.is_leaf(y) || x.end - x.first >= y.end - y.first);
+    if (split_x) tbb::parallel_invoke([&] { between(x.left, b, depth + 1); }, [&] { between(x.right, b, depth + 1); });
+    else tbb::parallel_invoke([&] { between(a, y.left, depth + 1); }, [&] { between(a, y.right, depth + 1); });
+  }
+
+  void within(uint32_t a, Batch& out) {
+    if (stopped_.load(std::memory_order_relaxed)) return;
+    const Hierarchy::Node& node = h_.nodes[a];
+    if (!h_.is_leaf(node)) {
+      within(node.left, out);
+      within(node.right, out);
+      between(node.left, node.right, out);
+      return;
+    }
+    for (uint32_t p = node.first; p < node.end; ++p)
+      for (uint32_t q = p + 1; q < node.end; ++q)
+        if (h_.sorted[p].overlaps(h_.sorted[q])) emit(out, p, q);
+  }
+  void between(uint32_t a, uint32_t b, Batch& out) {
+    const Hierarchy::Node &x = h_.nodes[a], &y = h_.nodes[b];
+    if (stopped_.load(std::memory_order_relaxed) || !x.box.overlaps(y.box)) return;
+    if (h_.is_leaf(x) && h_.is_leaf(y)) {
+      for (uint32_t p = x.first; p < x.end; ++p) {
+        if (!h_.sorted[p].overlaps(y.box)) continue;
+        for (uint32_t q = y.first; q < y.end; ++q)
+          if (h_.sorted[p].overlaps(h_.sorted[q])) emit(out, p, q);
+      }
+      return;
+    }
+    const bool split_x = !h_.is_leaf(x) && (h_.is_leaf(y) || x.end - x.first >= y.end - y.first);
+    if (split_x) {
+      between(x.left, b, out);
+      between(x.right, b, out);
+    } else {
+      between(a, y.left, out);
+      between(a, y.right, out);
+    }
+  }
+
+  const Hierarchy& h_;
+  const std::vector<uint32_t>& order_;
+  const OverlapVisitor& visit_;
+  std::atomic<bool> stopped_{false};
 };
 
 }  // namespace
@@ -156,7 +234,7 @@ FloatBox enclosing_box(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec
   return box;
 }
 
-bool for_each_overlapping_pair(std::vector<FloatBox> boxes, const std::function<bool(uint32_t, uint32_t)>& visit) {
+bool for_each_overlapping_pair(std::vector<FloatBox> boxes, const OverlapVisitor& visit) {
   if (boxes.size() < 2) return true;
   MortonKeyed keyed = morton_order(boxes);
   const std::vector<uint32_t> order = std::move(keyed.order);
@@ -165,14 +243,7 @@ bool for_each_overlapping_pair(std::vector<FloatBox> boxes, const std::function<
   std::vector<FloatBox>().swap(boxes);
   const Hierarchy hierarchy(std::move(sorted), keyed.codes);
   std::vector<uint64_t>().swap(keyed.codes);
-  std::atomic<bool> stopped{false};
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, order.size(), 2048), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t p = r.begin(); p < r.end() && !stopped.load(std::memory_order_relaxed); ++p) {
-      const bool finished = hierarchy.overlaps_after(p, [&](size_t q) { return visit(order[p], order[q]); });
-      if (!finished) stopped = true;
-    }
-  });
-  return !stopped;
+  return SelfCollision(hierarchy, order, visit).run();
 }
 
 }  // namespace umbra

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -24,11 +25,14 @@ struct FloatBox {
 };
 FloatBox enclosing_box(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);
 
-// Calls visit(i, j), i != j indices into `boxes`, once for every unordered
-// pair whose boxes overlap, from several threads at once: visit must be safe
-// to call concurrently. When a call returns false the search stops early
-// (calls already under way finish) and the function returns false; it
-// returns true when every pair was visited.
-bool for_each_overlapping_pair(std::vector<FloatBox> boxes, const std::function<bool(uint32_t, uint32_t)>& visit);
+// Takes the overlapping pairs (i, j), i != j indices into the boxes, in
+// batches: called from several threads at once, so it must be safe to call
+// concurrently. Returning false stops the search.
+using OverlapVisitor = std::function<bool(const std::pair<uint32_t, uint32_t>* pairs, size_t count)>;
+
+// Hands every unordered pair of overlapping boxes to `visit` once. Returns
+// true when every pair was visited, false when a call returned false and
+// the search stopped early (calls already under way finish).
+bool for_each_overlapping_pair(std::vector<FloatBox> boxes, const OverlapVisitor& visit);
 
 }  // namespace umbra

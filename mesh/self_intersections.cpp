@@ -49,6 +49,15 @@ bool triangles_intersect(const std::array<Point, 3>& a, const std::array<uint32_
   const int b_vertex = shared_in_a[a_vertex];
   const Kernel::Segment_3 a_opposite(a[size_t((a_vertex + 1) % 3)], a[size_t((a_vertex + 2) % 3)]);
   const Kernel::Segment_3 b_opposite(b[size_t((b_vertex + 1) % 3)], b[size_t((b_vertex + 2) % 3)]);
+  // The common case first, in two orientations: when one triangle's opposite
+  // edge lies strictly on one side of the other's plane, that triangle meets
+  // the plane only at the shared vertex, which the other's opposite edge
+  // does not hold, so neither test below can find anything.
+  const auto strictly_on_one_side = [](const std::array<Point, 3>& t, const Kernel::Segment_3& edge) {
+    const CGAL::Orientation side = CGAL::orientation(t[0], t[1], t[2], edge.source());
+    return side != CGAL::COPLANAR && CGAL::orientation(t[0], t[1], t[2], edge.target()) == side;
+  };
+  if (strictly_on_one_side(a, b_opposite) || strictly_on_one_side(b, a_opposite)) return false;
   return CGAL::do_intersect(a_opposite, Kernel::Triangle_3(b[0], b[1], b[2])) ||
          CGAL::do_intersect(b_opposite, Kernel::Triangle_3(a[0], a[1], a[2]));
 }
@@ -82,16 +91,21 @@ SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positio
     size_t calls = 0;
   };
   tbb::enumerable_thread_specific<WorkerState> workers;
-  const auto test = [&](uint32_t x, uint32_t y) {
+  const auto test = [&](const std::pair<uint32_t, uint32_t>* pairs, size_t count) {
     WorkerState& state = workers.local();
-    if ((++state.calls & 1023) == 0 && Clock::now() > deadline) return false;
-    const uint32_t s = triangle_of_box[x], t = triangle_of_box[y];
-    const uint32_t fs = triangle_face[s], ft = triangle_face[t];
-    if (fs == ft) return true;
-    const auto& is = triangles[s];
-    const auto& it = triangles[t];
-    if (triangles_intersect({point(is[0]), point(is[1]), point(is[2])}, is, {point(it[0]), point(it[1]), point(it[2])}, it))
-      state.face_pairs.emplace_back(std::min(fs, ft), std::max(fs, ft));
+    if ((state.calls += count) >= 1024) {
+      state.calls = 0;
+      if (Clock::now() > deadline) return false;
+    }
+    for (size_t k = 0; k < count; ++k) {
+      const uint32_t s = triangle_of_box[pairs[k].first], t = triangle_of_box[pairs[k].second];
+      const uint32_t fs = triangle_face[s], ft = triangle_face[t];
+      if (fs == ft) continue;
+      const auto& is = triangles[s];
+      const auto& it = triangles[t];
+      if (triangles_intersect({point(is[0]), point(is[1]), point(is[2])}, is, {point(it[0]), point(it[1]), point(it[2])}, it))
+        state.face_pairs.emplace_back(std::min(fs, ft), std::max(fs, ft));
+    }
     return true;
   };
 

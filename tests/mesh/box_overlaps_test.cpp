@@ -25,9 +25,13 @@ PairSet brute_force_pairs(const std::vector<FloatBox>& boxes) {
 std::multiset<std::pair<uint32_t, uint32_t>> searched_pairs(const std::vector<FloatBox>& boxes) {
   std::mutex lock;
   std::multiset<std::pair<uint32_t, uint32_t>> pairs;
-  const bool complete = for_each_overlapping_pair(boxes, [&](uint32_t i, uint32_t j) {
+  const bool complete = for_each_overlapping_pair(boxes, [&](const std::pair<uint32_t, uint32_t>* found, size_t count) {
     std::lock_guard<std::mutex> guard(lock);
-    pairs.insert({std::min(i, j), std::max(i, j)});
+    for (size_t k = 0; k < count; ++k) {
+      const auto [i, j] = found[k];
+      EXPECT_NE(i, j);
+      pairs.insert({std::min(i, j), std::max(i, j)});
+    }
     return true;
   });
   EXPECT_TRUE(complete);
@@ -84,7 +88,8 @@ TEST(BoxOverlaps, FloatBoxesContainTheDoublePointsTheyBound) {
 TEST(BoxOverlaps, AVisitThatReturnsFalseStopsTheSearchAndSaysItIsIncomplete) {
   std::vector<FloatBox> boxes(5000, box_at({0.0, 0.0, 0.0}, {1.0, 1.0, 1.0}));  // every pair overlaps
   std::atomic<size_t> visits{0};
-  const bool complete = for_each_overlapping_pair(boxes, [&](uint32_t, uint32_t) { return ++visits < 100; });
+  const bool complete =
+      for_each_overlapping_pair(boxes, [&](const std::pair<uint32_t, uint32_t>*, size_t count) { return (visits += count) < 2000; });
   EXPECT_FALSE(complete);
   EXPECT_LT(visits.load(), size_t(5000) * 4999 / 2 / 10);
 }
