@@ -40,38 +40,50 @@ bool all_collinear(const std::vector<glm::dvec3>& positions, const uint32_t* v, 
   return true;
 }
 
-// Marks every face whose vertex set equals an earlier face's: one pass in
-// file order over an open-addressing table of the faces seen so far, keyed by
-// a hash of their sorted vertices; only faces of equal hash are compared.
-void find_duplicates(const PolygonSoup& soup, Faces& faces) {
-  const auto sorted_vertices = [&](uint32_t f, std::vector<uint32_t>& out) {
+// Marks every face whose vertex set equals an earlier face's. Equal sets
+// have the same smallest vertex, so faces are bucketed by it (a counting
+// sort, in file order within a bucket) and compared only within a bucket,
+// which for most vertices holds two or three faces.
+void find_duplicates(const PolygonSoup& soup, size_t vertex_count, Faces& faces) {
+  const auto smallest = [&](uint32_t f) {
     const uint32_t* v = faces.corners.data() + soup.polygon_starts[f];
-    out.assign(v, v + soup.corner_count(f));
-    std::sort(out.begin(), out.end());
+    return *std::min_element(v, v + soup.corner_count(f));
   };
-  const auto hash_of = [](const std::vector<uint32_t>& sorted) {
-    uint64_t hash = 1469598103934665603ull;  // FNV-1a over the sorted indices
-    for (uint32_t v : sorted) hash = (hash ^ v) * 1099511628211ull;
-    return hash ^ (hash >> 29);
-  };
-  size_t slots = 16;
-  while (slots < 2 * soup.polygon_count()) slots *= 2;
-  std::vector<std::pair<uint64_t, uint32_t>> table(slots, {0, kNone});  // (hash, face)
-  std::vector<uint32_t> a, b;
-  for (uint32_t f = 0; f < soup.polygon_count(); ++f) {
-    if (faces.repeats_vertex[f]) continue;
-    sorted_vertices(f, a);
-    const uint64_t hash = hash_of(a);
-    size_t slot = hash & (slots - 1);
-    for (; table[slot].second != kNone; slot = (slot + 1) & (slots - 1)) {
-      if (table[slot].first != hash) continue;
-      sorted_vertices(table[slot].second, b);
-      if (a != b) continue;
-      faces.duplicate[f] = 1;
-      faces.duplicate_of[f] = table[slot].second;  // the first face with these vertices
-      break;
+  std::vector<uint32_t> bucket_start(vertex_count + 1, 0);
+  for (uint32_t f = 0; f < soup.polygon_count(); ++f)
+    if (!faces.repeats_vertex[f]) ++bucket_start[smallest(f) + 1];
+  for (size_t v = 0; v < vertex_count; ++v) bucket_start[v + 1] += bucket_start[v];
+  std::vector<uint32_t> bucketed(bucket_start[vertex_count]);
+  {
+    std::vector<uint32_t> fill(bucket_start.begin(), bucket_start.end() - 1);
+    for (uint32_t f = 0; f < soup.polygon_count(); ++f)
+      if (!faces.repeats_vertex[f]) bucketed[fill[smallest(f)]++] = f;
+  }
+  // Each face as its sorted vertices, for the faces of one bucket.
+  std::vector<std::vector<uint32_t>> sorted;
+  std::vector<uint32_t> rank;
+  for (size_t v = 0; v < vertex_count; ++v) {
+    const uint32_t first = bucket_start[v], end = bucket_start[v + 1];
+    if (end - first < 2) continue;
+    sorted.resize(end - first);
+    for (uint32_t i = first; i < end; ++i) {
+      const uint32_t f = bucketed[i];
+      const uint32_t* c = faces.corners.data() + soup.polygon_starts[f];
+      sorted[i - first].assign(c, c + soup.corner_count(f));
+      std::sort(sorted[i - first].begin(), sorted[i - first].end());
     }
-    if (!faces.duplicate[f]) table[slot] = {hash, f};
+    // By vertices, then file order: each duplicate follows the first face
+    // with its vertices (a hub vertex's bucket may hold thousands).
+    rank.resize(end - first);
+    for (uint32_t i = 0; i < rank.size(); ++i) rank[i] = i;
+    std::sort(rank.begin(), rank.end(), [&](uint32_t x, uint32_t y) { return sorted[x] != sorted[y] ? sorted[x] < sorted[y] : x < y; });
+    for (size_t k = 1; k < rank.size(); ++k) {
+      if (sorted[rank[k]] != sorted[rank[k - 1]]) continue;
+      const uint32_t f = bucketed[first + rank[k]];
+      faces.duplicate[f] = 1;
+      faces.duplicate_of[f] = faces.duplicate[bucketed[first + rank[k - 1]]] ? faces.duplicate_of[bucketed[first + rank[k - 1]]]
+                                                                            : bucketed[first + rank[k - 1]];
+    }
   }
 }
 
@@ -229,7 +241,7 @@ void MeshAnalyser::sort_faces() {
   }
   report.vertices = size_t(std::count(vertex_used.begin(), vertex_used.end(), 1));
   report.isolated_vertices = vertex_count - report.vertices;
-  find_duplicates(soup, faces);
+  find_duplicates(soup, vertex_count, faces);
   for (uint32_t f = 0; f < face_count; ++f) {
     if (!faces.duplicate[f]) continue;
     ++report.duplicate_faces;

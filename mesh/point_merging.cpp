@@ -31,16 +31,31 @@ MergedPoints merge_coincident_points(const std::vector<glm::dvec3>& points) {
 
   MergedPoints merged;
   merged.vertex_of_point.resize(points.size());
-  for (uint32_t i = 0; i < points.size(); ++i) {
-    const glm::dvec3& p = points[i];
-    size_t slot = hash_of(p) & (slots - 1);
-    while (table[slot] != kEmpty && merged.positions[table[slot]] != p) slot = (slot + 1) & (slots - 1);
-    if (table[slot] == kEmpty) {
-      table[slot] = uint32_t(merged.positions.size());
-      merged.positions.push_back(p);
-      merged.first_point.push_back(i);
+  // Slots are random accesses into a table far larger than the caches: the
+  // next block's are computed and prefetched while this block is inserted.
+  constexpr size_t kBlock = 16;
+  size_t slot_of[2][kBlock];
+  const auto hash_block = [&](size_t first, size_t (&out)[kBlock]) {
+    for (size_t k = 0; k < kBlock && first + k < points.size(); ++k) {
+      out[k] = hash_of(points[first + k]) & (slots - 1);
+      __builtin_prefetch(&table[out[k]]);
     }
-    merged.vertex_of_point[i] = table[slot];
+  };
+  hash_block(0, slot_of[0]);
+  for (size_t first = 0, b = 0; first < points.size(); first += kBlock, b ^= 1) {
+    if (first + kBlock < points.size()) hash_block(first + kBlock, slot_of[b ^ 1]);
+    for (size_t k = 0; k < kBlock && first + k < points.size(); ++k) {
+      const uint32_t i = uint32_t(first + k);
+      const glm::dvec3& p = points[i];
+      size_t slot = slot_of[b][k];
+      while (table[slot] != kEmpty && merged.positions[table[slot]] != p) slot = (slot + 1) & (slots - 1);
+      if (table[slot] == kEmpty) {
+        table[slot] = uint32_t(merged.positions.size());
+        merged.positions.push_back(p);
+        merged.first_point.push_back(i);
+      }
+      merged.vertex_of_point[i] = table[slot];
+    }
   }
   return merged;
 }

@@ -205,6 +205,35 @@ TEST(MeshCheck, DegenerateFacesAreCountedAndKeptOutOfTheTests) {
   EXPECT_EQ(r.self_intersections.face_pairs, 0u);
 }
 
+TEST(MeshCheck, EveryCopyOfAFaceNamesTheFirstAndQuadsMatchInAnyRotation) {
+  // Faces: 0-3 the tetrahedron, then 4 and 6 repeat face 2, 5 repeats 0; a
+  // quad (7) is repeated rotated and reversed (8), and a triangle sharing its
+  // smallest vertex and two more (9) is not a copy of anything.
+  PolygonSoup soup = tetrahedron();
+  soup.corners.insert(soup.corners.end(), {soup.corners[6], soup.corners[7], soup.corners[8]});
+  soup.end_polygon(10);
+  soup.corners.insert(soup.corners.end(), {soup.corners[2], soup.corners[0], soup.corners[1]});
+  soup.end_polygon(11);
+  soup.corners.insert(soup.corners.end(), {soup.corners[8], soup.corners[7], soup.corners[6]});
+  soup.end_polygon(12);
+  soup.add_point({5, 5, 5}, 13);
+  soup.add_point({6, 5, 5}, 14);
+  soup.add_point({6, 6, 5}, 15);
+  soup.add_point({5, 6, 5}, 16);
+  soup.corners.insert(soup.corners.end(), {4, 5, 6, 7});
+  soup.end_polygon(17);
+  soup.corners.insert(soup.corners.end(), {6, 5, 4, 7});
+  soup.end_polygon(18);
+  soup.corners.insert(soup.corners.end(), {4, 5, 6});
+  soup.end_polygon(19);
+  const MeshReport r = check_mesh(soup);
+  EXPECT_EQ(r.duplicate_faces, 4u);
+  ASSERT_EQ(r.examples.duplicate_faces.size(), 4u);
+  std::vector<std::pair<uint32_t, uint32_t>> named;
+  for (const auto& [copy, original] : r.examples.duplicate_faces) named.push_back({copy.index, original.index});
+  EXPECT_EQ(named, (std::vector<std::pair<uint32_t, uint32_t>>{{4, 2}, {5, 0}, {6, 2}, {8, 7}}));
+}
+
 TEST(MeshCheck, DuplicateFaceIsNamedWithTheFaceItRepeats) {
   PolygonSoup soup = tetrahedron();
   soup.corners.insert(soup.corners.end(), {1, 0, 2});  // face 0 reversed
