@@ -88,8 +88,9 @@ void find_duplicates(const PolygonSoup& soup, size_t vertex_count, Faces& faces)
 }
 
 // One face's use of an edge, going from the vertex at `corner` to the next one.
+// Filed under the edge's smaller vertex, it names the larger one.
 struct EdgeUse {
-  uint64_t key;  // (smaller vertex << 32) | larger vertex
+  uint32_t other;  // the larger vertex
   uint32_t face;
   uint32_t corner_and_direction;  // index into Faces::corners << 1 | traversed from smaller to larger vertex
 
@@ -105,10 +106,11 @@ uint32_t next_corner(const PolygonSoup& soup, uint32_t face, uint32_t corner) {
 // the earlier ones left in the members below.
 class MeshAnalyser {
  public:
-  // With `disposable_points`, the soup's points are freed once merged.
-  MeshAnalyser(const PolygonSoup& soup, MeshAnalysis& analysis, std::vector<glm::dvec3>* disposable_points)
+  // With `disposable` (the soup itself), its points are freed once merged
+  // and its corners become the merged vertices' in place.
+  MeshAnalyser(const PolygonSoup& soup, MeshAnalysis& analysis, PolygonSoup* disposable)
       : soup(soup),
-        disposable_points(disposable_points),
+        disposable(disposable),
         analysis(analysis),
         report(analysis.report),
         examples(analysis.report.examples),
@@ -125,7 +127,7 @@ class MeshAnalyser {
 
   void run(const CheckOptions& options) {
     describe_file();
-    if (disposable_points) std::vector<glm::dvec3>().swap(*disposable_points);
+    if (disposable) std::vector<glm::dvec3>().swap(disposable->points);
     sort_faces();
     group_edges();
     label_components();
@@ -168,7 +170,7 @@ class MeshAnalyser {
   }
 
   const PolygonSoup& soup;
-  std::vector<glm::dvec3>* disposable_points;
+  PolygonSoup* disposable;
   MeshAnalysis& analysis;
   MeshReport& report;
   MeshReport::Examples& examples;
@@ -220,8 +222,13 @@ void MeshAnalyser::describe_file() {
 
 // Faces: degenerate, duplicate, or part of the topology.
 void MeshAnalyser::sort_faces() {
-  faces.corners.resize(soup.corners.size());
-  for (size_t c = 0; c < soup.corners.size(); ++c) faces.corners[c] = merged.vertex_of_point[soup.corners[c]];
+  if (disposable) {
+    for (uint32_t& corner : disposable->corners) corner = merged.vertex_of_point[corner];
+    faces.corners = std::move(disposable->corners);
+  } else {
+    faces.corners.resize(soup.corners.size());
+    for (size_t c = 0; c < soup.corners.size(); ++c) faces.corners[c] = merged.vertex_of_point[soup.corners[c]];
+  }
   std::vector<uint32_t>().swap(merged.vertex_of_point);
   faces.repeats_vertex.assign(face_count, 0);
   faces.collinear.assign(face_count, 0);
@@ -270,31 +277,32 @@ void MeshAnalyser::group_edges() {
       if (!faces.in_topology(f)) continue;
       for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c) {
         const uint32_t a = faces.corners[c], b = faces.corners[next_corner(soup, f, c)];
-        uses[fill[std::min(a, b)]++] = {(uint64_t(std::min(a, b)) << 32) | std::max(a, b), f, (c << 1) | uint32_t(a < b)};
+        uses[fill[std::min(a, b)]++] = {std::max(a, b), f, (c << 1) | uint32_t(a < b)};
       }
     }
   }
   for (size_t v = 0; v < vertex_count; ++v) {
     if (bucket_start[v + 1] - bucket_start[v] > 32) {  // a vertex of high degree, the hub of a fan
       std::sort(uses.begin() + bucket_start[v], uses.begin() + bucket_start[v + 1], [](const EdgeUse& x, const EdgeUse& y) {
-        return x.key != y.key ? x.key < y.key : x.face < y.face;
+        return x.other != y.other ? x.other < y.other : x.face < y.face;
       });
       continue;
     }
     for (uint32_t i = bucket_start[v] + 1; i < bucket_start[v + 1]; ++i) {
       const EdgeUse use = uses[i];
       uint32_t j = i;
-      for (; j > bucket_start[v] && uses[j - 1].key > use.key; --j) uses[j] = uses[j - 1];
+      for (; j > bucket_start[v] && uses[j - 1].other > use.other; --j) uses[j] = uses[j - 1];
       uses[j] = use;  // insertion sort: stable, and most buckets hold a handful
     }
   }
-  std::vector<uint32_t>().swap(bucket_start);
 
-  for (size_t i = 0; i < uses.size();) {
+  for (size_t i = 0, bucket = 0; i < uses.size();) {
+    while (bucket_start[bucket + 1] <= i) ++bucket;  // the bucket, and so the smaller vertex, of use i
+    const uint32_t a = uint32_t(bucket);
     size_t j = i + 1;
-    while (j < uses.size() && uses[j].key == uses[i].key) ++j;
-    const uint32_t a = uint32_t(uses[i].key >> 32), b = uint32_t(uses[i].key);
-    edges.push_back({uses[i].key, uses[i].face, uint32_t(j - i)});
+    while (j < bucket_start[bucket + 1] && uses[j].other == uses[i].other) ++j;
+    const uint32_t b = uses[i].other;
+    edges.push_back({(uint64_t(a) << 32) | b, uses[i].face, uint32_t(j - i)});
     for (size_t k = i + 1; k < j; ++k) components.unite(uses[i].face, uses[k].face);
     if (j - i == 1) {
       ++report.border_edges;
@@ -320,6 +328,7 @@ void MeshAnalyser::group_edges() {
     }
     i = j;
   }
+  std::vector<uint32_t>().swap(bucket_start);
   report.edges = edges.size();
   std::vector<EdgeUse>().swap(uses);  // the largest array; the edges and unions hold what is needed
 }
@@ -517,18 +526,18 @@ void MeshAnalyser::search_self_intersections(const CheckOptions& options) {
 
 namespace {
 
-MeshAnalysis analyse(const PolygonSoup& soup, std::vector<glm::dvec3>* disposable_points, const CheckOptions& options) {
+MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const CheckOptions& options) {
   if (soup.corners.size() >= (size_t(1) << 31))
     throw InputError({soup.path, 0, 0}, "too large to check: more than 2^31 face corners");
   MeshAnalysis analysis;
-  MeshAnalyser(soup, analysis, disposable_points).run(options);
+  MeshAnalyser(soup, analysis, disposable).run(options);
   return analysis;
 }
 
 }  // namespace
 
 MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options) { return analyse(soup, nullptr, options); }
-MeshAnalysis analyse_mesh(PolygonSoup&& soup, const CheckOptions& options) { return analyse(soup, &soup.points, options); }
+MeshAnalysis analyse_mesh(PolygonSoup&& soup, const CheckOptions& options) { return analyse(soup, &soup, options); }
 MeshReport check_mesh(const PolygonSoup& soup, const CheckOptions& options) { return analyse_mesh(soup, options).report; }
 MeshReport check_mesh(PolygonSoup&& soup, const CheckOptions& options) { return analyse_mesh(std::move(soup), options).report; }
 

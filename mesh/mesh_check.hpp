@@ -30,8 +30,9 @@ struct MeshAnalysis {
 
 MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options = {});
 MeshReport check_mesh(const PolygonSoup& soup, const CheckOptions& options = {});
-// The same, freeing the soup's points as soon as they are merged: a soup
-// read from a file is the largest thing the check holds.
+// The same, taking the soup apart as it goes (its points freed once merged,
+// its corners reused): a soup read from a file is the largest thing the
+// check holds.
 MeshAnalysis analyse_mesh(PolygonSoup&& soup, const CheckOptions& options = {});
 MeshReport check_mesh(PolygonSoup&& soup, const CheckOptions& options = {});
 
