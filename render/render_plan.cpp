@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <utility>
 
+#include <tbb/parallel_invoke.h>
+
 #include "mesh/orientation.hpp"
 #include "render/camera_transform.hpp"
 #include "render/planar_receivers.hpp"
@@ -39,6 +41,23 @@ CasterEntry triangle_entry(const Triangle& t, const Light& light) {
   return e;
 }
 
+// What of a mesh's plan depends on the light's position alone: how many of
+// its layers may lie over a point, and when more than a stencil count's 255,
+// runs of its faces whose layers fit, each with its own volume's adjacency.
+RenderPlan::LayerBounds layer_bounds_of(const Mesh& mesh, const glm::dvec3& light) {
+  RenderPlan::LayerBounds bounds{light, 0, {}, {}};
+  if (!mesh.triangles.empty()) bounds.bound = layer_bound(mesh.positions, mesh.triangles, light, kMaxStencilCount);
+  if (bounds.bound > kMaxStencilCount) {
+    bounds.runs = layer_bounded_runs(mesh.positions, mesh.triangles, light, kMaxStencilCount);
+    for (const FaceRun& run : bounds.runs) {
+      std::vector<uint8_t> in_run(mesh.triangles.size(), 0);
+      std::fill(in_run.begin() + run.first, in_run.begin() + run.end, uint8_t(1));
+      bounds.run_volumes.push_back(build_multiplicity_adjacency(mesh.positions, mesh.triangles, mesh.edges, in_run));
+    }
+  }
+  return bounds;
+}
+
 // A mesh's entry. Its volume goes to light_plan.mesh_volumes[slot], whose
 // index buffer is kept from the previous frame when there is one; when more
 // than a stencil count's 255 of its layers may lie over a point, one
@@ -55,18 +74,7 @@ CasterEntry mesh_entry(const Scene& scene, size_t index, const MeshCaster& caste
     e.method = "per-triangle volumes, the slow reference (--method triangles; " + triangles + ")";
     return e;
   }
-  if (cached.light != light.position) {
-    cached = {light.position, 0, {}, {}};
-    if (!mesh.triangles.empty()) cached.bound = layer_bound(mesh.positions, mesh.triangles, light.position, kMaxStencilCount);
-    if (cached.bound > kMaxStencilCount) {
-      cached.runs = layer_bounded_runs(mesh.positions, mesh.triangles, light.position, kMaxStencilCount);
-      for (const FaceRun& run : cached.runs) {
-        std::vector<uint8_t> in_run(mesh.triangles.size(), 0);
-        std::fill(in_run.begin() + run.first, in_run.begin() + run.end, uint8_t(1));
-        cached.run_volumes.push_back(build_multiplicity_adjacency(mesh.positions, mesh.triangles, mesh.edges, in_run));
-      }
-    }
-  }
+  if (cached.light != light.position) cached = layer_bounds_of(mesh, light.position);
   const auto next_volume = [&]() -> MeshVolumePlan& {
     if (slot == light_plan.mesh_volumes.size()) light_plan.mesh_volumes.emplace_back();
     MeshVolumePlan& volume = light_plan.mesh_volumes[slot++];
@@ -254,7 +262,25 @@ void plan_planar_light(const Scene& scene, const std::vector<ReceiverPlane>& rec
 }  // namespace
 
 RenderPlan make_render_plan(const Scene& scene, const RenderSettings& settings) {
-  return make_render_plan(scene, prepare_mesh_casters(scene), settings);
+  // The meshes' casters and, for the methods that count volumes, every
+  // light's layer bounds of every mesh need only the scene and not each
+  // other: both are made at once, on separate cores.
+  RenderPlan plan;
+  plan.settings = settings;
+  std::vector<MeshCaster> casters;
+  const RenderMethod m = settings.method;
+  const bool counts_volumes = m != RenderMethod::kShadowMap && m != RenderMethod::kPlanar && m != RenderMethod::kTriangles &&
+                              m != RenderMethod::kRaycast;
+  tbb::parallel_invoke([&] { casters = prepare_mesh_casters(scene); },
+                       [&] {
+                         if (!counts_volumes) return;
+                         plan.layer_bounds.assign(scene.lights.size(), std::vector<RenderPlan::LayerBounds>(scene.meshes.size()));
+                         for (size_t i = 0; i < scene.lights.size(); ++i)
+                           for (size_t k = 0; k < scene.meshes.size(); ++k)
+                             plan.layer_bounds[i][k] = layer_bounds_of(scene.meshes[k], scene.lights[i].position);
+                       });
+  update_render_plan(scene, casters, plan);
+  return plan;
 }
 
 RenderPlan make_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshes, const RenderSettings& settings) {
