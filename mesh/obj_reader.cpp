@@ -3,6 +3,7 @@
 // negative. Texture coordinates, normals, groups and materials are skipped:
 // a check needs only positions and faces.
 #include <charconv>
+#include <cstring>
 #include <limits>
 
 #include "mesh/mesh_readers.hpp"
@@ -30,12 +31,31 @@ uint32_t corner_index(TextScanner& scanner, std::string_view corner, size_t poin
   return uint32_t(index);
 }
 
+// How many lines start with "v " and "f ": one quick pass, so that the
+// arrays are allocated once rather than grown (and copied) as they fill.
+std::pair<size_t, size_t> vertex_and_face_lines(std::string_view text) {
+  size_t vertices = 0, faces = 0;
+  for (size_t at = 0; at + 1 < text.size();) {
+    if (text[at + 1] == ' ' || text[at + 1] == '\t') vertices += text[at] == 'v', faces += text[at] == 'f';
+    const void* newline = std::memchr(text.data() + at, '\n', text.size() - at);
+    if (!newline) break;
+    at = size_t(static_cast<const char*>(newline) - text.data()) + 1;
+  }
+  return {vertices, faces};
+}
+
 }  // namespace
 
 PolygonSoup read_obj(std::string_view text, const std::string& path) {
   PolygonSoup soup;
   soup.path = path;
   soup.format = "OBJ";
+  const auto [vertex_lines, face_lines] = vertex_and_face_lines(text);
+  soup.points.reserve(vertex_lines);
+  soup.point_lines.reserve(vertex_lines);
+  soup.corners.reserve(3 * face_lines);
+  soup.polygon_starts.reserve(face_lines + 1);
+  soup.polygon_lines.reserve(face_lines);
   TextScanner scanner(text, path);
   while (scanner.next_line()) {
     const std::string_view keyword = scanner.field();
