@@ -1,8 +1,10 @@
 #include "mesh/scene_parser.hpp"
 
+#include <atomic>
 #include <charconv>
-#include <filesystem>
 #include <cmath>
+#include <exception>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
@@ -11,6 +13,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/mat3x3.hpp>
+#include <tbb/parallel_for.h>
 
 #include "mesh/mesh_check.hpp"
 #include "mesh/mesh_file.hpp"
@@ -271,44 +274,66 @@ class SceneBuilder {
 
   // Reads every mesh file once the whole scene has parsed, so that a typo
   // later in the scene is reported before a large file is read.
+  // Meshes load on every core, each on its own; the first error in file
+  // order is the one reported, and warnings come in file order.
   void load_meshes(const MeshLoadProgress& progress) {
     const std::filesystem::path folder = std::filesystem::path(scene_.path).parent_path();
-    for (auto& [m, path_at] : pending_meshes_) {
-      const std::string written = m.path;
-      m.path = (folder / written).lexically_normal().string();
-      if (progress) progress(scene_.meshes.size(), pending_meshes_.size(), m.path);
-      MeshAnalysis analysis;
+    std::vector<std::string> written(pending_meshes_.size());
+    for (size_t k = 0; k < pending_meshes_.size(); ++k) {
+      Mesh& m = pending_meshes_[k].mesh;
+      written[k] = m.path;
+      m.path = (folder / written[k]).lexically_normal().string();
+    }
+    std::vector<std::exception_ptr> errors(pending_meshes_.size());
+    std::atomic<size_t> started{0};
+    tbb::parallel_for(size_t(0), pending_meshes_.size(), [&](size_t k) {
+      if (progress) progress(started++, pending_meshes_.size(), pending_meshes_[k].mesh.path);
       try {
-        CheckOptions topology_only;
-        topology_only.self_intersection_seconds = 0.0;
-        analysis = analyse_mesh(read_polygon_soup(m.path), topology_only);
-      } catch (const InputError& e) {
-        if (e.where().line == 0)  // the file as a whole: say so at the statement that names it
-          throw InputError(path_at, "mesh file " + in_quotes(m.path) + ": " + e.message());
-        throw InputError(e.where(), e.message() + " (in the mesh of " + m.where.str() + ")");
+        load_mesh(pending_meshes_[k]);
+      } catch (...) {
+        errors[k] = std::current_exception();
       }
-      // Scale, then rotate, then translate (scene-format.md); a positive scale
-      // and a rotation keep the faces' orientation.
-      const glm::dmat3 rotation(glm::rotate(glm::dmat4(1.0), glm::radians(m.rotation_deg), glm::normalize(m.rotation_axis)));
-      m.positions.reserve(analysis.positions.size());
-      for (const glm::dvec3& p : analysis.positions) m.positions.push_back(rotation * (m.scale * p) + m.translation);
-      if (!m.positions.empty()) {
-        m.bounds_min = m.bounds_max = m.positions[0];
-        for (const glm::dvec3& p : m.positions) {
-          m.bounds_min = glm::min(m.bounds_min, p);
-          m.bounds_max = glm::max(m.bounds_max, p);
-        }
-      }
-      m.triangles = std::move(analysis.triangles);
-      m.report = std::move(analysis.report);
-      m.edges = build_edge_table(m.triangles, m.positions.size());
-      m.components = find_closed_components(m.triangles, m.edges, m.positions.size());
+    });
+    for (size_t k = 0; k < pending_meshes_.size(); ++k) {
+      if (errors[k]) std::rethrow_exception(errors[k]);
+      Mesh& m = pending_meshes_[k].mesh;
       if (m.triangles.empty())
-        warn(m.where, "mesh " + in_quotes(written) + " has no faces: it casts no shadow");
+        warn(m.where, "mesh " + in_quotes(written[k]) + " has no faces: it casts no shadow");
       else if (!m.components.all_closed())
-        warn(m.where, "mesh " + in_quotes(written) + " is " + m.components.phrase() + ": " + m.components.volume_phrase());
+        warn(m.where, "mesh " + in_quotes(written[k]) + " is " + m.components.phrase() + ": " + m.components.volume_phrase());
       scene_.meshes.push_back(std::move(m));
     }
+  }
+
+  // Reads, checks and places one mesh; throws its located InputError.
+  static void load_mesh(PendingMesh& pending) {
+    Mesh& m = pending.mesh;
+    MeshAnalysis analysis;
+    try {
+      CheckOptions topology_only;
+      topology_only.self_intersection_seconds = 0.0;
+      analysis = analyse_mesh(read_polygon_soup(m.path), topology_only);
+    } catch (const InputError& e) {
+      if (e.where().line == 0)  // the file as a whole: say so at the statement that names it
+        throw InputError(pending.path_at, "mesh file " + in_quotes(m.path) + ": " + e.message());
+      throw InputError(e.where(), e.message() + " (in the mesh of " + m.where.str() + ")");
+    }
+    // Scale, then rotate, then translate (scene-format.md); a positive scale
+    // and a rotation keep the faces' orientation.
+    const glm::dmat3 rotation(glm::rotate(glm::dmat4(1.0), glm::radians(m.rotation_deg), glm::normalize(m.rotation_axis)));
+    m.positions.reserve(analysis.positions.size());
+    for (const glm::dvec3& p : analysis.positions) m.positions.push_back(rotation * (m.scale * p) + m.translation);
+    if (!m.positions.empty()) {
+      m.bounds_min = m.bounds_max = m.positions[0];
+      for (const glm::dvec3& p : m.positions) {
+        m.bounds_min = glm::min(m.bounds_min, p);
+        m.bounds_max = glm::max(m.bounds_max, p);
+      }
+    }
+    m.triangles = std::move(analysis.triangles);
+    m.report = std::move(analysis.report);
+    m.edges = build_edge_table(m.triangles, m.positions.size());
+    m.components = find_closed_components(m.triangles, m.edges, m.positions.size());
   }
 
   void camera(StatementReader& r) {

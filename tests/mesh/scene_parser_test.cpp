@@ -218,6 +218,26 @@ TEST_F(SceneMeshes, ErrorInsideTheMeshFileNamesThatFileAndTheStatement) {
                 "the file has 90, and it does not begin with \"solid\" as ascii STL does");
 }
 
+TEST_F(SceneMeshes, ManyMeshesLoadTogetherInFileOrderAndTheFirstBrokenOneIsReported) {
+  write("tet.obj", kTetrahedronObj);
+  write("open.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n");
+  write("bad1.obj", "v 0 0 0\nv 1 0 nan\n");
+  write("bad2.obj", "v 0 0 0\nv 1 0 inf\n");
+  std::string text = "light 0 0 5\n";
+  for (int k = 0; k < 12; ++k) text += std::string(k % 3 == 1 ? "mesh open.obj" : "mesh tet.obj") + " translate " + std::to_string(k) + " 0 0\n";
+  const Scene scene = parse(text);
+  ASSERT_EQ(scene.meshes.size(), 12u);
+  for (int k = 0; k < 12; ++k) {
+    EXPECT_EQ(scene.meshes[size_t(k)].where.line, k + 2);
+    EXPECT_EQ(scene.meshes[size_t(k)].positions[0].x, double(k));
+  }
+  ASSERT_EQ(scene.warnings.size(), 4u);
+  for (size_t w = 0; w < 4; ++w) EXPECT_EQ(scene.warnings[w].where.line, int(3 * w + 3));
+  EXPECT_EQ(error(text + "mesh bad2.obj\nmesh tet.obj\nmesh bad1.obj\n"),
+            folder_ + "bad2.obj:2:7: the vertex z coordinate is \"inf\", not a finite number (in the mesh of " + folder_ +
+                "s.scene:14:1)");
+}
+
 TEST(SceneParserErrors, CameraNeedsEveryPart) {
   EXPECT_EQ(error_of(kLight + "camera eye 0 0 5 target 0 0 0 fovy 40\n"),
             "t.scene:2:38: the camera needs \"up\" (camera eye X Y Z target X Y Z up X Y Z fovy DEG)");
