@@ -1,6 +1,7 @@
 #include "mesh/self_intersections.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -14,6 +15,58 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
+
+// A projection of space onto a coordinate plane, dropping the axis along
+// which triangle t's normal is largest, so that t's projection has area.
+// Projecting is exact (a coordinate is dropped), and on t's plane it is an
+// affine bijection: orientations there keep or all reverse their signs.
+struct Projection {
+  int u, v;  // the kept axes
+  explicit Projection(const std::array<Point, 3>& t) {
+    const Kernel::Vector_3 n = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
+    const double ax = std::abs(n.x()), ay = std::abs(n.y()), az = std::abs(n.z());
+    const int drop = ax >= ay && ax >= az ? 0 : ay >= az ? 1 : 2;
+    u = (drop + 1) % 3, v = (drop + 2) % 3;
+  }
+  // The exact orientation of the projected points: the determinant in
+  // doubles when it exceeds Shewchuk's bound on its rounding error
+  // ("Adaptive Precision Floating-Point Arithmetic and Fast Robust Geometric
+  // Predicates", 1997: ccwerrboundA = (3 + 16 eps) eps), else CGAL's exact
+  // predicate.
+  CGAL::Orientation orientation(const Point& p, const Point& q, const Point& r) const {
+    const double left = (p[u] - r[u]) * (q[v] - r[v]), right = (p[v] - r[v]) * (q[u] - r[u]);
+    const double det = left - right;
+    constexpr double kEpsilon = 0x1p-53;
+    constexpr double kBound = (3.0 + 16.0 * kEpsilon) * kEpsilon;
+    if (std::abs(det) > kBound * (std::abs(left) + std::abs(right))) return det > 0 ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN;
+    return CGAL::orientation(Kernel::Point_2(p[u], p[v]), Kernel::Point_2(q[u], q[v]), Kernel::Point_2(r[u], r[v]));
+  }
+};
+
+// Two triangles sharing the edge pq, with third corners a and b, meet only
+// along it when a and b lie strictly on opposite sides of pq in a projection
+// where a's triangle has area: if they are coplanar, they lie so in their
+// plane; if not, they meet only along pq anyway.
+bool apart_across_edge(const Point& p, const Point& q, const Point& a, const Point& b) {
+  const Projection projection({p, q, a});
+  const CGAL::Orientation side_a = projection.orientation(p, q, a);
+  return side_a != CGAL::COLLINEAR && projection.orientation(p, q, b) == -side_a;
+}
+
+// Two triangles (v, a1, b1) and (v, a2, b2) sharing the vertex v meet only
+// at v when, in a projection where both have area, the angular sectors they
+// span at v are disjoint: a point x != v in both would project into both
+// sectors, and the projection is one-to-one on the first triangle's plane.
+bool apart_at_vertex(const Point& v, Point a1, Point b1, Point a2, Point b2) {
+  const Projection projection({v, a1, b1});
+  const CGAL::Orientation turn1 = projection.orientation(v, a1, b1), turn2 = projection.orientation(v, a2, b2);
+  if (turn1 == CGAL::COLLINEAR || turn2 == CGAL::COLLINEAR) return false;
+  if (turn1 == CGAL::CLOCKWISE) std::swap(a1, b1);  // each sector counterclockwise from a to b
+  if (turn2 == CGAL::CLOCKWISE) std::swap(a2, b2);
+  // Each under half a turn wide: disjoint when the second starts strictly
+  // past the first's end and ends strictly before its start.
+  return projection.orientation(v, b1, a2) == CGAL::LEFT_TURN && projection.orientation(v, b2, a1) == CGAL::LEFT_TURN;
+}
 
 // Do two triangles intersect anywhere but in the vertices they share? The
 // cases follow CGAL's own self-intersection test (PMP::self_intersections):
@@ -41,6 +94,7 @@ bool triangles_intersect(const std::array<Point, 3>& a, const std::array<uint32_
     while (b_free == shared_in_a[0] || b_free == shared_in_a[1] || b_free == shared_in_a[2]) ++b_free;
     const Point& p = a[size_t((a_free + 1) % 3)];
     const Point& q = a[size_t((a_free + 2) % 3)];
+    if (apart_across_edge(p, q, a[size_t(a_free)], b[size_t(b_free)])) return false;  // most pairs, without a 3D predicate
     return CGAL::orientation(p, q, a[size_t(a_free)], b[size_t(b_free)]) == CGAL::COPLANAR &&
            CGAL::coplanar_orientation(p, q, a[size_t(a_free)], b[size_t(b_free)]) == CGAL::POSITIVE;
   }
@@ -49,14 +103,17 @@ bool triangles_intersect(const std::array<Point, 3>& a, const std::array<uint32_
   const int b_vertex = shared_in_a[a_vertex];
   const Kernel::Segment_3 a_opposite(a[size_t((a_vertex + 1) % 3)], a[size_t((a_vertex + 2) % 3)]);
   const Kernel::Segment_3 b_opposite(b[size_t((b_vertex + 1) % 3)], b[size_t((b_vertex + 2) % 3)]);
-  // The common case first, in two orientations: when one triangle's opposite
-  // edge lies strictly on one side of the other's plane, that triangle meets
-  // the plane only at the shared vertex, which the other's opposite edge
-  // does not hold, so neither test below can find anything.
+  // When one triangle's opposite edge lies strictly on one side of the
+  // other's plane, that triangle meets the plane only at the shared vertex,
+  // which the other's opposite edge does not hold, so neither test below can
+  // find anything.
   const auto strictly_on_one_side = [](const std::array<Point, 3>& t, const Kernel::Segment_3& edge) {
     const CGAL::Orientation side = CGAL::orientation(t[0], t[1], t[2], edge.source());
     return side != CGAL::COPLANAR && CGAL::orientation(t[0], t[1], t[2], edge.target()) == side;
   };
+  // Neighbours round a vertex, curved or flat: their sectors, in 2D.
+  if (apart_at_vertex(a[size_t(a_vertex)], a_opposite.source(), a_opposite.target(), b_opposite.source(), b_opposite.target()))
+    return false;
   if (strictly_on_one_side(a, b_opposite) || strictly_on_one_side(b, a_opposite)) return false;
   return CGAL::do_intersect(a_opposite, Kernel::Triangle_3(b[0], b[1], b[2])) ||
          CGAL::do_intersect(b_opposite, Kernel::Triangle_3(a[0], a[1], a[2]));
