@@ -299,6 +299,26 @@ TEST(MeshCheck, CoincidentPointsAreMergedIntoOneVertex) {
   EXPECT_EQ(r.vertices, 8u);
 }
 
+// Pairs of triangles that share a vertex or an edge, in one plane and out
+// of it: which meet beyond what they share, decided case by case.
+TEST(MeshCheck, NeighboursMeetBeyondWhatTheyShareOnlyWhereTheyOverlapOrTouch) {
+  const auto crossing_pairs = [](const std::vector<glm::dvec3>& points, const std::vector<Face>& faces) {
+    return check_mesh(make_soup(points, faces)).self_intersections.face_pairs;
+  };
+  const glm::dvec3 v(0, 0, 0);
+  // Sharing a vertex, in the plane z = 0: sectors apart, overlapping, touching along a ray.
+  EXPECT_EQ(crossing_pairs({v, {1, 0, 0}, {1, 1, 0}, {-1, 0.1, 0}, {-1, 1, 0}}, {{0, 1, 2}, {0, 3, 4}}), 0u);
+  EXPECT_EQ(crossing_pairs({v, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {-1, 1, 0}}, {{0, 1, 2}, {0, 3, 4}}), 1u);
+  EXPECT_EQ(crossing_pairs({v, {1, 0, 0}, {1, 1, 0}, {2, 2, 0}, {-1, 1, 0}}, {{0, 1, 2}, {0, 3, 4}}), 1u);
+  // Sharing a vertex out of the plane: one pokes through the other; one stands clear of it.
+  EXPECT_EQ(crossing_pairs({v, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, -1}, {0.5, 0.5, 1}}, {{0, 1, 2}, {0, 3, 4}}), 1u);
+  EXPECT_EQ(crossing_pairs({v, {2, 0, 0}, {0, 2, 0}, {-1, -1, 1}, {-1, 0, 1}}, {{0, 1, 2}, {0, 3, 4}}), 0u);
+  // Sharing an edge: coplanar on opposite sides, coplanar folded onto each other, bent.
+  EXPECT_EQ(crossing_pairs({v, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}}, {{0, 1, 2}, {1, 0, 3}}), 0u);
+  EXPECT_EQ(crossing_pairs({v, {1, 0, 0}, {0.5, 1, 0}, {0.3, 2, 0}}, {{0, 1, 2}, {1, 0, 3}}), 1u);
+  EXPECT_EQ(crossing_pairs({v, {1, 0, 0}, {0.5, 1, 0}, {0.5, 1, 0.001}}, {{0, 1, 2}, {1, 0, 3}}), 0u);
+}
+
 TEST(MeshCheck, TimeLimitOfZeroSkipsTheSelfIntersectionSearchAndSaysSo) {
   CheckOptions options;
   options.self_intersection_seconds = 0.0;
