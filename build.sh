@@ -31,6 +31,8 @@ packages=(
   libtbb-dev                         # the self-intersection search on every core
   libfast-float-dev                  # fast, exact number parsing in the mesh readers
   parallel                           # docs/batch-checks.md: sharded checks with GNU parallel (tested)
+  libcli11-dev                       # every command's options (CLI11)
+  nlohmann-json3-dev                 # umbra check --json (nlohmann/json)
 )
 missing=()
 for p in "${packages[@]}"; do

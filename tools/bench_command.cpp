@@ -86,19 +86,16 @@ std::vector<int> parse_int_list(const std::string& option, const std::string& te
 
 BenchOptions parse_bench_options(const std::vector<std::string>& argv) {
   BenchOptions o;
-  Arguments args(argv);
-  while (!args.done()) {
-    const std::string a = args.take();
-    if (a == "-h" || a == "--help") o.help = true;
-    else if (a == "--size") parse_size(a, args.value_of(a), 16384, o.width, o.height);
-    else if (a == "--frames") o.frames = parse_int_in(a, args.value_of(a), 1, 1000);
-    else if (a == "--segments") o.segments = parse_int_list(a, args.value_of(a), 3, 4096);
-    else if (a == "--map-sizes") o.map_sizes = parse_int_list(a, args.value_of(a), 16, 8192);
-    else if (a == "--csv") o.csv = args.value_of(a);
-    else if (a == "--plot") o.plot = args.value_of(a);
-    else if (a.size() > 1 && a[0] == '-') throw UsageError("unknown option " + a);
-    else o.scenes.push_back(a);
-  }
+  CommandOptions options;
+  add_help_option(options, o.help);
+  add_size_option(options, o.width, o.height);
+  options.value("--frames", [&](const std::string& n, const std::string& t) { o.frames = parse_int_in(n, t, 1, 1000); });
+  options.value("--segments", [&](const std::string& n, const std::string& t) { o.segments = parse_int_list(n, t, 3, 4096); });
+  options.value("--map-sizes", [&](const std::string& n, const std::string& t) { o.map_sizes = parse_int_list(n, t, 16, 8192); });
+  options.value("--csv", [&](const std::string&, const std::string& t) { o.csv = t; });
+  options.value("--plot", [&](const std::string&, const std::string& t) { o.plot = t; });
+  options.positionals(o.scenes);
+  options.parse(argv);
   if (o.help) return o;
   if (o.scenes.empty()) {
     std::error_code ec;

@@ -77,20 +77,18 @@ struct CheckCommandOptions {
 
 CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
   CheckCommandOptions o;
-  Arguments args(argv);
-  while (!args.done()) {
-    const std::string a = args.take();
-    if (a == "-h" || a == "--help") o.help = true;
-    else if (a == "--json") o.json = true;
-    else if (a == "--repair") o.repair_output = args.value_of(a);
-    else if (a == "--jobs") o.jobs = size_t(parse_int_in(a, args.value_of(a), 1, 4096));
-    else if (a == "--shard") o.shard = parse_shard(a, args.value_of(a));
-    else if (a == "--time-limit") {
-      o.check.self_intersection_seconds = parse_finite_number(a, args.value_of(a));
-      if (o.check.self_intersection_seconds < 0.0) throw UsageError("--time-limit must not be negative");
-    } else if (a.size() > 1 && a[0] == '-') throw UsageError("unknown option " + a);
-    else o.meshes.push_back(a);
-  }
+  CommandOptions options;
+  add_help_option(options, o.help);
+  options.flag("--json", o.json);
+  options.value("--repair", [&](const std::string&, const std::string& t) { o.repair_output = t; });
+  options.value("--jobs", [&](const std::string& n, const std::string& t) { o.jobs = size_t(parse_int_in(n, t, 1, 4096)); });
+  options.value("--shard", [&](const std::string& n, const std::string& t) { o.shard = parse_shard(n, t); });
+  options.value("--time-limit", [&](const std::string& n, const std::string& t) {
+    o.check.self_intersection_seconds = parse_finite_number(n, t);
+    if (o.check.self_intersection_seconds < 0.0) throw UsageError("--time-limit must not be negative");
+  });
+  options.positionals(o.meshes);
+  options.parse(argv);
   if (o.help) return o;
   if (o.meshes.empty()) throw UsageError("no mesh file given");
   if (o.repair_output) {

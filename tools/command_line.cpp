@@ -1,13 +1,48 @@
 #include "tools/command_line.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
+#include <CLI/CLI.hpp>
+
 namespace umbra {
 
-const std::string& Arguments::value_of(const std::string& option) {
-  if (done()) throw UsageError(option + " needs a value");
-  return take();
+CommandOptions::CommandOptions() : app_(std::make_unique<CLI::App>()) {
+  app_->set_help_flag();        // umbra prints its own help text
+  app_->allow_extras(true);     // unknown options are reported below, in umbra's words
+  app_->positionals_at_end(false);
+}
+
+CommandOptions::~CommandOptions() = default;
+
+void CommandOptions::value(const std::string& names, std::function<void(const std::string&, const std::string&)> take) {
+  CLI::Option* option = app_->add_option_function<std::string>(names, [](const std::string&) {});
+  const std::string shown = option->get_name();  // the long name, as messages show it
+  option->each([take = std::move(take), shown](const std::string& text) { take(shown, text); });
+  option->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  for (const std::string& name : option->get_lnames()) value_names_.push_back("--" + name);
+  for (const std::string& name : option->get_snames()) value_names_.push_back("-" + name);
+}
+
+void CommandOptions::flag(const std::string& names, bool& set) { app_->add_flag(names, set); }
+
+void CommandOptions::positionals(std::vector<std::string>& arguments) {
+  app_->add_option("arguments", arguments)->allow_extra_args();
+}
+
+void CommandOptions::parse(const std::vector<std::string>& argv) {
+  // CLI11 would say "1 required TEXT missing"; say which option lacks its value.
+  if (!argv.empty() && std::find(value_names_.begin(), value_names_.end(), argv.back()) != value_names_.end())
+    throw UsageError(argv.back() + " needs a value");
+  std::vector<std::string> reversed(argv.rbegin(), argv.rend());  // CLI11 takes them from the back
+  try {
+    app_->parse(reversed);
+  } catch (const CLI::ParseError& e) {
+    throw UsageError(e.what());
+  }
+  for (const std::string& extra : app_->remaining())
+    if (extra.size() > 1 && extra[0] == '-') throw UsageError("unknown option " + extra.substr(0, extra.find('=')));
 }
 
 double parse_finite_number(const std::string& option, const std::string& text) {
@@ -40,6 +75,32 @@ void parse_size(const std::string& option, const std::string& text, int largest,
 RenderMethod parse_method(const std::string& option, const std::string& text) {
   if (const auto method = method_from_name(text)) return *method;
   throw UsageError(option + " expects one of " + method_names() + ", got \"" + text + "\"");
+}
+
+void add_help_option(CommandOptions& options, bool& help) { options.flag("-h,--help", help); }
+
+void add_size_option(CommandOptions& options, int& width, int& height) {
+  options.value("--size", [&](const std::string& o, const std::string& t) { parse_size(o, t, kLargestImage, width, height); });
+}
+
+void add_light_angle_option(CommandOptions& options, double& degrees) {
+  options.value("--light-angle", [&](const std::string& o, const std::string& t) { degrees = parse_finite_number(o, t); });
+}
+
+void add_segments_option(CommandOptions& options, int& segments) {
+  options.value("--segments", [&](const std::string& o, const std::string& t) { segments = parse_int_in(o, t, 3, 4096); });
+}
+
+void add_method_option(CommandOptions& options, RenderMethod& method) {
+  options.value("--method", [&](const std::string& o, const std::string& t) { method = parse_method(o, t); });
+}
+
+void add_map_size_option(CommandOptions& options, int& texels) {
+  options.value("--map-size", [&](const std::string& o, const std::string& t) { texels = parse_int_in(o, t, 16, 8192); });
+}
+
+void add_output_option(CommandOptions& options, std::string& path) {
+  options.value("-o,--output", [&](const std::string&, const std::string& t) { path = t; });
 }
 
 }  // namespace umbra

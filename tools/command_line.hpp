@@ -1,13 +1,22 @@
 #pragma once
-// Small helpers for reading command-line arguments with clear errors.
+// The commands' options, parsed by CLI11 (Debian's libcli11-dev): each option
+// is defined once, in the functions below, and every command that takes it
+// calls the same one; `--opt value` and `--opt=value` both work. Messages
+// are umbra's own: "--size expects WIDTHxHEIGHT such as 800x600, got ...".
 
+#include <functional>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "render/render_method.hpp"
+
+namespace CLI {
+class App;
+}
 
 namespace umbra {
 
@@ -17,18 +26,27 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Walks the arguments of one command.
-class Arguments {
+// One command's options. Values reach the command through the callbacks
+// given here, which check them and throw UsageError with the message to show.
+class CommandOptions {
  public:
-  explicit Arguments(std::vector<std::string> args) : args_(std::move(args)) {}
-  bool done() const { return next_ >= args_.size(); }
-  const std::string& take() { return args_[next_++]; }
-  // The value after option `option`; UsageError when there is none.
-  const std::string& value_of(const std::string& option);
+  CommandOptions();
+  ~CommandOptions();
+  CommandOptions(const CommandOptions&) = delete;
+  CommandOptions& operator=(const CommandOptions&) = delete;
+
+  // An option with a value; `names` as CLI11 takes them: "-o,--output".
+  void value(const std::string& names, std::function<void(const std::string& option, const std::string& text)> take);
+  void flag(const std::string& names, bool& set);
+  // The arguments that are not options, in order.
+  void positionals(std::vector<std::string>& arguments);
+  // Throws UsageError for an unknown option, a missing value or a value
+  // its callback refuses.
+  void parse(const std::vector<std::string>& argv);
 
  private:
-  std::vector<std::string> args_;
-  size_t next_ = 0;
+  std::unique_ptr<CLI::App> app_;
+  std::vector<std::string> value_names_;  // to say "--size needs a value"
 };
 
 // Runs `parse` over a command's arguments. On a usage error prints it with a
@@ -56,5 +74,15 @@ int parse_int_in(const std::string& option, const std::string& text, int lowest,
 RenderMethod parse_method(const std::string& option, const std::string& text);
 // "WxH", each between 1 and `largest`.
 void parse_size(const std::string& option, const std::string& text, int largest, int& width, int& height);
+
+// The options that several commands take, each defined once.
+constexpr int kLargestImage = 16384;
+void add_help_option(CommandOptions& options, bool& help);                            // -h, --help
+void add_size_option(CommandOptions& options, int& width, int& height);               // --size WxH
+void add_light_angle_option(CommandOptions& options, double& degrees);                // --light-angle DEG
+void add_segments_option(CommandOptions& options, int& segments);                     // --segments N
+void add_method_option(CommandOptions& options, RenderMethod& method);                // --method M
+void add_map_size_option(CommandOptions& options, int& texels);                       // --map-size N
+void add_output_option(CommandOptions& options, std::string& path);                   // -o, --output
 
 }  // namespace umbra

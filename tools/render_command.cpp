@@ -75,27 +75,24 @@ struct RenderOptions {
   bool help = false;
 };
 
-constexpr int kLargestImage = 16384;
-
 RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   RenderOptions o;
-  Arguments args(argv);
-  while (!args.done()) {
-    const std::string a = args.take();
-    if (a == "-h" || a == "--help") o.help = true;
-    else if (a == "-o" || a == "--output") o.output = args.value_of(a);
-    else if (a == "--mask") o.mask = args.value_of(a);
-    else if (a == "--size") parse_size(a, args.value_of(a), kLargestImage, o.settings.width, o.settings.height);
-    else if (a == "--light-angle") o.light_angle_deg = parse_finite_number(a, args.value_of(a));
-    else if (a == "--segments") o.settings.sphere_segments = parse_int_in(a, args.value_of(a), 3, 4096);
-    else if (a == "--method") o.settings.method = parse_method(a, args.value_of(a));
-    else if (a == "--map-size") o.settings.shadow_map_size = parse_int_in(a, args.value_of(a), 16, 8192);
-    else if (a == "--show-volumes") o.show_volumes = true;
-    else if (a == "--explain") o.explain = true;
-    else if (a.size() > 1 && a[0] == '-') throw UsageError("unknown option " + a);
-    else if (o.scene_path.empty()) o.scene_path = a;
-    else throw UsageError("one scene at a time (got \"" + o.scene_path + "\" and \"" + a + "\")");
-  }
+  std::vector<std::string> scenes;
+  CommandOptions options;
+  add_help_option(options, o.help);
+  add_output_option(options, o.output);
+  options.value("--mask", [&](const std::string&, const std::string& t) { o.mask = t; });
+  add_size_option(options, o.settings.width, o.settings.height);
+  add_light_angle_option(options, o.light_angle_deg);
+  add_segments_option(options, o.settings.sphere_segments);
+  add_method_option(options, o.settings.method);
+  add_map_size_option(options, o.settings.shadow_map_size);
+  options.flag("--show-volumes", o.show_volumes);
+  options.flag("--explain", o.explain);
+  options.positionals(scenes);
+  options.parse(argv);
+  if (scenes.size() > 1) throw UsageError("one scene at a time (got \"" + scenes[0] + "\" and \"" + scenes[1] + "\")");
+  if (!scenes.empty()) o.scene_path = scenes[0];
   if (o.help) return o;
   if (o.scene_path.empty()) throw UsageError("no scene file given");
   if (o.output.empty()) throw UsageError("no output image given (-o OUT.png)");

@@ -80,24 +80,23 @@ struct ViewOptions {
 
 ViewOptions parse_view_options(const std::vector<std::string>& argv) {
   ViewOptions o;
-  Arguments args(argv);
-  while (!args.done()) {
-    const std::string a = args.take();
-    if (a == "-h" || a == "--help") o.help = true;
-    else if (a == "--size") parse_size(a, args.value_of(a), 16384, o.settings.width, o.settings.height);
-    else if (a == "--light-angle") o.light_angle_deg = parse_finite_number(a, args.value_of(a));
-    else if (a == "--speed") o.speed_deg_per_s = parse_finite_number(a, args.value_of(a));
-    else if (a == "--paused") o.paused = true;
-    else if (a == "--segments") o.settings.sphere_segments = parse_int_in(a, args.value_of(a), 3, 4096);
-    else if (a == "--method") o.settings.method = parse_method(a, args.value_of(a));
-    else if (a == "--map-size") o.settings.shadow_map_size = parse_int_in(a, args.value_of(a), 16, 8192);
-    else if (a == "--frames") o.frames = parse_int_in(a, args.value_of(a), 1, 1 << 30);
-    else if (a == "--screenshot") o.screenshot = args.value_of(a);
-    else if (a == "--overlay-in-screenshot") o.overlay_in_screenshot = true;
-    else if (a.size() > 1 && a[0] == '-') throw UsageError("unknown option " + a);
-    else if (o.scene_path.empty()) o.scene_path = a;
-    else throw UsageError("one scene at a time (got \"" + o.scene_path + "\" and \"" + a + "\")");
-  }
+  std::vector<std::string> scenes;
+  CommandOptions options;
+  add_help_option(options, o.help);
+  add_size_option(options, o.settings.width, o.settings.height);
+  add_light_angle_option(options, o.light_angle_deg);
+  options.value("--speed", [&](const std::string& n, const std::string& t) { o.speed_deg_per_s = parse_finite_number(n, t); });
+  options.flag("--paused", o.paused);
+  add_segments_option(options, o.settings.sphere_segments);
+  add_method_option(options, o.settings.method);
+  add_map_size_option(options, o.settings.shadow_map_size);
+  options.value("--frames", [&](const std::string& n, const std::string& t) { o.frames = parse_int_in(n, t, 1, 1 << 30); });
+  options.value("--screenshot", [&](const std::string&, const std::string& t) { o.screenshot = t; });
+  options.flag("--overlay-in-screenshot", o.overlay_in_screenshot);
+  options.positionals(scenes);
+  options.parse(argv);
+  if (scenes.size() > 1) throw UsageError("one scene at a time (got \"" + scenes[0] + "\" and \"" + scenes[1] + "\")");
+  if (!scenes.empty()) o.scene_path = scenes[0];
   if (o.help) return o;
   if (o.scene_path.empty()) throw UsageError("no scene file given");
   if (o.screenshot && o.frames == 0) throw UsageError("--screenshot needs --frames N");

@@ -44,21 +44,21 @@ struct VolumeOptions {
 
 VolumeOptions parse_volume_options(const std::vector<std::string>& argv) {
   VolumeOptions o;
-  Arguments args(argv);
-  while (!args.done()) {
-    const std::string a = args.take();
-    if (a == "-h" || a == "--help") o.help = true;
-    else if (a == "-o" || a == "--output") o.output = args.value_of(a);
-    else if (a == "--light") o.light = parse_int_in(a, args.value_of(a), 1, 1 << 20);
-    else if (a == "--light-angle") o.light_angle_deg = parse_finite_number(a, args.value_of(a));
-    else if (a == "--segments") o.settings.sphere_segments = parse_int_in(a, args.value_of(a), 3, 4096);
-    else if (a == "--far") {
-      o.far = parse_finite_number(a, args.value_of(a));
-      if (o.far <= 0) throw UsageError("--far must be positive");
-    } else if (a.size() > 1 && a[0] == '-') throw UsageError("unknown option " + a);
-    else if (o.scene_path.empty()) o.scene_path = a;
-    else throw UsageError("one scene at a time (got \"" + o.scene_path + "\" and \"" + a + "\")");
-  }
+  std::vector<std::string> scenes;
+  CommandOptions options;
+  add_help_option(options, o.help);
+  add_output_option(options, o.output);
+  options.value("--light", [&](const std::string& n, const std::string& t) { o.light = parse_int_in(n, t, 1, 1 << 20); });
+  add_light_angle_option(options, o.light_angle_deg);
+  add_segments_option(options, o.settings.sphere_segments);
+  options.value("--far", [&](const std::string& n, const std::string& t) {
+    o.far = parse_finite_number(n, t);
+    if (o.far <= 0) throw UsageError("--far must be positive");
+  });
+  options.positionals(scenes);
+  options.parse(argv);
+  if (scenes.size() > 1) throw UsageError("one scene at a time (got \"" + scenes[0] + "\" and \"" + scenes[1] + "\")");
+  if (!scenes.empty()) o.scene_path = scenes[0];
   if (o.help) return o;
   if (o.scene_path.empty()) throw UsageError("no scene file given");
   if (o.output.empty()) throw UsageError("no output file given (-o OUT.obj)");

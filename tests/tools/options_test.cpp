@@ -1,0 +1,61 @@
+// Options as users write them: --opt=value and --opt value alike, in any
+// order, with umbra's own messages for what is wrong; --version.
+#include <gtest/gtest.h>
+
+#include "tests/mesh/mesh_builders.hpp"
+#include "tests/tools/command_fixture.hpp"
+
+namespace umbra {
+namespace {
+
+using test::CommandResult;
+
+class Options : public test::CommandTest {
+ protected:
+  const std::string scene = std::string(UMBRA_SOURCE_DIR) + "/scenes/two_spheres.scene";
+};
+
+TEST_F(Options, EqualsAndSpaceFormsGiveTheSameImage) {
+  const CommandResult spaced = run("render " + scene + " -o " + path("a.png") + " --size 64x48 --light-angle -30 --method zfail");
+  const CommandResult joined = run("render --method=zfail --light-angle=-30 --size=64x48 --output=" + path("b.png") + " " + scene);
+  ASSERT_EQ(spaced.status, 0) << spaced.err;
+  ASSERT_EQ(joined.status, 0) << joined.err;
+  EXPECT_EQ(joined.out, "wrote " + path("b.png") + " (64x48)\n");
+  EXPECT_EQ(read(path("a.png")), read(path("b.png")));
+}
+
+TEST_F(Options, EveryCommandTakesEqualsForms) {
+  const std::string mesh = write("t.obj", test::obj_text(test::tetrahedron()));
+  EXPECT_EQ(run("check --time-limit=5 --jobs=1 " + mesh).status, 0);
+  EXPECT_EQ(run("volume " + scene + " --segments=8 --light=1 --far=2 -o " + path("v.obj")).status, 0);
+  EXPECT_EQ(run("bench " + scene + " --size=32x32 --frames=1 --segments=8 --map-sizes=16 --csv=" + path("b.csv")).status, 0);
+  EXPECT_FALSE(read(path("b.csv")).empty());
+}
+
+TEST_F(Options, MistakesAreNamedInUmbrasWords) {
+  EXPECT_EQ(run("render " + scene + " -o x.png --size").err, "umbra render: --size needs a value\n(see umbra render --help)\n");
+  EXPECT_EQ(run("render " + scene + " -o x.png --size=10by10").err,
+            "umbra render: --size expects WIDTHxHEIGHT such as 800x600, got \"10by10\"\n(see umbra render --help)\n");
+  EXPECT_EQ(run("render " + scene + " -o x.png --frobnicate=3").err, "umbra render: unknown option --frobnicate\n(see umbra render --help)\n");
+  EXPECT_EQ(run("check --jobs=many x.obj").err,
+            "umbra check: --jobs expects a whole number from 1 to 4096, got \"many\"\n(see umbra check --help)\n");
+  EXPECT_EQ(run("view " + scene + " --segments=2").err,
+            "umbra view: --segments expects a whole number from 3 to 4096, got \"2\"\n(see umbra view --help)\n");
+  EXPECT_EQ(run("render " + scene + " -o x.png --segments=2").status, 2);
+}
+
+TEST_F(Options, VersionAndHelp) {
+  const CommandResult version = run("--version");
+  EXPECT_EQ(version.status, 0);
+  EXPECT_EQ(version.out.rfind("umbra ", 0), 0u);
+  EXPECT_EQ(version.out.back(), '\n');
+  for (const char* command : {"render", "check", "view", "volume", "bench"}) {
+    const CommandResult help = run(std::string(command) + " --help");
+    EXPECT_EQ(help.status, 0) << command;
+    EXPECT_EQ(help.out.rfind(std::string("usage: umbra ") + command, 0), 0u) << command;
+    EXPECT_EQ(run(std::string(command) + " -h").out, help.out);
+  }
+}
+
+}  // namespace
+}  // namespace umbra
