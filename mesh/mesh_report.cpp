@@ -34,44 +34,7 @@ std::string seconds(double x) {
   return buffer;
 }
 
-std::string json_number(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", x);
-  return buffer;
-}
-
-std::string json_ref(const char* kind, const ElementRef& e) {
-  return std::string("{\"") + kind + "\":" + std::to_string(e.index) + ",\"line\":" + std::to_string(e.line) + "}";
-}
-
-template <typename T, typename F>
-std::string json_list(const std::vector<T>& items, F&& item_json) {
-  std::string out = "[";
-  for (size_t i = 0; i < items.size(); ++i) out += (i ? "," : "") + item_json(items[i]);
-  return out + "]";
-}
-
-const char* json_bool(bool b) { return b ? "true" : "false"; }
-
 }  // namespace
-
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (const char ch : s) {
-    const unsigned char c = static_cast<unsigned char>(ch);
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += ch;
-    } else if (c < 0x20) {
-      char buffer[8];
-      std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
-      out += buffer;
-    } else {
-      out += ch;
-    }
-  }
-  return out + "\"";
-}
 
 const char* shadow_method_name(ShadowMethod method) {
   return method == ShadowMethod::kSilhouette ? "silhouette" : "edge-multiplicity";
@@ -225,54 +188,87 @@ void MeshReport::print_text(std::ostream& out) const {
 }
 
 void MeshReport::print_json(std::ostream& out) const {
+  using Json = nlohmann::ordered_json;  // keys in the order docs/check.md lists them
+  const auto ref = [](const char* kind, const ElementRef& e) { return Json{{kind, e.index}, {"line", e.line}}; };
+  const auto refs = [&](const char* kind, const std::vector<ElementRef>& list) {
+    Json items = Json::array();
+    for (const ElementRef& e : list) items.push_back(ref(kind, e));
+    return items;
+  };
+  const auto pairs = [&](const char* kind, const std::vector<ElementPair>& list) {
+    Json items = Json::array();
+    for (const auto& [first, second] : list) items.push_back(Json::array({ref(kind, first), ref(kind, second)}));
+    return items;
+  };
+  constexpr size_t kListed = 1000;
   size_t closed_count = 0;
   for (const ComponentReport& c : components) closed_count += c.closed;
-  const auto vertex_pair = [](const ElementPair& e) { return "[" + json_ref("vertex", e.first) + "," + json_ref("vertex", e.second) + "]"; };
-  const auto face_pair = [](const ElementPair& e) { return "[" + json_ref("face", e.first) + "," + json_ref("face", e.second) + "]"; };
-  const auto vertex = [](const ElementRef& e) { return json_ref("vertex", e); };
-  const auto face = [](const ElementRef& e) { return json_ref("face", e); };
-  constexpr size_t kListed = 1000;
-  const std::vector<ComponentReport> listed(components.begin(), components.begin() + std::ptrdiff_t(std::min(components.size(), kListed)));
-  std::ostringstream s;
-  s << "{\"path\":" << json_string(path) << ",\"format\":" << json_string(format)
-    << ",\"file_vertices\":" << file_vertices << ",\"file_faces\":" << file_faces << ",\"triangles\":" << triangles
-    << ",\"vertices\":" << vertices << ",\"merged_vertices\":" << merged_vertices
-    << ",\"isolated_vertices\":" << isolated_vertices << ",\"edges\":" << edges
-    << ",\"components\":" << components.size() << ",\"closed_components\":" << closed_count
-    << ",\"border_edges\":" << border_edges << ",\"border_loops\":" << border_loops
-    << ",\"non_manifold_edges\":" << non_manifold_edges << ",\"non_manifold_vertices\":" << non_manifold_vertices
-    << ",\"duplicate_faces\":" << duplicate_faces << ",\"degenerate_faces\":" << degenerate_faces
-    << ",\"inconsistent_edges\":" << inconsistent_edges << ",\"faces_to_flip\":" << faces_to_flip
-    << ",\"non_orientable_components\":" << non_orientable_components << ",\"inward_components\":" << inward_components
-    << ",\"self_intersections\":{\"checked\":" << json_bool(self_intersections.checked)
-    << ",\"complete\":" << json_bool(self_intersections.complete) << ",\"face_pairs\":" << self_intersections.face_pairs
-    << ",\"seconds\":" << json_number(self_intersections.seconds)
-    << ",\"time_limit_seconds\":" << json_number(self_intersections.time_limit_seconds) << "}"
-    << ",\"euler_characteristic\":" << euler_characteristic
-    << ",\"bbox\":{\"min\":[" << json_number(bbox_min.x) << "," << json_number(bbox_min.y) << "," << json_number(bbox_min.z)
-    << "],\"max\":[" << json_number(bbox_max.x) << "," << json_number(bbox_max.y) << "," << json_number(bbox_max.z) << "]}"
-    << ",\"component_list\":" << json_list(listed, [](const ComponentReport& c) {
-         return "{\"faces\":" + std::to_string(c.faces) + ",\"vertices\":" + std::to_string(c.vertices) +
-                ",\"edges\":" + std::to_string(c.edges) + ",\"border_edges\":" + std::to_string(c.border_edges) +
-                ",\"border_loops\":" + std::to_string(c.border_loops) +
-                ",\"euler_characteristic\":" + std::to_string(c.euler_characteristic) +
-                ",\"closed\":" + json_bool(c.closed) + ",\"manifold\":" + json_bool(c.manifold) +
-                ",\"orientable\":" + json_bool(c.orientable) +
-                ",\"consistently_oriented\":" + json_bool(c.consistently_oriented) +
-                ",\"genus\":" + (c.genus ? std::to_string(*c.genus) : "null") +
-                ",\"outward\":" + (c.outward ? json_bool(*c.outward) : "null") + "}";
-       })
-    << ",\"examples\":{\"border_edges\":" << json_list(examples.border_edges, vertex_pair)
-    << ",\"non_manifold_edges\":" << json_list(examples.non_manifold_edges, vertex_pair)
-    << ",\"non_manifold_vertices\":" << json_list(examples.non_manifold_vertices, vertex)
-    << ",\"duplicate_faces\":" << json_list(examples.duplicate_faces, face_pair)
-    << ",\"degenerate_faces\":" << json_list(examples.degenerate_faces, face)
-    << ",\"faces_to_flip\":" << json_list(examples.faces_to_flip, face)
-    << ",\"self_intersections\":" << json_list(examples.self_intersections, face_pair) << "}"
-    << ",\"closed_manifold\":" << json_bool(is_closed_manifold())
-    << ",\"shadow_method\":\"" << shadow_method_name(shadow_method()) << "\""
-    << ",\"problems\":" << json_list(problems(), json_string) << ",\"verdict\":" << json_string(verdict()) << "}\n";
-  out << s.str();
+  Json component_list = Json::array();
+  for (size_t i = 0; i < std::min(components.size(), kListed); ++i) {
+    const ComponentReport& c = components[i];
+    component_list.push_back({{"faces", c.faces},
+                              {"vertices", c.vertices},
+                              {"edges", c.edges},
+                              {"border_edges", c.border_edges},
+                              {"border_loops", c.border_loops},
+                              {"euler_characteristic", c.euler_characteristic},
+                              {"closed", c.closed},
+                              {"manifold", c.manifold},
+                              {"orientable", c.orientable},
+                              {"consistently_oriented", c.consistently_oriented},
+                              {"genus", c.genus ? Json(*c.genus) : Json(nullptr)},
+                              {"outward", c.outward ? Json(*c.outward) : Json(nullptr)}});
+  }
+  const Json report = {
+      {"path", path},
+      {"format", format},
+      {"file_vertices", file_vertices},
+      {"file_faces", file_faces},
+      {"triangles", triangles},
+      {"vertices", vertices},
+      {"merged_vertices", merged_vertices},
+      {"isolated_vertices", isolated_vertices},
+      {"edges", edges},
+      {"components", components.size()},
+      {"closed_components", closed_count},
+      {"border_edges", border_edges},
+      {"border_loops", border_loops},
+      {"non_manifold_edges", non_manifold_edges},
+      {"non_manifold_vertices", non_manifold_vertices},
+      {"duplicate_faces", duplicate_faces},
+      {"degenerate_faces", degenerate_faces},
+      {"inconsistent_edges", inconsistent_edges},
+      {"faces_to_flip", faces_to_flip},
+      {"non_orientable_components", non_orientable_components},
+      {"inward_components", inward_components},
+      {"self_intersections",
+       {{"checked", self_intersections.checked},
+        {"complete", self_intersections.complete},
+        {"face_pairs", self_intersections.face_pairs},
+        {"seconds", self_intersections.seconds},
+        {"time_limit_seconds", self_intersections.time_limit_seconds}}},
+      {"euler_characteristic", euler_characteristic},
+      {"bbox", {{"min", {bbox_min.x, bbox_min.y, bbox_min.z}}, {"max", {bbox_max.x, bbox_max.y, bbox_max.z}}}},
+      {"component_list", component_list},
+      {"examples",
+       {{"border_edges", pairs("vertex", examples.border_edges)},
+        {"non_manifold_edges", pairs("vertex", examples.non_manifold_edges)},
+        {"non_manifold_vertices", refs("vertex", examples.non_manifold_vertices)},
+        {"duplicate_faces", pairs("face", examples.duplicate_faces)},
+        {"degenerate_faces", refs("face", examples.degenerate_faces)},
+        {"faces_to_flip", refs("face", examples.faces_to_flip)},
+        {"self_intersections", pairs("face", examples.self_intersections)}}},
+      {"closed_manifold", is_closed_manifold()},
+      {"shadow_method", shadow_method_name(shadow_method())},
+      {"problems", problems()},
+      {"verdict", verdict()}};
+  out << json_line(report);
+}
+
+std::string json_line(const nlohmann::ordered_json& value) {
+  // Invalid UTF-8 (a file name in Latin-1, say) becomes U+FFFD: the output
+  // is always valid UTF-8, as JSON requires (docs/check.md).
+  return value.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace umbra

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include <glm/vec3.hpp>
+#include <nlohmann/json.hpp>
 
 namespace umbra {
 
@@ -56,8 +57,9 @@ struct SelfIntersectionReport {
 enum class ShadowMethod { kSilhouette, kEdgeMultiplicity };
 const char* shadow_method_name(ShadowMethod method);
 
-// `s` as a JSON string literal, quotes included.
-std::string json_string(const std::string& s);
+// One JSON value on one line, always valid UTF-8: invalid bytes (as in a
+// Latin-1 file name) are replaced by U+FFFD.
+std::string json_line(const nlohmann::ordered_json& value);
 
 struct MeshReport {
   std::string path;

@@ -74,6 +74,23 @@ TEST_F(CheckCommand, JsonIsOneValidObjectPerMeshPerLine) {
             "flipped.obj False 1 silhouette False [{'face': 7, 'line': 16}]\n");
 }
 
+TEST_F(CheckCommand, JsonIsValidUtf8EvenForFileNamesThatAreNot) {
+  // Latin-1 "café.obj" and "broken-é.off": the é is the single byte 0xE9.
+  const std::string good = write("caf\xe9.obj", obj_text(test::tetrahedron()));
+  const std::string bad = write("broken-\xe9.off", "OFF\n1 0 0\n");
+  const CommandResult r = run("check --json '" + good + "' '" + bad + "'");
+  EXPECT_EQ(r.status, 2);
+  std::ofstream(path("out.json")) << r.out;
+  // Python decodes strictly as UTF-8, then parses strictly as JSON.
+  std::ofstream(path("strict.py")) << "import json,sys\n"
+                                      "text = open(sys.argv[1], 'rb').read().decode('utf-8', errors='strict')\n"
+                                      "for line in text.splitlines():\n"
+                                      "  o = json.loads(line)\n"
+                                      "  print(o['path'].split('/')[-1].encode('unicode_escape').decode(), 'error' in o)\n";
+  ASSERT_EQ(std::system(("python3 " + path("strict.py") + " " + path("out.json") + " >" + path("names.txt")).c_str()), 0) << r.out;
+  EXPECT_EQ(read(path("names.txt")), "caf\\ufffd.obj False\nbroken-\\ufffd.off True\n");
+}
+
 TEST_F(CheckCommand, RepairFixesOrientationAndDuplicatesAndLeavesTheInputAlone) {
   PolygonSoup soup = test::reversed(test::unit_cube(), {3, 8});
   soup.corners.insert(soup.corners.end(), {0, 2, 3});  // a duplicate of face 0

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Digests of `umbra check --json` reports, one line per mesh: its path
 relative to ROOT, a tab, and the first 16 hex digits of the SHA-256 of the
-report with its timings (every "seconds" key) removed and keys sorted.
+report with its timings (every "seconds" key) removed, keys sorted and
+whole numbers written alike whether the JSON wrote 60 or 60.0.
 
   umbra check --json FOLDER | report_digests.py FOLDER > digests.tsv
 
@@ -19,6 +20,8 @@ def without_timings(value):
         return {k: without_timings(v) for k, v in value.items() if k != "seconds"}
     if isinstance(value, list):
         return [without_timings(v) for v in value]
+    if isinstance(value, float) and value.is_integer():
+        return int(value)
     return value
 
 
