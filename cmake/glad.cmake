@@ -1,5 +1,5 @@
 # GL entry points come from a loader generated at build time by Debian's
-# python3-glad (DESIGN.md): one binary can then load them through either
+# python3-glad (docs/design.md): one binary can then load them through either
 # OSMesaGetProcAddress or glfwGetProcAddress without libGL/libOSMesa clashes.
 # Debian installs it as /usr/bin/glad; prefer that over any other glad on PATH.
 find_program(GLAD_EXECUTABLE glad HINTS /usr/bin REQUIRED)

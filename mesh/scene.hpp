@@ -74,7 +74,7 @@ struct Camera {
   double fovy_deg = 45.0;
 };
 
-// The spec's view: looking down -z at the origin, +y up, with the front face
+// The default view: looking down -z at the origin, +y up, with the front face
 // of the cube [-1,1]^3 (z = 1) filling 99% of the window's height.
 Camera spec_camera();
 
@@ -91,7 +91,7 @@ struct Scene {
   std::vector<Triangle> triangles;
   std::vector<Mesh> meshes;
   Camera camera = spec_camera();
-  std::optional<FileLoc> camera_from;  // where the camera statement was; none: spec view
+  std::optional<FileLoc> camera_from;  // where the camera statement was; none: the default view
   std::vector<Warning> warnings;
 };
 
@@ -103,7 +103,7 @@ struct SceneBounds {
 };
 SceneBounds surface_bounds(const Scene& scene);
 
-// The spec's light motion: every light rotated about the z axis.
+// The light motion of the viewer and --light-angle: every light rotated about the z axis.
 void rotate_lights_about_z(Scene& scene, double degrees);
 
 }  // namespace umbra

@@ -15,7 +15,7 @@ void require_lights_off_casters(const Scene& scene) {
     const std::string light_name = "light " + std::to_string(i + 1) + " (line " + std::to_string(light.where.line) + ")";
     for (const Sphere& s : scene.spheres) {
       const glm::dvec3 lc = s.center - light.position;
-      // spec 2.2 needs LC^2 - R^2 > 0 for the tangent circle to exist.
+      // The tangent circle needs LC^2 - R^2 > 0 to exist (docs/geometry.md).
       const double tangent2 = glm::dot(lc, lc) - s.radius * s.radius;
       if (!std::isfinite(tangent2))
         throw InputError(s.where, "the distance from " + light_name +

@@ -179,7 +179,7 @@ class SceneBuilder {
     }
     const int number = int(scene_.lights.size()) + 1;
     if (light.position.z <= 1.0)
-      warn(light.where, "light " + std::to_string(number) + " has z <= 1: the spec promises z > 1, "
+      warn(light.where, "light " + std::to_string(number) + " has z <= 1: scenes are lit from z > 1, "
                         "so the viewpoint may be in shadow");
     scene_.lights.push_back(light);
   }
@@ -227,7 +227,7 @@ class SceneBuilder {
       throw InputError(radius_at, "the sphere radius must be positive, got " + format(s.radius));
     s.material = material_ref(r, "sphere");
     if (glm::any(glm::greaterThan(glm::abs(s.center) + s.radius, glm::dvec3(1.0))))
-      warn(s.where, "sphere reaches outside the cube [-1,1]^3 that holds a spec scene");
+      warn(s.where, "sphere reaches outside the cube [-1,1]^3 that scenes are made for");
     scene_.spheres.push_back(s);
   }
 
@@ -240,7 +240,7 @@ class SceneBuilder {
     t.material = material_ref(r, "triangle");
     for (const glm::dvec3& p : {t.a, t.b, t.c})
       if (glm::any(glm::greaterThan(glm::abs(p), glm::dvec3(1.0)))) {
-        warn(t.where, "triangle reaches outside the cube [-1,1]^3 that holds a spec scene");
+        warn(t.where, "triangle reaches outside the cube [-1,1]^3 that scenes are made for");
         break;
       }
     if (collinear(t.a, t.b, t.c))

@@ -11,7 +11,7 @@ namespace umbra {
 // The near plane, from the scene's surfaces as the eye sees them, whatever
 // the camera's target: at this fraction of the distance from the eye to the
 // far side of the surfaces' bounding sphere, so that a scene scaled by 1e6 or
-// 1e-6 with its camera keeps the same depth precision (for the spec's view
+// 1e-6 with its camera keeps the same depth precision (for the default view
 // of a scene that fills the cube [-1,1]^3 it is 0.05, as it always was);
 // but never beyond the nearest corner of their bounding box in front of the
 // eye, so nothing visible is clipped. The far plane is at infinity.

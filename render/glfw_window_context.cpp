@@ -1,5 +1,5 @@
 // GLFW with GLFW_INCLUDE_NONE: glad's header provides GL, so this file talks
-// to GLFW only and hands GL loading to gl_functions (DESIGN.md).
+// to GLFW only and hands GL loading to gl_functions (docs/design.md).
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 

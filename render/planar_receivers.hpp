@@ -1,5 +1,5 @@
 #pragma once
-// Planar projection shadows (seeds 001, 003, 004) need planar receivers: the
+// Planar projected shadows (Blinn 1988) need planar receivers: the
 // planes of the scene's triangles, coplanar triangles merged (a floor of two
 // triangles is one receiver). Spheres and meshes receive no planar shadow.
 
@@ -23,7 +23,7 @@ struct ReceiverPlane {
 std::vector<ReceiverPlane> receiver_planes(const Scene& scene);
 
 // The matrix that projects a point along the ray from `light` onto `plane`
-// (seed 001's matrix for any plane): S x = (p . l) x - (p . x) l.
+// (Blinn's projection matrix, for any plane): S x = (p . l) x - (p . x) l.
 glm::dmat4 planar_shadow_matrix(const glm::dvec4& plane, const glm::dvec3& light);
 
 }  // namespace umbra

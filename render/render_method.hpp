@@ -9,12 +9,12 @@ namespace umbra {
 
 enum class RenderMethod {
   kAuto,       // shadow volumes; per light z-pass where the eye is outside every volume, z-fail elsewhere
-  kZFail,      // shadow volumes, capped z-fail for every light (seed 002)
+  kZFail,      // shadow volumes, capped z-fail for every light (Everitt and Kilgard 2002)
   kZPass,      // shadow volumes, uncapped z-pass for every light: wrong where the eye is in a volume
   kTriangles,  // z-fail, and every mesh cast per triangle instead of from its silhouette
-  kShadowMap,  // a cube shadow map per light (seed 004): no volumes, error grows as the map shrinks
-  kPlanar,     // casters projected onto the triangles' planes (seeds 001, 003, 004): no shadow on anything else
-  kRaycast,    // the CPU reference: exact shadow rays (seed 004)
+  kShadowMap,  // a cube shadow map per light (Williams 1978): no volumes, error grows as the map shrinks
+  kPlanar,     // casters projected onto the triangles' planes (Blinn 1988): no shadow on anything else
+  kRaycast,    // the CPU reference: exact shadow rays (Appel 1968, Whitted 1980)
 };
 
 const char* method_name(RenderMethod method);

@@ -24,7 +24,7 @@ std::ostream& operator<<(std::ostream& out, const glm::dvec3& v) {
 
 CasterEntry sphere_entry(const Sphere& s, const Light& light, int segments) {
   CasterEntry e{"sphere", s.where, "", sphere_volume(s.center, s.radius, light.position, segments)};
-  e.method = "tangent-circle " + std::to_string(segments) + "-gon (spec 2.2)";
+  e.method = "tangent-circle " + std::to_string(segments) + "-gon";
   return e;
 }
 
@@ -34,7 +34,7 @@ CasterEntry triangle_entry(const Triangle& t, const Light& light) {
     e.method = "none: degenerate (collinear vertices)";
   } else if (auto volume = triangle_volume(t.a, t.b, t.c, light.position)) {
     e.volume = std::move(*volume);
-    e.method = "three side quads (spec 2.1)";
+    e.method = "three side quads";
   } else {
     e.method = "none: its plane contains the light, so it is seen edge-on";
   }
@@ -228,7 +228,7 @@ void plan_planar_light(const Scene& scene, const std::vector<ReceiverPlane>& rec
                     " receiver plane(s) (triangles at lines " + (lines.empty() ? std::string("none") : lines) +
                     "); spheres and meshes receive no shadow";
   const auto add = [&](const char* kind, const FileLoc& where, const std::string& method, const ShadowVolume& v) {
-    lp.casters.push_back({kind, where, "projected (seed 001): " + method, {}});
+    lp.casters.push_back({kind, where, "projected (Blinn 1988): " + method, {}});
     ShadowVolume finite;  // the triangles whose vertices are all finite (the light cap), and only their vertices
     std::vector<uint32_t> index(v.vertices.size(), UINT32_MAX);
     for (size_t k = 0; k < v.vertices.size(); ++k)
@@ -326,7 +326,7 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
       lp.z_pass = false;
       lp.culled_casters = 0;
       lp.count_reason = "no stencil: a cube shadow map of 6 x " + std::to_string(plan.settings.shadow_map_size) + "^2 " +
-                        "distances (seed 004), biased by two texels";
+                        "distances (Williams 1978), biased by two texels";
       continue;
     }
     if (plan.settings.method == RenderMethod::kPlanar) {
@@ -375,7 +375,7 @@ void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& 
   out << "render plan for " << scene.path << "\n";
   out << "  image: " << plan.settings.width << "x" << plan.settings.height << "\n";
   out << "  camera: eye " << c.eye << " target " << c.target << " up " << c.up << " fovy " << c.fovy_deg
-      << " deg" << (plan.camera_is_spec_default ? " (the spec's default view)" : " (from the scene file)") << "\n";
+      << " deg" << (plan.camera_is_spec_default ? " (the default view)" : " (from the scene file)") << "\n";
   out << "  projection: perspective, near " << plan.near_plane << " (from the surfaces' bounds as the eye sees them), "
       << "far plane at infinity (epsilon 2^-22)\n";
   out << "  shading: ambient + diffuse" << (plan.specular_used ? " + specular" : " (no material has a specular term: skipped)")

@@ -21,7 +21,7 @@ namespace umbra {
 struct RenderSettings {
   int width = 800;
   int height = 800;
-  int sphere_segments = 64;  // N of the spec's N-gon (spec 2.2)
+  int sphere_segments = 64;  // N of the tangent circle's inscribed N-gon (docs/geometry.md)
   RenderMethod method = RenderMethod::kAuto;  // the plan is for every method but kRaycast
   int shadow_map_size = 1024;                 // texels along a cube face's side, for kShadowMap
 };

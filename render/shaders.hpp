@@ -25,7 +25,7 @@ uniform vec3 material_diffuse;
 uniform vec3 material_specular;
 uniform float material_shininess;
 uniform bool specular_used;  // false when no material and light have a specular term
-// Shadow mapping (seed 004) instead of the stencil: a point is in shadow when
+// Shadow mapping (Williams 1978) instead of the stencil: a point is in shadow when
 // it lies further from the light than the map's nearest surface in its
 // direction, by more than a bias of two texels (slope-scaled).
 uniform bool shadow_map_on;

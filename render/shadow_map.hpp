@@ -1,5 +1,5 @@
 #pragma once
-// An omnidirectional shadow map for a point light (seed 004): a cube map whose
+// An omnidirectional shadow map for a point light (Williams 1978): a cube map whose
 // six faces each hold, per texel, the distance from the light to the nearest
 // surface seen through it (32-bit float), rendered with a depth buffer into a
 // framebuffer object.

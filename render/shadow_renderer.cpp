@@ -144,7 +144,7 @@ void ShadowRenderer::count_shadow_volumes(size_t light) {
     if (lp.z_pass) {  // front faces increment, back faces decrement where the depth test passes
       glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
       glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
-    } else {  // z-fail (seed 002): back faces increment, front faces decrement where it fails
+    } else {  // z-fail (Everitt and Kilgard 2002): back faces increment, front faces decrement where it fails
       glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
       glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
     }

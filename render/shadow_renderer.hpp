@@ -1,5 +1,5 @@
 #pragma once
-// Draws a scene with capped z-fail stencil shadow volumes (seed 002) into the
+// Draws a scene with capped z-fail stencil shadow volumes (Everitt and Kilgard 2002) into the
 // current GL context's default framebuffer:
 //   1. depth + ambient for every surface;
 //   2. per light: clear the stencil; draw that light's volumes with colour and
@@ -41,7 +41,7 @@ class ShadowRenderer {
 
   // Draws the frame into the default framebuffer. With show_volumes, every
   // light's volumes are drawn over it translucently, front faces only (the
-  // spec's debugging view). The plan's camera and size are read each time.
+  // debugging view). The plan's camera and size are read each time.
   void draw(bool show_volumes);
   // Waits until the GL has finished every command so far (for timing).
   void finish() const;

@@ -10,15 +10,15 @@
 namespace umbra {
 
 SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
-  // The spec's triangles and every mesh's, grouped by material and by
+  // The scene's triangles and every mesh's, grouped by material and by
   // whether they belong to a closed mesh, one draw call per group; flat
   // normals, as the shadows are flat-faced.
-  // Sorted as runs (a spec triangle, or a whole mesh) rather than triangle by
+  // Sorted as runs (a scene triangle, or a whole mesh) rather than triangle by
   // triangle: a million-triangle mesh is one run, copied once.
   struct Run {
     int material;
     const Mesh* closed_mesh;  // the closed mesh it is, if any
-    const Triangle* triangle;  // a spec triangle, or
+    const Triangle* triangle;  // a scene triangle, or
     const Mesh* mesh;          // every triangle of a mesh
   };
   std::vector<Run> runs;

@@ -18,15 +18,15 @@ TangentCircle tangent_circle(const glm::dvec3& center, double radius, const glm:
   if (!(tangent2 > 0.0)) throw std::invalid_argument("tangent_circle: the light is not outside the sphere");
 
   TangentCircle circle;
-  // spec 2.2: P = L + PL * LC / |LC| with PL = (LC^2 - R^2) / LC. Since
+  // P = L + PL * LC / |LC| with PL = (LC^2 - R^2) / LC (docs/geometry.md). Since
   // PL = LC - R^2 / LC, the same point is C - (R^2 / LC) * LC / |LC|, which
   // stays accurate when the light is far (no LC - LC cancellation).
   circle.center = center - (radius * radius / lc_len) * (lc / lc_len);
-  // spec 2.2: r = sqrt(LC^2 - R^2 - PL^2), rewritten as R sqrt(LC^2 - R^2) / LC,
+  // r = sqrt(LC^2 - R^2 - PL^2) (docs/geometry.md), rewritten as R sqrt(LC^2 - R^2) / LC,
   // which is the same number without the cancellation when the light is far.
   circle.radius = radius * std::sqrt(tangent2) / lc_len;
 
-  // spec 2.2: a perpendicular to LC that skips its smallest coordinate (long, so accurate).
+  // A perpendicular to LC that skips its smallest coordinate (long, so accurate).
   const glm::dvec3 m = glm::abs(lc);
   glm::dvec3 perpendicular;
   if (m.x <= m.y && m.x <= m.z) perpendicular = {0.0, -lc.z, lc.y};

@@ -8,7 +8,7 @@
 
 namespace umbra {
 
-// Spec 2.1: the shadow volume of triangle abc lit from `light`: side quads
+// The shadow volume of triangle abc lit from `light` (Crow 1977): side quads
 // ABB'A', BCC'B', CAA'C' oriented by the sign of (AB x AC) . AL, so the volume
 // is the same whatever the vertex order. None when the triangle casts no
 // shadow: its vertices are collinear, or its plane contains the light (decided

@@ -19,7 +19,7 @@ commands:
   render SCENE -o OUT.png   render a scene headless to a PNG (see umbra render --help)
   check MESH...             is each mesh a closed 2-manifold, and if not, why
                             (see umbra check --help)
-  view SCENE                the spec's interactive program: the light orbits,
+  view SCENE                an interactive window: the light orbits,
                             keys and mouse (see umbra view --help)
   volume SCENE -o OUT.obj   write a light's shadow volumes as a mesh to look at
                             (see umbra volume --help)

@@ -20,7 +20,8 @@ const char* const kRenderUsage =
     R"(usage: umbra render SCENE -o OUT.png [options]
 
 Renders SCENE headless (OSMesa) with exact hard shadows from stencil shadow
-volumes and writes OUT.png.
+volumes (Crow 1977; Heidmann 1991) and writes OUT.png. The sources cited
+here are listed in docs/references.md.
 
 options:
   -o, --output OUT.png  the image to write (required)
@@ -34,19 +35,23 @@ options:
                                      volume, capped z-fail elsewhere; casters
                                      whose volumes cannot reach the view are
                                      left out
-                          zfail      capped z-fail for every light (seed 002)
-                          zpass      uncapped z-pass for every light; wrong
-                                     where the near plane is in a volume
+                          zfail      capped z-fail for every light (Everitt
+                                     and Kilgard 2002)
+                          zpass      uncapped z-pass for every light
+                                     (Heidmann 1991); wrong where the near
+                                     plane is in a volume
                           triangles  z-fail, every mesh cast per triangle
                                      (the slow reference) rather than from
                                      its silhouette or by edge multiplicity
-                          shadowmap  a cube shadow map per light (seed 004),
-                                     --map-size texels a side; no volumes
+                          shadowmap  a cube shadow map per light (Williams
+                                     1978), --map-size texels a side; no
+                                     volumes
                           planar     every caster projected onto the planes
-                                     of the scene's triangles (seeds 001,
-                                     003, 004); spheres and meshes receive
-                                     no shadow, which --explain says
-                          raycast    the CPU reference: exact shadow rays, true
+                                     of the scene's triangles (Blinn 1988);
+                                     spheres and meshes receive no shadow,
+                                     which --explain says
+                          raycast    the CPU reference: exact shadow rays
+                                     (Appel 1968, Whitted 1980), true
                                      spheres (no GL, no N-gon)
   --map-size N          texels along a side of each shadow map cube face
                         (default 1024, 16 to 8192; for --method shadowmap)

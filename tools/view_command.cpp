@@ -28,7 +28,7 @@ const char* const kViewUsage =
     R"(usage: umbra view SCENE [options]
 
 Opens SCENE in a window and renders it as `umbra render` does, with the light
-orbiting the z axis (the spec's animation). The scene is reloaded when its
+orbiting the z axis. The scene is reloaded when its
 file changes; an error keeps the last good scene and shows in the window and
 on the terminal. An overlay shows the method, the frame time, the volume
 sizes and the keys.
@@ -42,7 +42,7 @@ keys:
   m             switch method: auto, zfail, zpass, triangles, shadowmap
                 (see umbra render --help)
   r             return to the scene's camera
-  s             return to the spec's view (eye (0, 0, 3.4), looking down -z)
+  s             return to the default view (eye (0, 0, 3.4), looking down -z)
   o             show or hide the overlay
   h             print this help on the terminal
   q, escape     quit
@@ -170,7 +170,7 @@ std::vector<std::string> status_lines(const std::string& path, const RenderPlan&
   lines.push_back(line);
   if (!message.empty()) lines.push_back(message);
   lines.push_back("space pause  left/right step  up/down speed  v volumes  [ ] N");
-  lines.push_back("drag orbit  scroll zoom  r scene camera  s spec view  o overlay  h help  q quit");
+  lines.push_back("drag orbit  scroll zoom  r scene camera  s default view  o overlay  h help  q quit");
   return lines;
 }
 

@@ -275,13 +275,13 @@ TEST(SceneParserWarnings, LightAtOrBelowZOne) {
   ASSERT_EQ(s.warnings.size(), 1u);
   EXPECT_EQ(s.warnings[0].where.str(), "t:1:1");
   EXPECT_EQ(s.warnings[0].message,
-            "light 1 has z <= 1: the spec promises z > 1, so the viewpoint may be in shadow");
+            "light 1 has z <= 1: scenes are lit from z > 1, so the viewpoint may be in shadow");
 }
 
 TEST(SceneParserWarnings, ObjectsOutsideTheCubeAndDegenerateTriangles) {
   const Scene s = parse_scene_text(kLight + "sphere 0.9 0 0 0.2\ntriangle 0 0 0  0.5 0.5 0.5  1 1 1\n", "t");
   ASSERT_EQ(s.warnings.size(), 2u);
-  EXPECT_EQ(s.warnings[0].message, "sphere reaches outside the cube [-1,1]^3 that holds a spec scene");
+  EXPECT_EQ(s.warnings[0].message, "sphere reaches outside the cube [-1,1]^3 that scenes are made for");
   EXPECT_EQ(s.warnings[1].message,
             "degenerate triangle (its vertices are collinear): it covers no pixel and casts no shadow");
   EXPECT_EQ(s.warnings[1].where.line, 3);

@@ -13,7 +13,7 @@
 
 namespace umbra::test {
 
-// The spec's floor: the square z = -1 of the cube [-1, 1]^3, two triangles.
+// The floor of the scenes: the square z = -1 of the cube [-1, 1]^3, two triangles.
 inline std::string floor_text() { return "triangle -1 -1 -1  1 -1 -1  1 1 -1\ntriangle -1 -1 -1  1 1 -1  -1 1 -1\n"; }
 
 // The box [lo, hi] as OBJ, faces counter-clockwise seen from outside; its

@@ -96,7 +96,7 @@ TEST(HardTriangle, LightInItsPlaneCastsNothing) {
 TEST(HardTriangle, LightWithin1e7OfItsPlane) {
   for (const double offset : {1e-7, -1e-7, 1e-15}) {
     const Scene scene = light_by_triangle_plane(offset);
-    EXPECT_EQ(method_of(scene, 2), "three side quads (spec 2.1)");
+    EXPECT_EQ(method_of(scene, 2), "three side quads");
     expect_hard_case_holds(scene);
   }
 }
@@ -112,7 +112,7 @@ TEST(HardTriangle, DegenerateTrianglesCastNothingAndSliversTheirShadow) {
   EXPECT_EQ(method_of(scene, 2), "none: degenerate (collinear vertices)");
   EXPECT_EQ(method_of(scene, 3), "none: degenerate (collinear vertices)");
   EXPECT_EQ(method_of(scene, 4), "none: degenerate (collinear vertices)");
-  EXPECT_EQ(method_of(scene, 5), "three side quads (spec 2.1)");
+  EXPECT_EQ(method_of(scene, 5), "three side quads");
   EXPECT_EQ(scene.warnings.size(), 3u);
   expect_hard_case_holds(scene);
 }
@@ -221,7 +221,7 @@ TEST(HardScale, LightAMillionAway) {
 // --- the camera and the stencil ----------------------------------------------
 
 TEST(HardView, TheNearPlaneDoesNotDependOnWhereTheTargetLies) {
-  // The spec's view, looking at points 300 away, 1e-3 away, or at the
+  // The default view, looking at points 300 away, 1e-3 away, or at the
   // origin: the same near plane, and the whole scene in view.
   const std::string demo = test::read_file(std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene");
   const RenderPlan spec_view = plan_for(parse_scene_text(demo, "demo.scene"));
@@ -251,7 +251,7 @@ TEST(HardView, TheNearPlaneStaysInFrontOfTheNearestSurface) {
 
 TEST(HardView, ACameraMovedIntoAClosedMeshSeesItsInside) {
   // Culling is decided per frame from where the eye is: a renderer made for
-  // the spec's view (outside the box, so back faces are culled), then the
+  // the default view (outside the box, so back faces are culled), then the
   // camera moved inside the box, as zooming in `umbra view` does. Lit from
   // inside, the walls the eye now sees are the mesh's back faces.
   Scene scene = mesh_scene("light 0.2 0.1 0.1\n", "room.obj", box_obj(-0.6, 0.6, -0.9, 0.3));

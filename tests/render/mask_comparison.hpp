@@ -4,7 +4,7 @@
 // pixel (its footprint straddles a shadow, silhouette or terminator edge; at
 // most a quarter of such pixels, within_boundary_bound), or
 // where the point's shadow ray passes through the sliver between a sphere's
-// true tangent cone and the cone of its inscribed N-gon (spec 2.2), the one
+// true tangent cone and the cone of its inscribed N-gon (docs/geometry.md), the one
 // approximation in the volumes; or where the surface is lit at a grazing angle
 // the shader's float arithmetic cannot resolve (kGrazing).
 

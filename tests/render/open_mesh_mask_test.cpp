@@ -14,7 +14,7 @@ namespace umbra {
 namespace {
 
 // The soup fitted into the box [-0.45, 0.45]^2 x [-0.75, 0.15] (turned about
-// x first) over the spec's floor, lit from two sides.
+// x first) over the scenes' floor, lit from two sides.
 Scene scene_with(const std::string& name, const PolygonSoup& soup, double rotate_x_deg) {
   const std::string path = test::write_mesh(name + ".obj", test::obj_text(soup));
   glm::dvec3 lo(1e300), hi(-1e300);

@@ -139,7 +139,7 @@ TEST(Property, RigidMotionOfEverythingKeepsTheMask) {
   for (const std::string& path : bundled_scene_paths()) {
     SCOPED_TRACE(path);
     Scene scene = parse_scene_file(path);
-    scene.camera_from = FileLoc{path, 0, 0};  // the spec's view, now as an explicit camera that moves too
+    scene.camera_from = FileLoc{path, 0, 0};  // the default view, now as an explicit camera that moves too
     const Scene other = moved(scene, motion);
     RenderSettings settings;
     settings.width = settings.height = 96;

@@ -257,7 +257,7 @@ TEST(Auto, LeavesOutCastersWhoseVolumesCannotReachTheView) {
 }
 
 TEST(ZFail, SphereShadowErrorIsConfinedToTheNgonBand) {
-  // With a coarse hexagon (spec figure 7) the band is wide; every difference
+  // With a coarse hexagon the band is wide; every difference
   // must still be explained by it or by a pixel edge.
   test::expect_masks_match_reference(parse_scene_file(scene_path("two_spheres.scene")), 200, 200, 6);
 }

@@ -109,7 +109,7 @@ TEST(SphereVolume, IsClosedForManyLightsAndSegmentCounts) {
 }
 
 TEST(SphereVolume, StableWhenTheLightIsFar) {
-  // r = R sqrt(LC^2 - R^2) / LC tends to R; the spec's sqrt(LC^2 - R^2 - PL^2)
+  // r = R sqrt(LC^2 - R^2) / LC tends to R; the textbook sqrt(LC^2 - R^2 - PL^2)
   // would cancel to garbage at LC = 1e8.
   const TangentCircle c = tangent_circle({0, 0, 0}, 0.5, {0, 0, 1e8});
   EXPECT_NEAR(c.radius, 0.5, 1e-15);
