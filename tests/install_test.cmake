@@ -8,7 +8,7 @@ execute_process(COMMAND "${CMAKE_COMMAND}" --install "${BUILD}" --prefix "${pref
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "cmake --install failed (${status})")
 endif()
-foreach(file bin/umbra share/doc/umbra/LICENSE share/doc/umbra/README.md)
+foreach(file bin/umbra share/doc/umbra/LICENSE share/doc/umbra/README.md share/doc/umbra/docs/check.md)
   if(NOT EXISTS "${prefix}/${file}")
     message(FATAL_ERROR "the install has no ${file}")
   endif()

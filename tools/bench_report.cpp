@@ -111,6 +111,14 @@ void write_plot(const std::vector<BenchRow>& rows, const std::string& path) {
     << "set multiplot layout " << panels_down << "," << columns << "\n"
     << "set logscale x\nset xlabel \"median frame time (ms, log)\"\nset ylabel \"wrong pixels (%)\"\n"
     << "set key top right\nset grid\nset offsets 0, 0, graph 0.05, graph 0.05\n";
+  // Each method keeps its colour and symbol in every panel, whichever
+  // methods a panel has.
+  std::vector<std::string> all_methods;
+  for (const BenchRow& r : rows)
+    if (std::find(all_methods.begin(), all_methods.end(), r.method) == all_methods.end()) all_methods.push_back(r.method);
+  const auto style_of = [&](const std::string& method) {
+    return std::find(all_methods.begin(), all_methods.end(), method) - all_methods.begin() + 1;
+  };
   for (const std::string& scene : scenes) {
     g << "set title " << quoted_for_gnuplot(scene) << "\nplot ";
     const std::vector<std::string> methods = in_order(rows, &scene);
@@ -119,7 +127,7 @@ void write_plot(const std::vector<BenchRow>& rows, const std::string& path) {
       const bool reference = std::any_of(rows.begin(), rows.end(), [&](const BenchRow& r) {
         return r.scene == scene && r.method == methods[i] && r.reference;
       });
-      g << (i ? ", " : "") << "'-' using 1:2 with linespoints title "
+      g << (i ? ", " : "") << "'-' using 1:2 with linespoints linetype " << style_of(methods[i]) << " title "
         << quoted_for_gnuplot(reference ? methods[i] + " (the reference: 0 by definition)" : methods[i]);
     }
     g << "\n";

@@ -1,4 +1,4 @@
-// The hard cases of numerical stability (README, "Hard cases"): each scene's
+// The hard cases of numerical stability (docs/hard-cases.md): each scene's
 // mask must match exact shadow rays on the CPU, every volume vertex must be
 // finite where it should be and a true direction where it is at infinity, and
 // every volume must be closed. Where the answer is an error, it is the exact
