@@ -9,9 +9,9 @@
 #include <map>
 
 #include "mesh/input_error.hpp"
-#include "mesh/mesh_file.hpp"
-#include "mesh/point_merging.hpp"
-#include "mesh/polygon_triangulation.hpp"
+#include "mesh/io/mesh_file.hpp"
+#include "mesh/check/point_merging.hpp"
+#include "mesh/check/polygon_triangulation.hpp"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include <sstream>
 #include <string>
 
-#include "mesh/scene_parser.hpp"
+#include "mesh/scene/scene_parser.hpp"
 #include "render/camera_transform.hpp"
 #include "render/ray_caster.hpp"
 

@@ -9,9 +9,9 @@
 #include <cmath>
 #include <numeric>
 
-#include "mesh/half_edge_mesh.hpp"
-#include "mesh/mesh_check.hpp"
-#include "mesh/scene_parser.hpp"
+#include "mesh/topology/half_edge_mesh.hpp"
+#include "mesh/check/mesh_check.hpp"
+#include "mesh/scene/scene_parser.hpp"
 #include "render/headless_context.hpp"
 #include "render/render_plan.hpp"
 #include "render/shadow_renderer.hpp"

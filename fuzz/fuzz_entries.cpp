@@ -5,10 +5,10 @@
 #include <string>
 #include <string_view>
 
-#include "mesh/mesh_check.hpp"
-#include "mesh/mesh_file.hpp"
-#include "mesh/scene_checks.hpp"
-#include "mesh/scene_parser.hpp"
+#include "mesh/check/mesh_check.hpp"
+#include "mesh/io/mesh_file.hpp"
+#include "mesh/scene/scene_checks.hpp"
+#include "mesh/scene/scene_parser.hpp"
 #include "render/render_plan.hpp"
 #include "silhouette/mesh_caster.hpp"
 #include "silhouette/mesh_volume.hpp"

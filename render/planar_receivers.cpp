@@ -6,7 +6,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 
-#include "mesh/orientation.hpp"
+#include "mesh/predicates/orientation.hpp"
 
 namespace umbra {
 namespace {

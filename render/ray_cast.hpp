@@ -7,7 +7,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "mesh/scene.hpp"
+#include "mesh/scene/scene.hpp"
 #include "render/image.hpp"
 
 namespace umbra {

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "mesh/scene.hpp"
+#include "mesh/scene/scene.hpp"
 #include "render/image.hpp"
 
 namespace umbra {

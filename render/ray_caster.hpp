@@ -8,7 +8,7 @@
 #include <memory>
 #include <optional>
 
-#include "mesh/scene.hpp"
+#include "mesh/scene/scene.hpp"
 #include "render/ray_cast.hpp"
 
 namespace umbra {

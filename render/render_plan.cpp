@@ -7,7 +7,7 @@
 
 #include <tbb/parallel_invoke.h>
 
-#include "mesh/orientation.hpp"
+#include "mesh/predicates/orientation.hpp"
 #include "render/camera_transform.hpp"
 #include "render/planar_receivers.hpp"
 #include "render/view_culling.hpp"

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh/scene.hpp"
+#include "mesh/scene/scene.hpp"
 #include "render/render_method.hpp"
 #include <cmath>
 

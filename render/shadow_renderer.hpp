@@ -21,7 +21,7 @@
 #include <memory>
 #include <vector>
 
-#include "mesh/scene.hpp"
+#include "mesh/scene/scene.hpp"
 #include "render/image.hpp"
 #include "render/render_plan.hpp"
 

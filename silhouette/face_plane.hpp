@@ -8,7 +8,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "mesh/orientation.hpp"
+#include "mesh/predicates/orientation.hpp"
 
 namespace umbra {
 

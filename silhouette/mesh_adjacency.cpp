@@ -1,6 +1,6 @@
 #include "silhouette/mesh_adjacency.hpp"
 
-#include "mesh/half_edge_mesh.hpp"
+#include "mesh/topology/half_edge_mesh.hpp"
 
 #include <stdexcept>
 

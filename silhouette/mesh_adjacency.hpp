@@ -10,7 +10,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "mesh/edge_table.hpp"
+#include "mesh/topology/edge_table.hpp"
 #include "silhouette/face_plane.hpp"
 
 namespace umbra {

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "mesh/closed_components.hpp"
-#include "mesh/edge_table.hpp"
-#include "mesh/scene.hpp"
+#include "mesh/topology/closed_components.hpp"
+#include "mesh/topology/edge_table.hpp"
+#include "mesh/scene/scene.hpp"
 #include "silhouette/mesh_adjacency.hpp"
 #include "silhouette/multiplicity_volume.hpp"
 #include "silhouette/shadow_volume.hpp"

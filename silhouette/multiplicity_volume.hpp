@@ -26,7 +26,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "mesh/edge_table.hpp"
+#include "mesh/topology/edge_table.hpp"
 #include "silhouette/face_plane.hpp"
 #include "silhouette/shadow_volume.hpp"
 #include "silhouette/volume_indices.hpp"

@@ -1,6 +1,6 @@
 #include "silhouette/triangle_volume.hpp"
 
-#include "mesh/orientation.hpp"
+#include "mesh/predicates/orientation.hpp"
 #include "silhouette/extrude_to_infinity.hpp"
 
 namespace umbra {

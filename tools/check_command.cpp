@@ -14,9 +14,9 @@
 #include <tbb/global_control.h>
 
 #include "mesh/input_error.hpp"
-#include "mesh/mesh_check.hpp"
-#include "mesh/mesh_file.hpp"
-#include "mesh/mesh_repair.hpp"
+#include "mesh/check/mesh_check.hpp"
+#include "mesh/io/mesh_file.hpp"
+#include "mesh/check/mesh_repair.hpp"
 #include "tools/command_line.hpp"
 #include "tools/mesh_paths.hpp"
 #include "tools/progress_bar.hpp"

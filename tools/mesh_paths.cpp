@@ -4,8 +4,8 @@
 #include <filesystem>
 
 #include "mesh/input_error.hpp"
-#include "mesh/mapped_file.hpp"
-#include "mesh/mesh_format.hpp"
+#include "mesh/io/mapped_file.hpp"
+#include "mesh/io/mesh_format.hpp"
 #include "tools/command_line.hpp"
 
 namespace umbra {

@@ -4,8 +4,8 @@
 #include <iostream>
 #include <optional>
 
-#include "mesh/scene_checks.hpp"
-#include "mesh/scene_parser.hpp"
+#include "mesh/scene/scene_checks.hpp"
+#include "mesh/scene/scene_parser.hpp"
 #include "render/headless_context.hpp"
 #include "render/image.hpp"
 #include "render/ray_cast_render.hpp"

@@ -12,8 +12,8 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "mesh/scene_checks.hpp"
-#include "mesh/scene_parser.hpp"
+#include "mesh/scene/scene_checks.hpp"
+#include "mesh/scene/scene_parser.hpp"
 #include "render/image.hpp"
 #include "render/render_plan.hpp"
 #include "render/shadow_renderer.hpp"

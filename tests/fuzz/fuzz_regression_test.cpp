@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "fuzz/fuzz_entries.hpp"
-#include "mesh/mesh_file.hpp"
+#include "mesh/io/mesh_file.hpp"
 
 namespace umbra {
 namespace {

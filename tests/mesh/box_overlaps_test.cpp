@@ -1,4 +1,4 @@
-#include "mesh/box_overlaps.hpp"
+#include "mesh/check/box_overlaps.hpp"
 
 #include <algorithm>
 #include <atomic>

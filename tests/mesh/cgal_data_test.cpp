@@ -22,9 +22,9 @@
 
 #include <algorithm>
 
-#include "mesh/half_edge_mesh.hpp"
-#include "mesh/mesh_check.hpp"
-#include "mesh/mesh_file.hpp"
+#include "mesh/topology/half_edge_mesh.hpp"
+#include "mesh/check/mesh_check.hpp"
+#include "mesh/io/mesh_file.hpp"
 
 namespace umbra {
 namespace {

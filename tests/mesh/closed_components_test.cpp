@@ -2,8 +2,8 @@
 // count by hand.
 #include <gtest/gtest.h>
 
-#include "mesh/closed_components.hpp"
-#include "mesh/edge_table.hpp"
+#include "mesh/topology/closed_components.hpp"
+#include "mesh/topology/edge_table.hpp"
 
 namespace umbra {
 namespace {

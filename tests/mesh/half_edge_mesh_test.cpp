@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <map>
 
-#include "mesh/closed_components.hpp"
-#include "mesh/half_edge_mesh.hpp"
-#include "mesh/mesh_check.hpp"
+#include "mesh/topology/closed_components.hpp"
+#include "mesh/topology/half_edge_mesh.hpp"
+#include "mesh/check/mesh_check.hpp"
 #include "tests/mesh/mesh_builders.hpp"
 
 namespace umbra {

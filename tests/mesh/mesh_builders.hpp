@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh/polygon_soup.hpp"
+#include "mesh/io/polygon_soup.hpp"
 
 namespace umbra::test {
 

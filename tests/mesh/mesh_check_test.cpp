@@ -4,8 +4,8 @@
 
 #include <random>
 
-#include "mesh/mesh_check.hpp"
-#include "mesh/self_intersections.hpp"
+#include "mesh/check/mesh_check.hpp"
+#include "mesh/check/self_intersections.hpp"
 #include "tests/mesh/mesh_builders.hpp"
 
 namespace umbra {

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "mesh/input_error.hpp"
-#include "mesh/mesh_file.hpp"
+#include "mesh/io/mesh_file.hpp"
 
 namespace umbra {
 namespace {

@@ -1,4 +1,4 @@
-#include "mesh/orientation.hpp"
+#include "mesh/predicates/orientation.hpp"
 
 #include <gtest/gtest.h>
 

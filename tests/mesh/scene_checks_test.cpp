@@ -1,8 +1,8 @@
-#include "mesh/scene_checks.hpp"
+#include "mesh/scene/scene_checks.hpp"
 
 #include <gtest/gtest.h>
 
-#include "mesh/scene_parser.hpp"
+#include "mesh/scene/scene_parser.hpp"
 
 namespace umbra {
 namespace {

@@ -7,9 +7,9 @@
 #include <filesystem>
 
 #include "mask_comparison.hpp"
-#include "mesh/mesh_check.hpp"
-#include "mesh/mesh_file.hpp"
-#include "mesh/scene_parser.hpp"
+#include "mesh/check/mesh_check.hpp"
+#include "mesh/io/mesh_file.hpp"
+#include "mesh/scene/scene_parser.hpp"
 #include "silhouette/mesh_caster.hpp"
 #include "silhouette/mesh_volume.hpp"
 #include "silhouette/volume_topology.hpp"

@@ -17,7 +17,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "mesh/scene_checks.hpp"
+#include "mesh/scene/scene_checks.hpp"
 #include "render/camera_transform.hpp"
 #include "render/headless_context.hpp"
 #include "render/image.hpp"

@@ -7,7 +7,7 @@
 #include "../mesh/mesh_builders.hpp"
 #include "hard_case_scenes.hpp"
 #include "mask_comparison.hpp"
-#include "mesh/scene_parser.hpp"
+#include "mesh/scene/scene_parser.hpp"
 #include "silhouette/mesh_caster.hpp"
 
 namespace umbra {

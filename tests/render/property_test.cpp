@@ -14,7 +14,7 @@
 
 #include "hard_case_scenes.hpp"
 #include "mask_comparison.hpp"
-#include "mesh/scene_parser.hpp"
+#include "mesh/scene/scene_parser.hpp"
 #include "volume_soundness.hpp"
 
 namespace umbra {

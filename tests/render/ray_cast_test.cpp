@@ -3,7 +3,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "mesh/scene_parser.hpp"
+#include "mesh/scene/scene_parser.hpp"
 #include "render/camera_transform.hpp"
 
 namespace umbra {

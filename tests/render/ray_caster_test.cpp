@@ -7,7 +7,7 @@
 
 #include <filesystem>
 
-#include "mesh/scene_parser.hpp"
+#include "mesh/scene/scene_parser.hpp"
 #include "render/camera_transform.hpp"
 
 namespace umbra {

@@ -7,7 +7,7 @@
 
 #include <glm/trigonometric.hpp>
 
-#include "mesh/scene_parser.hpp"
+#include "mesh/scene/scene_parser.hpp"
 #include "render/planar_receivers.hpp"
 #include "render/camera_transform.hpp"
 #include "render/render_plan.hpp"

@@ -7,8 +7,8 @@
 #include <filesystem>
 
 #include "mask_comparison.hpp"
-#include "mesh/scene_checks.hpp"
-#include "mesh/scene_parser.hpp"
+#include "mesh/scene/scene_checks.hpp"
+#include "mesh/scene/scene_parser.hpp"
 #include "render/headless_context.hpp"
 #include "render/mask_error.hpp"
 #include "render/camera_transform.hpp"

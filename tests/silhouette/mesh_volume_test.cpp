@@ -9,9 +9,9 @@
 #include <random>
 #include <set>
 
-#include "mesh/mesh_file.hpp"
-#include "mesh/mesh_check.hpp"
-#include "mesh/orientation.hpp"
+#include "mesh/io/mesh_file.hpp"
+#include "mesh/check/mesh_check.hpp"
+#include "mesh/predicates/orientation.hpp"
 #include "silhouette/classify_faces.hpp"
 #include "silhouette/mesh_volume.hpp"
 #include "silhouette/volume_topology.hpp"

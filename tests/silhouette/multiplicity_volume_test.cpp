@@ -9,8 +9,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "mesh/closed_components.hpp"
-#include "mesh/edge_table.hpp"
+#include "mesh/topology/closed_components.hpp"
+#include "mesh/topology/edge_table.hpp"
 #include "silhouette/mesh_caster.hpp"
 #include "silhouette/mesh_volume.hpp"
 #include "silhouette/multiplicity_volume.hpp"

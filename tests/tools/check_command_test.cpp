@@ -4,7 +4,7 @@
 
 #include <sstream>
 
-#include "mesh/mesh_file.hpp"
+#include "mesh/io/mesh_file.hpp"
 #include "tests/mesh/mesh_builders.hpp"
 #include "tests/tools/command_fixture.hpp"
 

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "mesh/scene_parser.hpp"
+#include "mesh/scene/scene_parser.hpp"
 #include "render/image.hpp"
 #include "render/ray_cast.hpp"
 #include "tests/tools/command_fixture.hpp"

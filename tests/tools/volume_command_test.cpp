@@ -2,8 +2,8 @@
 // closed, outward surfaces.
 #include <gtest/gtest.h>
 
-#include "mesh/mesh_check.hpp"
-#include "mesh/mesh_file.hpp"
+#include "mesh/check/mesh_check.hpp"
+#include "mesh/io/mesh_file.hpp"
 #include "tests/tools/command_fixture.hpp"
 
 namespace umbra {

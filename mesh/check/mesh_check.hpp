@@ -1,0 +1,39 @@
+#pragma once
+// `umbra check`'s analysis: is a mesh a closed, consistently oriented
+// 2-manifold without self-intersections, and if not, exactly why and where.
+
+#include <array>
+#include <vector>
+
+#include "mesh/check/mesh_report.hpp"
+#include "mesh/io/polygon_soup.hpp"
+
+namespace umbra {
+
+struct CheckOptions {
+  // The search for self-intersections stops after this long and says so;
+  // 0 skips it.
+  double self_intersection_seconds = 60.0;
+};
+
+// The report, and the mesh as the renderer takes it: coincident points
+// merged, faces that repeat a vertex and duplicate faces dropped, every other
+// face triangulated and turned to agree with its neighbours (the fewest flips;
+// a non-orientable component keeps the file's orientation), and every closed
+// component turned to face outward.
+struct MeshAnalysis {
+  MeshReport report;
+  std::vector<glm::dvec3> positions;
+  std::vector<std::array<uint32_t, 3>> triangles;
+  std::vector<uint32_t> triangle_face;  // the file's face each triangle comes from
+};
+
+MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options = {});
+MeshReport check_mesh(const PolygonSoup& soup, const CheckOptions& options = {});
+// The same, taking the soup apart as it goes (its points freed once merged,
+// its corners reused): a soup read from a file is the largest thing the
+// check holds.
+MeshAnalysis analyse_mesh(PolygonSoup&& soup, const CheckOptions& options = {});
+MeshReport check_mesh(PolygonSoup&& soup, const CheckOptions& options = {});
+
+}  // namespace umbra

@@ -1,0 +1,163 @@
+#include "mesh/check/mesh_repair.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <map>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/stitch_borders.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include "mesh/input_error.hpp"
+#include "mesh/check/solid_orientation.hpp"
+
+namespace umbra {
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+using Polygon = std::vector<std::size_t>;
+
+std::string counted(size_t n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); }
+
+// Drops repeated corners next to each other (after merging, "a b b c" is the
+// triangle "a b c"), then every polygon left with fewer than 3 distinct
+// corners. Returns how many polygons were dropped.
+size_t remove_degenerate_polygons(std::vector<Polygon>& polygons) {
+  const size_t before = polygons.size();
+  std::vector<Polygon> kept;
+  kept.reserve(polygons.size());
+  for (Polygon& polygon : polygons) {
+    Polygon simple;
+    for (size_t k = 0; k < polygon.size(); ++k)
+      if (polygon[k] != polygon[(k + 1) % polygon.size()]) simple.push_back(polygon[k]);
+    Polygon distinct = simple;
+    std::sort(distinct.begin(), distinct.end());
+    const bool repeats = std::adjacent_find(distinct.begin(), distinct.end()) != distinct.end();
+    if (simple.size() >= 3 && !repeats) kept.push_back(std::move(simple));
+  }
+  polygons = std::move(kept);
+  return before - polygons.size();
+}
+
+// Reverses every closed component that faces into the solid it bounds
+// (wrongly_facing_closed_components); returns how many.
+size_t orient_closed_components_outward(Mesh& mesh) {
+  auto component = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:component", 0).first;
+  const std::size_t count = PMP::connected_components(mesh, component);
+  std::vector<std::vector<Mesh::Face_index>> faces(count);
+  std::vector<uint8_t> closed(count, 1);
+  std::vector<glm::dvec3> positions(mesh.number_of_vertices());
+  for (const Mesh::Vertex_index v : mesh.vertices()) {
+    const Point& p = mesh.point(v);
+    positions[size_t(v)] = {p.x(), p.y(), p.z()};
+  }
+  std::vector<std::array<uint32_t, 3>> triangles;  // each face as a fan, for the volumes
+  std::vector<uint32_t> component_of;
+  for (const Mesh::Face_index f : mesh.faces()) {
+    faces[component[f]].push_back(f);
+    std::vector<uint32_t> corners;
+    for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      if (mesh.is_border(mesh.opposite(h))) closed[component[f]] = 0;
+      corners.push_back(uint32_t(mesh.source(h)));
+    }
+    for (size_t k = 1; k + 1 < corners.size(); ++k) {
+      triangles.push_back({corners[0], corners[k], corners[k + 1]});
+      component_of.push_back(uint32_t(component[f]));
+    }
+  }
+  const std::vector<uint8_t> wrong = wrongly_facing_closed_components(positions, triangles, component_of, count, closed);
+  size_t reversed = 0;
+  for (std::size_t c = 0; c < count; ++c) {
+    if (!wrong[c]) continue;
+    PMP::reverse_face_orientations(faces[c], mesh);
+    ++reversed;
+  }
+  mesh.remove_property_map(component);
+  return reversed;
+}
+
+}  // namespace
+
+RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output) {
+  RepairSummary summary;
+  auto& changes = summary.changes;
+  std::vector<Point> points;
+  points.reserve(soup.points.size());
+  for (const glm::dvec3& p : soup.points) points.emplace_back(p.x, p.y, p.z);
+  std::vector<Polygon> polygons(soup.polygon_count());
+  for (size_t f = 0; f < polygons.size(); ++f) polygons[f].assign(soup.polygon(f), soup.polygon(f) + soup.corner_count(f));
+
+  if (const size_t n = PMP::merge_duplicate_points_in_polygon_soup(points, polygons))
+    changes.push_back("merged " + counted(n, "repeated vertex", "repeated vertices"));
+  if (const size_t n = remove_degenerate_polygons(polygons))
+    changes.push_back("removed " + counted(n, "face with a repeated vertex", "faces with a repeated vertex"));
+  if (const size_t n = PMP::merge_duplicate_polygons_in_polygon_soup(points, polygons))
+    changes.push_back("removed " + counted(n, "duplicate face", "duplicate faces"));
+  if (const size_t n = PMP::remove_isolated_points_in_polygon_soup(points, polygons))
+    changes.push_back("removed " + counted(n, "unused vertex", "unused vertices"));
+  if (polygons.empty()) throw InputError({soup.path, 0, 0}, "nothing left to repair: the mesh has no valid face");
+
+  const size_t points_before_orienting = points.size();
+  const std::vector<Polygon> before_orienting = polygons;
+  // Orients each piece consistently, splitting vertices and edges where the
+  // soup is not a manifold (PMP's documented way to make any soup a mesh).
+  const bool was_orientable_manifold = PMP::orient_polygon_soup(points, polygons);
+  size_t flipped = 0;
+  for (size_t f = 0; f < polygons.size(); ++f) flipped += polygons[f] != before_orienting[f];
+  if (flipped > 0) changes.push_back("flipped " + counted(flipped, "face", "faces") + " to orient them consistently");
+  if (!was_orientable_manifold)
+    changes.push_back("split " + counted(points.size() - points_before_orienting, "vertex", "vertices") +
+                      " into copies where faces meet only at a point or cannot agree on an orientation (the copies "
+                      "keep their coordinates, so the check below still sees those points)");
+
+  Mesh mesh;
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  const size_t faces_before = mesh.number_of_faces();
+  PMP::triangulate_faces(mesh);
+  if (mesh.number_of_faces() != faces_before)
+    changes.push_back("triangulated " + counted(faces_before, "face", "faces") + " into " +
+                      counted(mesh.number_of_faces(), "triangle", "triangles"));
+  if (const size_t n = PMP::stitch_borders(mesh))
+    changes.push_back("stitched " + counted(n, "pair of coinciding border edges", "pairs of coinciding border edges"));
+
+  const size_t triangles_before = mesh.number_of_faces();
+  const bool all_removed = PMP::remove_degenerate_faces(mesh);
+  mesh.collect_garbage();
+  if (mesh.number_of_faces() != triangles_before)
+    changes.push_back("collapsed degenerate triangles (" + counted(triangles_before - mesh.number_of_faces(), "triangle", "triangles") +
+                      " fewer)");
+  if (!all_removed) changes.push_back("could not remove every degenerate triangle");
+  if (const size_t n = orient_closed_components_outward(mesh))
+    changes.push_back("turned " + counted(n, "closed component", "closed components") + " outward");
+  if (mesh.number_of_faces() == 0) throw InputError({soup.path, 0, 0}, "nothing left after the repair: every face was degenerate");
+
+  // Write beside the output (same extension: it chooses the format), then rename.
+  const std::filesystem::path final_path(output);
+  const std::filesystem::path partial =
+      final_path.parent_path() / ("." + final_path.stem().string() + ".partial" + final_path.extension().string());
+  if (!CGAL::IO::write_polygon_mesh(partial.string(), mesh, CGAL::parameters::stream_precision(17))) {
+    std::remove(partial.c_str());
+    throw InputError({output, 0, 0}, "cannot write the repaired mesh");
+  }
+  std::error_code ec;
+  std::filesystem::rename(partial, final_path, ec);
+  if (ec) {
+    std::remove(partial.c_str());
+    throw InputError({output, 0, 0}, "cannot write the repaired mesh: " + ec.message());
+  }
+  return summary;
+}
+
+}  // namespace umbra

@@ -1,0 +1,23 @@
+#pragma once
+// `umbra check --repair`: what CGAL's Polygon Mesh Processing can fix.
+
+#include <string>
+#include <vector>
+
+#include "mesh/io/polygon_soup.hpp"
+
+namespace umbra {
+
+struct RepairSummary {
+  std::vector<std::string> changes;  // one line per kind of change made, e.g. "merged 24 repeated vertices"
+};
+
+// Merges repeated vertices, drops degenerate and duplicate faces and unused
+// vertices, splits non-manifold vertices, orients faces consistently, stitches
+// borders that coincide, triangulates, and turns every closed component
+// outward; writes the result to `output` (format by extension) through a
+// temporary file, so a failure leaves nothing behind. Throws InputError when
+// nothing usable is left or the file cannot be written.
+RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output);
+
+}  // namespace umbra

@@ -1,0 +1,274 @@
+#include "mesh/check/mesh_report.hpp"
+
+#include <cstdio>
+#include <sstream>
+
+namespace umbra {
+namespace {
+
+std::string plural(size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+std::string element(const char* kind, const ElementRef& e) {
+  std::string s = std::string(kind) + " " + std::to_string(e.index);
+  if (e.line > 0) s += " (line " + std::to_string(e.line) + ")";
+  return s;
+}
+
+std::string edge(const ElementPair& e) {
+  std::string s = "edge " + std::to_string(e.first.index) + "-" + std::to_string(e.second.index);
+  if (e.first.line > 0) s += " (lines " + std::to_string(e.first.line) + ", " + std::to_string(e.second.line) + ")";
+  return s;
+}
+
+std::string number(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", x);
+  return buffer;
+}
+
+std::string seconds(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3f s", x);
+  return buffer;
+}
+
+}  // namespace
+
+const char* shadow_method_name(ShadowMethod method) {
+  return method == ShadowMethod::kSilhouette ? "silhouette" : "edge-multiplicity";
+}
+
+ShadowMethod MeshReport::shadow_method() const {
+  const bool closed_2_manifold = !components.empty() && border_edges == 0 && non_manifold_edges == 0 &&
+                                 non_manifold_vertices == 0 && non_orientable_components == 0;
+  return closed_2_manifold ? ShadowMethod::kSilhouette : ShadowMethod::kEdgeMultiplicity;
+}
+
+std::string MeshReport::shadow_method_reason() const {
+  const std::vector<std::string> why = topology_problems();
+  if (why.empty()) return "closed 2-manifold";
+  std::string s = "not a closed 2-manifold (";
+  for (size_t i = 0; i < why.size(); ++i) s += (i ? ", " : "") + why[i];
+  return s + ")";
+}
+
+std::string MeshReport::loading_changes() const {
+  std::string s;
+  if (duplicate_faces > 0) s = plural(duplicate_faces, "duplicate face", "duplicate faces") + " dropped";
+  if (faces_to_flip > 0) s += (s.empty() ? "" : ", ") + plural(faces_to_flip, "face", "faces") + " flipped to agree";
+  return s;
+}
+
+bool MeshReport::is_closed_manifold() const { return problems().empty(); }
+
+std::vector<std::string> MeshReport::topology_problems() const {
+  std::vector<std::string> out;
+  if (components.empty()) out.push_back("no faces");
+  if (border_edges > 0)
+    out.push_back(plural(border_edges, "border edge", "border edges") + " in " + plural(border_loops, "hole", "holes"));
+  if (non_manifold_edges > 0) out.push_back(plural(non_manifold_edges, "non-manifold edge", "non-manifold edges"));
+  if (non_manifold_vertices > 0) out.push_back(plural(non_manifold_vertices, "non-manifold vertex", "non-manifold vertices"));
+  if (non_orientable_components > 0)
+    out.push_back(plural(non_orientable_components, "non-orientable component", "non-orientable components"));
+  if (inconsistent_edges > 0)
+    out.push_back("inconsistent orientation (" + plural(faces_to_flip, "face", "faces") + " to flip)");
+  return out;
+}
+
+std::vector<std::string> MeshReport::problems() const {
+  std::vector<std::string> out = topology_problems();
+  if (duplicate_faces > 0) out.push_back(plural(duplicate_faces, "duplicate face", "duplicate faces"));
+  if (degenerate_faces > 0) out.push_back(plural(degenerate_faces, "degenerate face", "degenerate faces"));
+  if (!self_intersections.checked) {
+    out.push_back("self-intersections not checked");
+  } else if (self_intersections.face_pairs > 0) {
+    out.push_back(plural(self_intersections.face_pairs, "self-intersecting face pair", "self-intersecting face pairs") +
+                  (self_intersections.complete ? "" : " (search stopped at the time limit)"));
+  } else if (!self_intersections.complete) {
+    out.push_back("self-intersection search stopped after " + number(self_intersections.time_limit_seconds) + " s");
+  }
+  return out;
+}
+
+std::string MeshReport::verdict() const {
+  const std::vector<std::string> why = problems();
+  const bool silhouette = shadow_method() == ShadowMethod::kSilhouette;
+  std::string s;
+  if (why.empty()) {
+    s = "closed 2-manifold: casts its shadow from silhouette edges";
+    if (inward_components > 0) s += " (oriented inward, which shadows the same; --repair turns it outward)";
+    return s;
+  }
+  const bool oriented = inconsistent_edges == 0;
+  s = silhouette && oriented ? "closed and consistently oriented, but not clean (" : "not a closed 2-manifold (";
+  for (size_t i = 0; i < why.size(); ++i) s += (i ? ", " : "") + why[i];
+  if (!silhouette) return s + "): shadow from an edge-multiplicity volume (exact for any triangles)";
+  return s + (oriented ? "): still casts its shadow from silhouette edges"
+                       : "): casts its shadow from silhouette edges once the renderer flips those faces");
+}
+
+void MeshReport::print_text(std::ostream& out) const {
+  out << path << ": " << format << ", " << plural(file_vertices, "vertex", "vertices") << ", "
+      << plural(file_faces, "face", "faces") << " (" << plural(triangles, "triangle", "triangles") << ")\n";
+  const auto examples_line = [&](const std::vector<std::string>& items) {
+    if (items.empty()) return;
+    out << "                     e.g. ";
+    for (size_t i = 0; i < items.size(); ++i) out << (i ? ", " : "") << items[i];
+    out << "\n";
+  };
+  const auto edges_of = [](const std::vector<ElementPair>& v) {
+    std::vector<std::string> s;
+    for (const auto& e : v) s.push_back(edge(e));
+    return s;
+  };
+  const auto refs_of = [](const char* kind, const std::vector<ElementRef>& v) {
+    std::vector<std::string> s;
+    for (const auto& e : v) s.push_back(element(kind, e));
+    return s;
+  };
+  size_t closed_count = 0;
+  for (const ComponentReport& c : components) closed_count += c.closed;
+
+  out << "  vertices           " << vertices << " distinct (" << merged_vertices << " merged as repeats, "
+      << isolated_vertices << " unused)\n";
+  out << "  edges              " << edges << "\n";
+  out << "  components         " << components.size() << " (" << closed_count << " closed)\n";
+  out << "  border             " << plural(border_edges, "edge", "edges") << " in " << plural(border_loops, "loop", "loops")
+      << "\n";
+  examples_line(edges_of(examples.border_edges));
+  out << "  non-manifold       " << plural(non_manifold_edges, "edge", "edges") << ", "
+      << plural(non_manifold_vertices, "vertex", "vertices") << "\n";
+  examples_line(edges_of(examples.non_manifold_edges));
+  examples_line(refs_of("vertex", examples.non_manifold_vertices));
+  out << "  duplicate faces    " << duplicate_faces << "\n";
+  {
+    std::vector<std::string> s;
+    for (const auto& [face, original] : examples.duplicate_faces)
+      s.push_back(element("face", face) + " repeats " + element("face", original));
+    examples_line(s);
+  }
+  out << "  degenerate faces   " << degenerate_faces << "\n";
+  examples_line(refs_of("face", examples.degenerate_faces));
+  out << "  orientation        ";
+  if (non_orientable_components > 0) out << plural(non_orientable_components, "component is", "components are") << " non-orientable; ";
+  if (inconsistent_edges == 0) out << "consistent";
+  else out << plural(inconsistent_edges, "edge disagrees", "edges disagree") << ", " << plural(faces_to_flip, "face", "faces") << " to flip";
+  if (inward_components > 0) out << "; " << plural(inward_components, "closed component faces", "closed components face") << " inward";
+  out << "\n";
+  examples_line(refs_of("flip face", examples.faces_to_flip));
+  out << "  self-intersections ";
+  if (!self_intersections.checked) {
+    out << "not checked\n";
+  } else {
+    out << plural(self_intersections.face_pairs, "face pair", "face pairs") << " ("
+        << (self_intersections.complete ? "complete" : "stopped at the time limit of " + number(self_intersections.time_limit_seconds) + " s")
+        << ", " << seconds(self_intersections.seconds) << ")\n";
+    std::vector<std::string> s;
+    for (const auto& [f, g] : examples.self_intersections) s.push_back(element("face", f) + " x " + element("face", g));
+    examples_line(s);
+  }
+  out << "  Euler char.        " << euler_characteristic << "\n";
+  out << "  bounding box       (" << number(bbox_min.x) << ", " << number(bbox_min.y) << ", " << number(bbox_min.z) << ") to ("
+      << number(bbox_max.x) << ", " << number(bbox_max.y) << ", " << number(bbox_max.z) << ")\n";
+  constexpr size_t kListed = 10;
+  for (size_t i = 0; i < components.size() && i < kListed; ++i) {
+    const ComponentReport& c = components[i];
+    out << "  component " << i << (i < 10 ? "        " : "       ") << plural(c.faces, "face", "faces") << ", "
+        << (c.closed ? "closed" : c.manifold ? "open" : "non-manifold") << ", chi " << c.euler_characteristic;
+    if (c.genus) out << ", genus " << *c.genus;
+    if (c.border_loops) out << ", " << plural(c.border_loops, "hole", "holes");
+    if (!c.orientable) out << ", non-orientable";
+    if (c.outward) out << (*c.outward ? ", outward" : ", inward");
+    out << "\n";
+  }
+  if (components.size() > kListed) out << "  ... and " << components.size() - kListed << " more components\n";
+  out << "  verdict            " << verdict() << "\n";
+}
+
+void MeshReport::print_json(std::ostream& out) const {
+  using Json = nlohmann::ordered_json;  // keys in the order docs/check.md lists them
+  const auto ref = [](const char* kind, const ElementRef& e) { return Json{{kind, e.index}, {"line", e.line}}; };
+  const auto refs = [&](const char* kind, const std::vector<ElementRef>& list) {
+    Json items = Json::array();
+    for (const ElementRef& e : list) items.push_back(ref(kind, e));
+    return items;
+  };
+  const auto pairs = [&](const char* kind, const std::vector<ElementPair>& list) {
+    Json items = Json::array();
+    for (const auto& [first, second] : list) items.push_back(Json::array({ref(kind, first), ref(kind, second)}));
+    return items;
+  };
+  constexpr size_t kListed = 1000;
+  size_t closed_count = 0;
+  for (const ComponentReport& c : components) closed_count += c.closed;
+  Json component_list = Json::array();
+  for (size_t i = 0; i < std::min(components.size(), kListed); ++i) {
+    const ComponentReport& c = components[i];
+    component_list.push_back({{"faces", c.faces},
+                              {"vertices", c.vertices},
+                              {"edges", c.edges},
+                              {"border_edges", c.border_edges},
+                              {"border_loops", c.border_loops},
+                              {"euler_characteristic", c.euler_characteristic},
+                              {"closed", c.closed},
+                              {"manifold", c.manifold},
+                              {"orientable", c.orientable},
+                              {"consistently_oriented", c.consistently_oriented},
+                              {"genus", c.genus ? Json(*c.genus) : Json(nullptr)},
+                              {"outward", c.outward ? Json(*c.outward) : Json(nullptr)}});
+  }
+  const Json report = {
+      {"path", path},
+      {"format", format},
+      {"file_vertices", file_vertices},
+      {"file_faces", file_faces},
+      {"triangles", triangles},
+      {"vertices", vertices},
+      {"merged_vertices", merged_vertices},
+      {"isolated_vertices", isolated_vertices},
+      {"edges", edges},
+      {"components", components.size()},
+      {"closed_components", closed_count},
+      {"border_edges", border_edges},
+      {"border_loops", border_loops},
+      {"non_manifold_edges", non_manifold_edges},
+      {"non_manifold_vertices", non_manifold_vertices},
+      {"duplicate_faces", duplicate_faces},
+      {"degenerate_faces", degenerate_faces},
+      {"inconsistent_edges", inconsistent_edges},
+      {"faces_to_flip", faces_to_flip},
+      {"non_orientable_components", non_orientable_components},
+      {"inward_components", inward_components},
+      {"self_intersections",
+       {{"checked", self_intersections.checked},
+        {"complete", self_intersections.complete},
+        {"face_pairs", self_intersections.face_pairs},
+        {"seconds", self_intersections.seconds},
+        {"time_limit_seconds", self_intersections.time_limit_seconds}}},
+      {"euler_characteristic", euler_characteristic},
+      {"bbox", {{"min", {bbox_min.x, bbox_min.y, bbox_min.z}}, {"max", {bbox_max.x, bbox_max.y, bbox_max.z}}}},
+      {"component_list", component_list},
+      {"examples",
+       {{"border_edges", pairs("vertex", examples.border_edges)},
+        {"non_manifold_edges", pairs("vertex", examples.non_manifold_edges)},
+        {"non_manifold_vertices", refs("vertex", examples.non_manifold_vertices)},
+        {"duplicate_faces", pairs("face", examples.duplicate_faces)},
+        {"degenerate_faces", refs("face", examples.degenerate_faces)},
+        {"faces_to_flip", refs("face", examples.faces_to_flip)},
+        {"self_intersections", pairs("face", examples.self_intersections)}}},
+      {"closed_manifold", is_closed_manifold()},
+      {"shadow_method", shadow_method_name(shadow_method())},
+      {"problems", problems()},
+      {"verdict", verdict()}};
+  out << json_line(report);
+}
+
+std::string json_line(const nlohmann::ordered_json& value) {
+  // Invalid UTF-8 (a file name in Latin-1, say) becomes U+FFFD: the output
+  // is always valid UTF-8, as JSON requires (docs/check.md).
+  return value.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+}
+
+}  // namespace umbra

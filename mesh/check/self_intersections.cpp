@@ -1,0 +1,181 @@
+#include "mesh/check/self_intersections.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <chrono>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/intersections.h>
+#include <tbb/enumerable_thread_specific.h>
+
+#include "mesh/check/box_overlaps.hpp"
+
+namespace umbra {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+
+// A projection of space onto a coordinate plane, dropping the axis along
+// which triangle t's normal is largest, so that t's projection has area.
+// Projecting is exact (a coordinate is dropped), and on t's plane it is an
+// affine bijection: orientations there keep or all reverse their signs.
+struct Projection {
+  int u, v;  // the kept axes
+  explicit Projection(const std::array<Point, 3>& t) {
+    const Kernel::Vector_3 n = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
+    const double ax = std::abs(n.x()), ay = std::abs(n.y()), az = std::abs(n.z());
+    const int drop = ax >= ay && ax >= az ? 0 : ay >= az ? 1 : 2;
+    u = (drop + 1) % 3, v = (drop + 2) % 3;
+  }
+  // The exact orientation of the projected points: the determinant in
+  // doubles when it exceeds Shewchuk's bound on its rounding error
+  // ("Adaptive Precision Floating-Point Arithmetic and Fast Robust Geometric
+  // Predicates", 1997: ccwerrboundA = (3 + 16 eps) eps), else CGAL's exact
+  // predicate.
+  CGAL::Orientation orientation(const Point& p, const Point& q, const Point& r) const {
+    const double left = (p[u] - r[u]) * (q[v] - r[v]), right = (p[v] - r[v]) * (q[u] - r[u]);
+    const double det = left - right;
+    constexpr double kEpsilon = 0x1p-53;
+    constexpr double kBound = (3.0 + 16.0 * kEpsilon) * kEpsilon;
+    if (std::abs(det) > kBound * (std::abs(left) + std::abs(right))) return det > 0 ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN;
+    return CGAL::orientation(Kernel::Point_2(p[u], p[v]), Kernel::Point_2(q[u], q[v]), Kernel::Point_2(r[u], r[v]));
+  }
+};
+
+// Two triangles sharing the edge pq, with third corners a and b, meet only
+// along it when a and b lie strictly on opposite sides of pq in a projection
+// where a's triangle has area: if they are coplanar, they lie so in their
+// plane; if not, they meet only along pq anyway.
+bool apart_across_edge(const Point& p, const Point& q, const Point& a, const Point& b) {
+  const Projection projection({p, q, a});
+  const CGAL::Orientation side_a = projection.orientation(p, q, a);
+  return side_a != CGAL::COLLINEAR && projection.orientation(p, q, b) == -side_a;
+}
+
+// Two triangles (v, a1, b1) and (v, a2, b2) sharing the vertex v meet only
+// at v when, in a projection where both have area, the angular sectors they
+// span at v are disjoint: a point x != v in both would project into both
+// sectors, and the projection is one-to-one on the first triangle's plane.
+bool apart_at_vertex(const Point& v, Point a1, Point b1, Point a2, Point b2) {
+  const Projection projection({v, a1, b1});
+  const CGAL::Orientation turn1 = projection.orientation(v, a1, b1), turn2 = projection.orientation(v, a2, b2);
+  if (turn1 == CGAL::COLLINEAR || turn2 == CGAL::COLLINEAR) return false;
+  if (turn1 == CGAL::CLOCKWISE) std::swap(a1, b1);  // each sector counterclockwise from a to b
+  if (turn2 == CGAL::CLOCKWISE) std::swap(a2, b2);
+  // Each under half a turn wide: disjoint when the second starts strictly
+  // past the first's end and ends strictly before its start.
+  return projection.orientation(v, b1, a2) == CGAL::LEFT_TURN && projection.orientation(v, b2, a1) == CGAL::LEFT_TURN;
+}
+
+// Do two triangles intersect anywhere but in the vertices they share? The
+// cases follow CGAL's own self-intersection test (PMP::self_intersections):
+// with a shared edge they intersect only when coplanar and on the same side
+// of it; with a shared vertex, when the edge opposite it in one triangle
+// meets the other triangle.
+bool triangles_intersect(const std::array<Point, 3>& a, const std::array<uint32_t, 3>& ia,
+                         const std::array<Point, 3>& b, const std::array<uint32_t, 3>& ib) {
+  int shared_in_a[3] = {-1, -1, -1};  // for each corner of a, the matching corner of b
+  int shared = 0;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      if (ia[size_t(i)] == ib[size_t(j)]) {
+        shared_in_a[i] = j;
+        ++shared;
+      }
+    }
+  }
+  if (shared == 0) return CGAL::do_intersect(Kernel::Triangle_3(a[0], a[1], a[2]), Kernel::Triangle_3(b[0], b[1], b[2]));
+  if (shared >= 3) return false;  // the same triangle: a duplicate face, reported as such
+  if (shared == 2) {
+    int a_free = 0;
+    while (shared_in_a[a_free] >= 0) ++a_free;
+    int b_free = 0;
+    while (b_free == shared_in_a[0] || b_free == shared_in_a[1] || b_free == shared_in_a[2]) ++b_free;
+    const Point& p = a[size_t((a_free + 1) % 3)];
+    const Point& q = a[size_t((a_free + 2) % 3)];
+    if (apart_across_edge(p, q, a[size_t(a_free)], b[size_t(b_free)])) return false;  // most pairs, without a 3D predicate
+    return CGAL::orientation(p, q, a[size_t(a_free)], b[size_t(b_free)]) == CGAL::COPLANAR &&
+           CGAL::coplanar_orientation(p, q, a[size_t(a_free)], b[size_t(b_free)]) == CGAL::POSITIVE;
+  }
+  int a_vertex = 0;
+  while (shared_in_a[a_vertex] < 0) ++a_vertex;
+  const int b_vertex = shared_in_a[a_vertex];
+  const Kernel::Segment_3 a_opposite(a[size_t((a_vertex + 1) % 3)], a[size_t((a_vertex + 2) % 3)]);
+  const Kernel::Segment_3 b_opposite(b[size_t((b_vertex + 1) % 3)], b[size_t((b_vertex + 2) % 3)]);
+  // When one triangle's opposite edge lies strictly on one side of the
+  // other's plane, that triangle meets the plane only at the shared vertex,
+  // which the other's opposite edge does not hold, so neither test below can
+  // find anything.
+  const auto strictly_on_one_side = [](const std::array<Point, 3>& t, const Kernel::Segment_3& edge) {
+    const CGAL::Orientation side = CGAL::orientation(t[0], t[1], t[2], edge.source());
+    return side != CGAL::COPLANAR && CGAL::orientation(t[0], t[1], t[2], edge.target()) == side;
+  };
+  // Neighbours round a vertex, curved or flat: their sectors, in 2D.
+  if (apart_at_vertex(a[size_t(a_vertex)], a_opposite.source(), a_opposite.target(), b_opposite.source(), b_opposite.target()))
+    return false;
+  if (strictly_on_one_side(a, b_opposite) || strictly_on_one_side(b, a_opposite)) return false;
+  return CGAL::do_intersect(a_opposite, Kernel::Triangle_3(b[0], b[1], b[2])) ||
+         CGAL::do_intersect(b_opposite, Kernel::Triangle_3(a[0], a[1], a[2]));
+}
+
+}  // namespace
+
+SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positions,
+                                          const std::vector<std::array<uint32_t, 3>>& triangles,
+                                          const std::vector<uint32_t>& triangle_face, double time_limit_seconds,
+                                          size_t max_examples) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  const auto deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(time_limit_seconds));
+
+  const auto point = [&positions](uint32_t v) { return Point(positions[v].x, positions[v].y, positions[v].z); };
+  std::vector<FloatBox> boxes;
+  std::vector<uint32_t> triangle_of_box;
+  boxes.reserve(triangles.size());
+  triangle_of_box.reserve(triangles.size());
+  for (uint32_t t = 0; t < triangles.size(); ++t) {
+    const auto& tri = triangles[t];
+    // A triangle with collinear corners has no plane: the exact tests are
+    // undefined for it (the check reports its face as degenerate instead).
+    if (CGAL::collinear(point(tri[0]), point(tri[1]), point(tri[2]))) continue;
+    boxes.push_back(enclosing_box(positions[tri[0]], positions[tri[1]], positions[tri[2]]));
+    triangle_of_box.push_back(t);
+  }
+
+  struct WorkerState {
+    std::vector<std::pair<uint32_t, uint32_t>> face_pairs;
+    size_t calls = 0;
+  };
+  tbb::enumerable_thread_specific<WorkerState> workers;
+  const auto test = [&](const std::pair<uint32_t, uint32_t>* pairs, size_t count) {
+    WorkerState& state = workers.local();
+    if ((state.calls += count) >= 1024) {
+      state.calls = 0;
+      if (Clock::now() > deadline) return false;
+    }
+    for (size_t k = 0; k < count; ++k) {
+      const uint32_t s = triangle_of_box[pairs[k].first], t = triangle_of_box[pairs[k].second];
+      const uint32_t fs = triangle_face[s], ft = triangle_face[t];
+      if (fs == ft) continue;
+      const auto& is = triangles[s];
+      const auto& it = triangles[t];
+      if (triangles_intersect({point(is[0]), point(is[1]), point(is[2])}, is, {point(it[0]), point(it[1]), point(it[2])}, it))
+        state.face_pairs.emplace_back(std::min(fs, ft), std::max(fs, ft));
+    }
+    return true;
+  };
+
+  SelfIntersections result;
+  result.complete = for_each_overlapping_pair(std::move(boxes), test);
+  std::vector<std::pair<uint32_t, uint32_t>> face_pairs;
+  for (const WorkerState& state : workers) face_pairs.insert(face_pairs.end(), state.face_pairs.begin(), state.face_pairs.end());
+  std::sort(face_pairs.begin(), face_pairs.end());
+  face_pairs.erase(std::unique(face_pairs.begin(), face_pairs.end()), face_pairs.end());
+  result.face_pairs = face_pairs.size();
+  result.examples.assign(face_pairs.begin(), face_pairs.begin() + std::ptrdiff_t(std::min(max_examples, face_pairs.size())));
+  result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return result;
+}
+
+}  // namespace umbra

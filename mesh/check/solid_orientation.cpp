@@ -1,0 +1,67 @@
+#include "mesh/check/solid_orientation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace umbra {
+namespace {
+
+// The solid angle of triangle abc seen from the origin, signed positive when
+// abc turns counter-clockwise seen from outside (Van Oosterom and Strackee 1983).
+double solid_angle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+  const double la = glm::length(a), lb = glm::length(b), lc = glm::length(c);
+  return 2.0 * std::atan2(glm::dot(a, glm::cross(b, c)),
+                          la * lb * lc + glm::dot(a, b) * lc + glm::dot(a, c) * lb + glm::dot(b, c) * la);
+}
+
+}  // namespace
+
+std::vector<uint8_t> wrongly_facing_closed_components(const std::vector<glm::dvec3>& positions,
+                                                      const std::vector<std::array<uint32_t, 3>>& triangles,
+                                                      const std::vector<uint32_t>& component_of, size_t count,
+                                                      const std::vector<uint8_t>& closed) {
+  std::vector<glm::dvec3> lo(count, glm::dvec3(1e300)), hi(count, glm::dvec3(-1e300));
+  std::vector<std::vector<uint32_t>> faces(count);
+  for (uint32_t t = 0; t < triangles.size(); ++t) {
+    const uint32_t c = component_of[t];
+    faces[c].push_back(t);
+    for (const uint32_t v : triangles[t]) lo[c] = glm::min(lo[c], positions[v]), hi[c] = glm::max(hi[c], positions[v]);
+  }
+  std::vector<double> volume(count, 0.0);
+  for (size_t c = 0; c < count; ++c) {
+    if (!closed[c]) continue;
+    const glm::dvec3 centre = 0.5 * (lo[c] + hi[c]);
+    for (const uint32_t t : faces[c]) {
+      const glm::dvec3 a = positions[triangles[t][0]] - centre, b = positions[triangles[t][1]] - centre,
+                       e = positions[triangles[t][2]] - centre;
+      volume[c] += glm::dot(a, glm::cross(b, e)) / 6.0;
+    }
+  }
+  // How many closed components wind round component c: its depth.
+  const auto winds_round = [&](size_t d, const glm::dvec3& p) {
+    double sum = 0.0;
+    for (const uint32_t t : faces[d])
+      sum += solid_angle(positions[triangles[t][0]] - p, positions[triangles[t][1]] - p, positions[triangles[t][2]] - p);
+    return std::abs(sum) / (4.0 * M_PI);
+  };
+  std::vector<uint8_t> wrong(count, 0);
+  for (size_t c = 0; c < count; ++c) {
+    if (!closed[c] || faces[c].empty()) continue;
+    int depth = 0;
+    for (size_t d = 0; d < count; ++d) {
+      if (d == c || !closed[d] || faces[d].empty()) continue;
+      if (glm::any(glm::lessThan(lo[c], lo[d])) || glm::any(glm::greaterThan(hi[c], hi[d]))) continue;
+      // A vertex of c that d's surface does not pass through: winding near 0 or 1.
+      double w = 0.5;
+      for (size_t k = 0; k < faces[c].size() && k < 24 && std::abs(w - 0.5) < 0.25; ++k)
+        w = winds_round(d, positions[triangles[faces[c][k]][k % 3]]);
+      depth += w > 0.5;
+    }
+    wrong[c] = (volume[c] > 0.0) != (depth % 2 == 0);
+  }
+  return wrong;
+}
+
+}  // namespace umbra

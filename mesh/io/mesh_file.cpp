@@ -1,0 +1,44 @@
+#include "mesh/io/mesh_file.hpp"
+
+#include "mesh/input_error.hpp"
+#include "mesh/io/mapped_file.hpp"
+#include "mesh/io/mesh_format.hpp"
+#include "mesh/io/mesh_readers.hpp"
+
+namespace umbra {
+
+PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path) {
+  // The content decides; the extension only names the reader whose located
+  // errors best explain a file too broken for its content to say.
+  std::string format = detect_mesh_format(bytes);
+  // Not OBJ, though: any text would read as an OBJ without faces.
+  if (format.empty() && mesh_format_of(path) != "obj") format = mesh_format_of(path);
+  PolygonSoup soup;
+  if (format == "obj") soup = read_obj(bytes, path);
+  else if (format == "off") soup = read_off(bytes, path);
+  else if (format == "ply") soup = read_ply(bytes, path);
+  else if (format == "stl") soup = read_stl(bytes, path);
+  else throw InputError({path, 0, 0}, "not a mesh file (OBJ, OFF, PLY or STL): " + describe_content(bytes));
+  require_corners_in_range(soup);
+  return soup;
+}
+
+PolygonSoup read_polygon_soup(const std::string& path) {
+  const MappedFile file(path);
+  return parse_polygon_soup(file.bytes(), path);
+}
+
+void require_corners_in_range(const PolygonSoup& soup) {
+  const size_t point_count = soup.points.size();
+  for (size_t p = 0; p < soup.polygon_count(); ++p) {
+    const uint32_t* corners = soup.polygon(p);
+    for (uint32_t k = 0; k < soup.corner_count(p); ++k) {
+      if (corners[k] >= point_count)
+        throw InputError({soup.path, soup.polygon_line(p), 0},
+                         "face " + std::to_string(p) + " refers to vertex " + std::to_string(corners[k]) +
+                             " (counting from 0), but the file has " + std::to_string(point_count) + " vertices");
+    }
+  }
+}
+
+}  // namespace umbra

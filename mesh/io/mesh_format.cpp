@@ -1,0 +1,114 @@
+#include "mesh/io/mesh_format.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <filesystem>
+
+#include "mesh/io/text_scanner.hpp"
+
+namespace umbra {
+namespace {
+
+constexpr size_t kSniffBytes = 1 << 16;  // how far into a text file its first statements are looked for
+
+bool starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
+
+bool is_binary_stl(std::string_view bytes) {
+  if (bytes.size() < 84) return false;
+  uint32_t count = 0;
+  for (int i = 3; i >= 0; --i) count = (count << 8) | static_cast<unsigned char>(bytes[80 + size_t(i)]);
+  return bytes.size() == 84 + size_t(count) * 50;
+}
+
+// Text: no NUL and no control bytes but whitespace in the sniffed part.
+bool looks_like_text(std::string_view head) {
+  return std::none_of(head.begin(), head.end(), [](char ch) {
+    const auto c = static_cast<unsigned char>(ch);
+    return c == 0 || (c < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f' && c != '\v');
+  });
+}
+
+// The first field of each line, skipping blank lines, up to `max_lines`.
+template <typename Visit>
+void first_fields(std::string_view head, size_t max_lines, Visit&& visit) {
+  TextScanner scanner(head, "");
+  for (size_t lines = 0; lines < max_lines && scanner.next_line();) {
+    const std::string_view field = scanner.field();
+    if (field.empty()) continue;
+    ++lines;
+    if (!visit(field)) return;
+  }
+}
+
+bool is_off(std::string_view head) {
+  bool off = false;
+  first_fields(head, 1000, [&](std::string_view field) {
+    if (field.front() == '#') return true;
+    off = field.size() >= 3 && field.substr(field.size() - 3) == "OFF" && field.find_first_not_of("CNST4n") == field.size() - 3;
+    return false;
+  });
+  return off;
+}
+
+bool is_ascii_stl(std::string_view head) {
+  bool solid = false, facet = false;
+  first_fields(head, 3, [&](std::string_view field) {
+    if (!solid) return solid = field == "solid";
+    facet = field == "facet" || field == "endsolid";
+    return !facet;
+  });
+  return facet;
+}
+
+// OBJ: a vertex or face statement, with only OBJ statements and comments before it.
+bool is_obj(std::string_view head) {
+  static const std::string_view kStatements[] = {
+      "v",    "vt",   "vn",   "vp",   "f",     "l",     "p",     "o",      "g",     "s",     "mg",     "mtllib", "usemtl",
+      "maplib", "usemap", "cstype", "deg", "bmat", "step", "curv", "curv2", "surf", "parm", "trim", "hole", "scrv", "sp",
+      "end",  "con",  "bevel", "c_interp", "d_interp", "lod", "shadow_obj", "trace_obj", "ctech", "stech", "call", "csh"};
+  bool obj = false;
+  first_fields(head, 100000, [&](std::string_view field) {
+    if (field.front() == '#') return true;
+    if (std::find(std::begin(kStatements), std::end(kStatements), field) == std::end(kStatements)) return false;
+    obj = field == "v" || field == "f";
+    return !obj;
+  });
+  return obj;
+}
+
+}  // namespace
+
+std::string detect_mesh_format(std::string_view bytes) {
+  if (starts_with(bytes, "ply\n") || starts_with(bytes, "ply\r")) return "ply";
+  if (is_binary_stl(bytes)) return "stl";
+  const std::string_view head = bytes.substr(0, kSniffBytes);
+  if (!looks_like_text(head)) return "";
+  if (is_off(head)) return "off";
+  if (is_ascii_stl(head)) return "stl";
+  if (is_obj(head)) return "obj";
+  return "";
+}
+
+std::string mesh_format_of(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl") return ext.substr(1);
+  return "";
+}
+
+std::string describe_content(std::string_view bytes) {
+  if (bytes.empty()) return "the file is empty";
+  if (starts_with(bytes, "\xff\xfe") || starts_with(bytes, "\xfe\xff")) return "UTF-16 text";
+  const std::string_view head = bytes.substr(0, kSniffBytes);
+  if (!looks_like_text(head)) return "binary data";
+  std::string_view first;
+  first_fields(head, 1, [&](std::string_view field) {
+    first = field;
+    return false;
+  });
+  if (first.empty()) return "only blank lines";
+  return "text starting with " + quote_field(first);
+}
+
+}  // namespace umbra

@@ -1,0 +1,112 @@
+// STL, binary (80-byte header, triangle count, 50 bytes per triangle) or
+// ascii ("solid ... facet normal ... outer loop / vertex x y z / endloop ...").
+// STL repeats each point in every triangle that uses it; the check merges
+// points that coincide.
+#include <cmath>
+#include <cstring>
+
+#include "mesh/io/mesh_readers.hpp"
+#include "mesh/io/text_scanner.hpp"
+
+namespace umbra {
+namespace {
+
+constexpr size_t kBinaryHeaderBytes = 84;
+constexpr size_t kBinaryTriangleBytes = 50;
+
+float little_endian_float(const char* bytes) {
+  uint32_t bits = 0;
+  for (int i = 3; i >= 0; --i) bits = (bits << 8) | static_cast<unsigned char>(bytes[i]);
+  float value;
+  std::memcpy(&value, &bits, sizeof value);
+  return value;
+}
+
+uint32_t little_endian_u32(const char* bytes) {
+  uint32_t value = 0;
+  for (int i = 3; i >= 0; --i) value = (value << 8) | static_cast<unsigned char>(bytes[i]);
+  return value;
+}
+
+PolygonSoup read_binary_stl(std::string_view bytes, const std::string& path, uint32_t triangle_count) {
+  PolygonSoup soup;
+  soup.path = path;
+  soup.format = "STL (binary)";
+  soup.points.reserve(size_t(triangle_count) * 3);
+  soup.corners.reserve(size_t(triangle_count) * 3);
+  soup.polygon_starts.reserve(size_t(triangle_count) + 1);
+  for (uint32_t t = 0; t < triangle_count; ++t) {
+    const char* record = bytes.data() + kBinaryHeaderBytes + size_t(t) * kBinaryTriangleBytes;
+    for (int k = 0; k < 3; ++k) {
+      const char* xyz = record + 12 + 12 * k;  // after the facet normal
+      const glm::dvec3 p(little_endian_float(xyz), little_endian_float(xyz + 4), little_endian_float(xyz + 8));
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        throw InputError({path, 0, 0}, "triangle " + std::to_string(t) + " has a vertex coordinate that is not a finite number");
+      soup.corners.push_back(uint32_t(soup.points.size()));
+      soup.points.push_back(p);
+    }
+    soup.polygon_starts.push_back(uint32_t(soup.corners.size()));
+  }
+  return soup;
+}
+
+PolygonSoup read_ascii_stl(std::string_view text, const std::string& path) {
+  PolygonSoup soup;
+  soup.path = path;
+  soup.format = "STL (ascii)";
+  TextScanner scanner(text, path);
+  bool in_loop = false;
+  uint32_t loop_corners = 0;
+  while (scanner.next_line()) {
+    const std::string_view keyword = scanner.field();
+    if (keyword.empty() || keyword == "solid" || keyword == "endsolid" || keyword == "facet" || keyword == "endfacet") {
+      continue;
+    } else if (keyword == "outer") {
+      if (in_loop) scanner.fail("\"outer loop\" inside a loop: the previous loop has no \"endloop\"");
+      in_loop = true;
+      loop_corners = 0;
+    } else if (keyword == "vertex") {
+      if (!in_loop) scanner.fail("\"vertex\" outside an \"outer loop\" ... \"endloop\" block");
+      const glm::dvec3 p = scanner.vertex();
+      soup.corners.push_back(uint32_t(soup.points.size()));
+      soup.add_point(p, scanner.line_number());
+      ++loop_corners;
+    } else if (keyword == "endloop") {
+      if (!in_loop) scanner.fail("\"endloop\" without \"outer loop\"");
+      if (loop_corners < 3)
+        scanner.fail("a facet needs at least 3 vertices, this one has " + std::to_string(loop_corners));
+      soup.end_polygon(scanner.line_number());
+      in_loop = false;
+    } else {
+      scanner.fail("expected an ascii STL keyword (solid, facet, outer loop, vertex, endloop, endfacet, endsolid), got " +
+                   quote_field(keyword));
+    }
+  }
+  if (in_loop) throw InputError({path, scanner.line_number(), 0}, "the file ends inside a facet (no \"endloop\")");
+  return soup;
+}
+
+}  // namespace
+
+PolygonSoup read_stl(std::string_view bytes, const std::string& path) {
+  if (bytes.size() >= kBinaryHeaderBytes) {
+    const uint32_t triangle_count = little_endian_u32(bytes.data() + 80);
+    // Many binary files also begin with "solid", so the size decides.
+    if (bytes.size() == kBinaryHeaderBytes + size_t(triangle_count) * kBinaryTriangleBytes)
+      return read_binary_stl(bytes, path, triangle_count);
+  }
+  const size_t first = bytes.find_first_not_of(" \t\r\n");
+  if (first != std::string_view::npos && bytes.substr(first, 5) == "solid") return read_ascii_stl(bytes, path);
+  if (bytes.size() >= kBinaryHeaderBytes) {
+    const uint32_t triangle_count = little_endian_u32(bytes.data() + 80);
+    throw InputError({path, 0, 0}, "not a valid STL file: as binary STL its " + std::to_string(triangle_count) +
+                                       " triangles need " +
+                                       std::to_string(kBinaryHeaderBytes + size_t(triangle_count) * kBinaryTriangleBytes) +
+                                       " bytes but the file has " + std::to_string(bytes.size()) +
+                                       ", and it does not begin with \"solid\" as ascii STL does");
+  }
+  throw InputError({path, 0, 0}, "not a valid STL file: too short for binary STL (" + std::to_string(bytes.size()) +
+                                     " bytes) and it does not begin with \"solid\" as ascii STL does");
+}
+
+}  // namespace umbra

@@ -1,0 +1,109 @@
+#pragma once
+// The validated scene (scene-format.md) as plain values. Nothing above mesh/
+// sees scene text: the parser produces this, the renderer consumes it.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "mesh/topology/closed_components.hpp"
+#include "mesh/topology/edge_table.hpp"
+#include "mesh/input_error.hpp"
+#include "mesh/check/mesh_report.hpp"
+
+namespace umbra {
+
+struct Light {
+  glm::dvec3 position{0.0};             // homogeneous (x, y, z, 1): finite distance
+  glm::dvec3 color{1.0};                // diffuse and specular intensity
+  glm::dvec3 ambient{0.15};             // ambient intensity this light adds
+  FileLoc where;
+};
+
+struct Material {
+  std::string name;
+  glm::dvec3 ambient{1.0};
+  glm::dvec3 diffuse{0.8};
+  glm::dvec3 specular{0.0};
+  double shininess = 32.0;
+};
+
+struct Sphere {
+  glm::dvec3 center{0.0};
+  double radius = 0.0;
+  int material = 0;  // index into Scene::materials
+  FileLoc where;
+};
+
+struct Triangle {
+  glm::dvec3 a{0.0}, b{0.0}, c{0.0};  // in file order: the order changes nothing
+  int material = 0;
+  FileLoc where;
+};
+
+// A `mesh` statement with its file loaded: the triangles in scene coordinates
+// (scale, then rotate, then translate), merged, consistently oriented where
+// the mesh allows, with their edges and which components are closed
+// 2-manifolds (those cast their shadow from a silhouette, the rest by edge
+// multiplicity).
+struct Mesh {
+  std::string path;  // as resolved against the scene file's folder
+  int material = 0;
+  double scale = 1.0;
+  glm::dvec3 rotation_axis{0.0, 0.0, 1.0};
+  double rotation_deg = 0.0;
+  glm::dvec3 translation{0.0};
+  FileLoc where;
+
+  std::vector<glm::dvec3> positions;
+  std::vector<std::array<uint32_t, 3>> triangles;
+  glm::dvec3 bounds_min{0.0}, bounds_max{0.0};  // of the positions, in scene coordinates
+  EdgeTable edges;               // of `triangles`
+  ClosedComponents components;   // of `triangles`
+  MeshReport report;  // the file's topology as `umbra check` reports it, without the self-intersection search
+};
+
+struct Camera {
+  glm::dvec3 eye{0.0};
+  glm::dvec3 target{0.0};
+  glm::dvec3 up{0.0, 1.0, 0.0};
+  double fovy_deg = 45.0;
+};
+
+// The default view: looking down -z at the origin, +y up, with the front face
+// of the cube [-1,1]^3 (z = 1) filling 99% of the window's height.
+Camera spec_camera();
+
+struct Warning {
+  FileLoc where;
+  std::string message;
+};
+
+struct Scene {
+  std::string path;
+  std::vector<Light> lights;
+  std::vector<Material> materials;  // [0] is the default material
+  std::vector<Sphere> spheres;
+  std::vector<Triangle> triangles;
+  std::vector<Mesh> meshes;
+  Camera camera = spec_camera();
+  std::optional<FileLoc> camera_from;  // where the camera statement was; none: the default view
+  std::vector<Warning> warnings;
+};
+
+// The box round every surface (spheres, triangles, meshes); empty (lo > hi)
+// when the scene has none.
+struct SceneBounds {
+  glm::dvec3 lo{1.0}, hi{-1.0};
+  bool empty() const { return lo.x > hi.x; }
+};
+SceneBounds surface_bounds(const Scene& scene);
+
+// The light motion of the viewer and --light-angle: every light rotated about the z axis.
+void rotate_lights_about_z(Scene& scene, double degrees);
+
+}  // namespace umbra

@@ -1,0 +1,409 @@
+#include "mesh/scene/scene_parser.hpp"
+
+#include <atomic>
+#include <charconv>
+#include <cmath>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/mat3x3.hpp>
+#include <tbb/parallel_for.h>
+
+#include "mesh/check/mesh_check.hpp"
+#include "mesh/io/mesh_file.hpp"
+#include "mesh/predicates/orientation.hpp"
+
+namespace umbra {
+namespace {
+
+struct Token {
+  std::string text;
+  int column = 0;  // 1-based byte column
+};
+
+// Splits one line into tokens; `#` starts a comment, `"` quotes a path.
+std::vector<Token> tokenize(const std::string& line, const FileLoc& where) {
+  std::vector<Token> tokens;
+  size_t i = 0;
+  while (i < line.size()) {
+    const char ch = line[i];
+    if (ch == ' ' || ch == '\t' || ch == '\r') {
+      ++i;
+    } else if (ch == '#') {
+      break;
+    } else if (ch == '"') {
+      const size_t close = line.find('"', i + 1);
+      if (close == std::string::npos)
+        throw InputError({where.file, where.line, int(i) + 1}, "unterminated quoted path (missing closing \")");
+      tokens.push_back({line.substr(i + 1, close - i - 1), int(i) + 1});
+      i = close + 1;
+    } else {
+      const size_t end = line.find_first_of(" \t\r#", i);
+      const size_t stop = end == std::string::npos ? line.size() : end;
+      tokens.push_back({line.substr(i, stop - i), int(i) + 1});
+      i = stop;
+    }
+  }
+  return tokens;
+}
+
+std::string in_quotes(const std::string& s) { return "\"" + s + "\""; }
+
+// Reads the tokens of one statement left to right, with located errors.
+class StatementReader {
+ public:
+  StatementReader(std::vector<Token> tokens, FileLoc line_loc, int line_length)
+      : tokens_(std::move(tokens)), line_(std::move(line_loc)), line_length_(line_length) {}
+
+  const std::string& keyword() const { return tokens_[0].text; }
+  bool done() const { return next_ >= tokens_.size(); }
+  const Token& peek() const { return tokens_[next_]; }
+  FileLoc loc_of(const Token& t) const { return {line_.file, line_.line, t.column}; }
+  FileLoc statement_loc() const { return loc_of(tokens_[0]); }
+  // Where the next token is, or the end of the line when there is none.
+  FileLoc next_loc() const {
+    return done() ? FileLoc{line_.file, line_.line, line_length_ + 1} : loc_of(peek());
+  }
+
+  [[noreturn]] void fail_at_next(const std::string& message) const { throw InputError(next_loc(), message); }
+
+  std::string got() const { return done() ? "end of line" : in_quotes(peek().text); }
+
+  double number(const std::string& what) {
+    if (done()) fail_at_next("expected a number for the " + what + ", got end of line");
+    std::string text = peek().text;
+    const char* first = text.c_str();
+    if (*first == '+') ++first;  // C's strtod accepts a leading '+'; from_chars does not
+    double value = 0.0;
+    const char* last = text.c_str() + text.size();
+    const auto [ptr, ec] = std::from_chars(first, last, value);
+    // nan and inf (and overflow to inf) are errors, not numbers (scene-format.md).
+    if (ec != std::errc() || ptr != last || !std::isfinite(value) || first == last)
+      fail_at_next("expected a number for the " + what + ", got " + got());
+    ++next_;
+    return value;
+  }
+
+  glm::dvec3 vec3(const std::string& what) {
+    const double x = number(what + " x");
+    const double y = number(what + " y");
+    const double z = number(what + " z");
+    return {x, y, z};
+  }
+
+  glm::dvec3 color(const std::string& what) {
+    const FileLoc at = next_loc();
+    const glm::dvec3 rgb{number(what + " red"), number(what + " green"), number(what + " blue")};
+    if (rgb.r < 0 || rgb.g < 0 || rgb.b < 0) throw InputError(at, "the " + what + " must not be negative");
+    return rgb;
+  }
+
+  std::string word(const std::string& what) {
+    if (done()) fail_at_next("expected " + what + ", got end of line");
+    return tokens_[next_++].text;
+  }
+
+  // Takes an optional keyword from `allowed`; each may appear once.
+  std::optional<std::string> keyword_of(const std::string& statement, const std::vector<std::string>& allowed) {
+    if (done()) return std::nullopt;
+    const std::string& k = peek().text;
+    bool known = false;
+    for (const std::string& a : allowed) known = known || a == k;
+    if (!known) {
+      std::string list;
+      for (size_t i = 0; i < allowed.size(); ++i)
+        list += (i == 0 ? "" : i + 1 == allowed.size() ? " or " : ", ") + allowed[i];
+      fail_at_next("unknown keyword " + in_quotes(k) + " in " + statement + " (expected " + list + ")");
+    }
+    if (!seen_.insert(k).second) fail_at_next("keyword " + in_quotes(k) + " is given twice");
+    ++next_;
+    return k;
+  }
+
+  bool seen(const std::string& k) const { return seen_.count(k) > 0; }
+
+ private:
+  std::vector<Token> tokens_;
+  FileLoc line_;
+  int line_length_;
+  size_t next_ = 1;  // token 0 is the statement keyword
+  std::set<std::string> seen_;
+};
+
+class SceneBuilder {
+  struct PendingMesh {
+    Mesh mesh;
+    FileLoc path_at;
+  };
+
+ public:
+  explicit SceneBuilder(const std::string& name) {
+    scene_.path = name;
+    scene_.materials.push_back(Material{"default"});
+  }
+
+  void statement(StatementReader& r) {
+    const std::string& k = r.keyword();
+    if (k == "light") light(r);
+    else if (k == "material") material(r);
+    else if (k == "sphere") sphere(r);
+    else if (k == "triangle") triangle(r);
+    else if (k == "mesh") mesh(r);
+    else if (k == "camera") camera(r);
+    else
+      throw InputError(r.statement_loc(), "unknown statement " + in_quotes(k) +
+                                              " (expected light, material, sphere, triangle, mesh or camera)");
+  }
+
+  Scene finish(const MeshLoadProgress& progress) {
+    load_meshes(progress);
+    if (scene_.lights.empty())
+      throw InputError({scene_.path}, "the scene has no light: add a line such as \"light 0.6 0.8 1.6\"");
+    return std::move(scene_);
+  }
+
+ private:
+  void light(StatementReader& r) {
+    Light light;
+    light.where = r.statement_loc();
+    light.position = r.vec3("light position");
+    while (auto k = r.keyword_of("light", {"color", "ambient"})) {
+      if (*k == "color") light.color = r.color("light color");
+      else light.ambient = r.color("light ambient intensity");
+    }
+    const int number = int(scene_.lights.size()) + 1;
+    if (light.position.z <= 1.0)
+      warn(light.where, "light " + std::to_string(number) + " has z <= 1: scenes are lit from z > 1, "
+                        "so the viewpoint may be in shadow");
+    scene_.lights.push_back(light);
+  }
+
+  void material(StatementReader& r) {
+    Material m;
+    const FileLoc name_at = r.next_loc();
+    m.name = r.word("a material name");
+    if (const auto it = materials_.find(m.name); it != materials_.end())
+      throw InputError(name_at, "material " + in_quotes(m.name) + " is already defined at line " +
+                                    std::to_string(it->second.line));
+    while (auto k = r.keyword_of("material", {"ambient", "diffuse", "specular", "shininess"})) {
+      if (*k == "ambient") m.ambient = r.color("material ambient");
+      else if (*k == "diffuse") m.diffuse = r.color("material diffuse");
+      else if (*k == "specular") m.specular = r.color("material specular");
+      else {
+        const FileLoc at = r.next_loc();
+        m.shininess = r.number("shininess");
+        if (m.shininess < 0) throw InputError(at, "shininess must not be negative");
+      }
+    }
+    materials_[m.name] = name_at;
+    scene_.materials.push_back(m);
+  }
+
+  int material_ref(StatementReader& r, const std::string& statement) {
+    return r.keyword_of(statement, {"material"}) ? material_named(r) : 0;
+  }
+
+  int material_named(StatementReader& r) {
+    const FileLoc at = r.next_loc();
+    const std::string name = r.word("a material name");
+    for (size_t i = 1; i < scene_.materials.size(); ++i)
+      if (scene_.materials[i].name == name) return int(i);
+    throw InputError(at, "material " + in_quotes(name) + " is not defined (define it on an earlier line)");
+  }
+
+  void sphere(StatementReader& r) {
+    Sphere s;
+    s.where = r.statement_loc();
+    s.center = r.vec3("sphere centre");
+    const FileLoc radius_at = r.next_loc();
+    s.radius = r.number("sphere radius");
+    if (s.radius <= 0)
+      throw InputError(radius_at, "the sphere radius must be positive, got " + format(s.radius));
+    s.material = material_ref(r, "sphere");
+    if (glm::any(glm::greaterThan(glm::abs(s.center) + s.radius, glm::dvec3(1.0))))
+      warn(s.where, "sphere reaches outside the cube [-1,1]^3 that scenes are made for");
+    scene_.spheres.push_back(s);
+  }
+
+  void triangle(StatementReader& r) {
+    Triangle t;
+    t.where = r.statement_loc();
+    t.a = r.vec3("first triangle vertex");
+    t.b = r.vec3("second triangle vertex");
+    t.c = r.vec3("third triangle vertex");
+    t.material = material_ref(r, "triangle");
+    for (const glm::dvec3& p : {t.a, t.b, t.c})
+      if (glm::any(glm::greaterThan(glm::abs(p), glm::dvec3(1.0)))) {
+        warn(t.where, "triangle reaches outside the cube [-1,1]^3 that scenes are made for");
+        break;
+      }
+    if (collinear(t.a, t.b, t.c))
+      warn(t.where, "degenerate triangle (its vertices are collinear): it covers no pixel and casts no shadow");
+    scene_.triangles.push_back(t);
+  }
+
+  void mesh(StatementReader& r) {
+    Mesh m;
+    m.where = r.statement_loc();
+    const FileLoc path_at = r.next_loc();
+    m.path = r.word("a mesh file path");
+    while (auto k = r.keyword_of("mesh", {"material", "scale", "rotate", "translate"})) {
+      if (*k == "material") {
+        m.material = material_named(r);
+      } else if (*k == "scale") {
+        const FileLoc at = r.next_loc();
+        m.scale = r.number("mesh scale");
+        if (m.scale <= 0) throw InputError(at, "the mesh scale must be positive, got " + format(m.scale));
+      } else if (*k == "rotate") {
+        const FileLoc at = r.next_loc();
+        m.rotation_axis = r.vec3("mesh rotation axis");
+        if (m.rotation_axis == glm::dvec3(0.0)) throw InputError(at, "the mesh rotation axis must not be (0, 0, 0)");
+        m.rotation_deg = r.number("mesh rotation angle");
+      } else {
+        m.translation = r.vec3("mesh translation");
+      }
+    }
+    pending_meshes_.push_back({std::move(m), path_at});
+  }
+
+  // Reads every mesh file once the whole scene has parsed, so that a typo
+  // later in the scene is reported before a large file is read.
+  // Meshes load on every core, each on its own; the first error in file
+  // order is the one reported, and warnings come in file order.
+  void load_meshes(const MeshLoadProgress& progress) {
+    const std::filesystem::path folder = std::filesystem::path(scene_.path).parent_path();
+    std::vector<std::string> written(pending_meshes_.size());
+    for (size_t k = 0; k < pending_meshes_.size(); ++k) {
+      Mesh& m = pending_meshes_[k].mesh;
+      written[k] = m.path;
+      m.path = (folder / written[k]).lexically_normal().string();
+    }
+    std::vector<std::exception_ptr> errors(pending_meshes_.size());
+    std::atomic<size_t> started{0};
+    tbb::parallel_for(size_t(0), pending_meshes_.size(), [&](size_t k) {
+      if (progress) progress(started++, pending_meshes_.size(), pending_meshes_[k].mesh.path);
+      try {
+        load_mesh(pending_meshes_[k]);
+      } catch (...) {
+        errors[k] = std::current_exception();
+      }
+    });
+    for (size_t k = 0; k < pending_meshes_.size(); ++k) {
+      if (errors[k]) std::rethrow_exception(errors[k]);
+      Mesh& m = pending_meshes_[k].mesh;
+      if (m.triangles.empty())
+        warn(m.where, "mesh " + in_quotes(written[k]) + " has no faces: it casts no shadow");
+      else if (!m.components.all_closed())
+        warn(m.where, "mesh " + in_quotes(written[k]) + " is " + m.components.phrase() + ": " + m.components.volume_phrase());
+      scene_.meshes.push_back(std::move(m));
+    }
+  }
+
+  // Reads, checks and places one mesh; throws its located InputError.
+  static void load_mesh(PendingMesh& pending) {
+    Mesh& m = pending.mesh;
+    MeshAnalysis analysis;
+    try {
+      CheckOptions topology_only;
+      topology_only.self_intersection_seconds = 0.0;
+      analysis = analyse_mesh(read_polygon_soup(m.path), topology_only);
+    } catch (const InputError& e) {
+      if (e.where().line == 0)  // the file as a whole: say so at the statement that names it
+        throw InputError(pending.path_at, "mesh file " + in_quotes(m.path) + ": " + e.message());
+      throw InputError(e.where(), e.message() + " (in the mesh of " + m.where.str() + ")");
+    }
+    // Scale, then rotate, then translate (scene-format.md); a positive scale
+    // and a rotation keep the faces' orientation.
+    const glm::dmat3 rotation(glm::rotate(glm::dmat4(1.0), glm::radians(m.rotation_deg), glm::normalize(m.rotation_axis)));
+    m.positions.reserve(analysis.positions.size());
+    for (const glm::dvec3& p : analysis.positions) m.positions.push_back(rotation * (m.scale * p) + m.translation);
+    if (!m.positions.empty()) {
+      m.bounds_min = m.bounds_max = m.positions[0];
+      for (const glm::dvec3& p : m.positions) {
+        m.bounds_min = glm::min(m.bounds_min, p);
+        m.bounds_max = glm::max(m.bounds_max, p);
+      }
+    }
+    m.triangles = std::move(analysis.triangles);
+    m.report = std::move(analysis.report);
+    m.edges = build_edge_table(m.triangles, m.positions.size());
+    m.components = find_closed_components(m.triangles, m.edges, m.positions.size());
+  }
+
+  void camera(StatementReader& r) {
+    if (scene_.camera_from)
+      throw InputError(r.statement_loc(), "a second camera statement (the first is at line " +
+                                              std::to_string(scene_.camera_from->line) + ")");
+    Camera c;
+    FileLoc fovy_at;
+    while (auto k = r.keyword_of("camera", {"eye", "target", "up", "fovy"})) {
+      if (*k == "eye") c.eye = r.vec3("camera eye");
+      else if (*k == "target") c.target = r.vec3("camera target");
+      else if (*k == "up") c.up = r.vec3("camera up");
+      else {
+        fovy_at = r.next_loc();
+        c.fovy_deg = r.number("camera fovy");
+      }
+    }
+    for (const char* k : {"eye", "target", "up", "fovy"})
+      if (!r.seen(k)) r.fail_at_next(std::string("the camera needs \"") + k + "\" (camera eye X Y Z target X Y Z up X Y Z fovy DEG)");
+    if (!(c.fovy_deg > 0 && c.fovy_deg < 180))
+      throw InputError(fovy_at, "fovy must be between 0 and 180 degrees, got " + format(c.fovy_deg));
+    const glm::dvec3 view = c.target - c.eye;
+    if (glm::length(view) == 0)
+      throw InputError(r.statement_loc(), "the camera eye and target are the same point");
+    if (glm::length(glm::cross(view, c.up)) == 0)
+      throw InputError(r.statement_loc(), "the camera up vector is zero or parallel to the view direction");
+    scene_.camera = c;
+    scene_.camera_from = r.statement_loc();
+  }
+
+  void warn(const FileLoc& where, const std::string& message) { scene_.warnings.push_back({where, message}); }
+
+  static std::string format(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+  }
+
+  Scene scene_;
+  std::map<std::string, FileLoc> materials_;
+  std::vector<PendingMesh> pending_meshes_;
+};
+
+}  // namespace
+
+Scene parse_scene_text(const std::string& text, const std::string& name, const MeshLoadProgress& progress) {
+  SceneBuilder builder(name);
+  std::istringstream in(text);
+  std::string line;
+  int line_number = 0;
+  while (std::getline(in, line)) {
+    ++line_number;
+    const FileLoc line_loc{name, line_number, 0};
+    std::vector<Token> tokens = tokenize(line, line_loc);
+    if (tokens.empty()) continue;
+    StatementReader reader(std::move(tokens), line_loc, int(line.size()));
+    builder.statement(reader);
+    if (!reader.done())
+      reader.fail_at_next("unexpected " + reader.got() + " after the end of the " + reader.keyword() + " statement");
+  }
+  return builder.finish(progress);
+}
+
+Scene parse_scene_file(const std::string& path, const MeshLoadProgress& progress) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError({path}, "cannot open the scene file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError({path}, "cannot read the scene file");
+  return parse_scene_text(text.str(), path, progress);
+}
+
+}  // namespace umbra

@@ -1,0 +1,109 @@
+#include "mesh/topology/closed_components.hpp"
+
+#include <limits>
+
+#include "mesh/topology/union_find.hpp"
+
+namespace umbra {
+namespace {
+
+constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+
+std::string count_of(size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+// Corner 3t + i is face t's corner at triangles[t][i].
+uint32_t corner_at(const std::array<uint32_t, 3>& tri, uint32_t face, uint32_t vertex) {
+  return 3 * face + (tri[0] == vertex ? 0 : tri[1] == vertex ? 1 : 2);
+}
+
+}  // namespace
+
+std::string ClosedComponents::phrase() const {
+  if (components == 0) return "no faces";
+  std::string s;
+  const auto add = [&s](const std::string& part) { s += (s.empty() ? "" : ", ") + part; };
+  if (border_edges > 0) add("open, " + count_of(border_loops, "hole", "holes"));
+  if (non_manifold_edges > 0) add(count_of(non_manifold_edges, "non-manifold edge", "non-manifold edges"));
+  if (inconsistent_edges > 0) add(count_of(inconsistent_edges, "edge", "edges") + " with mixed winding");
+  if (non_manifold_vertices > 0) add(count_of(non_manifold_vertices, "non-manifold vertex", "non-manifold vertices"));
+  if (s.empty()) return "closed 2-manifold";
+  if (closed_components > 0) s += "; " + std::to_string(closed_components) + " of " + std::to_string(components) +
+                                   " components closed";
+  return s;
+}
+
+std::string ClosedComponents::volume_phrase() const {
+  if (closed_components == components) return "silhouette volume";
+  if (closed_components == 0) return "edge-multiplicity volume";
+  return "silhouette volume for its " + count_of(closed_components, "closed component", "closed components") +
+         ", edge multiplicity for the other " + std::to_string(components - closed_components);
+}
+
+ClosedComponents find_closed_components(const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeTable& edges,
+                                        size_t vertex_count) {
+  ClosedComponents result;
+  const uint32_t face_count = uint32_t(triangles.size());
+  UnionFind components(face_count), fans(3 * size_t(face_count)), border_graph(vertex_count);
+  std::vector<uint8_t> irregular_vertex(vertex_count, 0);  // on an edge that is not two opposite faces
+  std::vector<uint32_t> irregular_faces;                   // one face of each irregular edge
+  for (size_t e = 0; e < edges.size(); ++e) {
+    const uint32_t* use = edges.uses.data() + edges.first_use[e];
+    const uint32_t count = edges.use_count(e);
+    const auto [u, v] = edges.vertices[e];
+    for (uint32_t k = 1; k < count; ++k) components.unite(EdgeTable::face_of(use[0]), EdgeTable::face_of(use[k]));
+    const bool regular = count == 2 && EdgeTable::runs_forward(use[0]) != EdgeTable::runs_forward(use[1]);
+    if (regular) {
+      const uint32_t x = EdgeTable::face_of(use[0]), y = EdgeTable::face_of(use[1]);
+      fans.unite(corner_at(triangles[x], x, u), corner_at(triangles[y], y, u));
+      fans.unite(corner_at(triangles[x], x, v), corner_at(triangles[y], y, v));
+      continue;
+    }
+    irregular_vertex[u] = irregular_vertex[v] = 1;
+    irregular_faces.push_back(EdgeTable::face_of(use[0]));
+    if (count == 1) {
+      ++result.border_edges;
+      border_graph.unite(u, v);
+    } else if (count == 2) {
+      ++result.inconsistent_edges;
+    } else {
+      ++result.non_manifold_edges;
+    }
+  }
+  // Border loops: one per connected piece of border edges.
+  std::vector<uint8_t> loop_counted(vertex_count, 0);
+  for (size_t e = 0; e < edges.size(); ++e) {
+    if (edges.use_count(e) != 1) continue;
+    uint8_t& counted = loop_counted[border_graph.find(edges.vertices[e][0])];
+    result.border_loops += !counted;
+    counted = 1;
+  }
+  // Vertices whose corners make more than one fan; and components.
+  std::vector<uint32_t> fan_of_vertex(vertex_count, kNone);
+  std::vector<uint8_t> several_fans(vertex_count, 0);
+  for (uint32_t t = 0; t < face_count; ++t)
+    for (uint32_t i = 0; i < 3; ++i) {
+      const uint32_t v = triangles[t][i], fan = fans.find(3 * t + i);
+      if (fan_of_vertex[v] == kNone) fan_of_vertex[v] = fan;
+      else if (fan_of_vertex[v] != fan) several_fans[v] = 1;
+    }
+  std::vector<uint8_t> open_root(face_count, 0), root_seen(face_count, 0);
+  for (uint32_t f : irregular_faces) open_root[components.find(f)] = 1;
+  for (uint32_t t = 0; t < face_count; ++t)
+    for (uint32_t v : triangles[t])
+      if (several_fans[v]) open_root[components.find(t)] = 1;
+  for (size_t v = 0; v < vertex_count; ++v) result.non_manifold_vertices += several_fans[v] && !irregular_vertex[v];
+  result.closed_face.resize(face_count);
+  for (uint32_t t = 0; t < face_count; ++t) {
+    const uint32_t root = components.find(t);
+    result.closed_face[t] = !open_root[root];
+    if (root_seen[root]) continue;
+    root_seen[root] = 1;
+    ++result.components;
+    result.closed_components += !open_root[root];
+  }
+  return result;
+}
+
+}  // namespace umbra
