@@ -11,8 +11,8 @@
 #include <string>
 
 #include "mesh/scene/scene_parser.hpp"
-#include "render/camera_transform.hpp"
-#include "render/ray_caster.hpp"
+#include "mesh/scene/camera_transform.hpp"
+#include "reference/ray_caster.hpp"
 
 namespace umbra {
 namespace {

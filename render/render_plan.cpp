@@ -8,7 +8,7 @@
 #include <tbb/parallel_invoke.h>
 
 #include "mesh/predicates/orientation.hpp"
-#include "render/camera_transform.hpp"
+#include "mesh/scene/camera_transform.hpp"
 #include "render/planar_receivers.hpp"
 #include "render/view_culling.hpp"
 #include "silhouette/layer_bound.hpp"

@@ -7,7 +7,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
-#include "render/camera_transform.hpp"
+#include "mesh/scene/camera_transform.hpp"
 #include "render/gl.hpp"
 #include "render/planar_receivers.hpp"
 #include "render/shader_program.hpp"

@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "mesh/scene/scene.hpp"
-#include "render/image.hpp"
+#include "image/image.hpp"
 #include "render/render_plan.hpp"
 
 namespace umbra {

@@ -14,7 +14,7 @@
 
 #include "mesh/scene/scene_checks.hpp"
 #include "mesh/scene/scene_parser.hpp"
-#include "render/image.hpp"
+#include "image/image.hpp"
 #include "render/render_plan.hpp"
 #include "render/shadow_renderer.hpp"
 #include "render/text_overlay.hpp"

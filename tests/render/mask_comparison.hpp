@@ -18,10 +18,10 @@
 #include <gtest/gtest.h>
 
 #include "mesh/scene/scene_checks.hpp"
-#include "render/camera_transform.hpp"
+#include "mesh/scene/camera_transform.hpp"
 #include "render/headless_context.hpp"
-#include "render/image.hpp"
-#include "render/ray_cast.hpp"
+#include "image/image.hpp"
+#include "reference/ray_cast.hpp"
 #include "render/render_plan.hpp"
 #include "render/shadow_renderer.hpp"
 #include "silhouette/sphere_volume.hpp"

@@ -9,7 +9,7 @@
 
 #include "mesh/scene/scene_parser.hpp"
 #include "render/planar_receivers.hpp"
-#include "render/camera_transform.hpp"
+#include "mesh/scene/camera_transform.hpp"
 #include "render/render_plan.hpp"
 
 namespace umbra {

@@ -10,10 +10,10 @@
 #include "mesh/scene/scene_checks.hpp"
 #include "mesh/scene/scene_parser.hpp"
 #include "render/headless_context.hpp"
-#include "render/mask_error.hpp"
-#include "render/camera_transform.hpp"
-#include "render/ray_cast.hpp"
-#include "render/ray_cast_render.hpp"
+#include "image/mask_error.hpp"
+#include "mesh/scene/camera_transform.hpp"
+#include "reference/ray_cast.hpp"
+#include "reference/ray_cast_render.hpp"
 #include "render/shadow_renderer.hpp"
 
 namespace umbra {

@@ -10,8 +10,8 @@
 #include <fstream>
 
 #include "mesh/scene/scene_parser.hpp"
-#include "render/image.hpp"
-#include "render/ray_cast.hpp"
+#include "image/image.hpp"
+#include "reference/ray_cast.hpp"
 #include "tests/tools/command_fixture.hpp"
 
 namespace umbra {

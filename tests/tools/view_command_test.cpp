@@ -2,7 +2,7 @@
 // screenshot is pixel for pixel the headless render of the same frame.
 #include <gtest/gtest.h>
 
-#include "render/image.hpp"
+#include "image/image.hpp"
 #include "tests/tools/command_fixture.hpp"
 
 namespace umbra {

@@ -1,4 +1,4 @@
-#include "render/ray_cast_render.hpp"
+#include "reference/ray_cast_render.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "render/camera_transform.hpp"
-#include "render/ray_caster.hpp"
+#include "mesh/scene/camera_transform.hpp"
+#include "reference/ray_caster.hpp"
 
 namespace umbra {
 namespace {

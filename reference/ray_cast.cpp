@@ -1,4 +1,4 @@
-#include "render/ray_cast.hpp"
+#include "reference/ray_cast.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "render/camera_transform.hpp"
-#include "render/ray_primitives.hpp"
+#include "mesh/scene/camera_transform.hpp"
+#include "reference/ray_primitives.hpp"
 
 namespace umbra {
 namespace {

@@ -1,4 +1,4 @@
-#include "render/mask_error.hpp"
+#include "image/mask_error.hpp"
 
 #include <stdexcept>
 

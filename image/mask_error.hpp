@@ -2,7 +2,7 @@
 // The accuracy a benchmark reports: how many surface pixels a method puts in
 // the wrong class (lit or unlit) against the ray-cast reference's mask.
 
-#include "render/image.hpp"
+#include "image/image.hpp"
 
 namespace umbra {
 

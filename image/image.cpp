@@ -1,4 +1,4 @@
-#include "render/image.hpp"
+#include "image/image.hpp"
 
 #include <cerrno>
 #include <cstdio>

@@ -9,7 +9,7 @@
 #include <optional>
 
 #include "mesh/scene/scene.hpp"
-#include "render/ray_cast.hpp"
+#include "reference/ray_cast.hpp"
 
 namespace umbra {
 

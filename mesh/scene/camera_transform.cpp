@@ -1,4 +1,4 @@
-#include "render/camera_transform.hpp"
+#include "mesh/scene/camera_transform.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,14 +1,14 @@
 // The Embree search must give exactly the brute-force answers: the same
 // object, the same t bit for bit, the same shadow verdict, for every eye ray
 // of a grid and every light, on every bundled scene and on hard ones.
-#include "render/ray_caster.hpp"
+#include "reference/ray_caster.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
 #include "mesh/scene/scene_parser.hpp"
-#include "render/camera_transform.hpp"
+#include "mesh/scene/camera_transform.hpp"
 
 namespace umbra {
 namespace {

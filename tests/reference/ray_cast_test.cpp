@@ -1,10 +1,10 @@
-#include "render/ray_cast.hpp"
+#include "reference/ray_cast.hpp"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include "mesh/scene/scene_parser.hpp"
-#include "render/camera_transform.hpp"
+#include "mesh/scene/camera_transform.hpp"
 
 namespace umbra {
 namespace {

@@ -8,7 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include "mesh/scene/scene.hpp"
-#include "render/image.hpp"
+#include "image/image.hpp"
 
 namespace umbra {
 

@@ -1,4 +1,4 @@
-#include "render/ray_caster.hpp"
+#include "reference/ray_caster.hpp"
 
 #include <embree3/rtcore.h>
 
@@ -12,7 +12,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
-#include "render/ray_primitives.hpp"
+#include "reference/ray_primitives.hpp"
 
 namespace umbra {
 namespace {

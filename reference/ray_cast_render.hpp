@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "mesh/scene/scene.hpp"
-#include "render/image.hpp"
+#include "image/image.hpp"
 
 namespace umbra {
 
