@@ -1,0 +1,168 @@
+#include "render/frame_drawing.hpp"
+
+#include <string>
+
+#include <glm/geometric.hpp>
+
+#include "mesh/scene/camera_transform.hpp"
+#include "render/gl.hpp"
+#include "render/planar_receivers.hpp"
+#include "render/shader_program.hpp"
+#include "render/shaders.hpp"
+#include "render/surface_buffers.hpp"
+
+namespace umbra {
+namespace {
+
+glm::vec3 f(const glm::dvec3& v) { return glm::vec3(v); }
+
+std::string fragment_source(const char* main) { return std::string("#version 330 core\n") + shaders::kShading + main; }
+
+}  // namespace
+
+void baseline_state() {
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDisable(GL_STENCIL_TEST);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+FrameDrawing::FrameDrawing(const Scene& scene, const RenderPlan& plan) : scene_(scene), plan_(plan) {
+  triangle_program_ = std::make_unique<ShaderProgram>("triangle", shaders::kTriangleVertex,
+                                                      fragment_source(shaders::kTriangleFragmentMain));
+  sphere_program_ = std::make_unique<ShaderProgram>("sphere", shaders::kSphereVertex,
+                                                    fragment_source(shaders::kSphereFragmentMain));
+  volume_program_ = std::make_unique<ShaderProgram>("volume", shaders::kVolumeVertex, shaders::kVolumeFragment);
+  planar_program_ = std::make_unique<ShaderProgram>("planar", shaders::kPlanarVertex, shaders::kVolumeFragment);
+  surfaces_ = std::make_unique<SurfaceBuffers>(scene);
+  volumes_ = std::make_unique<VolumeBuffer>();
+  mesh_volumes_.resize(scene.meshes.size());  // made when a plan first casts from the mesh's silhouette
+
+  glm::dvec3 ambient_sum(0.0);
+  for (const Light& light : scene.lights) ambient_sum += light.ambient;
+  for (ShaderProgram* p : {triangle_program_.get(), sphere_program_.get()}) {
+    p->use();
+    p->set("ambient_sum", f(ambient_sum));
+    p->set("shadow_map", 1);  // texture unit 1
+  }
+  const SceneBounds bounds = surface_bounds(scene);
+  if (!bounds.empty()) scene_center_ = 0.5 * (bounds.lo + bounds.hi), scene_radius_ = 0.5 * glm::length(bounds.hi - bounds.lo);
+}
+
+FrameDrawing::~FrameDrawing() = default;
+
+void FrameDrawing::apply_view() {
+  const RenderSettings& s = plan_.settings;
+  const glm::mat4 view_projection(infinite_perspective(plan_.camera.fovy_deg, double(s.width) / s.height,
+                                                       plan_.near_plane) *
+                                  view_matrix(plan_.camera));
+  view_from(plan_.camera.eye, view_projection);
+  for (ShaderProgram* p : {volume_program_.get(), planar_program_.get()}) {
+    p->use();
+    p->set("view_projection", view_projection);
+  }
+  glViewport(0, 0, s.width, s.height);
+}
+
+void FrameDrawing::view_from(const glm::dvec3& viewpoint, const glm::mat4& view_projection) {
+  viewpoint_ = viewpoint;
+  for (ShaderProgram* p : {triangle_program_.get(), sphere_program_.get()}) {
+    p->use();
+    p->set("view_projection", view_projection);
+    p->set("eye", f(viewpoint));
+  }
+}
+
+void FrameDrawing::draw_surfaces(int pass, size_t light, bool shadow_map_on) {
+  const Light& l = scene_.lights[light];
+  const auto set_material = [&](ShaderProgram& p, int index) {
+    const Material& m = scene_.materials[size_t(index)];
+    p.set("material_ambient", f(m.ambient));
+    p.set("material_diffuse", f(m.diffuse));
+    p.set("material_specular", f(m.specular));
+    p.set("material_shininess", float(m.shininess));
+  };
+  for (ShaderProgram* p : {triangle_program_.get(), sphere_program_.get()}) {
+    p->use();
+    p->set("pass", pass);
+    p->set("light_position", f(l.position));
+    p->set("light_color", f(l.color));
+    p->set("shadow_map_on", int(shadow_map_on));
+    p->set("specular_used", int(plan_.specular_used));
+    p->set("shadow_map_texel", 2.0f / float(plan_.settings.shadow_map_size));
+  }
+  triangle_program_->use();
+  for (const SurfaceBuffers::TriangleGroup& group : surfaces_->triangle_groups()) {
+    set_material(*triangle_program_, group.material);
+    surfaces_->draw_triangle_group(group, viewpoint_);
+  }
+  sphere_program_->use();
+  for (const Sphere& sphere : scene_.spheres) {
+    set_material(*sphere_program_, sphere.material);
+    sphere_program_->set("sphere_center", f(sphere.center));
+    sphere_program_->set("sphere_radius", float(sphere.radius));
+    surfaces_->draw_sphere_box();
+  }
+}
+
+void FrameDrawing::draw_volumes(size_t light, const glm::vec4* tint) {
+  const LightPlan& lp = plan_.lights[light];
+  volume_program_->use();
+  if (tint) volume_program_->set("tint", *tint);
+  volume_program_->set("extrude_from_light", 0);
+  volumes_->upload(lp.all_volumes);
+  volumes_->draw();
+  volume_program_->set("extrude_from_light", 1);
+  volume_program_->set("light_position", f(scene_.lights[light].position));
+  for (const MeshVolumePlan& m : lp.mesh_volumes) draw_mesh_volume(m);
+}
+
+void FrameDrawing::upload_volumes(size_t light) { volumes_->upload(plan_.lights[light].all_volumes); }
+
+void FrameDrawing::draw_stencil_batch(size_t light, size_t batch) {
+  const LightPlan& lp = plan_.lights[light];
+  const StencilBatch& b = lp.stencil_batches[batch];
+  volume_program_->use();
+  volume_program_->set("extrude_from_light", 0);
+  volumes_->draw_triangles(b.first_triangle, b.end_triangle);
+  volume_program_->set("extrude_from_light", 1);
+  volume_program_->set("light_position", f(scene_.lights[light].position));
+  for (const uint32_t m : b.mesh_volumes) draw_mesh_volume(lp.mesh_volumes[m]);
+}
+
+// A mesh's volume; for z-pass the plan made it without caps.
+void FrameDrawing::draw_mesh_volume(const MeshVolumePlan& m) {
+  if (!mesh_volumes_[m.mesh]) {
+    mesh_volumes_[m.mesh] = std::make_unique<VolumeBuffer>();
+    mesh_volumes_[m.mesh]->upload_mesh_vertices(scene_.meshes[m.mesh].positions);
+  }
+  mesh_volumes_[m.mesh]->upload_indices(m.volume.buffer.data(), m.volume.count);
+  mesh_volumes_[m.mesh]->draw();
+}
+
+void FrameDrawing::mark_receiver(const glm::dvec4& plane) {
+  glDepthFunc(GL_EQUAL);
+  triangle_program_->use();
+  triangle_program_->set("pass", int(shaders::kMarkReceiver));
+  triangle_program_->set("receiver_plane", glm::vec4(plane));
+  triangle_program_->set("receiver_tolerance", float(1e-5 * (glm::length(scene_center_) + scene_radius_)));
+  for (const SurfaceBuffers::TriangleGroup& group : surfaces_->triangle_groups())
+    surfaces_->draw_triangle_group(group, viewpoint_);
+}
+
+void FrameDrawing::draw_projected_casters(size_t light, const glm::dvec4& plane) {
+  const glm::dvec3 position = scene_.lights[light].position;
+  const double scale = glm::length(scene_center_) + scene_radius_;
+  planar_program_->use();
+  planar_program_->set("shadow_matrix", glm::mat4(planar_shadow_matrix(plane, position)));
+  planar_program_->set("plane", glm::vec4(plane));
+  planar_program_->set("light_height", float(glm::dot(plane, glm::dvec4(position, 1.0))));
+  planar_program_->set("plane_offset", float(1e-6 * scale));
+  volumes_->draw();
+}
+
+}  // namespace umbra

@@ -1,0 +1,75 @@
+#pragma once
+// What every shadow technique draws with: the shader programs, the scene's
+// surface and volume buffers, and the view. ShadowRenderer owns one; each
+// technique (stencil volumes, shadow maps, planar projection) borrows it.
+
+#include <memory>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "mesh/scene/scene.hpp"
+#include "render/render_plan.hpp"
+
+namespace umbra {
+
+class ShaderProgram;
+class SurfaceBuffers;
+class VolumeBuffer;
+
+// The GL state every pass starts from and returns to.
+void baseline_state();
+
+class FrameDrawing {
+ public:
+  // Requires a current GL 3.3 core context.
+  FrameDrawing(const Scene& scene, const RenderPlan& plan);
+  ~FrameDrawing();
+  FrameDrawing(const FrameDrawing&) = delete;
+  FrameDrawing& operator=(const FrameDrawing&) = delete;
+
+  const Scene& scene() const { return scene_; }
+  const RenderPlan& plan() const { return plan_; }
+
+  // The plan's camera and image size, read every frame: a viewer moves the
+  // camera and resizes the window.
+  void apply_view();
+  // Every surface with the shading pass `pass` (shaders.hpp) for light
+  // `light`; `shadow_map_on` makes the shader test the bound shadow map.
+  void draw_surfaces(int pass, size_t light, bool shadow_map_on);
+  // The surfaces from another viewpoint: a shadow map's face.
+  void view_from(const glm::dvec3& viewpoint, const glm::mat4& view_projection);
+  // Light `light`'s volumes with the volume program and the current state;
+  // `tint`, when given, colours them (--show-volumes).
+  void draw_volumes(size_t light, const glm::vec4* tint = nullptr);
+  // Sends light `light`'s sphere and triangle volumes to the GL, for
+  // draw_stencil_batch to draw ranges of.
+  void upload_volumes(size_t light);
+  // One stencil batch of light `light`: a range of its uploaded volumes and its mesh volumes.
+  void draw_stencil_batch(size_t light, size_t batch);
+  // The visible pixels of the triangles in `plane`, with the current stencil operation.
+  void mark_receiver(const glm::dvec4& plane);
+  // Light `light`'s projected casters (the planar method), with the current state.
+  void draw_projected_casters(size_t light, const glm::dvec4& plane);
+
+  // A ball round every surface: scales for near planes and tolerances.
+  const glm::dvec3& scene_center() const { return scene_center_; }
+  double scene_radius() const { return scene_radius_; }
+
+ private:
+  void draw_mesh_volume(const MeshVolumePlan& m);
+
+  const Scene& scene_;
+  const RenderPlan& plan_;
+  std::unique_ptr<ShaderProgram> triangle_program_, sphere_program_, volume_program_, planar_program_;
+  std::unique_ptr<SurfaceBuffers> surfaces_;
+  std::unique_ptr<VolumeBuffer> volumes_;
+  std::vector<std::unique_ptr<VolumeBuffer>> mesh_volumes_;  // per scene mesh; made when first drawn
+  glm::dvec3 viewpoint_{0.0};  // where the surfaces are drawn from: the eye, or a light for its shadow map
+  glm::dvec3 scene_center_{0.0};
+  double scene_radius_ = 0.0;
+};
+
+}  // namespace umbra

@@ -1,0 +1,44 @@
+#include "render/shadow_map_shadows.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include <glm/geometric.hpp>
+
+#include "render/frame_drawing.hpp"
+#include "render/gl.hpp"
+#include "render/shaders.hpp"
+#include "render/shadow_map.hpp"
+
+namespace umbra {
+
+ShadowMapShadows::ShadowMapShadows(FrameDrawing& drawing) : drawing_(drawing) {}
+ShadowMapShadows::~ShadowMapShadows() = default;
+
+// The six faces from the light, each the surfaces' distances from it, then
+// the camera's view again. The near plane is well inside the nearest surface
+// for any light outside the casters, at a scale that follows the scene's.
+void ShadowMapShadows::cast(size_t light) {
+  const int size = drawing_.plan().settings.shadow_map_size;
+  if (!map_ || map_->size() != size) map_ = std::make_unique<ShadowMap>(size);
+  const glm::dvec3 position = drawing_.scene().lights[light].position;
+  const double near = std::max(1e-4 * (glm::length(position - drawing_.scene_center()) + drawing_.scene_radius()),
+                               std::numeric_limits<double>::min());
+  baseline_state();
+  for (int face = 0; face < 6; ++face) {
+    map_->begin_face(face);
+    drawing_.view_from(position, glm::mat4(cube_face_view_projection(position, face, near)));
+    drawing_.draw_surfaces(shaders::kDistance, light, true);
+  }
+  map_->end();
+  drawing_.apply_view();
+  map_->bind(1);
+}
+
+// Anywhere: the shader compares each point's distance with the map's.
+void ShadowMapShadows::limit_to_lit() const {
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+}
+
+}  // namespace umbra

@@ -1,0 +1,38 @@
+#pragma once
+// How a light's shadows are made known to its direct pass: one object per
+// method, behind this interface. ShadowRenderer draws the depth and ambient
+// pass, then for each light asks its technique to cast the light's shadows
+// and to limit the direct pass to the pixels they leave lit.
+//
+//   StencilVolumeShadows  (stencil_volume_shadows.hpp)  auto, zfail, zpass, triangles
+//   ShadowMapShadows      (shadow_map_shadows.hpp)      shadowmap
+//   PlanarShadows         (planar_shadows.hpp)          planar
+
+#include <cstddef>
+#include <memory>
+
+#include "render/render_method.hpp"
+
+namespace umbra {
+
+class FrameDrawing;
+
+class ShadowTechnique {
+ public:
+  virtual ~ShadowTechnique() = default;
+  // Light `light`'s shadows, left where the direct pass can read them (the
+  // stencil, a bound shadow map, marks in the colour buffer's alpha).
+  virtual void cast(size_t light) = 0;
+  // The GL state under which the direct pass adds light only where the last
+  // cast() left the surface lit; baseline_state() undoes it.
+  virtual void limit_to_lit() const = 0;
+  // Whether the surface shader must test the shadow map.
+  virtual bool tests_shadow_map() const { return false; }
+  // Whether there are shadow volumes to show (--show-volumes).
+  virtual bool draws_volumes() const { return false; }
+};
+
+// The technique for `method` (not kRaycast, which is the CPU reference).
+std::unique_ptr<ShadowTechnique> make_shadow_technique(RenderMethod method, FrameDrawing& drawing);
+
+}  // namespace umbra
