@@ -1,0 +1,109 @@
+#include "mesh/check/components.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace umbra {
+namespace {
+constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+}  // namespace
+
+ComponentLabels label_components(const FaceClasses& faces, EdgeGroups& groups) {
+  const size_t face_count = faces.repeats_vertex.size();
+  ComponentLabels labels;
+  labels.of_face.assign(face_count, kNone);
+  std::vector<uint32_t> component_of_root(face_count, kNone);
+  for (uint32_t f = 0; f < face_count; ++f) {
+    if (!faces.in_topology(f)) continue;
+    uint32_t& id = component_of_root[groups.components.find(f)];
+    if (id == kNone) {
+      id = uint32_t(labels.reports.size());
+      labels.reports.emplace_back();
+    }
+    labels.of_face[f] = id;
+    ++labels.reports[id].faces;
+  }
+  const size_t count = labels.reports.size();
+  labels.non_manifold.assign(count, 0);
+  labels.conflict.assign(count, 0);
+  labels.inconsistent.assign(count, 0);
+  for (const EdgeRun& e : groups.edges) {
+    ComponentReport& c = labels.reports[labels.of_face[e.face]];
+    ++c.edges;
+    if (e.uses == 1) ++c.border_edges;
+    if (e.uses > 2) labels.non_manifold[labels.of_face[e.face]] = 1;
+  }
+  for (uint32_t f : groups.inconsistent_edge_faces) ++labels.inconsistent[labels.of_face[f]];
+  for (uint32_t f = 0; f < face_count; ++f)
+    if (groups.orientation_conflict[f]) labels.conflict[labels.of_face[f]] = 1;
+  return labels;
+}
+
+VertexFans find_vertex_fans(const PolygonSoup& soup, const FaceClasses& faces, EdgeGroups& groups,
+                            const ComponentLabels& labels, size_t vertex_count) {
+  const uint32_t face_count = uint32_t(faces.repeats_vertex.size());
+  VertexFans out;
+  out.vertices.assign(labels.reports.size(), 0);
+  out.non_manifold.assign(labels.reports.size(), 0);
+  std::vector<uint32_t> component_of_vertex(vertex_count, kNone);
+  std::vector<uint64_t> vertex_in_other_component;  // (component << 32) | vertex: only where components touch
+  std::vector<uint32_t> fan_of_vertex(vertex_count, kNone);
+  std::vector<uint8_t> several_fans(vertex_count, 0);
+  for (uint32_t f = 0; f < face_count; ++f) {
+    if (!faces.in_topology(f)) continue;
+    const uint32_t component = labels.of_face[f];
+    for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c) {
+      const uint32_t v = faces.corners[c];
+      if (component_of_vertex[v] == kNone) {
+        component_of_vertex[v] = component;
+        ++out.vertices[component];
+        ++out.topology_vertices;
+      } else if (component_of_vertex[v] != component) {
+        vertex_in_other_component.push_back((uint64_t(component) << 32) | v);
+      }
+      const uint32_t fan = groups.fans.find(c);
+      if (fan_of_vertex[v] == kNone) fan_of_vertex[v] = fan;
+      else if (fan_of_vertex[v] != fan) several_fans[v] = 1;
+    }
+  }
+  std::sort(vertex_in_other_component.begin(), vertex_in_other_component.end());
+  vertex_in_other_component.erase(std::unique(vertex_in_other_component.begin(), vertex_in_other_component.end()),
+                                  vertex_in_other_component.end());
+  for (uint64_t cv : vertex_in_other_component) ++out.vertices[cv >> 32];
+  for (uint32_t v = 0; v < vertex_count; ++v)
+    if (several_fans[v] && !groups.on_non_manifold_edge[v]) out.non_manifold_vertices.push_back(v);
+  // A component is non-manifold at a vertex when two of the vertex's fans lie in it.
+  std::vector<std::pair<uint32_t, uint64_t>> vertex_fans;
+  for (uint32_t f = 0; f < face_count; ++f) {
+    if (!faces.in_topology(f)) continue;
+    for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c) {
+      const uint32_t v = faces.corners[c];
+      if (several_fans[v] && !groups.on_non_manifold_edge[v])
+        vertex_fans.push_back({v, (uint64_t(labels.of_face[f]) << 32) | groups.fans.find(c)});
+    }
+  }
+  std::sort(vertex_fans.begin(), vertex_fans.end());
+  vertex_fans.erase(std::unique(vertex_fans.begin(), vertex_fans.end()), vertex_fans.end());
+  for (size_t i = 1; i < vertex_fans.size(); ++i) {
+    if (vertex_fans[i].first == vertex_fans[i - 1].first && (vertex_fans[i].second >> 32) == (vertex_fans[i - 1].second >> 32))
+      out.non_manifold[vertex_fans[i].second >> 32] = 1;
+  }
+  return out;
+}
+
+BorderLoops count_border_loops(EdgeGroups& groups, const ComponentLabels& labels, size_t vertex_count) {
+  BorderLoops out;
+  out.per_component.assign(labels.reports.size(), 0);
+  std::vector<uint8_t> loop_counted(vertex_count, 0);
+  for (const EdgeRun& e : groups.edges) {
+    if (e.uses != 1) continue;
+    const uint32_t root = groups.border.find(e.a);
+    if (loop_counted[root]) continue;
+    loop_counted[root] = 1;
+    ++out.loops;
+    ++out.per_component[labels.of_face[e.face]];
+  }
+  return out;
+}
+
+}  // namespace umbra

@@ -1,0 +1,39 @@
+#pragma once
+// The mesh check's components: sets of faces joined across edges, numbered
+// in order of their first face, with what each holds; the vertices whose
+// faces form more than one fan; and the border's loops.
+
+#include <cstdint>
+#include <vector>
+
+#include "mesh/check/edge_groups.hpp"
+#include "mesh/check/face_classes.hpp"
+#include "mesh/check/mesh_report.hpp"
+
+namespace umbra {
+
+struct ComponentLabels {
+  std::vector<uint32_t> of_face;          // a face's component; none for faces outside the topology
+  std::vector<ComponentReport> reports;   // faces, edges and border_edges counted
+  std::vector<uint8_t> non_manifold;      // per component: an edge with more than two faces
+  std::vector<uint8_t> conflict;          // per component: faces no flips can make agree
+  std::vector<size_t> inconsistent;       // per component: edges two faces run the same way
+};
+ComponentLabels label_components(const FaceClasses& faces, EdgeGroups& groups);
+
+struct VertexFans {
+  std::vector<size_t> vertices;           // per component
+  std::vector<uint8_t> non_manifold;      // per component: two fans of one vertex in it
+  std::vector<uint32_t> non_manifold_vertices;  // in vertex order; vertices on a non-manifold edge are counted with the edge
+  size_t topology_vertices = 0;           // vertices of the faces in the topology
+};
+VertexFans find_vertex_fans(const PolygonSoup& soup, const FaceClasses& faces, EdgeGroups& groups,
+                            const ComponentLabels& labels, size_t vertex_count);
+
+struct BorderLoops {
+  size_t loops = 0;
+  std::vector<size_t> per_component;
+};
+BorderLoops count_border_loops(EdgeGroups& groups, const ComponentLabels& labels, size_t vertex_count);
+
+}  // namespace umbra

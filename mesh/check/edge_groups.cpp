@@ -1,0 +1,95 @@
+#include "mesh/check/edge_groups.hpp"
+
+#include <algorithm>
+
+namespace umbra {
+namespace {
+
+// One face's use of an edge, going from the vertex at `corner` to the next
+// one. Filed under the edge's smaller vertex, it names the larger one.
+struct EdgeUse {
+  uint32_t other;  // the larger vertex
+  uint32_t face;
+  uint32_t corner_and_direction;  // index into FaceClasses::corners << 1 | traversed from smaller to larger vertex
+
+  uint32_t corner() const { return corner_and_direction >> 1; }
+  bool forward() const { return corner_and_direction & 1; }
+};
+
+// Every use, bucketed by its smaller vertex (bucket v is uses[start[v],
+// start[v + 1])), each bucket sorted by the larger vertex and then by face:
+// the order a full sort of (edge, face) would give, since faces are taken in
+// order.
+std::vector<EdgeUse> sorted_uses(const PolygonSoup& soup, const FaceClasses& faces, std::vector<uint32_t>& start) {
+  const size_t vertex_count = start.size() - 1;
+  const uint32_t face_count = uint32_t(soup.polygon_count());
+  for (uint32_t f = 0; f < face_count; ++f) {
+    if (!faces.in_topology(f)) continue;
+    for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c)
+      ++start[std::min(faces.corners[c], faces.corners[next_corner(soup, f, c)]) + 1];
+  }
+  for (size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
+  std::vector<EdgeUse> uses(start[vertex_count]);
+  {
+    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+    for (uint32_t f = 0; f < face_count; ++f) {
+      if (!faces.in_topology(f)) continue;
+      for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c) {
+        const uint32_t a = faces.corners[c], b = faces.corners[next_corner(soup, f, c)];
+        uses[fill[std::min(a, b)]++] = {std::max(a, b), f, (c << 1) | uint32_t(a < b)};
+      }
+    }
+  }
+  for (size_t v = 0; v < vertex_count; ++v) {
+    if (start[v + 1] - start[v] > 32) {  // a vertex of high degree, the hub of a fan
+      std::sort(uses.begin() + start[v], uses.begin() + start[v + 1], [](const EdgeUse& x, const EdgeUse& y) {
+        return x.other != y.other ? x.other < y.other : x.face < y.face;
+      });
+      continue;
+    }
+    for (uint32_t i = start[v] + 1; i < start[v + 1]; ++i) {
+      const EdgeUse use = uses[i];
+      uint32_t j = i;
+      for (; j > start[v] && uses[j - 1].other > use.other; --j) uses[j] = uses[j - 1];
+      uses[j] = use;  // insertion sort: stable, and most buckets hold a handful
+    }
+  }
+  return uses;
+}
+
+}  // namespace
+
+EdgeGroups group_edges(const PolygonSoup& soup, const FaceClasses& faces, size_t vertex_count) {
+  const size_t face_count = soup.polygon_count();
+  EdgeGroups g{{}, UnionFind(face_count), ParityUnionFind(face_count), UnionFind(faces.corners.size()),
+               UnionFind(vertex_count), std::vector<uint8_t>(face_count, 0), std::vector<uint8_t>(vertex_count, 0), {}};
+  std::vector<uint32_t> start(vertex_count + 1, 0);
+  const std::vector<EdgeUse> uses = sorted_uses(soup, faces, start);
+  for (size_t i = 0, bucket = 0; i < uses.size();) {
+    while (start[bucket + 1] <= i) ++bucket;  // the bucket, and so the smaller vertex, of use i
+    const uint32_t a = uint32_t(bucket), b = uses[i].other;
+    size_t j = i + 1;
+    while (j < start[bucket + 1] && uses[j].other == b) ++j;
+    g.edges.push_back({a, b, uses[i].face, uint32_t(j - i)});
+    for (size_t k = i + 1; k < j; ++k) g.components.unite(uses[i].face, uses[k].face);
+    if (j - i == 1) {
+      g.border.unite(a, b);
+    } else if (j - i == 2) {
+      const EdgeUse& x = uses[i];
+      const EdgeUse& y = uses[i + 1];
+      const bool same_direction = x.forward() == y.forward();
+      if (same_direction) g.inconsistent_edge_faces.push_back(x.face);
+      if (!g.flips.unite(x.face, y.face, same_direction ? 1 : 0)) g.orientation_conflict[x.face] = 1;
+      // Join the two faces' corners at each end of the edge.
+      const uint32_t x_next = next_corner(soup, x.face, x.corner()), y_next = next_corner(soup, y.face, y.corner());
+      g.fans.unite(x.corner(), same_direction ? y.corner() : y_next);
+      g.fans.unite(x_next, same_direction ? y_next : y.corner());
+    } else {
+      g.on_non_manifold_edge[a] = g.on_non_manifold_edge[b] = 1;
+    }
+    i = j;
+  }
+  return g;
+}
+
+}  // namespace umbra
