@@ -1,6 +1,6 @@
 // Makes the meshes that bench/open_mesh_benchmark.sh renders, as OBJ files
 // in OUT_DIR, each fitted into the box [-0.7, 0.7]^2 x [-0.8, 0.1] over the
-// spec's floor:
+// scenes' floor:
 //   closed.obj       a bumpy torus of about 300,000 triangles: a closed 2-manifold
 //   holes.obj        the same with 3 small holes (faces removed)
 //   reversed.obj     the same with a patch of 588 faces wound the other way

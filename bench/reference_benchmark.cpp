@@ -19,7 +19,7 @@ namespace {
 
 constexpr int kSize = 128;  // pixels a side
 
-// The spec's floor under k x k small spheres: 2 + k^2 primitives.
+// The scenes' floor under k x k small spheres: 2 + k^2 primitives.
 Scene sphere_grid(int k) {
   std::ostringstream text;
   text << "light 0.3 0.4 2\ntriangle -1 -1 -1  1 -1 -1  1 1 -1\ntriangle -1 -1 -1  1 1 -1  -1 1 -1\n";

@@ -70,7 +70,7 @@ void BM_ClassifyAndExtract(benchmark::State& state) {
   MeshVolumeIndices volume;
   double angle = 0.0;
   for (auto _ : state) {
-    angle += 0.01;  // the light orbits, as in the spec's animation
+    angle += 0.01;  // the light orbits, as in umbra view
     mesh_volume_indices(mesh, {3.0 * std::cos(angle), 3.0 * std::sin(angle), 2.0}, facing, volume);
     benchmark::DoNotOptimize(volume.buffer.data());
   }

@@ -21,7 +21,7 @@ std::string error_of(const std::string& text) {
 const std::string kLight = "light 0 0 2\n";
 
 TEST(SceneParser, ParsesTheFormatExample) {
-  const Scene s = parse_scene_text(R"(# two spheres over a floor, spec style
+  const Scene s = parse_scene_text(R"(# two spheres over a floor
 light 0.6 0.8 1.6
 material floor diffuse 0.7 0.7 0.7
 material red diffuse 0.9 0.2 0.2 specular 0.5 0.5 0.5 shininess 40
