@@ -163,7 +163,14 @@ int run_check_command(const std::vector<std::string>& argv) {
     return *exit_status;
   if (options.repair_output) return repair_one(options.meshes[0], *options.repair_output, options);
 
-  const std::vector<std::string> all = expand_mesh_paths(options.meshes);
+  std::vector<std::string> all;
+  try {
+    all = expand_mesh_paths(options.meshes);
+    if (all.empty()) throw UsageError("no mesh files in " + options.meshes[0] + (options.meshes.size() > 1 ? " or the others" : ""));
+  } catch (const UsageError& e) {
+    std::cerr << "umbra check: " << e.what() << "\n";
+    return 2;
+  }
   const std::vector<std::string> meshes = options.shard ? shard_of(all, *options.shard) : all;
   const auto start = std::chrono::steady_clock::now();
   // --jobs bounds the threads of the whole process: the meshes checked at once

@@ -133,6 +133,14 @@ TEST_F(BatchCheck, AProgressBarShowsOnATerminalOnlyOnceTheCheckHasRunForASecond)
   EXPECT_EQ(piped.err.find('['), std::string::npos);
 }
 
+TEST_F(BatchCheck, AFolderWithNoMeshExitsTwoAndSaysSo) {
+  fs::create_directories(path("empty/inner"));
+  write("empty/notes.txt", "no meshes here\n");
+  const CommandResult empty = run("check " + path("empty"));
+  EXPECT_EQ(empty.status, 2);
+  EXPECT_EQ(empty.err, "umbra check: no mesh files in " + path("empty") + "\n");
+}
+
 TEST_F(BatchCheck, UsageErrorsForJobsAndShards) {
   const std::string mesh = write("t.obj", obj_text(test::tetrahedron()));
   EXPECT_EQ(run("check --shard 3/3 " + mesh).err,
