@@ -61,8 +61,11 @@ MortonKeyed morton_order(const std::vector<FloatBox>& boxes) {
       for (int k = 0; k < 3; ++k) {
         const double extent = double(all.hi[size_t(k)]) - double(all.lo[size_t(k)]);
         const double centre = 0.5 * (double(boxes[i].lo[size_t(k)]) + double(boxes[i].hi[size_t(k)]));
-        const double unit = extent > 0.0 ? (centre - double(all.lo[size_t(k)])) / extent : 0.0;
-        code |= spread_bits(uint64_t(std::clamp(unit, 0.0, 1.0) * double((1 << 21) - 1))) << k;
+        double unit = extent > 0.0 ? (centre - double(all.lo[size_t(k)])) / extent : 0.0;
+        // Coordinates beyond a float's range give infinite boxes, and then NaN
+        // here; any cell will do for them (the order only speeds the search).
+        if (!(unit >= 0.0)) unit = 0.0;
+        code |= spread_bits(uint64_t(std::min(unit, 1.0) * double((1 << 21) - 1))) << k;
       }
       keyed[i] = {code, uint32_t(i)};
     }

@@ -1,6 +1,7 @@
 #include "mesh/check/box_overlaps.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <atomic>
 #include <mutex>
 #include <random>
@@ -92,6 +93,18 @@ TEST(BoxOverlaps, AVisitThatReturnsFalseStopsTheSearchAndSaysItIsIncomplete) {
       for_each_overlapping_pair(boxes, [&](const std::pair<uint32_t, uint32_t>*, size_t count) { return (visits += count) < 2000; });
   EXPECT_FALSE(complete);
   EXPECT_LT(visits.load(), size_t(5000) * 4999 / 2 / 10);
+}
+
+TEST(BoxOverlaps, BoxesBeyondAFloatsRangeAreInfiniteAndStillPaired) {
+  // Points past 3.4e38 round outward to infinite float boxes (found by fuzzing).
+  const FloatBox huge = enclosing_box({-1e300, 0, 0}, {1e300, 1, 1}, {0, 0, 1e300});
+  EXPECT_EQ(huge.lo[0], -std::numeric_limits<float>::infinity());
+  EXPECT_EQ(huge.hi[2], std::numeric_limits<float>::infinity());
+  std::vector<FloatBox> boxes = {huge, box_at({0.5, 0.5, 0.5}, {0.1, 0.1, 0.1}), box_at({5, -3, 2}, {1, 1, 1}),
+                                 enclosing_box({1e39, 1e39, 1e39}, {2e39, 2e39, 2e39}, {1e39, 2e39, 1e39})};
+  for (int i = 0; i < 50; ++i) boxes.push_back(box_at({i, i, i}, {0.5, 0.5, 0.5}));
+  const auto found = searched_pairs(boxes);
+  EXPECT_EQ(PairSet(found.begin(), found.end()), brute_force_pairs(boxes));
 }
 
 TEST(BoxOverlaps, NoneOrOneBoxHasNoPairs) {
