@@ -118,7 +118,7 @@ CheckOutcome check_one(const std::string& path, const CheckCommandOptions& optio
     outcome.status = report.is_closed_manifold() ? 0 : 1;
   } catch (const InputError& e) {
     err << e.what() << "\n";
-    if (options.json) out << json_line({{"path", path}, {"error", e.what()}});
+    if (options.json) out << json_error_line(path, e.what());
     outcome.status = 2;
   } catch (const std::bad_alloc&) {
     err << path << ": not enough memory to check this mesh\n";

@@ -1,7 +1,8 @@
 #include "mesh/check/mesh_report.hpp"
 
 #include <cstdio>
-#include <sstream>
+
+#include <nlohmann/json.hpp>
 
 namespace umbra {
 namespace {
@@ -32,6 +33,13 @@ std::string seconds(double x) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.3f s", x);
   return buffer;
+}
+
+// One JSON value on one line. Invalid UTF-8 (a file name in Latin-1, say)
+// becomes U+FFFD: the output is always valid UTF-8, as JSON requires
+// (docs/check.md).
+std::string json_line(const nlohmann::ordered_json& value) {
+  return value.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace
@@ -265,10 +273,8 @@ void MeshReport::print_json(std::ostream& out) const {
   out << json_line(report);
 }
 
-std::string json_line(const nlohmann::ordered_json& value) {
-  // Invalid UTF-8 (a file name in Latin-1, say) becomes U+FFFD: the output
-  // is always valid UTF-8, as JSON requires (docs/check.md).
-  return value.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+std::string json_error_line(const std::string& path, const std::string& error) {
+  return json_line(nlohmann::ordered_json{{"path", path}, {"error", error}});
 }
 
 }  // namespace umbra

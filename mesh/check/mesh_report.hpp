@@ -14,7 +14,6 @@
 #include <vector>
 
 #include <glm/vec3.hpp>
-#include <nlohmann/json.hpp>
 
 namespace umbra {
 
@@ -57,9 +56,9 @@ struct SelfIntersectionReport {
 enum class ShadowMethod { kSilhouette, kEdgeMultiplicity };
 const char* shadow_method_name(ShadowMethod method);
 
-// One JSON value on one line, always valid UTF-8: invalid bytes (as in a
-// Latin-1 file name) are replaced by U+FFFD.
-std::string json_line(const nlohmann::ordered_json& value);
+// The JSON line for a file that could not be read: {"path": ..., "error": ...},
+// valid UTF-8 as print_json's lines are.
+std::string json_error_line(const std::string& path, const std::string& error);
 
 struct MeshReport {
   std::string path;
