@@ -262,11 +262,13 @@ void plan_planar_light(const Scene& scene, const std::vector<ReceiverPlane>& rec
 }  // namespace
 
 RenderPlan make_render_plan(const Scene& scene, const RenderSettings& settings) {
-  // The meshes' casters and, for the methods that count volumes, every
-  // light's layer bounds of every mesh need only the scene and not each
-  // other: both are made at once, on separate cores.
+  // The meshes' casters and, for the methods that count volumes, the layer
+  // bounds of every mesh each light's plan will cast need only the scene and
+  // the view, not each other: both are made at once, on separate cores.
   RenderPlan plan;
   plan.settings = settings;
+  plan.camera = scene.camera;
+  plan.near_plane = near_plane(plan.camera, surface_bounds(scene));
   std::vector<MeshCaster> casters;
   const RenderMethod m = settings.method;
   const bool counts_volumes = m != RenderMethod::kShadowMap && m != RenderMethod::kPlanar && m != RenderMethod::kTriangles &&
@@ -275,9 +277,12 @@ RenderPlan make_render_plan(const Scene& scene, const RenderSettings& settings) 
                        [&] {
                          if (!counts_volumes) return;
                          plan.layer_bounds.assign(scene.lights.size(), std::vector<RenderPlan::LayerBounds>(scene.meshes.size()));
-                         for (size_t i = 0; i < scene.lights.size(); ++i)
+                         for (size_t i = 0; i < scene.lights.size(); ++i) {
+                           const LightCulling culling = cull_for_light(scene, plan, scene.lights[i].position);
                            for (size_t k = 0; k < scene.meshes.size(); ++k)
-                             plan.layer_bounds[i][k] = layer_bounds_of(scene.meshes[k], scene.lights[i].position);
+                             if (!culling.meshes[k])  // a culled mesh casts nothing: its bound is never read
+                               plan.layer_bounds[i][k] = layer_bounds_of(scene.meshes[k], scene.lights[i].position);
+                         }
                        });
   update_render_plan(scene, casters, plan);
   return plan;
