@@ -33,6 +33,8 @@ packages=(
   parallel                           # docs/batch-checks.md: sharded checks with GNU parallel (tested)
   libcli11-dev                       # every command's options (CLI11)
   nlohmann-json3-dev                 # umbra check --json (nlohmann/json)
+  libtinygltf-dev                    # glTF 2.0 and GLB meshes (tinygltf)
+  lib3mf-dev libzip-dev              # 3MF meshes (lib3mf; its pkg-config names libzip)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -10,6 +10,7 @@
 #include "mesh/check/face_classes.hpp"
 #include "mesh/check/face_flips.hpp"
 #include "mesh/check/point_merging.hpp"
+#include "mesh/check/revisiting_polygons.hpp"
 #include "mesh/check/self_intersections.hpp"
 #include "mesh/check/solid_orientation.hpp"
 #include "mesh/input_error.hpp"
@@ -57,11 +58,16 @@ void summarise_components(const std::vector<glm::dvec3>& positions, const FaceTr
 MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const CheckOptions& options) {
   if (soup.corners.size() >= (size_t(1) << 31))
     throw InputError({soup.path, 0, 0}, "too large to check: more than 2^31 face corners");
+  if (has_revisiting_polygons(soup)) {
+    PolygonSoup split = split_revisiting_polygons(soup);
+    return analyse(split, &split, options);
+  }
   MeshAnalysis analysis;
   MeshReport& report = analysis.report;
   MeshReport::Examples& examples = report.examples;
   report.path = soup.path;
   report.format = soup.format;
+  report.warnings = soup.warnings;
   report.file_vertices = soup.points.size();
   report.file_faces = soup.polygon_count();
   if (!soup.points.empty()) {

@@ -120,6 +120,8 @@ std::string MeshReport::verdict() const {
 void MeshReport::print_text(std::ostream& out) const {
   out << path << ": " << format << ", " << plural(file_vertices, "vertex", "vertices") << ", "
       << plural(file_faces, "face", "faces") << " (" << plural(triangles, "triangle", "triangles") << ")\n";
+  for (const ReadWarning& w : warnings)
+    out << "  warning            " << (w.line ? "line " + std::to_string(w.line) + ": " : "") << w.message << "\n";
   const auto examples_line = [&](const std::vector<std::string>& items) {
     if (items.empty()) return;
     out << "                     e.g. ";
@@ -227,7 +229,7 @@ void MeshReport::print_json(std::ostream& out) const {
                               {"genus", c.genus ? Json(*c.genus) : Json(nullptr)},
                               {"outward", c.outward ? Json(*c.outward) : Json(nullptr)}});
   }
-  const Json report = {
+  Json report = {
       {"path", path},
       {"format", format},
       {"file_vertices", file_vertices},
@@ -270,6 +272,11 @@ void MeshReport::print_json(std::ostream& out) const {
       {"shadow_method", shadow_method_name(shadow_method())},
       {"problems", problems()},
       {"verdict", verdict()}};
+  if (!warnings.empty()) {  // only when the reader warned: reports of well-formed files keep their keys
+    Json list = Json::array();
+    for (const ReadWarning& w : warnings) list.push_back({{"line", w.line}, {"message", w.message}});
+    report["warnings"] = list;
+  }
   out << json_line(report);
 }
 

@@ -15,6 +15,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "mesh/io/polygon_soup.hpp"
+
 namespace umbra {
 
 // A vertex or face as the file has it: its position in the file counting
@@ -84,6 +86,7 @@ struct MeshReport {
   SelfIntersectionReport self_intersections;
   glm::dvec3 bbox_min{0.0}, bbox_max{0.0};
   std::vector<ComponentReport> components;
+  std::vector<ReadWarning> warnings;  // the reader's, for quirks it read past
 
   // A few offending elements of each kind, to find them in the file.
   struct Examples {

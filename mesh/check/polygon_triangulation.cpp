@@ -68,7 +68,10 @@ void triangulate_polygon(const std::vector<glm::dvec3>& positions, const uint32_
       if (cross2(flat[ia], flat[ib], flat[ic]) <= 0.0) continue;  // reflex or flat corner
       bool empty = true;
       for (uint32_t other : remaining) {
+        // A polygon that revisits a point (a keyhole's bridge) has that
+        // point at two corners; its other copy does not block the ear.
         if (other == ia || other == ib || other == ic) continue;
+        if (corners[other] == corners[ia] || corners[other] == corners[ib] || corners[other] == corners[ic]) continue;
         if (inside_or_on(flat[other], flat[ia], flat[ib], flat[ic])) empty = false;
       }
       if (!empty) continue;

@@ -1,5 +1,7 @@
 #include "mesh/io/mesh_file.hpp"
 
+#include <stdexcept>
+
 #include "mesh/input_error.hpp"
 #include "mesh/io/mapped_file.hpp"
 #include "mesh/io/mesh_format.hpp"
@@ -12,14 +14,20 @@ PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path) 
   // errors best explain a file too broken for its content to say.
   std::string format = detect_mesh_format(bytes);
   // Not OBJ, though: any text would read as an OBJ without faces.
-  if (format.empty() && mesh_format_of(path) != "obj") format = mesh_format_of(path);
+  // Nor for what is plainly some other format.
+  if (format.empty() && mesh_format_of(path) != "obj" && other_known_format(bytes).empty()) format = mesh_format_of(path);
   PolygonSoup soup;
   if (format == "obj") soup = read_obj(bytes, path);
   else if (format == "off") soup = read_off(bytes, path);
   else if (format == "ply") soup = read_ply(bytes, path);
   else if (format == "stl") soup = read_stl(bytes, path);
-  else throw InputError({path, 0, 0}, "not a mesh file (OBJ, OFF, PLY or STL): " + describe_content(bytes));
+  else if (format == "gltf") soup = read_gltf(bytes, path);
+  else if (format == "3mf") soup = read_3mf(bytes, path);
+  else throw InputError({path, 0, 0}, "not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): " + describe_content(bytes));
   require_corners_in_range(soup);
+  if (!soup.polygon_materials.empty() && soup.polygon_materials.size() != soup.polygon_count())
+    throw std::logic_error("a reader gave " + std::to_string(soup.polygon_materials.size()) + " face materials for " +
+                           std::to_string(soup.polygon_count()) + " faces");
   return soup;
 }
 

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 
+#include "mesh/io/mesh_readers.hpp"
 #include "mesh/io/text_scanner.hpp"
 
 namespace umbra {
@@ -18,7 +19,21 @@ bool is_binary_stl(std::string_view bytes) {
   if (bytes.size() < 84) return false;
   uint32_t count = 0;
   for (int i = 3; i >= 0; --i) count = (count << 8) | static_cast<unsigned char>(bytes[80 + size_t(i)]);
-  return bytes.size() == 84 + size_t(count) * 50;
+  return bytes.size() == 84 + size_t(count) * 50 || binary_stl_trailing_bytes(bytes) > 0;
+}
+
+// glTF's JSON: an object with an "asset" member (the one member glTF requires).
+bool is_gltf_json(std::string_view head) {
+  const size_t first = head.find_first_not_of(" \t\r\n\xef\xbb\xbf");
+  return first != std::string_view::npos && head[first] == '{' && head.find("\"asset\"") != std::string_view::npos;
+}
+
+// A zip archive (3MF is one) whose part names include a .model part, looked
+// for in the local headers at the start and the central directory at the end.
+bool is_zip(std::string_view bytes) { return starts_with(bytes, "PK\x03\x04"); }
+bool has_model_part(std::string_view bytes) {
+  const auto has = [](std::string_view part) { return part.find(".model") != std::string_view::npos; };
+  return has(bytes.substr(0, kSniffBytes)) || has(bytes.substr(bytes.size() - std::min(bytes.size(), kSniffBytes)));
 }
 
 // Text: no NUL and no control bytes but whitespace in the sniffed part.
@@ -81,9 +96,12 @@ bool is_obj(std::string_view head) {
 
 std::string detect_mesh_format(std::string_view bytes) {
   if (starts_with(bytes, "ply\n") || starts_with(bytes, "ply\r")) return "ply";
+  if (starts_with(bytes, "glTF")) return "gltf";  // GLB's magic
+  if (is_zip(bytes) && has_model_part(bytes)) return "3mf";
   if (is_binary_stl(bytes)) return "stl";
   const std::string_view head = bytes.substr(0, kSniffBytes);
   if (!looks_like_text(head)) return "";
+  if (is_gltf_json(head)) return "gltf";
   if (is_off(head)) return "off";
   if (is_ascii_stl(head)) return "stl";
   if (is_obj(head)) return "obj";
@@ -93,13 +111,23 @@ std::string detect_mesh_format(std::string_view bytes) {
 std::string mesh_format_of(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl") return ext.substr(1);
+  if (ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl" || ext == ".3mf") return ext.substr(1);
+  if (ext == ".gltf" || ext == ".glb") return "gltf";
+  return "";
+}
+
+std::string other_known_format(std::string_view bytes) {
+  if (starts_with(bytes, "\xff\xfe") || starts_with(bytes, "\xfe\xff")) return "UTF-16 text";
+  if (is_zip(bytes)) return "a zip archive without a 3D model part";
+  if (starts_with(bytes, "\xff\xd8\xff")) return "a JPEG image";
+  if (starts_with(bytes, "\x89PNG")) return "a PNG image";
+  if (starts_with(bytes, "%PDF")) return "a PDF document";
   return "";
 }
 
 std::string describe_content(std::string_view bytes) {
   if (bytes.empty()) return "the file is empty";
-  if (starts_with(bytes, "\xff\xfe") || starts_with(bytes, "\xfe\xff")) return "UTF-16 text";
+  if (const std::string other = other_known_format(bytes); !other.empty()) return other;
   const std::string_view head = bytes.substr(0, kSniffBytes);
   if (!looks_like_text(head)) return "binary data";
   std::string_view first;

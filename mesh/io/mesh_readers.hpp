@@ -14,6 +14,13 @@ PolygonSoup read_obj(std::string_view text, const std::string& path);
 PolygonSoup read_off(std::string_view text, const std::string& path);
 PolygonSoup read_stl(std::string_view bytes, const std::string& path);  // ascii or binary
 PolygonSoup read_ply(std::string_view bytes, const std::string& path);  // ascii or binary
+PolygonSoup read_gltf(std::string_view bytes, const std::string& path);  // .gltf or .glb; external buffers beside `path`
+PolygonSoup read_3mf(std::string_view bytes, const std::string& path);
+
+// How many bytes (1 to 1023) follow the last triangle of `bytes` read as a
+// binary STL with at least one triangle; 0 when the size is exact or when so
+// many would follow that the bytes are no binary STL.
+size_t binary_stl_trailing_bytes(std::string_view bytes);
 
 // Throws a located error when a polygon refers to a point the file lacks.
 void require_corners_in_range(const PolygonSoup& soup);

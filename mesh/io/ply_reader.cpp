@@ -66,14 +66,16 @@ struct PlyHeader {
   int body_line = 0;       // lines before the body
 };
 
-PlyHeader read_header(TextScanner& scanner) {
+// Lines the format does not define (exporters write their name, for one) are
+// read past with a warning, as is "end_header" with more on its line.
+PlyHeader read_header(TextScanner& scanner, std::vector<ReadWarning>& warnings) {
   PlyHeader header;
   if (!scanner.next_line() || scanner.field() != "ply") scanner.fail_at_line("not a PLY file: it must begin with \"ply\"");
   bool have_format = false;
   while (true) {
     if (!scanner.next_line()) scanner.fail_at_line("the PLY header has no \"end_header\"");
     const std::string_view keyword = scanner.field();
-    if (keyword == "end_header") break;
+    if (keyword == "end_header" && scanner.at_line_end()) break;
     if (keyword == "comment" || keyword == "obj_info" || keyword.empty()) continue;
     if (keyword == "format") {
       const std::string_view encoding = scanner.field();
@@ -105,7 +107,7 @@ PlyHeader read_header(TextScanner& scanner) {
       if (property.name.empty()) scanner.fail("expected a property name");
       header.elements.back().properties.push_back(std::move(property));
     } else {
-      scanner.fail("unknown PLY header line " + quote_field(keyword));
+      warnings.push_back({scanner.line_number(), "unknown PLY header line " + quote_field(keyword) + " ignored"});
     }
   }
   if (!have_format) scanner.fail_at_line("the PLY header has no \"format\" line");
@@ -266,11 +268,11 @@ PolygonSoup read_ply(std::string_view bytes, const std::string& path) {
                       : header_line_end == bytes.size()          ? std::string_view::npos
                                                                  : header_line_end;
   TextScanner header_scanner(bytes.substr(0, body == std::string_view::npos ? bytes.size() : body), path);
-  const PlyHeader header = read_header(header_scanner);
-  const PlyLayout layout = find_layout(header, path);
-
   PolygonSoup soup;
   soup.path = path;
+  const PlyHeader header = read_header(header_scanner, soup.warnings);
+  const PlyLayout layout = find_layout(header, path);
+
   const size_t body_offset = body == std::string_view::npos ? bytes.size() : body + 1;
   const size_t byte_budget = bytes.size() - std::min(bytes.size(), body_offset);
   if (header.encoding == PlyEncoding::kAscii) {

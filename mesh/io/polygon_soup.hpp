@@ -11,6 +11,22 @@
 
 namespace umbra {
 
+// Something a reader accepted although the format forbids it (an exporter's
+// quirk): read anyway, and said once. `line` is 0 for the file as a whole.
+struct ReadWarning {
+  int line = 0;
+  std::string message;
+};
+
+// A surface colour that a file gives its faces (OBJ's mtl Kd/Ks/Ns, glTF's
+// baseColorFactor, 3MF's base materials), in the scene's Phong terms.
+struct SoupMaterial {
+  std::string name;
+  glm::dvec3 diffuse{0.8};
+  glm::dvec3 specular{0.0};
+  double shininess = 32.0;
+};
+
 struct PolygonSoup {
   std::string path;
   std::string format;                 // "OBJ", "OFF", "PLY (binary little endian)", "STL (ascii)", ...
@@ -19,13 +35,18 @@ struct PolygonSoup {
   std::vector<uint32_t> corners;      // point indices of every polygon, polygon after polygon
   std::vector<uint32_t> polygon_starts{0};  // polygon p is corners[starts[p], starts[p+1])
   std::vector<int> polygon_lines;     // line of each polygon; empty or 0 in binary files
+  std::vector<ReadWarning> warnings;  // quirks read past, in file order
+  std::vector<SoupMaterial> materials;   // the file's own, if it has any
+  std::vector<int> polygon_materials;    // index into `materials` per polygon, -1 for none; empty: none at all
 
   size_t polygon_count() const { return polygon_starts.size() - 1; }
   uint32_t corner_count(size_t p) const { return polygon_starts[p + 1] - polygon_starts[p]; }
   const uint32_t* polygon(size_t p) const { return corners.data() + polygon_starts[p]; }
   int point_line(size_t i) const { return i < point_lines.size() ? point_lines[i] : 0; }
   int polygon_line(size_t p) const { return p < polygon_lines.size() ? polygon_lines[p] : 0; }
+  int polygon_material(size_t p) const { return p < polygon_materials.size() ? polygon_materials[p] : -1; }
 
+  void warn(int line, std::string message) { warnings.push_back({line, std::move(message)}); }
   void add_point(const glm::dvec3& p, int line) {
     points.push_back(p);
     point_lines.push_back(line);

@@ -13,6 +13,9 @@ namespace {
 
 constexpr size_t kBinaryHeaderBytes = 84;
 constexpr size_t kBinaryTriangleBytes = 50;
+// Some exporters write a few bytes after the last triangle (padding, a colour
+// block); fewer than this many are read past with a warning.
+constexpr size_t kMaxTrailingBytes = 1024;
 
 float little_endian_float(const char* bytes) {
   uint32_t bits = 0;
@@ -88,6 +91,13 @@ PolygonSoup read_ascii_stl(std::string_view text, const std::string& path) {
 
 }  // namespace
 
+size_t binary_stl_trailing_bytes(std::string_view bytes) {
+  if (bytes.size() < kBinaryHeaderBytes) return 0;
+  const size_t needed = kBinaryHeaderBytes + size_t(little_endian_u32(bytes.data() + 80)) * kBinaryTriangleBytes;
+  if (needed == kBinaryHeaderBytes || bytes.size() <= needed || bytes.size() - needed >= kMaxTrailingBytes) return 0;
+  return bytes.size() - needed;
+}
+
 PolygonSoup read_stl(std::string_view bytes, const std::string& path) {
   if (bytes.size() >= kBinaryHeaderBytes) {
     const uint32_t triangle_count = little_endian_u32(bytes.data() + 80);
@@ -96,7 +106,14 @@ PolygonSoup read_stl(std::string_view bytes, const std::string& path) {
       return read_binary_stl(bytes, path, triangle_count);
   }
   const size_t first = bytes.find_first_not_of(" \t\r\n");
-  if (first != std::string_view::npos && bytes.substr(first, 5) == "solid") return read_ascii_stl(bytes, path);
+  if (first != std::string_view::npos && bytes.substr(first, 5) == "solid" && binary_stl_trailing_bytes(bytes) == 0)
+    return read_ascii_stl(bytes, path);
+  if (const size_t trailing = binary_stl_trailing_bytes(bytes)) {
+    PolygonSoup soup = read_binary_stl(bytes, path, little_endian_u32(bytes.data() + 80));
+    soup.warn(0, std::to_string(trailing) + (trailing == 1 ? " byte" : " bytes") + " after the last of the " +
+                     std::to_string(soup.polygon_count()) + " triangles ignored");
+    return soup;
+  }
   if (bytes.size() >= kBinaryHeaderBytes) {
     const uint32_t triangle_count = little_endian_u32(bytes.data() + 80);
     throw InputError({path, 0, 0}, "not a valid STL file: as binary STL its " + std::to_string(triangle_count) +

@@ -1,4 +1,5 @@
 // check_mesh on small meshes whose every count is known by hand.
+#include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <gtest/gtest.h>
 
@@ -74,6 +75,26 @@ TEST(MeshCheck, CubeMissingAFaceHasOneHoleOfFourBorderEdges) {
     EXPECT_EQ(a.index & 2, 0u) << "a border vertex has y = 0";
     EXPECT_EQ(b.index & 2, 0u);
   }
+}
+
+// A face with a hole as exporters write it: the outline, a bridge in, the
+// hole the other way round, the bridge out. It visits two corners twice.
+TEST(MeshCheck, KeyholePolygonIsSplitIntoTheTrianglesItCovers) {
+  const PolygonSoup keyhole = test::make_soup(
+      {{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}, {1, 1, 0}, {3, 1, 0}, {3, 3, 0}, {1, 3, 0}},
+      {{0, 1, 2, 3, 0, 4, 7, 6, 5, 4}});
+  const MeshAnalysis a = analyse_mesh(keyhole);
+  EXPECT_EQ(a.report.degenerate_faces, 0u);
+  EXPECT_EQ(a.report.triangles, 8u);
+  double area = 0.0;
+  for (const auto& t : a.triangles)
+    area += glm::cross(a.positions[t[1]] - a.positions[t[0]], a.positions[t[2]] - a.positions[t[0]]).z / 2.0;
+  EXPECT_DOUBLE_EQ(std::abs(area), 12.0);  // 4 x 4 less the 2 x 2 hole, each part once
+  EXPECT_EQ(a.report.border_edges, 8u);
+  EXPECT_EQ(a.report.border_loops, 2u);
+  ASSERT_EQ(a.report.warnings.size(), 1u);
+  EXPECT_EQ(a.report.warnings[0].line, 9);
+  EXPECT_EQ(a.report.warnings[0].message, "face 0 (10 corners) visits a vertex more than once: read as 8 triangles");
 }
 
 TEST(MeshCheck, TwoCubesSharingAnEdgeHaveOneNonManifoldEdge) {

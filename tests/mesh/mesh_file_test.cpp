@@ -146,6 +146,33 @@ TEST(MeshFile, PlyHeaderEndsOnlyAtTheLineEndHeader) {
   EXPECT_EQ(b.corners, a.corners);
 }
 
+// Exporters' quirks: read, with one warning each.
+TEST(MeshFile, ExporterQuirksAreReadWithAWarning) {
+  // Blender 2.47 names itself in a header line the PLY format does not have;
+  // "end_header" with more after it on its line does not end the header.
+  const PolygonSoup blender = parse_polygon_soup(
+      "ply\nformat ascii 1.0\nCreated by Blender3D 247 - www.blender.org, source file: 'x.blend'\nelement vertex 3\n"
+      "property float x\nproperty float y\nproperty float z\nend_header of a sort\nelement face 1\n"
+      "property list uchar uint vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+      "blender.ply");
+  EXPECT_EQ(blender.polygon_count(), 1u);
+  ASSERT_EQ(blender.warnings.size(), 2u);
+  EXPECT_EQ(blender.warnings[0].line, 3);
+  EXPECT_EQ(blender.warnings[0].message, "unknown PLY header line \"Created\" ignored");
+  EXPECT_EQ(blender.warnings[1].line, 8);
+  EXPECT_EQ(blender.warnings[1].message, "unknown PLY header line \"end_header\" ignored");
+
+  // A binary STL with a few bytes after its last triangle, whatever its name.
+  const std::string stl = binary_stl({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}, {{{0, 0, 0}, {0, 1, 0}, {0, 0, 1}}}});
+  for (const char* name : {"padded.stl", "padded"}) {
+    const PolygonSoup padded = parse_polygon_soup(stl + std::string("\0\0\0\0\0", 5), name);
+    EXPECT_EQ(padded.polygon_count(), 2u);
+    ASSERT_EQ(padded.warnings.size(), 1u);
+    EXPECT_EQ(padded.warnings[0].message, "5 bytes after the last of the 2 triangles ignored");
+  }
+  EXPECT_TRUE(parse_polygon_soup(stl, "exact.stl").warnings.empty());
+}
+
 TEST(MeshFile, BadFilesGetTheirExactLocatedError) {
   EXPECT_EQ(error_of("v 0 0 0\nf 1 0 1\n", "a.obj"),
             "a.obj:2:5: vertex indices count from 1 (or from -1 backwards); 0 is not an index");
@@ -181,7 +208,7 @@ TEST(MeshFile, BadFilesGetTheirExactLocatedError) {
   EXPECT_EQ(error_of("ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
                      "element face 1\nproperty list uchar float vertex_indices\nend_header\n", "d.ply"),
             "d.ply: the face's vertex indices must have an integer type");
-  EXPECT_EQ(error_of("", "e.dae"), "e.dae: not a mesh file (OBJ, OFF, PLY or STL): the file is empty");
+  EXPECT_EQ(error_of("", "e.dae"), "e.dae: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): the file is empty");
 }
 
 TEST(MeshFormat, ContentDecidesTheFormatWhateverTheName) {
@@ -192,12 +219,12 @@ TEST(MeshFormat, ContentDecidesTheFormatWhateverTheName) {
   EXPECT_EQ(detect_mesh_format(binary_stl({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}})), "stl");
   EXPECT_EQ(detect_mesh_format("# exporter 1.0\nmtllib a.mtl\no cube\nv 0 0 0\n"), "obj");
   EXPECT_EQ(detect_mesh_format("f 1 2 3\n"), "obj");
-  // Not meshes: prose, a binary STL one byte short, a JPEG, UTF-16, JSON.
+  // Not meshes: prose, a binary STL one byte short, a JPEG, UTF-16, JSON that is no glTF.
   EXPECT_EQ(detect_mesh_format("# umbra\nThis is a README.\nv 1 2 3\n"), "");
   EXPECT_EQ(detect_mesh_format(binary_stl({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}}).substr(0, 133)), "");
   EXPECT_EQ(detect_mesh_format(std::string("\xff\xd8\xff\xe0\0\x10JFIF", 10)), "");
   EXPECT_EQ(detect_mesh_format(std::string("\xff\xfev\0 \0", 6)), "");
-  EXPECT_EQ(detect_mesh_format("{\"asset\": {\"version\": \"2.0\"}}"), "");
+  EXPECT_EQ(detect_mesh_format("{\"name\": \"umbra\", \"version\": \"2.0\"}"), "");
 
   // Read by content: an OFF named .stl, an STL with no extension.
   EXPECT_EQ(parse_polygon_soup("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "mislabelled.stl").format, "OFF");
@@ -206,12 +233,12 @@ TEST(MeshFormat, ContentDecidesTheFormatWhateverTheName) {
 
 TEST(MeshFormat, FilesThatAreNoMeshSayWhatTheyAre) {
   EXPECT_EQ(error_of("# umbra\nThis is a README.\n", "README.obj"),
-            "README.obj: not a mesh file (OBJ, OFF, PLY or STL): text starting with \"#\"");
-  EXPECT_EQ(error_of("Just words\n", "notes"), "notes: not a mesh file (OBJ, OFF, PLY or STL): text starting with \"Just\"");
-  EXPECT_EQ(error_of(std::string("\xff\xfev\0 \0", 6), "u16.obj"), "u16.obj: not a mesh file (OBJ, OFF, PLY or STL): UTF-16 text");
+            "README.obj: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): text starting with \"#\"");
+  EXPECT_EQ(error_of("Just words\n", "notes"), "notes: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): text starting with \"Just\"");
+  EXPECT_EQ(error_of(std::string("\xff\xfev\0 \0", 6), "u16.obj"), "u16.obj: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): UTF-16 text");
   EXPECT_EQ(error_of(std::string("\xff\xd8\xff\xe0\0\x10JFIF", 10), "photo.obj"),
-            "photo.obj: not a mesh file (OBJ, OFF, PLY or STL): binary data");
-  EXPECT_EQ(error_of("", "empty.obj"), "empty.obj: not a mesh file (OBJ, OFF, PLY or STL): the file is empty");
+            "photo.obj: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): a JPEG image");
+  EXPECT_EQ(error_of("", "empty.obj"), "empty.obj: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): the file is empty");
 }
 
 TEST(MeshFile, MissingFileAndFolderAreReportedByName) {

@@ -1,0 +1,214 @@
+// glTF 2.0, as .gltf (JSON with external or embedded buffers) or .glb, read
+// with tinygltf: every triangle primitive of the default scene's meshes, each
+// placed by its node's transform; triangle strips and fans become triangles,
+// points and lines are skipped with a warning. baseColorFactor and the
+// metallic-roughness factors map onto the Phong terms; textures are ignored.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <filesystem>
+#include <set>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat4x4.hpp>
+
+#include <tiny_gltf.h>
+
+#include "mesh/input_error.hpp"
+#include "mesh/io/mesh_readers.hpp"
+
+namespace umbra {
+namespace {
+
+// Textures are not drawn: their images are not even decoded.
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+  return true;
+}
+
+glm::dmat4 local_transform(const tinygltf::Node& node) {
+  if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());  // column-major, as glm
+  glm::dmat4 m(1.0);
+  if (node.translation.size() == 3) m = glm::translate(m, glm::make_vec3(node.translation.data()));
+  if (node.rotation.size() == 4) {
+    const auto& r = node.rotation;  // x, y, z, w
+    m *= glm::mat4_cast(glm::dquat(r[3], r[0], r[1], r[2]));
+  }
+  if (node.scale.size() == 3) m = glm::scale(m, glm::make_vec3(node.scale.data()));
+  return m;
+}
+
+// glTF's PBR factors as Phong terms: the base colour is the diffuse colour
+// (whatever the metalness: a Phong surface without its colour would be
+// black); the highlight is a metal's base colour or a dielectric's 4%,
+// dimmed by roughness, and narrows as roughness falls (shininess 2/r^4 - 2,
+// the Blinn-Phong exponent of a Beckmann lobe of that roughness; Walter et
+// al., "Microfacet Models for Refraction through Rough Surfaces", 2007).
+SoupMaterial phong_of(const tinygltf::Material& m) {
+  SoupMaterial out;
+  out.name = m.name;
+  const auto& pbr = m.pbrMetallicRoughness;
+  const glm::dvec3 base = pbr.baseColorFactor.size() >= 3
+                              ? glm::dvec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2])
+                              : glm::dvec3(1.0);
+  const double metallic = std::clamp(pbr.metallicFactor, 0.0, 1.0);
+  const double roughness = std::clamp(pbr.roughnessFactor, 0.05, 1.0);
+  out.diffuse = glm::clamp(base, 0.0, 1.0);
+  out.specular = glm::mix(glm::dvec3(0.04), out.diffuse, metallic) * (1.0 - roughness);
+  out.shininess = std::min(2.0 / std::pow(roughness, 4.0) - 2.0, 1000.0);
+  return out;
+}
+
+class GltfReader {
+ public:
+  GltfReader(const tinygltf::Model& model, PolygonSoup& soup) : model_(model), soup_(soup) {}
+
+  void read() {
+    for (const tinygltf::Material& m : model_.materials) soup_.materials.push_back(phong_of(m));
+    if (model_.scenes.empty()) {
+      // No scene: every mesh, as it is, once.
+      for (size_t m = 0; m < model_.meshes.size(); ++m) add_mesh(int(m), glm::dmat4(1.0));
+      return;
+    }
+    const int scene = model_.defaultScene >= 0 && size_t(model_.defaultScene) < model_.scenes.size() ? model_.defaultScene : 0;
+    for (int node : model_.scenes[size_t(scene)].nodes) add_node(node, glm::dmat4(1.0));
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& message) const { throw InputError({soup_.path, 0, 0}, message); }
+
+  void add_node(int index, const glm::dmat4& parent) {
+    if (index < 0 || size_t(index) >= model_.nodes.size()) fail("node " + std::to_string(index) + " does not exist");
+    if (!on_path_.insert(index).second)
+      fail("node " + std::to_string(index) + " is its own ancestor: the node hierarchy has a cycle");
+    const tinygltf::Node& node = model_.nodes[size_t(index)];
+    const glm::dmat4 world = parent * local_transform(node);
+    if (node.mesh >= 0) add_mesh(node.mesh, world);
+    for (int child : node.children) add_node(child, world);
+    on_path_.erase(index);
+  }
+
+  // The bytes of element `i` of `accessor`, checked to lie in its buffer.
+  const unsigned char* element(const tinygltf::Accessor& accessor, size_t i, const std::string& what) const {
+    if (accessor.sparse.isSparse) fail(what + " uses a sparse accessor, which umbra does not read");
+    if (accessor.bufferView < 0 || size_t(accessor.bufferView) >= model_.bufferViews.size())
+      fail(what + " has no buffer view");
+    const tinygltf::BufferView& view = model_.bufferViews[size_t(accessor.bufferView)];
+    if (view.buffer < 0 || size_t(view.buffer) >= model_.buffers.size()) fail(what + "'s buffer view has no buffer");
+    const std::vector<unsigned char>& data = model_.buffers[size_t(view.buffer)].data;
+    const int stride = accessor.ByteStride(view);
+    const int size = tinygltf::GetComponentSizeInBytes(uint32_t(accessor.componentType)) *
+                     tinygltf::GetNumComponentsInType(uint32_t(accessor.type));
+    if (stride <= 0 || size <= 0) fail(what + " has an invalid component type or stride");
+    const size_t at = view.byteOffset + accessor.byteOffset + i * size_t(stride);
+    if (at + size_t(size) > view.byteOffset + view.byteLength || at + size_t(size) > data.size())
+      fail(what + " reads past the end of its buffer (element " + std::to_string(i) + ")");
+    return data.data() + at;
+  }
+
+  uint32_t index_at(const tinygltf::Accessor& accessor, size_t i, const std::string& what) const {
+    const unsigned char* p = element(accessor, i, what);
+    switch (accessor.componentType) {
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return *p;
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p, 2); return v; }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p, 4); return v; }
+      default: fail(what + " must be unsigned bytes, shorts or ints");
+    }
+  }
+
+  void add_mesh(int index, const glm::dmat4& world) {
+    if (index < 0 || size_t(index) >= model_.meshes.size()) fail("mesh " + std::to_string(index) + " does not exist");
+    const tinygltf::Mesh& mesh = model_.meshes[size_t(index)];
+    // A mirroring transform turns the winding round (glTF 2.0, 5.25).
+    const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
+    for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+      const tinygltf::Primitive& primitive = mesh.primitives[p];
+      const std::string what = "mesh " + std::to_string(index) + " primitive " + std::to_string(p);
+      if (primitive.mode != TINYGLTF_MODE_TRIANGLES && primitive.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+          primitive.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+        soup_.warn(0, what + " is made of points or lines: skipped");
+        continue;
+      }
+      const auto position = primitive.attributes.find("POSITION");
+      if (position == primitive.attributes.end()) fail(what + " has no POSITION attribute");
+      if (position->second < 0 || size_t(position->second) >= model_.accessors.size())
+        fail(what + "'s POSITION accessor does not exist");
+      const tinygltf::Accessor& points = model_.accessors[size_t(position->second)];
+      if (points.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || points.type != TINYGLTF_TYPE_VEC3)
+        fail(what + "'s POSITION must be float VEC3");
+      const uint32_t first = uint32_t(soup_.points.size());
+      for (size_t i = 0; i < points.count; ++i) {
+        float xyz[3];
+        std::memcpy(xyz, element(points, i, what + "'s POSITION"), sizeof xyz);
+        const glm::dvec3 p3 = glm::dvec3(world * glm::dvec4(xyz[0], xyz[1], xyz[2], 1.0));
+        if (!std::isfinite(p3.x) || !std::isfinite(p3.y) || !std::isfinite(p3.z))
+          fail(what + " vertex " + std::to_string(i) + " has a coordinate that is not a finite number");
+        soup_.points.push_back(p3);
+      }
+      std::vector<uint32_t> indices;
+      if (primitive.indices >= 0) {
+        if (size_t(primitive.indices) >= model_.accessors.size()) fail(what + "'s index accessor does not exist");
+        const tinygltf::Accessor& list = model_.accessors[size_t(primitive.indices)];
+        indices.reserve(list.count);
+        for (size_t i = 0; i < list.count; ++i) {
+          const uint32_t v = index_at(list, i, what + "'s indices");
+          if (v >= points.count)
+            fail(what + " index " + std::to_string(i) + " is " + std::to_string(v) + ", but the primitive has " +
+                 std::to_string(points.count) + " vertices");
+          indices.push_back(v);
+        }
+      } else {
+        for (uint32_t i = 0; i < points.count; ++i) indices.push_back(i);
+      }
+      const int material = primitive.material >= 0 && size_t(primitive.material) < soup_.materials.size() ? primitive.material : -1;
+      const auto triangle = [&](uint32_t a, uint32_t b, uint32_t c) {
+        if (mirrored) std::swap(b, c);
+        soup_.corners.insert(soup_.corners.end(), {first + a, first + b, first + c});
+        soup_.end_polygon(0);
+        soup_.polygon_materials.push_back(material);
+      };
+      if (primitive.mode == TINYGLTF_MODE_TRIANGLES) {
+        if (indices.size() % 3) soup_.warn(0, what + " has " + std::to_string(indices.size() % 3) + " indices after its last whole triangle: ignored");
+        for (size_t i = 0; i + 2 < indices.size(); i += 3) triangle(indices[i], indices[i + 1], indices[i + 2]);
+      } else if (primitive.mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+        for (size_t i = 0; i + 2 < indices.size(); ++i)
+          i % 2 ? triangle(indices[i + 1], indices[i], indices[i + 2]) : triangle(indices[i], indices[i + 1], indices[i + 2]);
+      } else {
+        for (size_t i = 1; i + 1 < indices.size(); ++i) triangle(indices[0], indices[i], indices[i + 1]);
+      }
+    }
+  }
+
+  const tinygltf::Model& model_;
+  PolygonSoup& soup_;
+  std::set<int> on_path_;  // the nodes from the scene's root to the one being read
+};
+
+}  // namespace
+
+PolygonSoup read_gltf(std::string_view bytes, const std::string& path) {
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(skip_image, nullptr);
+  tinygltf::Model model;
+  std::string error, warning;
+  const std::string folder = std::filesystem::path(path).parent_path().string();
+  const bool binary = bytes.substr(0, 4) == "glTF";
+  if (bytes.size() > std::numeric_limits<unsigned>::max()) throw InputError({path, 0, 0}, "too large for the glTF reader (4 GiB or more)");
+  const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &error, &warning, reinterpret_cast<const unsigned char*>(bytes.data()),
+                                                      unsigned(bytes.size()), folder)
+                         : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(), unsigned(bytes.size()), folder);
+  if (!ok) {
+    while (!error.empty() && (error.back() == '\n' || error.back() == ' ')) error.pop_back();
+    throw InputError({path, 0, 0}, std::string("not a valid ") + (binary ? "GLB" : "glTF") + " file: " +
+                                       (error.empty() ? "tinygltf could not read it" : error));
+  }
+  PolygonSoup soup;
+  soup.path = path;
+  soup.format = binary ? "glTF (binary .glb)" : "glTF";
+  GltfReader(model, soup).read();
+  return soup;
+}
+
+}  // namespace umbra

@@ -1,0 +1,189 @@
+// 3MF (3D Manufacturing Format), read with lib3mf: every item of the build,
+// each placed by its transform; an item that is a components object brings
+// its components, each with its own transform. Base-material colours become
+// the faces' materials.
+#include <cmath>
+#include <map>
+#include <set>
+
+#include <glm/mat4x4.hpp>
+
+#include <Model/COM/NMR_DLLInterfaces.h>
+
+#include "mesh/input_error.hpp"
+#include "mesh/io/mesh_readers.hpp"
+
+namespace umbra {
+namespace {
+
+using namespace NMR;
+
+// Releases a lib3mf object when it leaves scope.
+struct Held {
+  PLib3MFBase* object = nullptr;
+  ~Held() {
+    if (object) lib3mf_release(object);
+  }
+};
+
+// A 3MF transform acts on row vectors (p' = p M, M 4x3); lib3mf stores it as
+// fields[row][column] of the 3x4 matrix that acts on column vectors.
+glm::dmat4 to_glm(const MODELTRANSFORM& t) {
+  glm::dmat4 m(1.0);
+  for (int row = 0; row < 3; ++row)
+    for (int column = 0; column < 4; ++column) m[column][row] = t.m_fFields[row][column];
+  return m;
+}
+
+class ThreeMfReader {
+ public:
+  ThreeMfReader(PLib3MFModel* model, PolygonSoup& soup) : model_(model), soup_(soup) {}
+
+  void read() {
+    Held items;
+    check(lib3mf_model_getbuilditems(model_, &items.object), model_);
+    BOOL more = false;
+    while (check(lib3mf_builditemiterator_movenext(items.object, &more), items.object), more) {
+      Held item, object;
+      check(lib3mf_builditemiterator_getcurrent(items.object, &item.object), items.object);
+      check(lib3mf_builditem_getobjectresource(item.object, &object.object), item.object);
+      MODELTRANSFORM transform;
+      check(lib3mf_builditem_getobjecttransform(item.object, &transform), item.object);
+      add_object(object.object, to_glm(transform));
+    }
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& message) const { throw InputError({soup_.path, 0, 0}, message); }
+
+  // lib3mf's result, or its last error as an InputError.
+  bool check(LIB3MFRESULT result, PLib3MFBase* source) const {
+    if (result == LIB3MF_OK) return true;
+    DWORD code = 0;
+    LPCSTR message = nullptr;
+    lib3mf_getlasterror(source, &code, &message);
+    fail("lib3mf: " + std::string(message && *message ? message : "error " + std::to_string(result)));
+  }
+
+  DWORD resource_id(PLib3MFModelObjectResource* object) const {
+    DWORD id = 0;
+    check(lib3mf_resource_getresourceid(object, &id), object);
+    return id;
+  }
+
+  void add_object(PLib3MFModelObjectResource* object, const glm::dmat4& transform) {
+    const DWORD id = resource_id(object);
+    if (!on_path_.insert(id).second) fail("object " + std::to_string(id) + " contains itself: its components form a cycle");
+    BOOL is_mesh = false, is_components = false;
+    check(lib3mf_object_ismeshobject(object, &is_mesh), object);
+    check(lib3mf_object_iscomponentsobject(object, &is_components), object);
+    if (is_mesh) add_mesh(object, id, transform);
+    if (is_components) {
+      DWORD count = 0;
+      check(lib3mf_componentsobject_getcomponentcount(object, &count), object);
+      for (DWORD c = 0; c < count; ++c) {
+        Held component, part;
+        check(lib3mf_componentsobject_getcomponent(object, c, &component.object), object);
+        check(lib3mf_component_getobjectresource(component.object, &part.object),
+              component.object);
+        MODELTRANSFORM local;
+        check(lib3mf_component_gettransform(component.object, &local), component.object);
+        add_object(part.object, transform * to_glm(local));
+      }
+    }
+    on_path_.erase(id);
+  }
+
+  // The soup's material for base material `index` of group `group`, added when first used.
+  int material(DWORD group, DWORD index) {
+    const auto key = std::make_pair(group, index);
+    if (const auto it = materials_.find(key); it != materials_.end()) return it->second;
+    Held base;
+    if (lib3mf_model_getbasematerialbyid(model_, group, &base.object) != LIB3MF_OK)
+      return materials_[key] = -1;
+    BYTE r = 0, g = 0, b = 0, a = 0;
+    if (lib3mf_basematerial_getdisplaycolor(base.object, index, &r, &g, &b, &a) != LIB3MF_OK) return materials_[key] = -1;
+    SoupMaterial m;
+    char name[256] = {};
+    ULONG needed = 0;
+    if (lib3mf_basematerial_getnameutf8(base.object, index, name, sizeof name, &needed) == LIB3MF_OK) m.name = name;
+    m.diffuse = glm::dvec3(r, g, b) / 255.0;
+    soup_.materials.push_back(m);
+    return materials_[key] = int(soup_.materials.size() - 1);
+  }
+
+  void add_mesh(PLib3MFModelMeshObject* mesh, DWORD id, const glm::dmat4& transform) {
+    DWORD vertex_count = 0, triangle_count = 0;
+    check(lib3mf_meshobject_getvertexcount(mesh, &vertex_count), mesh);
+    check(lib3mf_meshobject_gettrianglecount(mesh, &triangle_count), mesh);
+    std::vector<MODELMESHVERTEX> vertices(vertex_count);
+    std::vector<MODELMESHTRIANGLE> triangles(triangle_count);
+    if (vertex_count) check(lib3mf_meshobject_getvertices(mesh, vertices.data(), vertex_count, nullptr), mesh);
+    if (triangle_count) check(lib3mf_meshobject_gettriangleindices(mesh, triangles.data(), triangle_count, nullptr), mesh);
+    const uint32_t first = uint32_t(soup_.points.size());
+    for (DWORD v = 0; v < vertex_count; ++v) {
+      const float* xyz = vertices[v].m_fPosition;
+      const glm::dvec3 p(transform * glm::dvec4(xyz[0], xyz[1], xyz[2], 1.0));
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        fail("object " + std::to_string(id) + " vertex " + std::to_string(v) + " has a coordinate that is not a finite number");
+      soup_.points.push_back(p);
+    }
+    // Each triangle's base material, when it has one.
+    Held properties;
+    check(lib3mf_meshobject_createpropertyhandler(mesh, &properties.object), mesh);
+    const bool mirrored = glm::determinant(glm::dmat3(transform)) < 0.0;
+    for (DWORD t = 0; t < triangle_count; ++t) {
+      DWORD a = triangles[t].m_nIndices[0], b = triangles[t].m_nIndices[1], c = triangles[t].m_nIndices[2];
+      if (a >= vertex_count || b >= vertex_count || c >= vertex_count)
+        fail("object " + std::to_string(id) + " triangle " + std::to_string(t) + " refers to a vertex it does not have");
+      if (mirrored) std::swap(b, c);  // a mirroring transform turns the winding round
+      soup_.corners.insert(soup_.corners.end(), {first + a, first + b, first + c});
+      soup_.end_polygon(0);
+      eModelPropertyType type = MODELPROPERTYTYPE_NONE;
+      DWORD group = 0, index = 0;
+      const bool based = lib3mf_propertyhandler_getpropertytype(properties.object, t, &type) == LIB3MF_OK &&
+                         type == MODELPROPERTYTYPE_BASEMATERIALS &&
+                         lib3mf_propertyhandler_getbasematerial(properties.object, t, &group, &index) == LIB3MF_OK;
+      soup_.polygon_materials.push_back(based ? material(group, index) : -1);
+    }
+  }
+
+  PLib3MFModel* model_;
+  PolygonSoup& soup_;
+  std::set<DWORD> on_path_;  // the objects from the build item to the one being read
+  std::map<std::pair<DWORD, DWORD>, int> materials_;
+};
+
+}  // namespace
+
+PolygonSoup read_3mf(std::string_view bytes, const std::string& path) {
+  Held model, reader;
+  if (lib3mf_createmodel(&model.object) != LIB3MF_OK)
+    throw InputError({path, 0, 0}, "lib3mf could not start");
+  if (lib3mf_model_queryreader(model.object, "3mf", &reader.object) != LIB3MF_OK)
+    throw InputError({path, 0, 0}, "lib3mf has no 3MF reader");
+  // lib3mf reads from a buffer it does not write to, whatever its signature says.
+  std::vector<BYTE> copy(bytes.begin(), bytes.end());
+  if (lib3mf_reader_readfrombuffer(reader.object, copy.data(), copy.size()) != LIB3MF_OK) {
+    DWORD code = 0;
+    LPCSTR message = nullptr;
+    lib3mf_getlasterror(reader.object, &code, &message);
+    throw InputError({path, 0, 0}, "not a valid 3MF file: " + std::string(message && *message ? message : "lib3mf could not read it"));
+  }
+  PolygonSoup soup;
+  soup.path = path;
+  soup.format = "3MF";
+  DWORD warnings = 0;
+  lib3mf_reader_getwarningcount(reader.object, &warnings);
+  for (DWORD w = 0; w < warnings && w < 10; ++w) {
+    char text[512] = {};
+    DWORD code = 0;
+    ULONG needed = 0;
+    if (lib3mf_reader_getwarningutf8(reader.object, w, &code, text, sizeof text, &needed) == LIB3MF_OK)
+      soup.warn(0, std::string("lib3mf: ") + text);
+  }
+  ThreeMfReader(model.object, soup).read();
+  return soup;
+}
+
+}  // namespace umbra
