@@ -19,7 +19,7 @@ int material_of(const Scene& scene, int object) {
   if (o < first + scene.triangles.size()) return scene.triangles[o - first].material;
   first += scene.triangles.size();
   for (const Mesh& m : scene.meshes) {
-    if (o < first + m.triangles.size()) return m.material;
+    if (o < first + m.triangles.size()) return m.material_of(o - first);
     first += m.triangles.size();
   }
   return 0;

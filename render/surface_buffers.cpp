@@ -1,6 +1,7 @@
 #include "render/surface_buffers.hpp"
 
 #include <algorithm>
+#include <map>
 
 #include <glm/geometric.hpp>
 #include <glm/vector_relational.hpp>
@@ -13,20 +14,30 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
   // The scene's triangles and every mesh's, grouped by material and by
   // whether they belong to a closed mesh, one draw call per group; flat
   // normals, as the shadows are flat-faced.
-  // Sorted as runs (a scene triangle, or a whole mesh) rather than triangle by
-  // triangle: a million-triangle mesh is one run, copied once.
+  // Sorted as runs (a scene triangle, a whole mesh, or a mesh's triangles of
+  // one material) rather than triangle by triangle: a million-triangle mesh
+  // is one run, copied once.
   struct Run {
     int material;
     const Mesh* closed_mesh;  // the closed mesh it is, if any
     const Triangle* triangle;  // a scene triangle, or
-    const Mesh* mesh;          // every triangle of a mesh
+    const Mesh* mesh;          // a mesh's triangles: all, or
+    const std::vector<uint32_t>* subset;  // those of one material, when the file gives its faces materials
   };
   std::vector<Run> runs;
+  std::vector<std::map<int, std::vector<uint32_t>>> by_material(scene.meshes.size());
   size_t triangle_count = scene.triangles.size();
-  for (const Triangle& t : scene.triangles) runs.push_back({t.material, nullptr, &t, nullptr});
-  for (const Mesh& mesh : scene.meshes) {
-    runs.push_back({mesh.material, mesh.components.all_closed() ? &mesh : nullptr, nullptr, &mesh});
+  for (const Triangle& t : scene.triangles) runs.push_back({t.material, nullptr, &t, nullptr, nullptr});
+  for (size_t k = 0; k < scene.meshes.size(); ++k) {
+    const Mesh& mesh = scene.meshes[k];
+    const Mesh* closed = mesh.components.all_closed() ? &mesh : nullptr;
     triangle_count += mesh.triangles.size();
+    if (mesh.triangle_materials.empty()) {
+      runs.push_back({mesh.material, closed, nullptr, &mesh, nullptr});
+      continue;
+    }
+    for (uint32_t t = 0; t < mesh.triangles.size(); ++t) by_material[k][mesh.triangle_materials[t]].push_back(t);
+    for (const auto& [material, triangles] : by_material[k]) runs.push_back({material, closed, nullptr, &mesh, &triangles});
   }
   std::stable_sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) {
     return a.material != b.material ? a.material < b.material : (a.closed_mesh != nullptr) < (b.closed_mesh != nullptr);
@@ -52,8 +63,14 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
       continue;
     }
     const std::vector<glm::dvec3>& p = run.mesh->positions;
-    for (const auto& t : run.mesh->triangles) add(p[t[0]], p[t[1]], p[t[2]]);
-    group.vertex_count += 3 * int(run.mesh->triangles.size());
+    const auto& triangles = run.mesh->triangles;
+    if (run.subset) {
+      for (uint32_t t : *run.subset) add(p[triangles[t][0]], p[triangles[t][1]], p[triangles[t][2]]);
+      group.vertex_count += 3 * int(run.subset->size());
+      continue;
+    }
+    for (const auto& t : triangles) add(p[t[0]], p[t[1]], p[t[2]]);
+    group.vertex_count += 3 * int(triangles.size());
   }
   glGenVertexArrays(1, &triangle_vao_);
   glGenBuffers(1, &triangle_vbo_);

@@ -178,6 +178,11 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   analysis.positions = std::move(merged.positions);
   analysis.triangles = std::move(triangles.triangles);
   analysis.triangle_face = std::move(triangles.face);
+  if (!soup.polygon_materials.empty()) {
+    analysis.materials = soup.materials;
+    analysis.triangle_materials.reserve(analysis.triangle_face.size());
+    for (uint32_t f : analysis.triangle_face) analysis.triangle_materials.push_back(soup.polygon_material(f));
+  }
   return analysis;
 }
 

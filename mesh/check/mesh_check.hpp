@@ -26,6 +26,10 @@ struct MeshAnalysis {
   std::vector<glm::dvec3> positions;
   std::vector<std::array<uint32_t, 3>> triangles;
   std::vector<uint32_t> triangle_face;  // the file's face each triangle comes from
+  // The file's own materials, when its faces have any: one index into
+  // `materials` per triangle, -1 for a face the file gives none.
+  std::vector<SoupMaterial> materials;
+  std::vector<int> triangle_materials;
 };
 
 MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options = {});

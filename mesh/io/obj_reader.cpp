@@ -1,11 +1,19 @@
 // Wavefront OBJ: `v x y z [w]` points and `f i j k ...` polygons whose corners
 // are `v`, `v/vt`, `v//vn` or `v/vt/vn`, counted from 1, or from the end when
-// negative. Texture coordinates, normals, groups and materials are skipped:
-// a check needs only positions and faces.
+// negative; `usemtl` gives the faces after it a material of the `mtllib`
+// files beside the OBJ (Kd, Ks, Ns). Texture coordinates, normals, groups and
+// texture maps are skipped.
+#include <algorithm>
 #include <charconv>
 #include <cstring>
+#include <filesystem>
 #include <limits>
+#include <map>
+#include <set>
 
+#include <glm/common.hpp>
+
+#include "mesh/io/mapped_file.hpp"
 #include "mesh/io/mesh_readers.hpp"
 #include "mesh/io/text_scanner.hpp"
 
@@ -44,6 +52,48 @@ std::pair<size_t, size_t> vertex_and_face_lines(std::string_view text) {
   return {vertices, faces};
 }
 
+// The rest of the line without the blanks round it: a material's name may hold spaces.
+std::string rest_as_name(const TextScanner& scanner) {
+  std::string_view rest = scanner.rest_of_line();
+  const size_t first = rest.find_first_not_of(" \t"), last = rest.find_last_not_of(" \t");
+  return first == std::string_view::npos ? "" : std::string(rest.substr(first, last - first + 1));
+}
+
+// The materials of one .mtl file (Wavefront's material library) into `soup`,
+// by name into `named`. Kd, Ks and Ns are kept; texture maps are noted once.
+void read_material_library(const std::string& path, int line, PolygonSoup& soup, std::map<std::string, int>& named) {
+  std::error_code exists_error;
+  if (!std::filesystem::is_regular_file(path, exists_error)) {
+    soup.warn(line, "material library \"" + path + "\" not found: its materials are left out");
+    return;
+  }
+  const MappedFile file(path);
+  TextScanner scanner(file.bytes(), path);
+  SoupMaterial* current = nullptr;
+  bool noted_maps = false;
+  while (scanner.next_line()) {
+    const std::string_view keyword = scanner.field();
+    if (keyword == "newmtl") {
+      const std::string name = rest_as_name(scanner);
+      soup.materials.push_back({name});
+      named[name] = int(soup.materials.size() - 1);
+      current = &soup.materials.back();
+    } else if (current && (keyword == "Kd" || keyword == "Ks")) {
+      glm::dvec3 rgb;
+      rgb.r = scanner.number("red");
+      // "Kd r" alone means grey r (the format allows g and b to be left out).
+      rgb.g = scanner.at_line_end() ? rgb.r : scanner.number("green");
+      rgb.b = scanner.at_line_end() ? rgb.g : scanner.number("blue");
+      (keyword == "Kd" ? current->diffuse : current->specular) = glm::clamp(rgb, 0.0, 1.0);
+    } else if (current && keyword == "Ns") {
+      current->shininess = std::max(0.0, scanner.number("shininess"));
+    } else if (!noted_maps && keyword.substr(0, 4) == "map_") {
+      soup.warn(line, "the materials' texture maps are ignored: faces take each material's Kd colour");
+      noted_maps = true;
+    }
+  }
+}
+
 }  // namespace
 
 PolygonSoup read_obj(std::string_view text, const std::string& path) {
@@ -57,11 +107,24 @@ PolygonSoup read_obj(std::string_view text, const std::string& path) {
   soup.polygon_starts.reserve(face_lines + 1);
   soup.polygon_lines.reserve(face_lines);
   TextScanner scanner(text, path);
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  std::map<std::string, int> materials;  // by name
+  std::set<std::string> missing;         // used but defined nowhere: said once each
+  int material = -1;                     // of the faces that follow
   while (scanner.next_line()) {
     const std::string_view keyword = scanner.field();
     if (keyword == "v") {
       const glm::dvec3 p = scanner.vertex();
       soup.add_point(p, scanner.line_number());
+    } else if (keyword == "mtllib") {
+      for (std::string_view name = scanner.field(); !name.empty(); name = scanner.field())
+        read_material_library((folder / std::string(name)).lexically_normal().string(), scanner.line_number(), soup, materials);
+    } else if (keyword == "usemtl") {
+      const std::string name = rest_as_name(scanner);
+      const auto it = materials.find(name);
+      material = it == materials.end() ? -1 : it->second;
+      if (it == materials.end() && missing.insert(name).second)
+        soup.warn(scanner.line_number(), "material " + quote_field(name) + " is in no material library: its faces keep the scene's material");
     } else if (keyword == "f") {
       uint32_t corners = 0;
       for (std::string_view corner = scanner.field(); !corner.empty(); corner = scanner.field()) {
@@ -70,6 +133,9 @@ PolygonSoup read_obj(std::string_view text, const std::string& path) {
       }
       if (corners < 3) scanner.fail_at_line("a face needs at least 3 vertices, this one has " + std::to_string(corners));
       soup.end_polygon(scanner.line_number());
+      // Per-face materials from the first face that has one (the faces before it have none).
+      if (material >= 0 && soup.polygon_materials.size() + 1 < soup.polygon_count()) soup.polygon_materials.assign(soup.polygon_count() - 1, -1);
+      if (material >= 0 || !soup.polygon_materials.empty()) soup.polygon_materials.push_back(material);
     }
   }
   return soup;

@@ -52,7 +52,11 @@ struct Triangle {
 // multiplicity).
 struct Mesh {
   std::string path;  // as resolved against the scene file's folder
-  int material = 0;
+  int material = 0;  // the statement's (or the default), for faces the file gives no material
+  bool material_given = false;  // the statement names one: it overrides the file's own
+  // Per triangle, an index into Scene::materials, where the file gives its
+  // faces materials (OBJ's usemtl, glTF, 3MF); empty when every face takes `material`.
+  std::vector<int> triangle_materials;
   double scale = 1.0;
   glm::dvec3 rotation_axis{0.0, 0.0, 1.0};
   double rotation_deg = 0.0;
@@ -65,6 +69,8 @@ struct Mesh {
   EdgeTable edges;               // of `triangles`
   ClosedComponents components;   // of `triangles`
   MeshReport report;  // the file's topology as `umbra check` reports it, without the self-intersection search
+
+  int material_of(size_t triangle) const { return triangle_materials.empty() ? material : triangle_materials[triangle]; }
 };
 
 struct Camera {

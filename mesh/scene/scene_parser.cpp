@@ -140,6 +140,7 @@ class SceneBuilder {
   struct PendingMesh {
     Mesh mesh;
     FileLoc path_at;
+    std::vector<SoupMaterial> file_materials;  // the file's own, which triangle_materials index until placed in the scene
   };
 
  public:
@@ -256,6 +257,7 @@ class SceneBuilder {
     while (auto k = r.keyword_of("mesh", {"material", "scale", "rotate", "translate"})) {
       if (*k == "material") {
         m.material = material_named(r);
+        m.material_given = true;
       } else if (*k == "scale") {
         const FileLoc at = r.next_loc();
         m.scale = r.number("mesh scale");
@@ -269,7 +271,7 @@ class SceneBuilder {
         m.translation = r.vec3("mesh translation");
       }
     }
-    pending_meshes_.push_back({std::move(m), path_at});
+    pending_meshes_.push_back({std::move(m), path_at, {}});
   }
 
   // Reads every mesh file once the whole scene has parsed, so that a typo
@@ -297,12 +299,39 @@ class SceneBuilder {
     for (size_t k = 0; k < pending_meshes_.size(); ++k) {
       if (errors[k]) std::rethrow_exception(errors[k]);
       Mesh& m = pending_meshes_[k].mesh;
+      for (const ReadWarning& w : m.report.warnings) {
+        if (w.line > 0) warn({m.path, w.line, 0}, w.message);
+        else warn(m.where, "mesh " + in_quotes(written[k]) + ": " + w.message);
+      }
+      place_file_materials(pending_meshes_[k], written[k]);
       if (m.triangles.empty())
         warn(m.where, "mesh " + in_quotes(written[k]) + " has no faces: it casts no shadow");
       else if (!m.components.all_closed())
         warn(m.where, "mesh " + in_quotes(written[k]) + " is " + m.components.phrase() + ": " + m.components.volume_phrase());
       scene_.meshes.push_back(std::move(m));
     }
+  }
+
+  // The file's own materials join the scene's, named "FILE:NAME", unless the
+  // statement names a material, which then covers every face. A face the
+  // file gives no material takes the statement's (or the default).
+  void place_file_materials(PendingMesh& pending, const std::string& written) {
+    Mesh& m = pending.mesh;
+    if (m.material_given || pending.file_materials.empty()) {
+      m.triangle_materials.clear();
+      return;
+    }
+    const int first = int(scene_.materials.size());
+    for (const SoupMaterial& f : pending.file_materials) {
+      Material material;
+      material.name = written + ":" + f.name;
+      material.ambient = f.diffuse;  // as a surface reflects diffuse light, so ambient light
+      material.diffuse = f.diffuse;
+      material.specular = f.specular;
+      material.shininess = f.shininess;
+      scene_.materials.push_back(material);
+    }
+    for (int& t : m.triangle_materials) t = t < 0 ? m.material : first + t;
   }
 
   // Reads, checks and places one mesh; throws its located InputError.
@@ -332,6 +361,8 @@ class SceneBuilder {
     }
     m.triangles = std::move(analysis.triangles);
     m.report = std::move(analysis.report);
+    m.triangle_materials = std::move(analysis.triangle_materials);
+    pending.file_materials = std::move(analysis.materials);
     m.edges = build_edge_table(m.triangles, m.positions.size());
     m.components = find_closed_components(m.triangles, m.edges, m.positions.size());
   }

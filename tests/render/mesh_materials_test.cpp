@@ -1,0 +1,160 @@
+// A mesh file's own materials (OBJ's mtllib and usemtl, glTF's base colour,
+// 3MF's base materials) in the image: each face drawn in its material, by
+// the GL renderer and the ray-cast reference alike.
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "mesh/scene/camera_transform.hpp"
+#include "mesh/scene/scene_parser.hpp"
+#include "reference/ray_cast.hpp"
+#include "reference/ray_cast_render.hpp"
+#include "render/headless_context.hpp"
+#include "render/shadow_renderer.hpp"
+#include "tests/mesh/interchange_writers.hpp"
+#include "tests/mesh/mesh_builders.hpp"
+
+namespace umbra {
+namespace {
+
+class MeshMaterials : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    folder_ = std::filesystem::temp_directory_path() /
+              ("umbra-materials-" + std::to_string(::getpid()) + "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::create_directories(folder_);
+  }
+  void TearDown() override { std::filesystem::remove_all(folder_); }
+
+  std::string write(const std::string& name, const std::string& bytes) {
+    const std::string path = (folder_ / name).string();
+    std::ofstream(path, std::ios::binary) << bytes;
+    return path;
+  }
+
+  // The floor z = -0.5 as two squares, x < 0 (face 0) and x > 0 (face 1), with a
+  // box above it to cast a shadow onto both.
+  static PolygonSoup floor_of_two_squares() {
+    return test::make_soup({{-1, -1, -0.5}, {0, -1, -0.5}, {0, 1, -0.5}, {-1, 1, -0.5}, {1, -1, -0.5}, {1, 1, -0.5}},
+                           {{0, 1, 2}, {0, 2, 3}, {1, 4, 5}, {1, 5, 2}});
+  }
+
+  Scene scene_with(const std::string& mesh_line) {
+    return parse_scene_text("light 0.3 0.2 3\nmaterial grey diffuse 0.5 0.5 0.5\n" + mesh_line +
+                                "\nsphere 0 0 0 0.25 material grey\n",
+                            (folder_ / "t.scene").string());
+  }
+
+  std::filesystem::path folder_;
+};
+
+struct Rendered {
+  Image gl, cpu;
+};
+
+Rendered render_both(const Scene& scene, RenderMethod method = RenderMethod::kAuto) {
+  RenderSettings settings;
+  settings.method = method;
+  settings.width = settings.height = 80;
+  const RenderPlan plan = make_render_plan(scene, settings);
+  HeadlessContext context(settings.width, settings.height);
+  ShadowRenderer renderer(scene, plan);
+  return {renderer.render_image(false), ray_cast_frame(scene, 80, 80).image};
+}
+
+// Every pixel whose footprint sees one object throughout: the GL and ray-cast
+// images agree to one level in 255.
+void expect_images_agree(const Scene& scene, const Rendered& r) {
+  const auto object_at = [&](double x, double y) {
+    const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, 80, 80, x, y));
+    return hit ? hit->object : -1;
+  };
+  int differing = 0;
+  for (int y = 0; y < 80; ++y)
+    for (int x = 0; x < 80; ++x) {
+      const int object = object_at(x, y);
+      bool straddles = false;
+      for (const double dx : {-0.5, 0.5})
+        for (const double dy : {-0.5, 0.5}) straddles = straddles || object_at(x + dx, y + dy) != object;
+      if (straddles) continue;
+      for (int c = 0; c < 3; ++c) differing += std::abs(int(r.gl.at(x, y, c)) - int(r.cpu.at(x, y, c))) > 1;
+    }
+  EXPECT_EQ(differing, 0);
+}
+
+// The floor spans pixels 15 to 65 of 80 each way: at x = 20 it is red (no
+// green or blue), at x = 60 blue, on two rows (y = 20 and 60),
+// both rows clear of the sphere's shadow.
+void expect_red_left_blue_right(const Image& image) {
+  for (const int y : {20, 60}) {
+    EXPECT_GT(image.at(20, y, 0), 30) << "y " << y;
+    EXPECT_EQ(image.at(20, y, 1), 0) << "y " << y;
+    EXPECT_EQ(image.at(20, y, 2), 0) << "y " << y;
+    EXPECT_GT(image.at(60, y, 2), image.at(60, y, 0) + 30) << "y " << y;  // blue, with a white highlight (Ks)
+  }
+}
+
+TEST_F(MeshMaterials, ObjUsemtlColoursEachFaceInBothRenderers) {
+  write("floor.mtl", "# two colours\nnewmtl red paint\nKa 0 0 0\nKd 1 0 0\n\nnewmtl blue\nKd 0 0 1\nKs 0.5 0.5 0.5\nNs 20\nmap_Kd blue.png\n");
+  const PolygonSoup floor = floor_of_two_squares();
+  std::string obj = "mtllib floor.mtl\n" + test::obj_text(floor);
+  obj.insert(obj.find("f "), "usemtl red paint\n");
+  obj.insert(obj.find("f 2 5"), "usemtl blue\n");
+  write("floor.obj", obj);
+  const Scene scene = scene_with("mesh floor.obj");
+  ASSERT_EQ(scene.materials.size(), 4u);  // default, grey, and the file's two
+  EXPECT_EQ(scene.materials[2].name, "floor.obj:red paint");
+  EXPECT_EQ(scene.materials[3].specular, glm::dvec3(0.5));
+  EXPECT_EQ(scene.meshes[0].triangle_materials, (std::vector<int>{2, 2, 3, 3}));
+  ASSERT_EQ(scene.warnings.size(), 2u);  // and that the floor is open
+  EXPECT_EQ(scene.warnings[0].message, "the materials' texture maps are ignored: faces take each material's Kd colour");
+  const Rendered r = render_both(scene);
+  expect_red_left_blue_right(r.gl);
+  expect_red_left_blue_right(r.cpu);
+  expect_images_agree(scene, r);
+  for (const RenderMethod method : {RenderMethod::kShadowMap, RenderMethod::kPlanar, RenderMethod::kTriangles})
+    expect_red_left_blue_right(render_both(scene, method).gl);
+}
+
+TEST_F(MeshMaterials, AMaterialNamedInTheSceneCoversTheFilesOwn) {
+  write("floor.mtl", "newmtl red\nKd 1 0 0\n");
+  std::string obj = "mtllib floor.mtl\nusemtl red\n" + test::obj_text(floor_of_two_squares());
+  write("floor.obj", obj);
+  const Scene scene = scene_with("mesh floor.obj material grey");
+  EXPECT_EQ(scene.materials.size(), 2u);
+  EXPECT_TRUE(scene.meshes[0].triangle_materials.empty());
+  EXPECT_EQ(scene.meshes[0].material, 1);
+}
+
+TEST_F(MeshMaterials, MissingLibrariesAndNamesAreSaidOnce) {
+  std::string obj = "mtllib gone.mtl\nusemtl red\n" + test::obj_text(floor_of_two_squares());
+  write("floor.obj", obj);
+  const Scene scene = scene_with("mesh floor.obj");
+  ASSERT_EQ(scene.warnings.size(), 3u);  // and that the floor is open
+  EXPECT_EQ(scene.warnings[0].where.line, 1);
+  EXPECT_EQ(scene.warnings[0].message, "material library \"" + (folder_ / "gone.mtl").string() + "\" not found: its materials are left out");
+  EXPECT_EQ(scene.warnings[1].message, "material \"red\" is in no material library: its faces keep the scene's material");
+}
+
+TEST_F(MeshMaterials, GltfAndThreeMfColoursReachTheImage) {
+  const PolygonSoup floor = floor_of_two_squares();
+  // glTF: one primitive in red; 3MF: base material "blue" on every face.
+  write("floor.gltf", test::gltf_json(floor, test::gltf_buffer(floor), {}));
+  const Scene gltf = scene_with("mesh floor.gltf");
+  const Rendered g = render_both(gltf);
+  EXPECT_GT(g.gl.at(60, 20, 0), 30);
+  EXPECT_EQ(g.gl.at(60, 20, 2), 0);
+  expect_images_agree(gltf, g);
+  write("floor.3mf", test::threemf(R"(<basematerials id="1"><base name="blue" displaycolor="#0000FF"/></basematerials>)" +
+                                       test::threemf_object(2, floor, 0),
+                                   R"(<item objectid="2"/>)"));
+  const Scene three = scene_with("mesh floor.3mf");
+  const Rendered t = render_both(three);
+  EXPECT_EQ(t.gl.at(20, 20, 0), 0);
+  EXPECT_GT(t.gl.at(20, 20, 2), 30);
+  expect_images_agree(three, t);
+}
+
+}  // namespace
+}  // namespace umbra
