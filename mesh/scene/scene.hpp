@@ -46,7 +46,7 @@ struct Triangle {
 };
 
 // A `mesh` statement with its file loaded: the triangles in scene coordinates
-// (scale, then rotate, then translate), merged, consistently oriented where
+// (fit, then scale, then rotate, then translate), merged, consistently oriented where
 // the mesh allows, with their edges and which components are closed
 // 2-manifolds (those cast their shadow from a silhouette, the rest by edge
 // multiplicity).
@@ -57,6 +57,7 @@ struct Mesh {
   // Per triangle, an index into Scene::materials, where the file gives its
   // faces materials (OBJ's usemtl, glTF, 3MF); empty when every face takes `material`.
   std::vector<int> triangle_materials;
+  bool fit = false;  // centred and scaled so that its box's longest side spans the cube, before the rest
   double scale = 1.0;
   glm::dvec3 rotation_axis{0.0, 0.0, 1.0};
   double rotation_deg = 0.0;

@@ -254,8 +254,10 @@ class SceneBuilder {
     m.where = r.statement_loc();
     const FileLoc path_at = r.next_loc();
     m.path = r.word("a mesh file path");
-    while (auto k = r.keyword_of("mesh", {"material", "scale", "rotate", "translate"})) {
-      if (*k == "material") {
+    while (auto k = r.keyword_of("mesh", {"material", "fit", "scale", "rotate", "translate"})) {
+      if (*k == "fit") {
+        m.fit = true;
+      } else if (*k == "material") {
         m.material = material_named(r);
         m.material_given = true;
       } else if (*k == "scale") {
@@ -306,10 +308,24 @@ class SceneBuilder {
       place_file_materials(pending_meshes_[k], written[k]);
       if (m.triangles.empty())
         warn(m.where, "mesh " + in_quotes(written[k]) + " has no faces: it casts no shadow");
+      else if (outside_the_cube(m))
+        warn(m.where, "mesh " + in_quotes(written[k]) + " reaches outside the cube [-1,1]^3 that scenes are made for (its box is " +
+                          box_text(m.bounds_min, m.bounds_max) + (m.fit ? ")" : "; \"fit\" scales it into the cube)"));
       else if (!m.components.all_closed())
         warn(m.where, "mesh " + in_quotes(written[k]) + " is " + m.components.phrase() + ": " + m.components.volume_phrase());
       scene_.meshes.push_back(std::move(m));
     }
+  }
+
+  // Beyond the cube by more than fitting's rounding.
+  static bool outside_the_cube(const Mesh& m) {
+    constexpr double kRounding = 1e-9;
+    return glm::any(glm::greaterThan(glm::max(glm::abs(m.bounds_min), glm::abs(m.bounds_max)), glm::dvec3(1.0 + kRounding)));
+  }
+
+  static std::string box_text(const glm::dvec3& lo, const glm::dvec3& hi) {
+    const auto point = [](const glm::dvec3& p) { return "(" + format(p.x) + ", " + format(p.y) + ", " + format(p.z) + ")"; };
+    return point(lo) + " to " + point(hi);
   }
 
   // The file's own materials join the scene's, named "FILE:NAME", unless the
@@ -347,11 +363,22 @@ class SceneBuilder {
         throw InputError(pending.path_at, "mesh file " + in_quotes(m.path) + ": " + e.message());
       throw InputError(e.where(), e.message() + " (in the mesh of " + m.where.str() + ")");
     }
-    // Scale, then rotate, then translate (scene-format.md); a positive scale
-    // and a rotation keep the faces' orientation.
+    // Fit, then scale, then rotate, then translate (scene-format.md); a
+    // positive scale and a rotation keep the faces' orientation.
+    glm::dvec3 fit_centre(0.0);
+    double fit_scale = 1.0;
+    if (m.fit && !analysis.positions.empty()) {
+      glm::dvec3 lo = analysis.positions[0], hi = lo;
+      for (const glm::dvec3& p : analysis.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+      const double longest = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+      if (!(longest > 0.0)) throw InputError(pending.path_at, "mesh file " + in_quotes(m.path) + " has no extent to fit: all its points coincide");
+      fit_centre = (lo + hi) / 2.0;
+      fit_scale = 2.0 / longest;
+    }
     const glm::dmat3 rotation(glm::rotate(glm::dmat4(1.0), glm::radians(m.rotation_deg), glm::normalize(m.rotation_axis)));
     m.positions.reserve(analysis.positions.size());
-    for (const glm::dvec3& p : analysis.positions) m.positions.push_back(rotation * (m.scale * p) + m.translation);
+    for (const glm::dvec3& p : analysis.positions)
+      m.positions.push_back(rotation * (m.scale * fit_scale * (p - fit_centre)) + m.translation);
     if (!m.positions.empty()) {
       m.bounds_min = m.bounds_max = m.positions[0];
       for (const glm::dvec3& p : m.positions) {

@@ -193,7 +193,32 @@ TEST_F(SceneMeshes, MeshIsLoadedRelativeToTheSceneAndTransformedScaleRotateTrans
   EXPECT_NEAR(m.positions[1].z, 3.0, 1e-15);
   EXPECT_EQ(m.triangles.size(), 4u);
   EXPECT_TRUE(m.components.all_closed());
-  EXPECT_TRUE(scene.warnings.empty());
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  EXPECT_EQ(scene.warnings[0].message,
+            "mesh \"parts/tet.obj\" reaches outside the cube [-1,1]^3 that scenes are made for (its box is (-1, 2, 3) to (1, 4, 5); "
+            "\"fit\" scales it into the cube)");
+}
+
+TEST_F(SceneMeshes, FitCentresTheBoxAndScalesItsLongestSideToTheCubeBeforeTheRest) {
+  // A box from (10, 0, 0) to (20, 5, 2), as an engine part at its native size.
+  write("part.obj", "v 10 0 0\nv 20 0 0\nv 10 5 0\nv 10 0 2\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+  const Mesh fitted = parse("light 0 0 5\nmesh part.obj fit\n").meshes[0];
+  EXPECT_EQ(fitted.bounds_min, glm::dvec3(-1, -0.5, -0.2));
+  EXPECT_EQ(fitted.bounds_max, glm::dvec3(1, 0.5, 0.2));
+  // Then scale, rotate and translate, whatever their order on the line.
+  const Scene moved = parse("light 0 0 5\nmesh part.obj translate 0 0 0.5 scale 0.5 rotate 0 0 1 90 fit\n");
+  EXPECT_NEAR(moved.meshes[0].bounds_min.x, -0.25, 1e-15);
+  EXPECT_NEAR(moved.meshes[0].bounds_max.y, 0.5, 1e-15);
+  EXPECT_NEAR(moved.meshes[0].bounds_min.z, 0.4, 1e-15);
+  EXPECT_TRUE(moved.warnings.empty());
+  // Fitted and then moved out of the cube, it still warns (without the advice to fit).
+  const Scene out = parse("light 0 0 5\nmesh part.obj fit translate 0.5 0 0\n");
+  ASSERT_EQ(out.warnings.size(), 1u);
+  EXPECT_EQ(out.warnings[0].message,
+            "mesh \"part.obj\" reaches outside the cube [-1,1]^3 that scenes are made for (its box is (-0.5, -0.5, -0.2) to (1.5, 0.5, 0.2))");
+  write("point.obj", "v 1 1 1\nv 1 1 1\nv 1 1 1\nf 1 2 3\n");
+  EXPECT_EQ(error("light 0 0 5\nmesh point.obj fit\n"),
+            folder_ + "s.scene:2:6: mesh file \"" + folder_ + "point.obj\" has no extent to fit: all its points coincide");
 }
 
 TEST_F(SceneMeshes, OpenMeshGetsAWarningThatSaysHowItCastsItsShadow) {
@@ -224,12 +249,13 @@ TEST_F(SceneMeshes, ManyMeshesLoadTogetherInFileOrderAndTheFirstBrokenOneIsRepor
   write("bad1.obj", "v 0 0 0\nv 1 0 nan\n");
   write("bad2.obj", "v 0 0 0\nv 1 0 inf\n");
   std::string text = "light 0 0 5\n";
-  for (int k = 0; k < 12; ++k) text += std::string(k % 3 == 1 ? "mesh open.obj" : "mesh tet.obj") + " translate " + std::to_string(k) + " 0 0\n";
+  for (int k = 0; k < 12; ++k)
+    text += std::string(k % 3 == 1 ? "mesh open.obj" : "mesh tet.obj") + " scale 0.05 translate " + std::to_string(k) + "e-2 0 0\n";
   const Scene scene = parse(text);
   ASSERT_EQ(scene.meshes.size(), 12u);
   for (int k = 0; k < 12; ++k) {
     EXPECT_EQ(scene.meshes[size_t(k)].where.line, k + 2);
-    EXPECT_EQ(scene.meshes[size_t(k)].positions[0].x, double(k));
+    EXPECT_EQ(scene.meshes[size_t(k)].positions[0].x, k / 100.0);
   }
   ASSERT_EQ(scene.warnings.size(), 4u);
   for (size_t w = 0; w < 4; ++w) EXPECT_EQ(scene.warnings[w].where.line, int(3 * w + 3));
