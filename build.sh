@@ -24,6 +24,7 @@ packages=(
   libgtest-dev python3               # tests (python3 reads the JSON that umbra check writes)
   libbenchmark-dev                   # bench/silhouette_benchmark (Google Benchmark)
   libcgal-demo                       # CGAL's data meshes, for the tests
+  assimp-testmodels                  # exporters' real files (glTF, 3MF, OBJ, PLY, STL), for the tests
   admesh time bc                     # bench/check_benchmark.sh: the checker it compares with, timing
   clang libclang-rt-14-dev           # ./build.sh fuzz: libFuzzer
   gnuplot-nox                        # umbra bench --plot

@@ -6,6 +6,7 @@
 
 #include "mesh/scene/scene_checks.hpp"
 #include "mesh/scene/scene_parser.hpp"
+#include "mesh/scene/staged_scene.hpp"
 #include "render/headless_context.hpp"
 #include "image/image.hpp"
 #include "reference/ray_cast_render.hpp"
@@ -18,10 +19,15 @@ namespace umbra {
 
 const char* const kRenderUsage =
     R"(usage: umbra render SCENE -o OUT.png [options]
+       umbra render MESH -o OUT.png [options]
 
 Renders SCENE headless (OSMesa) with exact hard shadows from stencil shadow
 volumes (Crow 1977; Heidmann 1991) and writes OUT.png. The sources cited
 here are listed in docs/references.md.
+
+A mesh file (OBJ, OFF, PLY, STL, glTF or 3MF, told by its content) is shown
+on its own: fitted into the cube [-1,1]^3 over a floor, lit by one light;
+--explain prints that scene as text to save and edit.
 
 options:
   -o, --output OUT.png  the image to write (required)
@@ -60,7 +66,8 @@ options:
                         no surface is seen, 255 where the visible point faces
                         light 1 and is outside its shadow, 0 elsewhere
   --explain             print the render plan (camera, lights, each caster's
-                        volume, stencil method) to stdout
+                        volume, stencil method) to stdout, after the staged
+                        scene's text for a MESH
   -h, --help            show this help
 
 Errors in SCENE are printed as FILE:LINE:COL: message; nothing is written
@@ -99,7 +106,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   if (scenes.size() > 1) throw UsageError("one scene at a time (got \"" + scenes[0] + "\" and \"" + scenes[1] + "\")");
   if (!scenes.empty()) o.scene_path = scenes[0];
   if (o.help) return o;
-  if (o.scene_path.empty()) throw UsageError("no scene file given");
+  if (o.scene_path.empty()) throw UsageError("no scene or mesh file given");
   if (o.output.empty()) throw UsageError("no output image given (-o OUT.png)");
   if (o.mask && *o.mask == o.output) throw UsageError("--mask and -o name the same file");
   const RenderMethod m = o.settings.method;
@@ -117,10 +124,14 @@ int run_render_command(const std::vector<std::string>& argv) {
   try {
     // Loading, planning and drawing: three steps, the first per mesh file.
     std::optional<ProgressBar> progress(std::in_place, 3);
-    Scene scene = parse_scene_file(options.scene_path, [&](size_t loaded, size_t total, const std::string& path) {
+    std::string staged;
+    Scene scene = parse_scene_or_mesh_file(options.scene_path, [&](size_t loaded, size_t total, const std::string& path) {
       progress->update(0, "loading mesh " + std::to_string(loaded + 1) + " of " + std::to_string(total) + ": " + path);
-    });
+    }, &staged);
     progress->clear();
+    if (options.explain && !staged.empty())
+      std::cout << "staged scene for " << options.scene_path << " (save it as a .scene file beside the mesh to edit it):\n"
+                << staged << "\n";
     for (const Warning& w : scene.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
     progress->update(1, "planning shadow volumes");
     rotate_lights_about_z(scene, options.light_angle_deg);

@@ -14,6 +14,7 @@
 
 #include "mesh/scene/scene_checks.hpp"
 #include "mesh/scene/scene_parser.hpp"
+#include "mesh/scene/staged_scene.hpp"
 #include "image/image.hpp"
 #include "render/render_plan.hpp"
 #include "render/shadow_renderer.hpp"
@@ -26,10 +27,11 @@ namespace umbra {
 
 const char* const kViewUsage =
     R"(usage: umbra view SCENE [options]
+       umbra view MESH [options]
 
 Opens SCENE in a window and renders it as `umbra render` does, with the light
-orbiting the z axis. The scene is reloaded when its
-file changes; an error keeps the last good scene and shows in the window and
+orbiting the z axis. A mesh file is staged on its own as `umbra render MESH`
+stages it. The scene (or mesh) is reloaded when its file changes; an error keeps the last good scene and shows in the window and
 on the terminal. An overlay shows the method, the frame time, the volume
 sizes and the keys.
 
@@ -98,7 +100,7 @@ ViewOptions parse_view_options(const std::vector<std::string>& argv) {
   if (scenes.size() > 1) throw UsageError("one scene at a time (got \"" + scenes[0] + "\" and \"" + scenes[1] + "\")");
   if (!scenes.empty()) o.scene_path = scenes[0];
   if (o.help) return o;
-  if (o.scene_path.empty()) throw UsageError("no scene file given");
+  if (o.scene_path.empty()) throw UsageError("no scene or mesh file given");
   if (o.screenshot && o.frames == 0) throw UsageError("--screenshot needs --frames N");
   if (o.settings.method == RenderMethod::kRaycast)
     throw UsageError("--method raycast is not interactive; use umbra render --method raycast");
@@ -189,7 +191,7 @@ int run_view_command(const std::vector<std::string>& argv) {
   // Lights are checked at `angle`, where the next frame will draw them.
   const auto load = [&](double angle) {
     std::optional<ProgressBar> progress(std::in_place, 2);  // loading, then preparing the shadows
-    Scene parsed = parse_scene_file(options.scene_path, [&](size_t loaded, size_t total, const std::string& path) {
+    Scene parsed = parse_scene_or_mesh_file(options.scene_path, [&](size_t loaded, size_t total, const std::string& path) {
       progress->update(0, "loading mesh " + std::to_string(loaded + 1) + " of " + std::to_string(total) + ": " + path);
     });
     progress->clear();

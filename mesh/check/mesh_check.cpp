@@ -59,6 +59,7 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   if (soup.corners.size() >= (size_t(1) << 31))
     throw InputError({soup.path, 0, 0}, "too large to check: more than 2^31 face corners");
   if (has_revisiting_polygons(soup)) {
+    // Faces are counted and numbered as split (the warning says how).
     PolygonSoup split = split_revisiting_polygons(soup);
     return analyse(split, &split, options);
   }

@@ -66,7 +66,7 @@ struct MeshReport {
   std::string path;
   std::string format;
   size_t file_vertices = 0;
-  size_t file_faces = 0;
+  size_t file_faces = 0;          // as read: a polygon that revisits a vertex counts as the triangles it is split into (warnings say so)
   size_t triangles = 0;           // after triangulating polygons
   size_t vertices = 0;            // distinct positions used by a face
   size_t merged_vertices = 0;     // points that repeat an earlier point's coordinates

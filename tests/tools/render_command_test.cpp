@@ -36,6 +36,28 @@ TEST_F(RenderCommand, WritesImageAndMaskOfTheRequestedSize) {
   EXPECT_EQ(r.out, "wrote " + path("a.png") + " (64x48) and mask " + path("m.png") + "\n");
 }
 
+TEST_F(RenderCommand, AMeshFileOnItsOwnIsStagedAndExplainPrintsTheSceneToSave) {
+  const std::string mesh = write("tet", "v 0 0 0\nv 10 0 0\nv 0 10 0\nv 0 0 10\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+  const CommandResult r = run("render " + mesh + " -o " + path("a.png") + " --size 32x32 --explain");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  const std::string header = "staged scene for " + mesh + " (save it as a .scene file beside the mesh to edit it):\n";
+  ASSERT_EQ(r.out.substr(0, header.size()), header);
+  const std::string text = r.out.substr(header.size(), r.out.find("\nrender plan for ") - header.size());
+  EXPECT_NE(text.find("\nmesh \"tet\" fit scale 0.8\n"), std::string::npos) << text;
+  EXPECT_NE(r.out.find("render plan for " + mesh + " (staged)\n"), std::string::npos);
+  EXPECT_EQ(read_png(path("a.png")).width, 32);
+  // Saved beside the mesh, the text renders the same image.
+  write("tet.scene", text);
+  EXPECT_EQ(run("render " + path("tet.scene") + " -o " + path("b.png") + " --size 32x32").status, 0);
+  EXPECT_EQ(read_png(path("a.png")).pixels, read_png(path("b.png")).pixels);
+  // A file that is neither a scene nor a mesh is read as a scene, whose parser says why.
+  const std::string neither = write("notes.txt", "hello\n");
+  const CommandResult bad = run("render " + neither + " -o " + path("c.png"));
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_EQ(bad.err, neither + ":1:1: unknown statement \"hello\" (expected light, material, sphere, triangle, mesh or camera)\n");
+}
+
 TEST_F(RenderCommand, SceneErrorIsLocatedAndWritesNothing) {
   const std::string scene = write("bad.scene", "light 0 0 2\nsphere 0 0 0 O.5\n");
   const CommandResult r = run("render " + scene + " -o " + path("a.png") + " --mask " + path("m.png"));

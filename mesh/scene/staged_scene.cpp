@@ -1,0 +1,44 @@
+#include "mesh/scene/staged_scene.hpp"
+
+#include <filesystem>
+
+#include "mesh/input_error.hpp"
+#include "mesh/io/mapped_file.hpp"
+#include "mesh/io/mesh_format.hpp"
+
+namespace umbra {
+
+bool is_mesh_file(const std::string& path) {
+  if (std::filesystem::path(path).extension() == ".scene") return false;
+  try {
+    const MappedFile file(path);
+    return !detect_mesh_format(file.bytes()).empty();
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
+std::string staged_scene_text(const std::string& mesh_path) {
+  const std::string name = std::filesystem::path(mesh_path).filename().string();
+  return "# " + name + " on its own, as umbra stages a mesh file: fitted into the\n"
+         "# cube [-1,1]^3 at 0.8 of its size, over the cube's back face as a floor.\n"
+         "light 0.6 0.8 1.6\n"
+         "material floor diffuse 0.7 0.7 0.72\n"
+         "triangle -1 -1 -1   1 -1 -1   1 1 -1 material floor\n"
+         "triangle -1 -1 -1   1 1 -1   -1 1 -1 material floor\n"
+         "mesh \"" + name + "\" fit scale 0.8\n";
+}
+
+std::string staged_scene_name(const std::string& mesh_path) { return mesh_path + " (staged)"; }
+
+Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& progress, std::string* staged) {
+  if (!is_mesh_file(path)) {
+    if (staged) staged->clear();
+    return parse_scene_file(path, progress);
+  }
+  const std::string text = staged_scene_text(path);
+  if (staged) *staged = text;
+  return parse_scene_text(text, staged_scene_name(path), progress);
+}
+
+}  // namespace umbra

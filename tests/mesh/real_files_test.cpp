@@ -1,0 +1,89 @@
+// Real exported files, as Debian's assimp-testmodels ships them (build.sh
+// installs it): the same mesh from four exporters gets one report, exporters'
+// quirks are read with their warning, and broken files get their message.
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "mesh/check/mesh_check.hpp"
+#include "mesh/input_error.hpp"
+#include "mesh/io/mesh_file.hpp"
+
+namespace umbra {
+namespace {
+
+const std::string kModels = "/usr/share/assimp/models/";
+
+class RealFiles : public testing::Test {
+ protected:
+  void SetUp() override {
+    if (!std::filesystem::exists(kModels)) GTEST_SKIP() << "needs Debian's assimp-testmodels (build.sh installs it)";
+  }
+  static MeshReport check(const std::string& name) { return check_mesh(read_polygon_soup(kModels + name)); }
+  // The message after "PATH".
+  static std::string error(const std::string& name) {
+    try {
+      read_polygon_soup(kModels + name);
+    } catch (const InputError& e) {
+      return std::string(e.what()).substr(kModels.size() + name.size());
+    }
+    return "no error";
+  }
+};
+
+TEST_F(RealFiles, OneModelFromFourExportersGetsOneReport) {
+  for (const char* name : {"OBJ/WusonOBJ.obj", "PLY/Wuson.ply", "STL/Wuson.stl", "OFF/Wuson.off"}) {
+    const MeshReport r = check(name);
+    EXPECT_EQ(r.file_faces, 3732u) << name;
+    EXPECT_EQ(r.vertices, 2117u) << name;
+    EXPECT_EQ(r.edges, 5804u) << name;
+    EXPECT_EQ(r.border_edges, 412u) << name;
+    EXPECT_EQ(r.border_loops, 52u) << name;
+    EXPECT_EQ(r.non_manifold_vertices, 6u) << name;
+    EXPECT_EQ(r.components.size(), 54u) << name;
+    EXPECT_EQ(r.self_intersections.face_pairs, 509u) << name;
+  }
+}
+
+TEST_F(RealFiles, InterchangeFormatsReadWithTheirVerdicts) {
+  const MeshReport box3mf = check("3MF/box.3mf");
+  EXPECT_EQ(box3mf.format, "3MF");
+  EXPECT_TRUE(box3mf.is_closed_manifold());
+  for (const char* name : {"glTF2/BoxTextured-glTF-Binary/BoxTextured.glb", "glTF2/BoxTextured-glTF/BoxTextured.gltf",
+                           "glTF2/BoxTextured-glTF-Embedded/BoxTextured.gltf"}) {
+    const MeshReport r = check(name);
+    EXPECT_EQ(r.file_faces, 12u) << name;
+    EXPECT_TRUE(r.is_closed_manifold()) << name;
+  }
+  const MeshReport engine = check("glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
+  EXPECT_EQ(engine.file_faces, 121496u);
+  EXPECT_EQ(engine.components.size(), 96u);
+}
+
+TEST_F(RealFiles, ExportersQuirksAreReadWithAWarning) {
+  // Blender 2.47's PLY names its maker in a header line of its own.
+  const MeshReport wuson = check("PLY/Wuson.ply");
+  ASSERT_EQ(wuson.warnings.size(), 1u);
+  EXPECT_EQ(wuson.warnings[0].message, "unknown PLY header line \"Created\" ignored");
+  // A 66-corner polygon round a hole, through a bridge it walks twice.
+  const MeshReport keyhole = check("OBJ/concave_polygon.obj");
+  EXPECT_EQ(keyhole.file_faces, 64u);  // counted as split
+  EXPECT_EQ(keyhole.triangles, 64u);
+  EXPECT_EQ(keyhole.degenerate_faces, 0u);
+  EXPECT_EQ(keyhole.border_loops, 2u);
+  EXPECT_EQ(keyhole.self_intersections.face_pairs, 0u);
+  ASSERT_EQ(keyhole.warnings.size(), 1u);
+  EXPECT_EQ(keyhole.warnings[0].message, "face 0 (66 corners) visits a vertex more than once: read as 64 triangles");
+}
+
+TEST_F(RealFiles, BrokenFilesGetTheirMessage) {
+  EXPECT_EQ(error("glTF2/IndexOutOfRange/IndexOutOfRange.gltf"), ": mesh 0 primitive 0 index 0 is 255, but the primitive has 24 vertices");
+  EXPECT_EQ(error("glTF2/RecursiveNodes/RecursiveNodes.gltf"), ": node 0 is its own ancestor: the node hierarchy has a cycle");
+  EXPECT_EQ(error("glTF2/MissingBin/BoxTextured.gltf"), ": not a valid glTF file: File not found : BoxTextured0.bin");
+  EXPECT_EQ(error("glTF2/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb"),
+            ": mesh 0 primitive 0 vertex 0 has a coordinate that is not a finite number");
+  EXPECT_EQ(error("OBJ/box_UTF16BE.obj"), ": not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): UTF-16 text");
+}
+
+}  // namespace
+}  // namespace umbra
