@@ -37,11 +37,12 @@ void PlanarShadows::cast(size_t light) {
   baseline_state();
 }
 
-// Anywhere but where a projected caster landed.
+// Anywhere but where a projected caster landed; a lit fragment marks its
+// pixel as such, so that a coplanar face over it adds no second light.
 void PlanarShadows::limit_to_lit() const {
   glEnable(GL_STENCIL_TEST);
   glStencilFunc(GL_NOTEQUAL, 2, 0xFF);
-  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);  // the reference value: 2
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
 }

@@ -35,8 +35,15 @@ void ShadowMapShadows::cast(size_t light) {
   map_->bind(1);
 }
 
-// Anywhere: the shader compares each point's distance with the map's.
+// Anywhere: the shader compares each point's distance with the map's. The
+// stencil only marks pixels already lit, so that a coplanar face over one
+// (an export's overlapping faces) adds no second light.
 void ShadowMapShadows::limit_to_lit() const {
+  glClearStencil(0);
+  glClear(GL_STENCIL_BUFFER_BIT);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_EQUAL, 0, 0xFF);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
 }

@@ -57,11 +57,13 @@ void StencilVolumeShadows::mark_shadowed_in_alpha() {
 }
 
 // Where the count is zero, and with batches, nowhere an earlier batch marked:
-// blending gives marked pixels nothing and leaves alpha as it is.
+// blending gives marked pixels nothing and leaves alpha as it is. A lit
+// fragment raises the count, so that a coplanar face drawn over it later
+// (an export's overlapping faces) adds the light a second time nowhere.
 void StencilVolumeShadows::limit_to_lit() const {
   glEnable(GL_STENCIL_TEST);
   glStencilFunc(GL_EQUAL, 0, 0xFF);
-  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
   glEnable(GL_BLEND);
   if (marked_in_alpha_) glBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE);
   else glBlendFunc(GL_ONE, GL_ONE);

@@ -117,6 +117,31 @@ TEST_F(MeshMaterials, ObjUsemtlColoursEachFaceInBothRenderers) {
     expect_red_left_blue_right(render_both(scene, method).gl);
 }
 
+// Exports often hold a quad and two triangles over the same area. Each
+// pixel takes each light's direct term once, whichever faces cover it: every
+// method's image is the ray-cast one, which sees one surface per pixel.
+TEST_F(MeshMaterials, OverlappingCoplanarFacesAreLitOnce) {
+  // The floor z = -0.5 as a quad, and again as two triangles: along the
+  // quad's own diagonal (the same depths exactly), then along the other one.
+  write("doubled.obj", "v -1 -1 -0.5\nv 1 -1 -0.5\nv 1 1 -0.5\nv -1 1 -0.5\nf 1 2 3 4\nf 1 2 3\nf 1 3 4\nf 1 2 4\nf 2 3 4\n");
+  // Dim enough that light counted twice would not saturate.
+  const Scene scene = parse_scene_text(
+      "light 0.3 0.2 3 color 0.5 0.5 0.5\nlight -0.5 0.4 2.5 color 0.3 0.3 0.3\nmaterial dim diffuse 0.4 0.4 0.4\n"
+      "mesh doubled.obj material dim\nsphere 0 0 0 0.25\n",
+      (folder_ / "t.scene").string());
+  for (const RenderMethod method : {RenderMethod::kAuto, RenderMethod::kZFail, RenderMethod::kShadowMap, RenderMethod::kPlanar}) {
+    SCOPED_TRACE(method_name(method));
+    const Rendered r = render_both(scene, method);
+    if (method == RenderMethod::kShadowMap || method == RenderMethod::kPlanar) {
+      // Their shadows differ from the exact ones; compare lit pixels of the floor.
+      for (const int y : {20, 60})
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(int(r.gl.at(20, y, c)), int(r.cpu.at(20, y, c)), 1) << "y " << y;
+    } else {
+      expect_images_agree(scene, r);
+    }
+  }
+}
+
 TEST_F(MeshMaterials, AMaterialNamedInTheSceneCoversTheFilesOwn) {
   write("floor.mtl", "newmtl red\nKd 1 0 0\n");
   std::string obj = "mtllib floor.mtl\nusemtl red\n" + test::obj_text(floor_of_two_squares());
