@@ -65,12 +65,13 @@ case "${1:-}" in
     CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DUMBRA_FUZZERS=ON \
       -DUMBRA_BUILD_TESTS=OFF -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link $sanitizers" -DCMAKE_C_FLAGS="$sanitizers"
     cmake --build build-fuzz -j"$(nproc)" --target scene_fuzzer mesh_fuzzer
-    # Seed corpus: the bundled scenes, and the bundled meshes behind their format byte.
+    # Seed corpus: the bundled scenes, and the bundled meshes and fuzz/seeds/mesh/
+    # (glTF, GLB, 3MF) behind their format byte.
     rm -rf build-fuzz/corpus && mkdir -p build-fuzz/corpus/scene build-fuzz/corpus/mesh build-fuzz/crashes
     cp scenes/*.scene fuzz/regressions/scene/* build-fuzz/corpus/scene/ 2>/dev/null || true
     cp fuzz/regressions/mesh/* build-fuzz/corpus/mesh/ 2>/dev/null || true
-    for f in scenes/meshes/*.obj scenes/meshes/*.off; do
-      case "$f" in *.obj) byte='\000' ;; *.off) byte='\001' ;; esac
+    for f in scenes/meshes/*.obj scenes/meshes/*.off fuzz/seeds/mesh/*; do
+      case "$f" in *.obj) byte='\000' ;; *.off) byte='\001' ;; *.gltf | *.glb) byte='\004' ;; *.3mf) byte='\005' ;; esac
       { printf "$byte"; cat "$f"; } > "build-fuzz/corpus/mesh/$(basename "$f")"
     done
     for target in scene mesh; do

@@ -49,15 +49,17 @@ TEST(FuzzRegressions, MeshInputsReturnNormally) {
   std::vector<std::vector<uint8_t>> inputs;
   for (const fs::path& p : files_in(kSource / "fuzz/regressions/mesh")) inputs.push_back(bytes_of(p));
   // The seeds as the fuzzer sees them: the format's byte, then the file.
-  static const std::string formats[] = {"obj", "off", "ply", "stl"};
-  for (const fs::path& p : files_in(kSource / "scenes/meshes")) {
+  static const std::string formats[] = {"obj", "off", "ply", "stl", "gltf", "3mf"};
+  std::vector<fs::path> seeds = files_in(kSource / "scenes/meshes");
+  for (const fs::path& p : files_in(kSource / "fuzz/seeds/mesh")) seeds.push_back(p);
+  for (const fs::path& p : seeds) {
     const std::string format = mesh_format_of(p.string());
     if (format.empty()) continue;
     std::vector<uint8_t> bytes = bytes_of(p);
     bytes.insert(bytes.begin(), uint8_t(std::find(std::begin(formats), std::end(formats), format) - std::begin(formats)));
     inputs.push_back(bytes);
   }
-  ASSERT_GE(inputs.size(), 4u);
+  ASSERT_GE(inputs.size(), 7u);
   for (const auto& bytes : inputs) fuzz::mesh_input(bytes.data(), bytes.size());
 }
 
