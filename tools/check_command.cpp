@@ -27,18 +27,20 @@ const char* const kCheckUsage =
     R"(usage: umbra check PATH... [--json] [--jobs N] [--shard K/N] [--time-limit SEC]
        umbra check MESH --repair OUT
 
-Checks that each mesh (OBJ, OFF, PLY or STL, told by its content) is a
-closed, consistently oriented 2-manifold without self-intersections, which
-is what casting a shadow from silhouette edges needs, and says exactly why
-not: border edges and holes, non-manifold edges and vertices, duplicate and
-degenerate faces, faces to flip, self-intersecting face pairs, with a few of
-each named by their index in the file (counting from 0) and line.
+Checks that each mesh (OBJ, OFF, PLY, STL, glTF or 3MF, told by its
+content) is a closed, consistently oriented 2-manifold without
+self-intersections, which is what casting a shadow from silhouette edges
+needs, and says exactly why not: border edges and holes, non-manifold
+edges and vertices, duplicate and degenerate faces, faces to flip,
+self-intersecting face pairs, with a few of each named by their index in
+the file (counting from 0) and line. Exporters' quirks that are read anyway
+(docs/check.md) come as warnings.
 
 A PATH is a mesh file or a folder, searched recursively for mesh files (by
-content, or by a .obj, .off, .ply or .stl name), each folder's files in
-sorted order. Reports come in the order of the list, each as soon as it and
-those before it are done; with more than one mesh, a summary line follows
-on stderr.
+content, or by a .obj, .off, .ply, .stl, .gltf, .glb or .3mf name), each
+folder's files in sorted order. Reports come in the order of the list, each
+as soon as it and those before it are done; with more than one mesh, a
+summary line follows on stderr.
 
 options:
   --json            one JSON object per mesh per line, JSON Lines (keys in

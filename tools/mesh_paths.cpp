@@ -11,7 +11,7 @@
 namespace umbra {
 namespace {
 
-bool is_mesh_file(const std::filesystem::path& path) {
+bool has_mesh_name_or_content(const std::filesystem::path& path) {
   if (!mesh_format_of(path.string()).empty()) return true;
   try {
     return !detect_mesh_format(MappedFile(path.string()).bytes()).empty();
@@ -27,7 +27,7 @@ std::vector<std::string> meshes_in_folder(const std::string& folder) {
   fs::recursive_directory_iterator it(folder, fs::directory_options::skip_permission_denied, ec), end;
   for (; !ec && it != end; it.increment(ec)) {
     std::error_code type_ec;
-    if (it->is_regular_file(type_ec) && is_mesh_file(it->path())) found.push_back(it->path().string());
+    if (it->is_regular_file(type_ec) && has_mesh_name_or_content(it->path())) found.push_back(it->path().string());
   }
   if (ec) throw UsageError("cannot search the folder \"" + folder + "\": " + ec.message());
   std::sort(found.begin(), found.end());

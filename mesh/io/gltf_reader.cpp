@@ -201,6 +201,11 @@ PolygonSoup read_gltf(std::string_view bytes, const std::string& path) {
                          : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(), unsigned(bytes.size()), folder);
   if (!ok) {
     while (!error.empty() && (error.back() == '\n' || error.back() == ' ')) error.pop_back();
+    // Draco-compressed primitives have accessors without buffer views, which
+    // tinygltf refuses without saying why.
+    if (bytes.find("KHR_draco_mesh_compression") != std::string_view::npos)
+      throw InputError({path, 0, 0}, "its meshes are Draco-compressed (KHR_draco_mesh_compression), which umbra does not read (tinygltf: " +
+                                         error + ")");
     throw InputError({path, 0, 0}, std::string("not a valid ") + (binary ? "GLB" : "glTF") + " file: " +
                                        (error.empty() ? "tinygltf could not read it" : error));
   }

@@ -1,5 +1,5 @@
 #pragma once
-// Reading a mesh file (OBJ, OFF, PLY or STL, told by its content; see
+// Reading a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF, told by its content; see
 // mesh_format.hpp) into a polygon soup, exactly as written.
 
 #include <string>

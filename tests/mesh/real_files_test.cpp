@@ -82,6 +82,9 @@ TEST_F(RealFiles, BrokenFilesGetTheirMessage) {
   EXPECT_EQ(error("glTF2/MissingBin/BoxTextured.gltf"), ": not a valid glTF file: File not found : BoxTextured0.bin");
   EXPECT_EQ(error("glTF2/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb"),
             ": mesh 0 primitive 0 vertex 0 has a coordinate that is not a finite number");
+  EXPECT_EQ(error("glTF2/draco/2CylinderEngine.gltf"),
+            ": its meshes are Draco-compressed (KHR_draco_mesh_compression), which umbra does not read (tinygltf: accessor[0] "
+            "invalid bufferView)");
   EXPECT_EQ(error("OBJ/box_UTF16BE.obj"), ": not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): UTF-16 text");
 }
 
