@@ -35,6 +35,14 @@ TEST_F(ViewCommand, PausedScreenshotIsTheHeadlessRender) {
   expect_same_pixels(read_png(path("v.png")), read_png(path("h.png")));
 }
 
+TEST_F(ViewCommand, AMeshFileIsStagedAsRenderStagesIt) {
+  const std::string mesh = std::string(UMBRA_SOURCE_DIR) + "/scenes/meshes/torus.obj";
+  const CommandResult view = run_in_xvfb("view " + mesh + " --size 160x120 --paused --frames 2 --screenshot " + path("v.png"));
+  ASSERT_EQ(view.status, 0) << view.err;
+  ASSERT_EQ(run("render " + mesh + " --size 160x120 -o " + path("h.png")).status, 0);
+  expect_same_pixels(read_png(path("v.png")), read_png(path("h.png")));
+}
+
 TEST_F(ViewCommand, OrbitingLightScreenshotIsTheHeadlessRenderAtItsAngle) {
   // 60 degrees a second at 1/60 s a frame: frame 7 is drawn with the light at 6 degrees.
   const CommandResult view = run_in_xvfb("view " + scene("mesh_torus.scene") +
