@@ -306,13 +306,15 @@ class SceneBuilder {
         else warn(m.where, "mesh " + in_quotes(written[k]) + ": " + w.message);
       }
       place_file_materials(pending_meshes_[k], written[k]);
-      if (m.triangles.empty())
+      if (m.triangles.empty()) {
         warn(m.where, "mesh " + in_quotes(written[k]) + " has no faces: it casts no shadow");
-      else if (outside_the_cube(m))
-        warn(m.where, "mesh " + in_quotes(written[k]) + " reaches outside the cube [-1,1]^3 that scenes are made for (its box is " +
-                          box_text(m.bounds_min, m.bounds_max) + (m.fit ? ")" : "; \"fit\" scales it into the cube)"));
-      else if (!m.components.all_closed())
-        warn(m.where, "mesh " + in_quotes(written[k]) + " is " + m.components.phrase() + ": " + m.components.volume_phrase());
+      } else {
+        if (outside_the_cube(m))
+          warn(m.where, "mesh " + in_quotes(written[k]) + " reaches outside the cube [-1,1]^3 that scenes are made for (its box is " +
+                            box_text(m.bounds_min, m.bounds_max) + (m.fit ? ")" : "; \"fit\" scales it into the cube)"));
+        if (!m.components.all_closed())
+          warn(m.where, "mesh " + in_quotes(written[k]) + " is " + m.components.phrase() + ": " + m.components.volume_phrase());
+      }
       scene_.meshes.push_back(std::move(m));
     }
   }

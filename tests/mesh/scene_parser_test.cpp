@@ -216,6 +216,11 @@ TEST_F(SceneMeshes, FitCentresTheBoxAndScalesItsLongestSideToTheCubeBeforeTheRes
   ASSERT_EQ(out.warnings.size(), 1u);
   EXPECT_EQ(out.warnings[0].message,
             "mesh \"part.obj\" reaches outside the cube [-1,1]^3 that scenes are made for (its box is (-0.5, -0.5, -0.2) to (1.5, 0.5, 0.2))");
+  // An open mesh outside the cube gets both warnings.
+  write("open.obj", "v 0 0 0\nv 2 0 0\nv 0 2 0\nv 0 0 2\nf 1 3 2\nf 1 2 4\nf 1 4 3\n");
+  const Scene open = parse("light 0 0 5\nmesh open.obj\n");
+  ASSERT_EQ(open.warnings.size(), 2u);
+  EXPECT_EQ(open.warnings[1].message, "mesh \"open.obj\" is open, 1 hole: edge-multiplicity volume");
   write("point.obj", "v 1 1 1\nv 1 1 1\nv 1 1 1\nf 1 2 3\n");
   EXPECT_EQ(error("light 0 0 5\nmesh point.obj fit\n"),
             folder_ + "s.scene:2:6: mesh file \"" + folder_ + "point.obj\" has no extent to fit: all its points coincide");
