@@ -90,8 +90,15 @@ class GltfReader {
     on_path_.erase(index);
   }
 
-  // The bytes of element `i` of `accessor`, checked to lie in its buffer.
-  const unsigned char* element(const tinygltf::Accessor& accessor, size_t i, const std::string& what) const {
+  // An accessor's elements in their buffer, checked once to lie in it.
+  struct Elements {
+    const unsigned char* first = nullptr;
+    size_t stride = 0;
+    size_t count = 0;
+    const unsigned char* at(size_t i) const { return first + i * stride; }
+  };
+
+  Elements elements(const tinygltf::Accessor& accessor, const std::string& what) const {
     if (accessor.sparse.isSparse) fail(what + " uses a sparse accessor, which umbra does not read");
     if (accessor.bufferView < 0 || size_t(accessor.bufferView) >= model_.bufferViews.size())
       fail(what + " has no buffer view");
@@ -102,20 +109,36 @@ class GltfReader {
     const int size = tinygltf::GetComponentSizeInBytes(uint32_t(accessor.componentType)) *
                      tinygltf::GetNumComponentsInType(uint32_t(accessor.type));
     if (stride <= 0 || size <= 0) fail(what + " has an invalid component type or stride");
-    const size_t at = view.byteOffset + accessor.byteOffset + i * size_t(stride);
-    if (at + size_t(size) > view.byteOffset + view.byteLength || at + size_t(size) > data.size())
-      fail(what + " reads past the end of its buffer (element " + std::to_string(i) + ")");
-    return data.data() + at;
+    if (accessor.count == 0) return {};
+    // Counts and offsets come from the file: compared so that nothing overflows.
+    const size_t start = view.byteOffset + accessor.byteOffset;
+    const size_t limit = std::min(data.size(), view.byteOffset + view.byteLength);
+    if (start > limit || (accessor.count - 1) > (limit - start) / size_t(stride) ||
+        start + (accessor.count - 1) * size_t(stride) + size_t(size) > limit)
+      fail(what + " reads past the end of its buffer (" + std::to_string(accessor.count) + " elements)");
+    return {data.data() + start, size_t(stride), accessor.count};
   }
 
-  uint32_t index_at(const tinygltf::Accessor& accessor, size_t i, const std::string& what) const {
-    const unsigned char* p = element(accessor, i, what);
+  std::vector<uint32_t> indices_of(const tinygltf::Accessor& accessor, const std::string& what) const {
+    const Elements list = elements(accessor, what);
+    std::vector<uint32_t> indices(list.count);
     switch (accessor.componentType) {
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return *p;
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p, 2); return v; }
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p, 4); return v; }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        for (size_t i = 0; i < list.count; ++i) indices[i] = *list.at(i);
+        break;
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        for (size_t i = 0; i < list.count; ++i) {
+          uint16_t v;
+          std::memcpy(&v, list.at(i), 2);
+          indices[i] = v;
+        }
+        break;
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        for (size_t i = 0; i < list.count; ++i) std::memcpy(&indices[i], list.at(i), 4);
+        break;
       default: fail(what + " must be unsigned bytes, shorts or ints");
     }
+    return indices;
   }
 
   void add_mesh(int index, const glm::dmat4& world) {
@@ -139,9 +162,11 @@ class GltfReader {
       if (points.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || points.type != TINYGLTF_TYPE_VEC3)
         fail(what + "'s POSITION must be float VEC3");
       const uint32_t first = uint32_t(soup_.points.size());
-      for (size_t i = 0; i < points.count; ++i) {
+      const Elements xyzs = elements(points, what + "'s POSITION");
+      soup_.points.reserve(soup_.points.size() + xyzs.count);
+      for (size_t i = 0; i < xyzs.count; ++i) {
         float xyz[3];
-        std::memcpy(xyz, element(points, i, what + "'s POSITION"), sizeof xyz);
+        std::memcpy(xyz, xyzs.at(i), sizeof xyz);
         const glm::dvec3 p3 = glm::dvec3(world * glm::dvec4(xyz[0], xyz[1], xyz[2], 1.0));
         if (!std::isfinite(p3.x) || !std::isfinite(p3.y) || !std::isfinite(p3.z))
           fail(what + " vertex " + std::to_string(i) + " has a coordinate that is not a finite number");
@@ -150,18 +175,20 @@ class GltfReader {
       std::vector<uint32_t> indices;
       if (primitive.indices >= 0) {
         if (size_t(primitive.indices) >= model_.accessors.size()) fail(what + "'s index accessor does not exist");
-        const tinygltf::Accessor& list = model_.accessors[size_t(primitive.indices)];
-        indices.reserve(list.count);
-        for (size_t i = 0; i < list.count; ++i) {
-          const uint32_t v = index_at(list, i, what + "'s indices");
-          if (v >= points.count)
-            fail(what + " index " + std::to_string(i) + " is " + std::to_string(v) + ", but the primitive has " +
+        indices = indices_of(model_.accessors[size_t(primitive.indices)], what + "'s indices");
+        for (size_t i = 0; i < indices.size(); ++i)
+          if (indices[i] >= points.count)
+            fail(what + " index " + std::to_string(i) + " is " + std::to_string(indices[i]) + ", but the primitive has " +
                  std::to_string(points.count) + " vertices");
-          indices.push_back(v);
-        }
       } else {
-        for (uint32_t i = 0; i < points.count; ++i) indices.push_back(i);
+        indices.resize(points.count);
+        for (uint32_t i = 0; i < points.count; ++i) indices[i] = i;
       }
+      const size_t triangles = primitive.mode == TINYGLTF_MODE_TRIANGLES ? indices.size() / 3 : std::max<size_t>(indices.size(), 2) - 2;
+      soup_.corners.reserve(soup_.corners.size() + 3 * triangles);
+      soup_.polygon_starts.reserve(soup_.polygon_starts.size() + triangles);
+      soup_.polygon_lines.reserve(soup_.polygon_lines.size() + triangles);
+      soup_.polygon_materials.reserve(soup_.polygon_materials.size() + triangles);
       const int material = primitive.material >= 0 && size_t(primitive.material) < soup_.materials.size() ? primitive.material : -1;
       const auto triangle = [&](uint32_t a, uint32_t b, uint32_t c) {
         if (mirrored) std::swap(b, c);
