@@ -7,7 +7,8 @@
 #
 # The mesh: CGAL's bunny00.off (75,408 triangles, from Debian's libcgal-demo)
 # with each triangle split into four, twice (1,206,528 triangles) and three
-# times (4,826,112), written as binary STL (which both tools read) and OBJ.
+# times (4,826,112), written as binary STL (which both tools read), OBJ and
+# glTF binary (GLB).
 # The folder: CGAL's 143 data meshes.
 #
 #   bench/check_benchmark.sh [RUNS]     (after ./build.sh; default 5 runs)
@@ -23,10 +24,13 @@ for tool in /usr/bin/time admesh; do
 done
 [ -x $build/umbra ] && [ -x $build/bench/make_subdivided_mesh ] || { echo "bench: run ./build.sh first" >&2; exit 2; }
 
-if [ ! -f "$data/bunny-4M.obj" ]; then
+if [ ! -f "$data/bunny-4M.glb" ]; then
   tar xzf /usr/share/doc/libcgal-dev/data.tar.gz -C "$data" data/meshes
-  $build/bench/make_subdivided_mesh "$data/data/meshes/bunny00.off" "$data/bunny-1M.stl" "$data/bunny-1M.obj" 2
-  $build/bench/make_subdivided_mesh "$data/data/meshes/bunny00.off" "$data/bunny-4M.stl" "$data/bunny-4M.obj" 3
+  for level in 2 3; do
+    size=$([ $level = 2 ] && echo 1M || echo 4M)
+    $build/bench/make_subdivided_mesh "$data/data/meshes/bunny00.off" "$data/bunny-$size.stl" "$data/bunny-$size.obj" \
+      "$data/bunny-$size.glb" $level
+  done
 fi
 # The bunny over a floor under one light, as in the bundled mesh scenes.
 for size in 1M 4M; do
@@ -62,6 +66,7 @@ measure "umbra check bunny-1M.stl" $build/umbra check "$data/bunny-1M.stl"; chec
 measure "umbra check bunny-1M.stl --jobs 1 (one core)" $build/umbra check --jobs 1 "$data/bunny-1M.stl"; check1_s=$seconds
 measure "umbra check bunny-1M.stl --time-limit 0 (no self-intersection search)" $build/umbra check --time-limit 0 "$data/bunny-1M.stl"; topology_s=$seconds
 measure "umbra check bunny-1M.obj" $build/umbra check "$data/bunny-1M.obj"
+measure "umbra check bunny-1M.glb" $build/umbra check "$data/bunny-1M.glb"
 measure "umbra render bunny-1M.scene, 800x800" $build/umbra render "$data/bunny-1M.scene" -o "$data/bunny-1M.png" --size 800x800; render1_s=$seconds render1_mib=$mib
 measure "umbra render bunny-4M.scene, 800x800" $build/umbra render "$data/bunny-4M.scene" -o "$data/bunny-4M.png" --size 800x800; render4_s=$seconds
 measure "umbra check --jobs 1 on CGAL's 143 data meshes" $build/umbra check --jobs 1 "$data/data/meshes"; folder1_s=$seconds

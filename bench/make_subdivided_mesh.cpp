@@ -1,7 +1,7 @@
 // Makes the large mesh that bench/check_benchmark.sh times: a mesh read with
 // umbra's readers, each triangle split into four at its edge midpoints LEVELS
-// times (the surface and its topology stay the same), written as binary STL
-// and as OBJ.
+// times (the surface and its topology stay the same), written as binary STL,
+// as OBJ and as glTF binary (.glb).
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -63,11 +63,36 @@ void write_obj(const std::string& path, const std::vector<glm::dvec3>& points, c
   for (const Triangle& t : triangles) out << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
 }
 
+// One glTF 2.0 primitive: float positions, uint32 indices, in one GLB buffer.
+void write_glb(const std::string& path, const std::vector<glm::dvec3>& points, const std::vector<Triangle>& triangles) {
+  std::string buffer;
+  for (const glm::dvec3& p : points)
+    for (int i = 0; i < 3; ++i) {
+      const float v = float(p[i]);
+      buffer.append(reinterpret_cast<const char*>(&v), 4);
+    }
+  const size_t point_bytes = buffer.size();
+  buffer.append(reinterpret_cast<const char*>(triangles.data()), triangles.size() * sizeof(Triangle));
+  std::string json = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+                     R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],"buffers":[{"byteLength":)" +
+                     std::to_string(buffer.size()) + R"(}],"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":)" +
+                     std::to_string(point_bytes) + R"(},{"buffer":0,"byteOffset":)" + std::to_string(point_bytes) +
+                     R"(,"byteLength":)" + std::to_string(buffer.size() - point_bytes) +
+                     R"(}],"accessors":[{"bufferView":0,"componentType":5126,"count":)" + std::to_string(points.size()) +
+                     R"(,"type":"VEC3"},{"bufferView":1,"componentType":5125,"count":)" + std::to_string(3 * triangles.size()) +
+                     R"(,"type":"SCALAR"}]})";
+  while (json.size() % 4) json += ' ';
+  const auto u32 = [](uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  std::ofstream out(path, std::ios::binary);
+  out << "glTF" << u32(2) << u32(uint32_t(12 + 8 + json.size() + 8 + buffer.size())) << u32(uint32_t(json.size())) << "JSON"
+      << json << u32(uint32_t(buffer.size())) << std::string("BIN\0", 4) << buffer;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 5) {
-    std::cerr << "usage: make_subdivided_mesh IN OUT.stl OUT.obj LEVELS\n";
+  if (argc != 6) {
+    std::cerr << "usage: make_subdivided_mesh IN OUT.stl OUT.obj OUT.glb LEVELS\n";
     return 2;
   }
   try {
@@ -80,9 +105,10 @@ int main(int argc, char** argv) {
       for (uint32_t k = 0; k < soup.corner_count(f); ++k) corners.push_back(merged.vertex_of_point[soup.polygon(f)[k]]);
       umbra::triangulate_polygon(points, corners.data(), uint32_t(corners.size()), triangles);
     }
-    for (int level = std::atoi(argv[4]); level > 0; --level) subdivide(points, triangles);
+    for (int level = std::atoi(argv[5]); level > 0; --level) subdivide(points, triangles);
     write_stl(argv[2], points, triangles);
     write_obj(argv[3], points, triangles);
+    write_glb(argv[4], points, triangles);
     std::cout << triangles.size() << " triangles, " << points.size() << " vertices\n";
     return 0;
   } catch (const umbra::InputError& e) {
