@@ -11,6 +11,7 @@
 #include "mesh/check/mesh_check.hpp"
 #include "mesh/input_error.hpp"
 #include "mesh/io/mesh_file.hpp"
+#include "tests/mesh/read_error.hpp"
 #include "tests/mesh/interchange_writers.hpp"
 #include "tests/mesh/mesh_builders.hpp"
 
@@ -19,14 +20,6 @@ namespace {
 
 using test::GltfOptions;
 
-std::string error_of(const std::string& bytes, const std::string& path) {
-  try {
-    parse_polygon_soup(bytes, path);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
 
 std::string gltf_of(const PolygonSoup& soup, const GltfOptions& options = {}) {
   return test::gltf_json(soup, test::gltf_buffer(soup), options);
@@ -170,9 +163,9 @@ TEST(InterchangeFormats, FoundByContentWhateverTheName) {
 
 // (Prose, UTF-16 and images: mesh_file_test.cpp.)
 TEST(InterchangeFormats, FilesThatAreNoMeshSayWhatTheyAre) {
-  EXPECT_EQ(error_of(std::string("v 0 0 0\n\x01\x02\x03 binary\n", 20), "odd.obj"),
+  EXPECT_EQ(test::read_error_of(std::string("v 0 0 0\n\x01\x02\x03 binary\n", 20), "odd.obj"),
             "odd.obj: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): binary data");
-  EXPECT_EQ(error_of(test::stored_zip({{"readme.txt", "hello"}}), "archive.3mf"),
+  EXPECT_EQ(test::read_error_of(test::stored_zip({{"readme.txt", "hello"}}), "archive.3mf"),
             "archive.3mf: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): a zip archive without a 3D model part");
 }
 
@@ -183,28 +176,28 @@ TEST(InterchangeFormats, BrokenFilesGiveTheirExactMessage) {
   std::string bad_index = buffer;
   const uint32_t ninety_nine = 99;
   std::memcpy(bad_index.data() + 8 * 12 + 5 * 4, &ninety_nine, 4);
-  EXPECT_EQ(error_of(test::gltf_json(cube, bad_index, {}), "m.gltf"),
+  EXPECT_EQ(test::read_error_of(test::gltf_json(cube, bad_index, {}), "m.gltf"),
             "m.gltf: mesh 0 primitive 0 index 5 is 99, but the primitive has 8 vertices");
   std::string nan = buffer;
   const float not_a_number = std::numeric_limits<float>::quiet_NaN();
   std::memcpy(nan.data() + 3 * 12 + 4, &not_a_number, 4);
-  EXPECT_EQ(error_of(test::gltf_json(cube, nan, {}), "m.gltf"),
+  EXPECT_EQ(test::read_error_of(test::gltf_json(cube, nan, {}), "m.gltf"),
             "m.gltf: mesh 0 primitive 0 vertex 3 has a coordinate that is not a finite number");
   GltfOptions cycle;
   cycle.node = R"("children": [1])";
   cycle.extra_nodes = R"(, {"mesh": 0, "children": [0]})";
-  EXPECT_EQ(error_of(gltf_of(cube, cycle), "m.gltf"), "m.gltf: node 0 is its own ancestor: the node hierarchy has a cycle");
+  EXPECT_EQ(test::read_error_of(gltf_of(cube, cycle), "m.gltf"), "m.gltf: node 0 is its own ancestor: the node hierarchy has a cycle");
   GltfOptions missing;
   missing.buffer_uri = "cube-does-not-exist.bin";
-  EXPECT_EQ(error_of(gltf_of(cube, missing), "/nonexistent/m.gltf"),
+  EXPECT_EQ(test::read_error_of(gltf_of(cube, missing), "/nonexistent/m.gltf"),
             "/nonexistent/m.gltf: not a valid glTF file: File not found : cube-does-not-exist.bin");
   const std::string package = threemf_of(cube);
-  EXPECT_EQ(error_of(package.substr(0, package.size() / 2), "m.3mf"), "m.3mf: not a valid 3MF file: Could not read ZIP file");
+  EXPECT_EQ(test::read_error_of(package.substr(0, package.size() / 2), "m.3mf"), "m.3mf: not a valid 3MF file: Could not read ZIP file");
   const std::string outside = test::threemf(
       R"(<object id="2" type="model"><mesh><vertices><vertex x="0" y="0" z="0"/><vertex x="1" y="0" z="0"/>)"
       R"(<vertex x="0" y="1" z="0"/></vertices><triangles><triangle v1="0" v2="1" v3="7"/></triangles></mesh></object>)",
       R"(<item objectid="2"/>)");
-  EXPECT_EQ(error_of(outside, "m.3mf"), "m.3mf: not a valid 3MF file: Invalid model node index");  // a triangle names vertex 7 of 3
+  EXPECT_EQ(test::read_error_of(outside, "m.3mf"), "m.3mf: not a valid 3MF file: Invalid model node index");  // a triangle names vertex 7 of 3
 }
 
 }  // namespace

@@ -7,18 +7,11 @@
 
 #include "mesh/input_error.hpp"
 #include "mesh/io/mesh_file.hpp"
+#include "tests/mesh/read_error.hpp"
 
 namespace umbra {
 namespace {
 
-std::string error_of(const std::string& bytes, const std::string& path) {
-  try {
-    parse_polygon_soup(bytes, path);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
 
 std::vector<std::vector<uint32_t>> polygons_of(const PolygonSoup& soup) {
   std::vector<std::vector<uint32_t>> out;
@@ -174,41 +167,41 @@ TEST(MeshFile, ExporterQuirksAreReadWithAWarning) {
 }
 
 TEST(MeshFile, BadFilesGetTheirExactLocatedError) {
-  EXPECT_EQ(error_of("v 0 0 0\nf 1 0 1\n", "a.obj"),
+  EXPECT_EQ(test::read_error_of("v 0 0 0\nf 1 0 1\n", "a.obj"),
             "a.obj:2:5: vertex indices count from 1 (or from -1 backwards); 0 is not an index");
-  EXPECT_EQ(error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n", "a.obj"),
+  EXPECT_EQ(test::read_error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n", "a.obj"),
             "a.obj:4: face 0 refers to vertex 6 (counting from 0), but the file has 3 vertices");
-  EXPECT_EQ(error_of("v 0 nan 0\n", "a.obj"), "a.obj:1:5: the vertex y coordinate is \"nan\", not a finite number");
-  EXPECT_EQ(error_of("v 0 0\n", "a.obj"), "a.obj:1:6: expected a number for the vertex z coordinate, got end of line");
-  EXPECT_EQ(error_of("v 0 0 0\nv 1 0 0\nf 1 2\n", "a.obj"), "a.obj:3: a face needs at least 3 vertices, this one has 2");
-  EXPECT_EQ(error_of("v 0 0 0\nf 1 -3 1\n", "a.obj"),
+  EXPECT_EQ(test::read_error_of("v 0 nan 0\n", "a.obj"), "a.obj:1:5: the vertex y coordinate is \"nan\", not a finite number");
+  EXPECT_EQ(test::read_error_of("v 0 0\n", "a.obj"), "a.obj:1:6: expected a number for the vertex z coordinate, got end of line");
+  EXPECT_EQ(test::read_error_of("v 0 0 0\nv 1 0 0\nf 1 2\n", "a.obj"), "a.obj:3: a face needs at least 3 vertices, this one has 2");
+  EXPECT_EQ(test::read_error_of("v 0 0 0\nf 1 -3 1\n", "a.obj"),
             "a.obj:2:5: relative vertex index -3 points before the first vertex (only 1 defined so far)");
-  EXPECT_EQ(error_of("OFX\n", "b.off"), "b.off:1:1: expected the header \"OFF\", got \"OFX\"");
-  EXPECT_EQ(error_of("OFF BINARY\n", "b.off"),
+  EXPECT_EQ(test::read_error_of("OFX\n", "b.off"), "b.off:1:1: expected the header \"OFF\", got \"OFX\"");
+  EXPECT_EQ(test::read_error_of("OFF BINARY\n", "b.off"),
             "b.off:1:5: binary OFF is not supported; write the mesh as text OFF, OBJ, PLY or STL");
-  EXPECT_EQ(error_of("OFF\n3 1 0\n0 0 0\n1 0 0\n", "b.off"), "b.off:4: the file ends before vertex 2 of 3");
-  EXPECT_EQ(error_of("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n", "b.off"),
+  EXPECT_EQ(test::read_error_of("OFF\n3 1 0\n0 0 0\n1 0 0\n", "b.off"), "b.off:4: the file ends before vertex 2 of 3");
+  EXPECT_EQ(test::read_error_of("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n", "b.off"),
             "b.off:6:6: the face has 2 vertex indices, its count says 3");
-  EXPECT_EQ(error_of("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", "b.off"),
+  EXPECT_EQ(test::read_error_of("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", "b.off"),
             "b.off:6:7: vertex index 3 is out of range: the file has 3 vertices, counted from 0");
-  EXPECT_EQ(error_of("OFF\n-3 1 0\n", "b.off"), "b.off:2:1: the vertex count must not be negative, got -3");
-  EXPECT_EQ(error_of("OFF\n3000 1 0\n", "b.off"), "b.off:2:1: the vertex count 3000 is more than a file of 13 bytes can hold");
-  EXPECT_EQ(error_of("solid x\nfacet\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nendloop\n", "c.stl"),
+  EXPECT_EQ(test::read_error_of("OFF\n-3 1 0\n", "b.off"), "b.off:2:1: the vertex count must not be negative, got -3");
+  EXPECT_EQ(test::read_error_of("OFF\n3000 1 0\n", "b.off"), "b.off:2:1: the vertex count 3000 is more than a file of 13 bytes can hold");
+  EXPECT_EQ(test::read_error_of("solid x\nfacet\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nendloop\n", "c.stl"),
             "c.stl:6:1: a facet needs at least 3 vertices, this one has 2");
-  EXPECT_EQ(error_of("solid x\nouter loop\nvertex 0 0 0\n", "c.stl"), "c.stl:3: the file ends inside a facet (no \"endloop\")");
-  EXPECT_EQ(error_of(binary_stl({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}}).substr(0, 120), "c.stl"),
+  EXPECT_EQ(test::read_error_of("solid x\nouter loop\nvertex 0 0 0\n", "c.stl"), "c.stl:3: the file ends inside a facet (no \"endloop\")");
+  EXPECT_EQ(test::read_error_of(binary_stl({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}}).substr(0, 120), "c.stl"),
             "c.stl: not a valid STL file: as binary STL its 1 triangles need 134 bytes but the file has 120, and it "
             "does not begin with \"solid\" as ascii STL does");
-  EXPECT_EQ(error_of("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n", "d.ply"),
+  EXPECT_EQ(test::read_error_of("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n", "d.ply"),
             "d.ply:4: the PLY header has no \"end_header\"");
-  EXPECT_EQ(error_of("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n0\n", "d.ply"),
+  EXPECT_EQ(test::read_error_of("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n0\n", "d.ply"),
             "d.ply: the PLY header declares no \"vertex\" element with x, y and z properties");
-  EXPECT_EQ(error_of(ply("binary_little_endian").substr(0, ply("binary_little_endian").size() - 20), "d.ply"),
+  EXPECT_EQ(test::read_error_of(ply("binary_little_endian").substr(0, ply("binary_little_endian").size() - 20), "d.ply"),
             "d.ply: the file ends in the middle of a list item");
-  EXPECT_EQ(error_of("ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
+  EXPECT_EQ(test::read_error_of("ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
                      "element face 1\nproperty list uchar float vertex_indices\nend_header\n", "d.ply"),
             "d.ply: the face's vertex indices must have an integer type");
-  EXPECT_EQ(error_of("", "e.dae"), "e.dae: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): the file is empty");
+  EXPECT_EQ(test::read_error_of("", "e.dae"), "e.dae: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): the file is empty");
 }
 
 TEST(MeshFormat, ContentDecidesTheFormatWhateverTheName) {
@@ -232,13 +225,13 @@ TEST(MeshFormat, ContentDecidesTheFormatWhateverTheName) {
 }
 
 TEST(MeshFormat, FilesThatAreNoMeshSayWhatTheyAre) {
-  EXPECT_EQ(error_of("# umbra\nThis is a README.\n", "README.obj"),
+  EXPECT_EQ(test::read_error_of("# umbra\nThis is a README.\n", "README.obj"),
             "README.obj: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): text starting with \"#\"");
-  EXPECT_EQ(error_of("Just words\n", "notes"), "notes: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): text starting with \"Just\"");
-  EXPECT_EQ(error_of(std::string("\xff\xfev\0 \0", 6), "u16.obj"), "u16.obj: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): UTF-16 text");
-  EXPECT_EQ(error_of(std::string("\xff\xd8\xff\xe0\0\x10JFIF", 10), "photo.obj"),
+  EXPECT_EQ(test::read_error_of("Just words\n", "notes"), "notes: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): text starting with \"Just\"");
+  EXPECT_EQ(test::read_error_of(std::string("\xff\xfev\0 \0", 6), "u16.obj"), "u16.obj: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): UTF-16 text");
+  EXPECT_EQ(test::read_error_of(std::string("\xff\xd8\xff\xe0\0\x10JFIF", 10), "photo.obj"),
             "photo.obj: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): a JPEG image");
-  EXPECT_EQ(error_of("", "empty.obj"), "empty.obj: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): the file is empty");
+  EXPECT_EQ(test::read_error_of("", "empty.obj"), "empty.obj: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): the file is empty");
 }
 
 TEST(MeshFile, MissingFileAndFolderAreReportedByName) {
