@@ -25,6 +25,7 @@ packages=(
   libbenchmark-dev                   # bench/silhouette_benchmark (Google Benchmark)
   libcgal-demo                       # CGAL's data meshes, for the tests
   assimp-testmodels                  # exporters' real files (glTF, 3MF, OBJ, PLY, STL), for the tests
+  gltfpack                           # the tests read its quantised glTF output
   admesh time bc                     # bench/check_benchmark.sh: the checker it compares with, timing
   clang libclang-rt-14-dev           # ./build.sh fuzz: libFuzzer
   gnuplot-nox                        # umbra bench --plot

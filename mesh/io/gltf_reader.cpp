@@ -119,6 +119,33 @@ class GltfReader {
     return {data.data() + start, size_t(stride), accessor.count};
   }
 
+  // One position: float, or (as KHR_mesh_quantization allows, which mesh
+  // optimisers such as gltfpack write) integers, normalised or not.
+  glm::dvec3 position_at(const tinygltf::Accessor& accessor, const unsigned char* p, const std::string& what) const {
+    glm::dvec3 xyz;
+    for (int k = 0; k < 3; ++k) {
+      switch (accessor.componentType) {
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: xyz[k] = read_as<float>(p, k); break;
+        case TINYGLTF_COMPONENT_TYPE_BYTE: xyz[k] = normalised(read_as<int8_t>(p, k), 127.0, accessor.normalized); break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: xyz[k] = normalised(read_as<uint8_t>(p, k), 255.0, accessor.normalized); break;
+        case TINYGLTF_COMPONENT_TYPE_SHORT: xyz[k] = normalised(read_as<int16_t>(p, k), 32767.0, accessor.normalized); break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: xyz[k] = normalised(read_as<uint16_t>(p, k), 65535.0, accessor.normalized); break;
+        default: fail(what + "'s POSITION must be floats, or bytes or shorts (KHR_mesh_quantization)");
+      }
+    }
+    return xyz;
+  }
+
+  template <typename T>
+  static double read_as(const unsigned char* p, int k) {
+    T v;
+    std::memcpy(&v, p + k * sizeof(T), sizeof(T));
+    return double(v);
+  }
+
+  // glTF 2.0's conversion of a normalised integer: c / max, at least -1.
+  static double normalised(double c, double max, bool normalized) { return normalized ? std::max(c / max, -1.0) : c; }
+
   std::vector<uint32_t> indices_of(const tinygltf::Accessor& accessor, const std::string& what) const {
     const Elements list = elements(accessor, what);
     std::vector<uint32_t> indices(list.count);
@@ -159,15 +186,13 @@ class GltfReader {
       if (position->second < 0 || size_t(position->second) >= model_.accessors.size())
         fail(what + "'s POSITION accessor does not exist");
       const tinygltf::Accessor& points = model_.accessors[size_t(position->second)];
-      if (points.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || points.type != TINYGLTF_TYPE_VEC3)
-        fail(what + "'s POSITION must be float VEC3");
+      if (points.type != TINYGLTF_TYPE_VEC3) fail(what + "'s POSITION must be VEC3");
       const uint32_t first = uint32_t(soup_.points.size());
       const Elements xyzs = elements(points, what + "'s POSITION");
       soup_.points.reserve(soup_.points.size() + xyzs.count);
       for (size_t i = 0; i < xyzs.count; ++i) {
-        float xyz[3];
-        std::memcpy(xyz, xyzs.at(i), sizeof xyz);
-        const glm::dvec3 p3 = glm::dvec3(world * glm::dvec4(xyz[0], xyz[1], xyz[2], 1.0));
+        const glm::dvec3 xyz = position_at(points, xyzs.at(i), what);
+        const glm::dvec3 p3 = glm::dvec3(world * glm::dvec4(xyz, 1.0));
         if (!std::isfinite(p3.x) || !std::isfinite(p3.y) || !std::isfinite(p3.z))
           fail(what + " vertex " + std::to_string(i) + " has a coordinate that is not a finite number");
         soup_.points.push_back(p3);

@@ -127,6 +127,30 @@ TEST(InterchangeFormats, GltfStripsAndFansBecomeTriangles) {
   EXPECT_EQ(l.warnings[0].message, "mesh 0 primitive 0 is made of points or lines: skipped");
 }
 
+// Mesh optimisers (gltfpack) store positions as integers (KHR_mesh_quantization):
+// here the unit cube's corners as normalised unsigned shorts, 8 bytes apart.
+TEST(InterchangeFormats, GltfQuantisedPositionsAreRead) {
+  const PolygonSoup cube = test::unit_cube();
+  std::string buffer;
+  for (const glm::dvec3& p : cube.points)
+    for (const double c : {p.x, p.y, p.z, 0.0}) test::append_le(buffer, uint16_t(c * 65535));
+  const size_t point_bytes = buffer.size();
+  for (uint32_t c : cube.corners) test::append_le(buffer, c);
+  const std::string json =
+      R"({"asset": {"version": "2.0"}, "extensionsUsed": ["KHR_mesh_quantization"], "extensionsRequired": ["KHR_mesh_quantization"],)"
+      R"( "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0, "scale": [2, 2, 2]}],)"
+      R"( "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}], "buffers": [{"byteLength": )" +
+      std::to_string(buffer.size()) + R"(}], "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": )" +
+      std::to_string(point_bytes) + R"(, "byteStride": 8}, {"buffer": 0, "byteOffset": )" + std::to_string(point_bytes) +
+      R"(, "byteLength": )" + std::to_string(buffer.size() - point_bytes) +
+      R"(}], "accessors": [{"bufferView": 0, "componentType": 5123, "normalized": true, "count": 8, "type": "VEC3"},)"
+      R"( {"bufferView": 1, "componentType": 5125, "count": 36, "type": "SCALAR"}]})";
+  const MeshReport r = check_mesh(parse_polygon_soup(test::glb(json, buffer), "q.glb"));
+  EXPECT_TRUE(r.is_closed_manifold());
+  EXPECT_EQ(r.bbox_min, glm::dvec3(0.0));
+  EXPECT_EQ(r.bbox_max, glm::dvec3(2.0));
+}
+
 TEST(InterchangeFormats, ThreeMfBuildAndComponentTransformsCompose) {
   const std::string resources = kBlue + test::threemf_object(2, test::unit_cube()) +
                                 R"(<object id="3" type="model"><components><component objectid="2" transform="2 0 0 0 2 0 0 0 2 0 0 0"/>)"

@@ -1,6 +1,9 @@
 // Real exported files, as Debian's assimp-testmodels ships them (build.sh
 // installs it): the same mesh from four exporters gets one report, exporters'
 // quirks are read with their warning, and broken files get their message.
+#include <unistd.h>
+
+#include <cstdlib>
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -58,6 +61,25 @@ TEST_F(RealFiles, InterchangeFormatsReadWithTheirVerdicts) {
   const MeshReport engine = check("glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
   EXPECT_EQ(engine.file_faces, 121496u);
   EXPECT_EQ(engine.components.size(), 96u);
+}
+
+// gltfpack (Debian's mesh optimiser for glTF) stores positions as integers
+// (KHR_mesh_quantization): its output of the engine is the same engine, to
+// within the quantisation step.
+TEST_F(RealFiles, GltfpackOutputIsTheSameModel) {
+  if (std::system("command -v gltfpack >/dev/null") != 0) GTEST_SKIP() << "needs Debian's gltfpack (build.sh installs it)";
+  const std::string engine = "glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
+  const std::string packed = testing::TempDir() + "umbra-engine-packed-" + std::to_string(::getpid()) + ".glb";
+  ASSERT_EQ(std::system(("gltfpack -i " + kModels + engine + " -o " + packed + " >/dev/null 2>&1").c_str()), 0);
+  const MeshReport original = check(engine);
+  const MeshReport r = check_mesh(read_polygon_soup(packed));
+  std::filesystem::remove(packed);
+  EXPECT_EQ(r.format, "glTF (binary .glb)");
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(r.bbox_min[k], original.bbox_min[k], 0.05) << k;
+    EXPECT_NEAR(r.bbox_max[k], original.bbox_max[k], 0.05) << k;
+  }
+  EXPECT_NEAR(double(r.triangles), double(original.triangles), 0.001 * double(original.triangles));
 }
 
 TEST_F(RealFiles, ExportersQuirksAreReadWithAWarning) {
