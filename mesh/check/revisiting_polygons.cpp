@@ -11,6 +11,12 @@ namespace {
 
 bool revisits(const uint32_t* corners, uint32_t count) {
   if (count <= 3) return false;  // a triangle that repeats a point is plain degenerate
+  if (count <= 8) {  // quads and their like, without an allocation each
+    for (uint32_t i = 0; i < count; ++i)
+      for (uint32_t j = i + 1; j < count; ++j)
+        if (corners[i] == corners[j]) return true;
+    return false;
+  }
   std::vector<uint32_t> sorted(corners, corners + count);
   std::sort(sorted.begin(), sorted.end());
   return std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
