@@ -36,6 +36,8 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
     if (staged) staged->clear();
     return parse_scene_file(path, progress);
   }
+  if (std::filesystem::path(path).filename().string().find('"') != std::string::npos)
+    throw InputError({path}, "a scene cannot name a file whose name holds a double quote: rename it to stage it");
   const std::string text = staged_scene_text(path);
   if (staged) *staged = text;
   return parse_scene_text(text, staged_scene_name(path), progress);

@@ -31,6 +31,13 @@ TEST(StagedMesh, AMeshFileIsToldFromASceneByItsContent) {
   EXPECT_FALSE(is_mesh_file(test::write_mesh("s.scene", "light 0 0 2\n")));
   EXPECT_FALSE(is_mesh_file(test::write_mesh("scene-no-extension", "light 0 0 2\nsphere 0 0 0 0.5\n")));
   EXPECT_FALSE(is_mesh_file("/nonexistent/mesh.obj"));
+  const std::string quoted = test::write_mesh("say \"cheese\".obj", test::obj_text(test::unit_cube()));
+  try {
+    parse_scene_or_mesh_file(quoted);
+    ADD_FAILURE() << "a file name with a double quote was staged";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), quoted + ": a scene cannot name a file whose name holds a double quote: rename it to stage it");
+  }
 }
 
 TEST(StagedMesh, FitsTheMeshIntoTheCubeOverTheFloorUnderOneLight) {
