@@ -2,6 +2,7 @@
 // each placed by its transform; an item that is a components object brings
 // its components, each with its own transform. Base-material colours become
 // the faces' materials.
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -154,9 +155,22 @@ class ThreeMfReader {
   std::map<std::pair<DWORD, DWORD>, int> materials_;
 };
 
+// A zip archive ends with its central directory's last record ("PK\5\6",
+// within the last 22 + 65535 bytes, the longest comment).
+bool has_end_of_central_directory(std::string_view bytes) {
+  const size_t tail = std::min<size_t>(bytes.size(), 22 + 65535);
+  return bytes.substr(bytes.size() - tail).find("PK\x05\x06") != std::string_view::npos;
+}
+
 }  // namespace
 
 PolygonSoup read_3mf(std::string_view bytes, const std::string& path) {
+  // Said here rather than by libzip through lib3mf, more plainly (and without
+  // lib3mf 1.8.1 leaking its zip source when libzip refuses an archive).
+  if (bytes.substr(0, 4) != std::string_view("PK\x03\x04", 4))
+    throw InputError({path, 0, 0}, "not a valid 3MF file: it is not a zip archive, which a 3MF file is");
+  if (!has_end_of_central_directory(bytes))
+    throw InputError({path, 0, 0}, "not a valid 3MF file: the zip archive is cut short (it has no end of central directory)");
   Held model, reader;
   if (lib3mf_createmodel(&model.object) != LIB3MF_OK)
     throw InputError({path, 0, 0}, "lib3mf could not start");
