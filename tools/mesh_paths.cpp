@@ -3,21 +3,15 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "mesh/input_error.hpp"
-#include "mesh/io/mapped_file.hpp"
 #include "mesh/io/mesh_format.hpp"
 #include "tools/command_line.hpp"
 
 namespace umbra {
 namespace {
 
+// Unreadable and without a mesh extension: not one of the meshes.
 bool has_mesh_name_or_content(const std::filesystem::path& path) {
-  if (!mesh_format_of(path.string()).empty()) return true;
-  try {
-    return !detect_mesh_format(MappedFile(path.string()).bytes()).empty();
-  } catch (const InputError&) {
-    return false;  // unreadable and without a mesh extension: not one of the meshes
-  }
+  return !mesh_format_of(path.string()).empty() || !detect_mesh_format_of_file(path.string()).empty();
 }
 
 std::vector<std::string> meshes_in_folder(const std::string& folder) {

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <filesystem>
 
+#include "mesh/input_error.hpp"
+#include "mesh/io/mapped_file.hpp"
 #include "mesh/io/mesh_readers.hpp"
 #include "mesh/io/text_scanner.hpp"
 
@@ -106,6 +108,14 @@ std::string detect_mesh_format(std::string_view bytes) {
   if (is_ascii_stl(head)) return "stl";
   if (is_obj(head)) return "obj";
   return "";
+}
+
+std::string detect_mesh_format_of_file(const std::string& path) {
+  try {
+    return detect_mesh_format(MappedFile(path).bytes());
+  } catch (const InputError&) {
+    return "";
+  }
 }
 
 std::string mesh_format_of(const std::string& path) {

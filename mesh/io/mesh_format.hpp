@@ -14,6 +14,10 @@ namespace umbra {
 // "" when they are not, or are too broken to say.
 std::string detect_mesh_format(std::string_view bytes);
 
+// The same for the file at `path`, read by memory mapping; "" too when it
+// cannot be read (whoever reads it next says why).
+std::string detect_mesh_format_of_file(const std::string& path);
+
 // "obj", "off", "ply", "stl", "3mf" for a path with one of those extensions
 // (any case), "gltf" for .gltf and .glb, or "" for any other.
 std::string mesh_format_of(const std::string& path);

@@ -106,9 +106,9 @@ PolygonSoup read_stl(std::string_view bytes, const std::string& path) {
       return read_binary_stl(bytes, path, triangle_count);
   }
   const size_t first = bytes.find_first_not_of(" \t\r\n");
-  if (first != std::string_view::npos && bytes.substr(first, 5) == "solid" && binary_stl_trailing_bytes(bytes) == 0)
-    return read_ascii_stl(bytes, path);
-  if (const size_t trailing = binary_stl_trailing_bytes(bytes)) {
+  const size_t trailing = binary_stl_trailing_bytes(bytes);
+  if (first != std::string_view::npos && bytes.substr(first, 5) == "solid" && trailing == 0) return read_ascii_stl(bytes, path);
+  if (trailing > 0) {
     PolygonSoup soup = read_binary_stl(bytes, path, little_endian_u32(bytes.data() + 80));
     soup.warn(0, std::to_string(trailing) + (trailing == 1 ? " byte" : " bytes") + " after the last of the " +
                      std::to_string(soup.polygon_count()) + " triangles ignored");

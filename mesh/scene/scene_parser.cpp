@@ -370,8 +370,8 @@ class SceneBuilder {
     glm::dvec3 fit_centre(0.0);
     double fit_scale = 1.0;
     if (m.fit && !analysis.positions.empty()) {
-      glm::dvec3 lo = analysis.positions[0], hi = lo;
-      for (const glm::dvec3& p : analysis.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+      // The check's box: over every point of the file, as the positions are.
+      const glm::dvec3 lo = analysis.report.bbox_min, hi = analysis.report.bbox_max;
       const double longest = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
       if (!(longest > 0.0)) throw InputError(pending.path_at, "mesh file " + in_quotes(m.path) + " has no extent to fit: all its points coincide");
       fit_centre = (lo + hi) / 2.0;

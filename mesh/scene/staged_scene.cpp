@@ -3,19 +3,12 @@
 #include <filesystem>
 
 #include "mesh/input_error.hpp"
-#include "mesh/io/mapped_file.hpp"
 #include "mesh/io/mesh_format.hpp"
 
 namespace umbra {
 
 bool is_mesh_file(const std::string& path) {
-  if (std::filesystem::path(path).extension() == ".scene") return false;
-  try {
-    const MappedFile file(path);
-    return !detect_mesh_format(file.bytes()).empty();
-  } catch (const InputError&) {
-    return false;
-  }
+  return std::filesystem::path(path).extension() != ".scene" && !detect_mesh_format_of_file(path).empty();
 }
 
 std::string staged_scene_text(const std::string& mesh_path) {
