@@ -13,7 +13,7 @@
 namespace umbra {
 namespace {
 
-constexpr size_t kLeafSize = 4;  // boxes per leaf of the hierarchy
+constexpr size_t kLeafSize = 12;  // boxes per leaf: measured best between 8 and 16 on a 1.2M-triangle scan
 
 float rounded_down(double x) {
   const float f = float(x);
@@ -51,23 +51,22 @@ struct MortonKeyed {
 
 // Box indices sorted along the Morton curve through their centres, so that
 // boxes near in the order are near in space.
-MortonKeyed morton_order(const std::vector<FloatBox>& boxes) {
-  FloatBox all = boxes[0];
-  for (const FloatBox& b : boxes) all = united(all, b);
-  std::vector<std::pair<uint64_t, uint32_t>> keyed(boxes.size());
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, boxes.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t i = r.begin(); i < r.end(); ++i) {
+MortonKeyed morton_order(size_t count, const FloatBox& all, const BoxOf& box_of) {
+  std::vector<std::pair<uint64_t, uint32_t>> keyed(count);
+  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, uint32_t(count), 4096), [&](const tbb::blocked_range<uint32_t>& r) {
+    for (uint32_t i = r.begin(); i < r.end(); ++i) {
+      const FloatBox box = box_of(i);
       uint64_t code = 0;
       for (int k = 0; k < 3; ++k) {
         const double extent = double(all.hi[size_t(k)]) - double(all.lo[size_t(k)]);
-        const double centre = 0.5 * (double(boxes[i].lo[size_t(k)]) + double(boxes[i].hi[size_t(k)]));
+        const double centre = 0.5 * (double(box.lo[size_t(k)]) + double(box.hi[size_t(k)]));
         double unit = extent > 0.0 ? (centre - double(all.lo[size_t(k)])) / extent : 0.0;
         // Coordinates beyond a float's range give infinite boxes, and then NaN
         // here; any cell will do for them (the order only speeds the search).
         if (!(unit >= 0.0)) unit = 0.0;
         code |= spread_bits(uint64_t(std::min(unit, 1.0) * double((1 << 21) - 1))) << k;
       }
-      keyed[i] = {code, uint32_t(i)};
+      keyed[i] = {code, i};
     }
   });
   tbb::parallel_sort(keyed.begin(), keyed.end());
@@ -76,6 +75,16 @@ MortonKeyed morton_order(const std::vector<FloatBox>& boxes) {
   result.order.resize(keyed.size());
   for (size_t i = 0; i < keyed.size(); ++i) result.codes[i] = keyed[i].first, result.order[i] = keyed[i].second;
   return result;
+}
+
+// What item_of gives for each index in `order`, in that order.
+template <typename Item, typename ItemOf>
+std::vector<Item> gathered(const std::vector<uint32_t>& order, const ItemOf& item_of) {
+  std::vector<Item> items(order.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, order.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i < r.end(); ++i) items[i] = item_of(order[i]);
+  });
+  return items;
 }
 
 // A binary tree over the sorted boxes, each node split where the highest bit
@@ -135,8 +144,10 @@ struct Hierarchy {
 // levels run as parallel tasks; pairs are handed over in batches.
 class SelfCollision {
  public:
-  SelfCollision(const Hierarchy& hierarchy, const std::vector<uint32_t>& order, const OverlapVisitor& visit)
-      : h_(hierarchy), order_(order), visit_(visit) {}
+  // `corners` in the hierarchy's order, or none.
+  SelfCollision(const Hierarchy& hierarchy, const std::vector<uint32_t>& order, const OverlapVisitor& visit,
+                const std::vector<std::array<uint32_t, 3>>& corners, const std::vector<uint8_t>* skipped_vertices)
+      : h_(hierarchy), order_(order), visit_(visit), corners_(corners), skipped_vertices_(skipped_vertices) {}
 
   bool run() {
     within(0, 0);
@@ -151,7 +162,15 @@ class SelfCollision {
     std::vector<std::pair<uint32_t, uint32_t>> pairs;
   };
 
+  bool skipped(uint32_t p, uint32_t q) const {
+    if (corners_.empty()) return false;
+    const std::array<uint32_t, 3>&s = corners_[p], &t = corners_[q];
+    for (const uint32_t v : s)
+      if ((*skipped_vertices_)[v] && (v == t[0] || v == t[1] || v == t[2])) return true;
+    return false;
+  }
   void emit(Batch& out, uint32_t p, uint32_t q) {
+    if (skipped(p, q)) return;
     out.pairs.emplace_back(order_[p], order_[q]);
     if (out.pairs.size() >= kBatch) flush(out);
   }
@@ -223,6 +242,8 @@ class SelfCollision {
   const Hierarchy& h_;
   const std::vector<uint32_t>& order_;
   const OverlapVisitor& visit_;
+  const std::vector<std::array<uint32_t, 3>>& corners_;
+  const std::vector<uint8_t>* skipped_vertices_;
   std::atomic<bool> stopped_{false};
 };
 
@@ -237,16 +258,23 @@ FloatBox enclosing_box(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec
   return box;
 }
 
-bool for_each_overlapping_pair(std::vector<FloatBox> boxes, const OverlapVisitor& visit) {
-  if (boxes.size() < 2) return true;
-  MortonKeyed keyed = morton_order(boxes);
+bool for_each_overlapping_pair(size_t count, const FloatBox& bounds, const BoxOf& box_of, const OverlapVisitor& visit,
+                               const SharedVertexSkip& skip) {
+  if (count < 2) return true;
+  MortonKeyed keyed = morton_order(count, bounds, box_of);
   const std::vector<uint32_t> order = std::move(keyed.order);
-  std::vector<FloatBox> sorted(boxes.size());
-  for (size_t i = 0; i < order.size(); ++i) sorted[i] = boxes[order[i]];
-  std::vector<FloatBox>().swap(boxes);
-  const Hierarchy hierarchy(std::move(sorted), keyed.codes);
+  std::vector<std::array<uint32_t, 3>> corners;
+  if (skip.corners_of) corners = gathered<std::array<uint32_t, 3>>(order, skip.corners_of);
+  const Hierarchy hierarchy(gathered<FloatBox>(order, box_of), keyed.codes);
   std::vector<uint64_t>().swap(keyed.codes);
-  return SelfCollision(hierarchy, order, visit).run();
+  return SelfCollision(hierarchy, order, visit, corners, skip.vertices).run();
+}
+
+bool for_each_overlapping_pair(const std::vector<FloatBox>& boxes, const OverlapVisitor& visit) {
+  if (boxes.empty()) return true;
+  FloatBox bounds = boxes[0];
+  for (const FloatBox& box : boxes) bounds = united(bounds, box);
+  return for_each_overlapping_pair(boxes.size(), bounds, [&boxes](uint32_t i) { return boxes[i]; }, visit);
 }
 
 }  // namespace umbra

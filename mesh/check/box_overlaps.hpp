@@ -30,9 +30,26 @@ FloatBox enclosing_box(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec
 // concurrently. Returning false stops the search.
 using OverlapVisitor = std::function<bool(const std::pair<uint32_t, uint32_t>* pairs, size_t count)>;
 
-// Hands every unordered pair of overlapping boxes to `visit` once. Returns
-// true when every pair was visited, false when a call returned false and
-// the search stopped early (calls already under way finish).
-bool for_each_overlapping_pair(std::vector<FloatBox> boxes, const OverlapVisitor& visit);
+// The box of each index below a count, asked for more than once (twice
+// costs less than holding every box in its first order as well as sorted).
+using BoxOf = std::function<FloatBox(uint32_t)>;
+
+// Pairs of triangles' boxes that need no visit: those whose triangles share
+// a vertex marked in `vertices`. They are left out as the search finds them,
+// which is far cheaper than handing them over when nearly every overlapping
+// pair is a pair of neighbours.
+struct SharedVertexSkip {
+  std::function<std::array<uint32_t, 3>(uint32_t)> corners_of;  // box index to its triangle's vertices; empty: skip nothing
+  const std::vector<uint8_t>* vertices = nullptr;  // per vertex, 1 to skip the pairs sharing it
+};
+
+// Hands every unordered pair of overlapping boxes to `visit` once, but for
+// those `skip` leaves out. `bounds` should hold every box; it only steers the
+// order of the search, never what it finds. Returns true when every pair was
+// visited, false when a call returned false and the search stopped early
+// (calls already under way finish).
+bool for_each_overlapping_pair(size_t count, const FloatBox& bounds, const BoxOf& box_of, const OverlapVisitor& visit,
+                               const SharedVertexSkip& skip = {});
+bool for_each_overlapping_pair(const std::vector<FloatBox>& boxes, const OverlapVisitor& visit);
 
 }  // namespace umbra

@@ -65,6 +65,10 @@ EdgeGroups group_edges(const PolygonSoup& soup, const FaceClasses& faces, size_t
                UnionFind(vertex_count), std::vector<uint8_t>(face_count, 0), std::vector<uint8_t>(vertex_count, 0), {}};
   std::vector<uint32_t> start(vertex_count + 1, 0);
   const std::vector<EdgeUse> uses = sorted_uses(soup, faces, start);
+  size_t edge_count = 0;  // reserved exactly: growing by doubling would hold half as much again
+  for (size_t v = 0; v < vertex_count; ++v)
+    for (uint32_t i = start[v]; i < start[v + 1]; ++i) edge_count += i == start[v] || uses[i].other != uses[i - 1].other;
+  g.edges.reserve(edge_count);
   for (size_t i = 0, bucket = 0; i < uses.size();) {
     while (start[bucket + 1] <= i) ++bucket;  // the bucket, and so the smaller vertex, of use i
     const uint32_t a = uint32_t(bucket), b = uses[i].other;

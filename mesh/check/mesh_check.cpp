@@ -4,6 +4,7 @@
 #include <array>
 
 #include <glm/common.hpp>
+#include <tbb/task_group.h>
 
 #include "mesh/check/components.hpp"
 #include "mesh/check/edge_groups.hpp"
@@ -99,8 +100,21 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   FaceTriangles triangles;
   ComponentLabels labels;
   std::vector<uint8_t> flip, non_manifold;
+  // The self-intersection search needs only the triangles: it runs beside the
+  // topological stages, and they are turned round only once it is done. What
+  // it uses is declared before it, so that it outlives the search should a
+  // stage throw.
+  SelfIntersections found;
+  tbb::task_group search;
   {
     const FaceClasses faces = classify_faces(soup, std::move(corners), merged.positions);
+    triangles = triangulate_faces(soup, faces, merged.positions);
+    if (options.self_intersection_seconds > 0.0) {
+      search.run([&] {
+        found = find_self_intersections(merged.positions, triangles.triangles, triangles.face,
+                                        options.self_intersection_seconds, MeshReport::kMaxExamples);
+      });
+    }
     std::vector<uint8_t> used(vertex_count, 0);
     for (const uint32_t v : faces.corners) used[v] = 1;
     report.vertices = size_t(std::count(used.begin(), used.end(), 1));
@@ -149,7 +163,6 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
       ++report.faces_to_flip;
       if (room_for(examples.faces_to_flip)) examples.faces_to_flip.push_back(face_ref(f));
     }
-    triangles = triangulate_faces(soup, faces, merged.positions);
 
     // V - E + F over the faces in the topology, each vertex once.
     size_t topology_faces = 0;
@@ -157,6 +170,7 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
     report.euler_characteristic = int64_t(fans.topology_vertices) - int64_t(groups.edges.size()) + int64_t(topology_faces);
   }
   report.components = labels.reports;
+  search.wait();
   turn_flipped(triangles, flip);
   report.triangles = triangles.triangles.size();
   summarise_components(merged.positions, triangles, labels, non_manifold, report);
@@ -168,8 +182,6 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
 
   report.self_intersections.time_limit_seconds = options.self_intersection_seconds;
   if (options.self_intersection_seconds > 0.0) {
-    const SelfIntersections found = find_self_intersections(merged.positions, triangles.triangles, triangles.face,
-                                                            options.self_intersection_seconds, MeshReport::kMaxExamples);
     report.self_intersections.checked = true;
     report.self_intersections.complete = found.complete;
     report.self_intersections.face_pairs = found.face_pairs;

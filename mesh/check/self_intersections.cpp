@@ -6,9 +6,14 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
+#include <glm/common.hpp>
+#include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
 
 #include "mesh/check/box_overlaps.hpp"
+#include "mesh/check/coordinate_projection.hpp"
+#include "mesh/check/simple_stars.hpp"
 
 namespace umbra {
 namespace {
@@ -16,39 +21,14 @@ namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 
-// A projection of space onto a coordinate plane, dropping the axis along
-// which triangle t's normal is largest, so that t's projection has area.
-// Projecting is exact (a coordinate is dropped), and on t's plane it is an
-// affine bijection: orientations there keep or all reverse their signs.
-struct Projection {
-  int u, v;  // the kept axes
-  explicit Projection(const std::array<Point, 3>& t) {
-    const Kernel::Vector_3 n = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
-    const double ax = std::abs(n.x()), ay = std::abs(n.y()), az = std::abs(n.z());
-    const int drop = ax >= ay && ax >= az ? 0 : ay >= az ? 1 : 2;
-    u = (drop + 1) % 3, v = (drop + 2) % 3;
-  }
-  // The exact orientation of the projected points: the determinant in
-  // doubles when it exceeds Shewchuk's bound on its rounding error
-  // ("Adaptive Precision Floating-Point Arithmetic and Fast Robust Geometric
-  // Predicates", 1997: ccwerrboundA = (3 + 16 eps) eps), else CGAL's exact
-  // predicate.
-  CGAL::Orientation orientation(const Point& p, const Point& q, const Point& r) const {
-    const double left = (p[u] - r[u]) * (q[v] - r[v]), right = (p[v] - r[v]) * (q[u] - r[u]);
-    const double det = left - right;
-    constexpr double kEpsilon = 0x1p-53;
-    constexpr double kBound = (3.0 + 16.0 * kEpsilon) * kEpsilon;
-    if (std::abs(det) > kBound * (std::abs(left) + std::abs(right))) return det > 0 ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN;
-    return CGAL::orientation(Kernel::Point_2(p[u], p[v]), Kernel::Point_2(q[u], q[v]), Kernel::Point_2(r[u], r[v]));
-  }
-};
+using Projection = CoordinateProjection;
 
 // Two triangles sharing the edge pq, with third corners a and b, meet only
 // along it when a and b lie strictly on opposite sides of pq in a projection
 // where a's triangle has area: if they are coplanar, they lie so in their
 // plane; if not, they meet only along pq anyway.
 bool apart_across_edge(const Point& p, const Point& q, const Point& a, const Point& b) {
-  const Projection projection({p, q, a});
+  const Projection projection(p, q, a);
   const CGAL::Orientation side_a = projection.orientation(p, q, a);
   return side_a != CGAL::COLLINEAR && projection.orientation(p, q, b) == -side_a;
 }
@@ -58,7 +38,7 @@ bool apart_across_edge(const Point& p, const Point& q, const Point& a, const Poi
 // span at v are disjoint: a point x != v in both would project into both
 // sectors, and the projection is one-to-one on the first triangle's plane.
 bool apart_at_vertex(const Point& v, Point a1, Point b1, Point a2, Point b2) {
-  const Projection projection({v, a1, b1});
+  const Projection projection(v, a1, b1);
   const CGAL::Orientation turn1 = projection.orientation(v, a1, b1), turn2 = projection.orientation(v, a2, b2);
   if (turn1 == CGAL::COLLINEAR || turn2 == CGAL::COLLINEAR) return false;
   if (turn1 == CGAL::CLOCKWISE) std::swap(a1, b1);  // each sector counterclockwise from a to b
@@ -130,18 +110,27 @@ SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positio
   const auto deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(time_limit_seconds));
 
   const auto point = [&positions](uint32_t v) { return Point(positions[v].x, positions[v].y, positions[v].z); };
-  std::vector<FloatBox> boxes;
+  // A triangle with collinear corners has no plane: the exact tests are
+  // undefined for it (the check reports its face as degenerate instead).
+  std::vector<uint8_t> has_plane(triangles.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, triangles.size(), 4096), [&](const tbb::blocked_range<size_t>& range) {
+    for (size_t t = range.begin(); t < range.end(); ++t)
+      has_plane[t] = !CGAL::collinear(point(triangles[t][0]), point(triangles[t][1]), point(triangles[t][2]));
+  });
   std::vector<uint32_t> triangle_of_box;
-  boxes.reserve(triangles.size());
   triangle_of_box.reserve(triangles.size());
-  for (uint32_t t = 0; t < triangles.size(); ++t) {
-    const auto& tri = triangles[t];
-    // A triangle with collinear corners has no plane: the exact tests are
-    // undefined for it (the check reports its face as degenerate instead).
-    if (CGAL::collinear(point(tri[0]), point(tri[1]), point(tri[2]))) continue;
-    boxes.push_back(enclosing_box(positions[tri[0]], positions[tri[1]], positions[tri[2]]));
-    triangle_of_box.push_back(t);
-  }
+  for (uint32_t t = 0; t < triangles.size(); ++t)
+    if (has_plane[t]) triangle_of_box.push_back(t);
+  std::vector<uint8_t>().swap(has_plane);
+  // Pairs sharing a vertex whose star is simple meet only where they share.
+  const std::vector<uint8_t> simple = find_simple_stars(positions, triangles, triangle_of_box);
+  const auto box_of = [&](uint32_t i) {
+    const auto& tri = triangles[triangle_of_box[i]];
+    return enclosing_box(positions[tri[0]], positions[tri[1]], positions[tri[2]]);
+  };
+  glm::dvec3 lo = positions.empty() ? glm::dvec3(0.0) : positions[0], hi = lo;
+  for (const glm::dvec3& p : positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  const SharedVertexSkip skip{[&](uint32_t i) { return triangles[triangle_of_box[i]]; }, &simple};
 
   struct WorkerState {
     std::vector<std::pair<uint32_t, uint32_t>> face_pairs;
@@ -167,7 +156,7 @@ SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positio
   };
 
   SelfIntersections result;
-  result.complete = for_each_overlapping_pair(std::move(boxes), test);
+  result.complete = for_each_overlapping_pair(triangle_of_box.size(), enclosing_box(lo, hi, hi), box_of, test, skip);
   std::vector<std::pair<uint32_t, uint32_t>> face_pairs;
   for (const WorkerState& state : workers) face_pairs.insert(face_pairs.end(), state.face_pairs.begin(), state.face_pairs.end());
   std::sort(face_pairs.begin(), face_pairs.end());
