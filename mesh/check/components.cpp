@@ -48,7 +48,8 @@ VertexFans find_vertex_fans(const PolygonSoup& soup, const FaceClasses& faces, E
   std::vector<uint32_t> component_of_vertex(vertex_count, kNone);
   std::vector<uint64_t> vertex_in_other_component;  // (component << 32) | vertex: only where components touch
   std::vector<uint32_t> fan_of_vertex(vertex_count, kNone);
-  std::vector<uint8_t> several_fans(vertex_count, 0);
+  std::vector<uint8_t>& several_fans = out.several_fans;
+  several_fans.assign(vertex_count, 0);
   for (uint32_t f = 0; f < face_count; ++f) {
     if (!faces.in_topology(f)) continue;
     const uint32_t component = labels.of_face[f];

@@ -25,6 +25,7 @@ struct VertexFans {
   std::vector<size_t> vertices;           // per component
   std::vector<uint8_t> non_manifold;      // per component: two fans of one vertex in it
   std::vector<uint32_t> non_manifold_vertices;  // in vertex order; vertices on a non-manifold edge are counted with the edge
+  std::vector<uint8_t> several_fans;      // per vertex: its corners form more than one fan
   size_t topology_vertices = 0;           // vertices of the faces in the topology
 };
 VertexFans find_vertex_fans(const PolygonSoup& soup, const FaceClasses& faces, EdgeGroups& groups,

@@ -59,7 +59,7 @@ std::vector<EdgeUse> sorted_uses(const PolygonSoup& soup, const FaceClasses& fac
 
 }  // namespace
 
-EdgeGroups group_edges(const PolygonSoup& soup, const FaceClasses& faces, size_t vertex_count) {
+EdgeGroups group_edges(const PolygonSoup& soup, const FaceClasses& faces, size_t vertex_count, EdgeTable* face_edges) {
   const size_t face_count = soup.polygon_count();
   EdgeGroups g{{}, UnionFind(face_count), ParityUnionFind(face_count), UnionFind(faces.corners.size()),
                UnionFind(vertex_count), std::vector<uint8_t>(face_count, 0), std::vector<uint8_t>(vertex_count, 0), {}};
@@ -69,12 +69,22 @@ EdgeGroups group_edges(const PolygonSoup& soup, const FaceClasses& faces, size_t
   for (size_t v = 0; v < vertex_count; ++v)
     for (uint32_t i = start[v]; i < start[v + 1]; ++i) edge_count += i == start[v] || uses[i].other != uses[i - 1].other;
   g.edges.reserve(edge_count);
+  if (face_edges) {
+    face_edges->vertices.reserve(edge_count);
+    face_edges->first_use.reserve(edge_count + 1);
+    face_edges->uses.reserve(uses.size());
+  }
   for (size_t i = 0, bucket = 0; i < uses.size();) {
     while (start[bucket + 1] <= i) ++bucket;  // the bucket, and so the smaller vertex, of use i
     const uint32_t a = uint32_t(bucket), b = uses[i].other;
     size_t j = i + 1;
     while (j < start[bucket + 1] && uses[j].other == b) ++j;
     g.edges.push_back({a, b, uses[i].face, uint32_t(j - i)});
+    if (face_edges) {
+      face_edges->vertices.push_back({a, b});
+      for (size_t k = i; k < j; ++k) face_edges->uses.push_back(uses[k].face << 1 | uint32_t(uses[k].forward()));
+      face_edges->first_use.push_back(uint32_t(face_edges->uses.size()));
+    }
     for (size_t k = i + 1; k < j; ++k) g.components.unite(uses[i].face, uses[k].face);
     if (j - i == 1) {
       g.border.unite(a, b);

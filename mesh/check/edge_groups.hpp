@@ -10,6 +10,7 @@
 
 #include "mesh/check/face_classes.hpp"
 #include "mesh/io/polygon_soup.hpp"
+#include "mesh/topology/edge_table.hpp"
 #include "mesh/topology/union_find.hpp"
 
 namespace umbra {
@@ -33,7 +34,10 @@ struct EdgeGroups {
   std::vector<uint32_t> inconsistent_edge_faces;  // a face of each edge two faces run the same way
 };
 
-EdgeGroups group_edges(const PolygonSoup& soup, const FaceClasses& faces, size_t vertex_count);
+// With `face_edges`, also every edge with each face's use of it, as an edge
+// table over the faces (see triangle_topology.hpp).
+EdgeGroups group_edges(const PolygonSoup& soup, const FaceClasses& faces, size_t vertex_count,
+                       EdgeTable* face_edges = nullptr);
 
 // The corner after `corner` round `face`.
 inline uint32_t next_corner(const PolygonSoup& soup, uint32_t face, uint32_t corner) {

@@ -106,6 +106,8 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   // stage throw.
   SelfIntersections found;
   tbb::task_group search;
+  std::optional<EdgeTable> face_edges;  // for the triangles' topology, when asked and all faces are triangles
+  std::vector<uint8_t> several_fans;
   {
     const FaceClasses faces = classify_faces(soup, std::move(corners), merged.positions);
     triangles = triangulate_faces(soup, faces, merged.positions);
@@ -130,7 +132,13 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
       if (room_for(examples.duplicate_faces)) examples.duplicate_faces.push_back({face_ref(f), face_ref(faces.duplicate_of[f])});
     }
 
-    EdgeGroups groups = group_edges(soup, faces, vertex_count);
+    if (options.triangle_topology) {
+      bool all_triangles = true;
+      for (uint32_t f = 0; f < soup.polygon_count() && all_triangles; ++f)
+        all_triangles = !faces.in_topology(f) || soup.corner_count(f) == 3;
+      if (all_triangles) face_edges.emplace();
+    }
+    EdgeGroups groups = group_edges(soup, faces, vertex_count, face_edges ? &*face_edges : nullptr);
     report.edges = groups.edges.size();
     report.inconsistent_edges = groups.inconsistent_edge_faces.size();
     for (const EdgeRun& e : groups.edges) {
@@ -144,7 +152,7 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
     }
 
     labels = label_components(faces, groups);
-    const VertexFans fans = find_vertex_fans(soup, faces, groups, labels, vertex_count);
+    VertexFans fans = find_vertex_fans(soup, faces, groups, labels, vertex_count);
     report.non_manifold_vertices = fans.non_manifold_vertices.size();
     for (size_t k = 0; k < std::min(fans.non_manifold_vertices.size(), MeshReport::kMaxExamples); ++k)
       examples.non_manifold_vertices.push_back(vertex_ref(fans.non_manifold_vertices[k]));
@@ -168,6 +176,7 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
     size_t topology_faces = 0;
     for (const ComponentReport& c : labels.reports) topology_faces += c.faces;
     report.euler_characteristic = int64_t(fans.topology_vertices) - int64_t(groups.edges.size()) + int64_t(topology_faces);
+    if (face_edges) several_fans = std::move(fans.several_fans);
   }
   report.components = labels.reports;
   search.wait();
@@ -179,6 +188,17 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   for (size_t t = 0; t < triangles.triangles.size(); ++t)
     if (report.components[labels.of_face[triangles.face[t]]].outward == false)
       std::swap(triangles.triangles[t][1], triangles.triangles[t][2]);
+  if (face_edges) {
+    std::vector<uint8_t> turned(triangles.triangles.size());
+    std::vector<uint32_t> component_of_triangle(triangles.triangles.size());
+    for (size_t t = 0; t < triangles.triangles.size(); ++t) {
+      const uint32_t f = triangles.face[t], c = labels.of_face[f];
+      component_of_triangle[t] = c;
+      turned[t] = flip[f] ^ uint8_t(report.components[c].outward == false);
+    }
+    analysis.topology = triangle_topology(std::move(*face_edges), triangles.triangles, triangles.face, turned,
+                                          component_of_triangle, report.components.size(), several_fans, report.border_loops);
+  }
 
   report.self_intersections.time_limit_seconds = options.self_intersection_seconds;
   if (options.self_intersection_seconds > 0.0) {

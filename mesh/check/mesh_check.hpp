@@ -5,7 +5,10 @@
 #include <array>
 #include <vector>
 
+#include <optional>
+
 #include "mesh/check/mesh_report.hpp"
+#include "mesh/check/triangle_topology.hpp"
 #include "mesh/io/polygon_soup.hpp"
 
 namespace umbra {
@@ -14,6 +17,10 @@ struct CheckOptions {
   // The search for self-intersections stops after this long and says so;
   // 0 skips it.
   double self_intersection_seconds = 60.0;
+  // Also hand over the triangles' edge table and closed components, for the
+  // renderer: from the check's own pass over the edges, for a mesh of
+  // triangles only (MeshAnalysis::topology stays empty for any other).
+  bool triangle_topology = false;
 };
 
 // The report, and the mesh as the renderer takes it: coincident points
@@ -30,6 +37,7 @@ struct MeshAnalysis {
   // `materials` per triangle, -1 for a face the file gives none.
   std::vector<SoupMaterial> materials;
   std::vector<int> triangle_materials;
+  std::optional<TriangleTopology> topology;  // of `triangles`, with CheckOptions::triangle_topology
 };
 
 MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options = {});

@@ -359,6 +359,7 @@ class SceneBuilder {
     try {
       CheckOptions topology_only;
       topology_only.self_intersection_seconds = 0.0;
+      topology_only.triangle_topology = true;
       analysis = analyse_mesh(read_polygon_soup(m.path), topology_only);
     } catch (const InputError& e) {
       if (e.where().line == 0)  // the file as a whole: say so at the statement that names it
@@ -392,8 +393,13 @@ class SceneBuilder {
     m.report = std::move(analysis.report);
     m.triangle_materials = std::move(analysis.triangle_materials);
     pending.file_materials = std::move(analysis.materials);
-    m.edges = build_edge_table(m.triangles, m.positions.size());
-    m.components = find_closed_components(m.triangles, m.edges, m.positions.size());
+    if (analysis.topology) {  // from the check's pass over the edges
+      m.edges = std::move(analysis.topology->edges);
+      m.components = std::move(analysis.topology->components);
+    } else {  // polygons: their diagonals are edges too
+      m.edges = build_edge_table(m.triangles, m.positions.size());
+      m.components = find_closed_components(m.triangles, m.edges, m.positions.size());
+    }
   }
 
   void camera(StatementReader& r) {

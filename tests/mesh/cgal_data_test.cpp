@@ -25,8 +25,10 @@
 
 #include "mesh/topology/half_edge_mesh.hpp"
 #include "mesh/check/mesh_check.hpp"
+#include "mesh/input_error.hpp"
 #include "mesh/io/mesh_file.hpp"
 #include "tests/mesh/mesh_builders.hpp"
+#include "tests/mesh/triangle_topology_expect.hpp"
 
 namespace umbra {
 namespace {
@@ -125,6 +127,23 @@ TEST(CgalData, EveryMeshIsReadAndAgreesWithCgal) {
   // The comparison covered both kinds (numbers as of CGAL 5.5's data).
   EXPECT_GT(compared_as_meshes, 50u);
   EXPECT_GT(refused_soups, 0u);
+}
+
+// On every data mesh of triangles, the renderer's edge table and closed
+// components taken from the check's pass equal those of a second pass.
+TEST(CgalData, TriangleTopologyFromTheCheckEqualsASecondPass) {
+  size_t given = 0;
+  for (const std::string& path : cgal_meshes()) {
+    SCOPED_TRACE(path);
+    PolygonSoup soup;
+    try {
+      soup = read_polygon_soup(path);
+    } catch (const InputError&) {
+      continue;  // the unreadable ones are tested above
+    }
+    given += test::expect_triangle_topology_as_built(soup);
+  }
+  EXPECT_GT(given, 80u);
 }
 
 // Grids of squares split in two, their points shaken: a little, so that every

@@ -34,20 +34,6 @@ void append_le(std::string& out, T value) {
   out.append(reinterpret_cast<const char*>(&value), sizeof value);  // little endian on the machines we build for
 }
 
-// `soup` with every polygon fanned into triangles: the writers below take triangles.
-inline PolygonSoup triangulated(const PolygonSoup& soup) {
-  PolygonSoup out = soup;
-  out.corners.clear();
-  out.polygon_starts = {0};
-  out.polygon_lines.clear();
-  for (size_t f = 0; f < soup.polygon_count(); ++f)
-    for (uint32_t k = 1; k + 1 < soup.corner_count(f); ++k) {
-      out.corners.insert(out.corners.end(), {soup.polygon(f)[0], soup.polygon(f)[k], soup.polygon(f)[k + 1]});
-      out.end_polygon(soup.polygon_line(f));
-    }
-  return out;
-}
-
 // A triangle soup's points as float VEC3 and its corners as uint32 indices:
 // the one buffer of the glTF files below.
 inline std::string gltf_buffer(const PolygonSoup& soup) {

@@ -25,6 +25,20 @@ inline PolygonSoup make_soup(const std::vector<glm::dvec3>& points, const std::v
   return soup;
 }
 
+// `soup` with every polygon fanned into triangles: for what takes triangles only.
+inline PolygonSoup triangulated(const PolygonSoup& soup) {
+  PolygonSoup out = soup;
+  out.corners.clear();
+  out.polygon_starts = {0};
+  out.polygon_lines.clear();
+  for (size_t f = 0; f < soup.polygon_count(); ++f)
+    for (uint32_t k = 1; k + 1 < soup.corner_count(f); ++k) {
+      out.corners.insert(out.corners.end(), {soup.polygon(f)[0], soup.polygon(f)[k], soup.polygon(f)[k + 1]});
+      out.end_polygon(soup.polygon_line(f));
+    }
+  return out;
+}
+
 // Appends `b` to `a` (indices shifted), as two components of one file.
 inline PolygonSoup combine(const PolygonSoup& a, const PolygonSoup& b) {
   PolygonSoup soup = a;

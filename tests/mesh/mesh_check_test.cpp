@@ -8,6 +8,7 @@
 #include "mesh/check/mesh_check.hpp"
 #include "mesh/check/self_intersections.hpp"
 #include "tests/mesh/mesh_builders.hpp"
+#include "tests/mesh/triangle_topology_expect.hpp"
 
 namespace umbra {
 namespace {
@@ -416,6 +417,35 @@ TEST(MeshCheck, RandomSoupsAreCheckedWithConsistentCounts) {
     EXPECT_EQ(loops, r.border_loops);
     EXPECT_EQ(r.is_closed_manifold(), r.problems().empty());
   }
+}
+
+// The renderer takes the edge table and closed components from the check's
+// pass over the edges; they must be what its own pass would make, on meshes
+// closed, open, flipped, inward, non-orientable and touching at a vertex, and
+// on random soups full of repeats, duplicates and non-manifold edges.
+TEST(MeshCheck, TriangleTopologyIsWhatASecondPassOverTheTrianglesGives) {
+  const PolygonSoup bowtie = combine(tetrahedron(), tetrahedron(glm::dvec3(1.0, 0.0, 0.0)));  // vertex 1 of one is vertex 0 of the other
+  for (const PolygonSoup& soup : {unit_cube(), reversed(unit_cube(), {0, 3, 7}), all_reversed(unit_cube()),
+                                  triangulated(hollow_cube()), without_faces(unit_cube(), {2}), triangulated(moebius_strip(12)),
+                                  bowtie, triangulated(uv_sphere(8, 12)), combine(unit_cube(), reversed(octahedron(), {1}))})
+    EXPECT_TRUE(test::expect_triangle_topology_as_built(soup));
+  EXPECT_FALSE(test::expect_triangle_topology_as_built(box_quads(glm::dvec3(0.0), glm::dvec3(1.0))));  // quads: not given
+
+  std::mt19937 random(5);
+  size_t given = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    std::vector<glm::dvec3> points;
+    const int point_count = 3 + int(random() % 8);
+    for (int i = 0; i < point_count; ++i) points.push_back(glm::dvec3(random() % 3, random() % 3, random() % 3));
+    std::vector<Face> faces;
+    const int face_count = 1 + int(random() % 16);
+    for (int f = 0; f < face_count; ++f) faces.push_back({uint32_t(random() % uint32_t(point_count)),
+                                                          uint32_t(random() % uint32_t(point_count)),
+                                                          uint32_t(random() % uint32_t(point_count))});
+    SCOPED_TRACE(trial);
+    given += test::expect_triangle_topology_as_built(make_soup(points, faces));
+  }
+  EXPECT_EQ(given, 400u);
 }
 
 }  // namespace
