@@ -2,6 +2,10 @@
 
 #include <algorithm>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+
 namespace umbra {
 namespace {
 
@@ -40,21 +44,37 @@ std::vector<EdgeUse> sorted_uses(const PolygonSoup& soup, const FaceClasses& fac
       }
     }
   }
-  for (size_t v = 0; v < vertex_count; ++v) {
-    if (start[v + 1] - start[v] > 32) {  // a vertex of high degree, the hub of a fan
-      std::sort(uses.begin() + start[v], uses.begin() + start[v + 1], [](const EdgeUse& x, const EdgeUse& y) {
-        return x.other != y.other ? x.other < y.other : x.face < y.face;
-      });
-      continue;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, vertex_count, 4096), [&](const tbb::blocked_range<size_t>& range) {
+    for (size_t v = range.begin(); v < range.end(); ++v) {
+      if (start[v + 1] - start[v] > 32) {  // a vertex of high degree, the hub of a fan
+        std::sort(uses.begin() + start[v], uses.begin() + start[v + 1], [](const EdgeUse& x, const EdgeUse& y) {
+          return x.other != y.other ? x.other < y.other : x.face < y.face;
+        });
+        continue;
+      }
+      for (uint32_t i = start[v] + 1; i < start[v + 1]; ++i) {
+        const EdgeUse use = uses[i];
+        uint32_t j = i;
+        for (; j > start[v] && uses[j - 1].other > use.other; --j) uses[j] = uses[j - 1];
+        uses[j] = use;  // insertion sort: stable, and most buckets hold a handful
+      }
     }
-    for (uint32_t i = start[v] + 1; i < start[v + 1]; ++i) {
-      const EdgeUse use = uses[i];
-      uint32_t j = i;
-      for (; j > start[v] && uses[j - 1].other > use.other; --j) uses[j] = uses[j - 1];
-      uses[j] = use;  // insertion sort: stable, and most buckets hold a handful
-    }
-  }
+  });
   return uses;
+}
+
+// Calls visit(a, b, i, j) for each edge a < b, in order, whose uses are
+// uses[i, j).
+template <typename Visit>
+void for_each_edge(const std::vector<EdgeUse>& uses, const std::vector<uint32_t>& start, Visit visit) {
+  for (size_t i = 0, bucket = 0; i < uses.size();) {
+    while (start[bucket + 1] <= i) ++bucket;  // the bucket, and so the smaller vertex, of use i
+    const uint32_t b = uses[i].other;
+    size_t j = i + 1;
+    while (j < start[bucket + 1] && uses[j].other == b) ++j;
+    visit(uint32_t(bucket), b, i, j);
+    i = j;
+  }
 }
 
 }  // namespace
@@ -74,35 +94,43 @@ EdgeGroups group_edges(const PolygonSoup& soup, const FaceClasses& faces, size_t
     face_edges->first_use.reserve(edge_count + 1);
     face_edges->uses.reserve(uses.size());
   }
-  for (size_t i = 0, bucket = 0; i < uses.size();) {
-    while (start[bucket + 1] <= i) ++bucket;  // the bucket, and so the smaller vertex, of use i
-    const uint32_t a = uint32_t(bucket), b = uses[i].other;
-    size_t j = i + 1;
-    while (j < start[bucket + 1] && uses[j].other == b) ++j;
-    g.edges.push_back({a, b, uses[i].face, uint32_t(j - i)});
-    if (face_edges) {
-      face_edges->vertices.push_back({a, b});
-      for (size_t k = i; k < j; ++k) face_edges->uses.push_back(uses[k].face << 1 | uint32_t(uses[k].forward()));
-      face_edges->first_use.push_back(uint32_t(face_edges->uses.size()));
-    }
-    for (size_t k = i + 1; k < j; ++k) g.components.unite(uses[i].face, uses[k].face);
-    if (j - i == 1) {
-      g.border.unite(a, b);
-    } else if (j - i == 2) {
-      const EdgeUse& x = uses[i];
-      const EdgeUse& y = uses[i + 1];
-      const bool same_direction = x.forward() == y.forward();
-      if (same_direction) g.inconsistent_edge_faces.push_back(x.face);
-      if (!g.flips.unite(x.face, y.face, same_direction ? 1 : 0)) g.orientation_conflict[x.face] = 1;
-      // Join the two faces' corners at each end of the edge.
-      const uint32_t x_next = next_corner(soup, x.face, x.corner()), y_next = next_corner(soup, y.face, y.corner());
-      g.fans.unite(x.corner(), same_direction ? y.corner() : y_next);
-      g.fans.unite(x_next, same_direction ? y_next : y.corner());
-    } else {
-      g.on_non_manifold_edge[a] = g.on_non_manifold_edge[b] = 1;
-    }
-    i = j;
-  }
+  // Faces, their orientations and the border on one core; corners into fans
+  // on the other (the largest of the union-finds, and independent).
+  tbb::parallel_invoke(
+      [&] {
+        for_each_edge(uses, start, [&](uint32_t a, uint32_t b, size_t i, size_t j) {
+          g.edges.push_back({a, b, uses[i].face, uint32_t(j - i)});
+          if (face_edges) {
+            face_edges->vertices.push_back({a, b});
+            for (size_t k = i; k < j; ++k) face_edges->uses.push_back(uses[k].face << 1 | uint32_t(uses[k].forward()));
+            face_edges->first_use.push_back(uint32_t(face_edges->uses.size()));
+          }
+          for (size_t k = i + 1; k < j; ++k) g.components.unite(uses[i].face, uses[k].face);
+          if (j - i == 1) {
+            g.border.unite(a, b);
+          } else if (j - i == 2) {
+            const EdgeUse& x = uses[i];
+            const EdgeUse& y = uses[i + 1];
+            const bool same_direction = x.forward() == y.forward();
+            if (same_direction) g.inconsistent_edge_faces.push_back(x.face);
+            if (!g.flips.unite(x.face, y.face, same_direction ? 1 : 0)) g.orientation_conflict[x.face] = 1;
+          } else {
+            g.on_non_manifold_edge[a] = g.on_non_manifold_edge[b] = 1;
+          }
+        });
+      },
+      [&] {
+        for_each_edge(uses, start, [&](uint32_t, uint32_t, size_t i, size_t j) {
+          if (j - i != 2) return;
+          // Join the two faces' corners at each end of the edge.
+          const EdgeUse& x = uses[i];
+          const EdgeUse& y = uses[i + 1];
+          const bool same_direction = x.forward() == y.forward();
+          const uint32_t x_next = next_corner(soup, x.face, x.corner()), y_next = next_corner(soup, y.face, y.corner());
+          g.fans.unite(x.corner(), same_direction ? y.corner() : y_next);
+          g.fans.unite(x_next, same_direction ? y_next : y.corner());
+        });
+      });
   return g;
 }
 
