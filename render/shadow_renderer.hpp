@@ -21,7 +21,9 @@ class ShadowTechnique;
 class ShadowRenderer {
  public:
   // Requires a current GL 3.3 core context whose default framebuffer is
-  // plan.settings.width x height with a stencil buffer.
+  // plan.settings.width x height with a stencil buffer. Reads `plan` only
+  // when it draws, so the plan may still be in the making while the renderer
+  // is built (umbra render makes both at once).
   ShadowRenderer(const Scene& scene, const RenderPlan& plan);
   ~ShadowRenderer();
 

@@ -4,6 +4,8 @@
 #include <iostream>
 #include <optional>
 
+#include <tbb/task_group.h>
+
 #include "mesh/scene/scene_checks.hpp"
 #include "mesh/scene/scene_parser.hpp"
 #include "mesh/scene/staged_scene.hpp"
@@ -147,14 +149,20 @@ int run_render_command(const std::vector<std::string>& argv) {
       image = std::move(frame.image);
       if (options.mask) mask = std::move(frame.masks[0]);
     } else {
-      const RenderPlan plan = make_render_plan(scene, options.settings);
+      // The plan is made on the other cores while the GL context, the shaders
+      // and the surfaces' buffers are set up here: the renderer reads the
+      // plan only when it draws. (The plan outlives the task making it.)
+      RenderPlan plan;
+      tbb::task_group planning;
+      planning.run([&] { plan = make_render_plan(scene, options.settings); });
+      HeadlessContext context(options.settings.width, options.settings.height);
+      ShadowRenderer renderer(scene, plan);
+      planning.wait();
       progress->update(2, "drawing");
       if (options.explain) {
         progress.reset();
         print_render_plan(std::cout, scene, plan);
       }
-      HeadlessContext context(plan.settings.width, plan.settings.height);
-      ShadowRenderer renderer(scene, plan);
       image = renderer.render_image(options.show_volumes);
       if (options.mask) mask = renderer.render_mask(0);
     }
