@@ -15,6 +15,7 @@
 #include "render/render_plan.hpp"
 #include "render/shadow_renderer.hpp"
 #include "tools/command_line.hpp"
+#include "tools/freed_memory_reuse.hpp"
 #include "tools/progress_bar.hpp"
 
 namespace umbra {
@@ -123,6 +124,7 @@ int run_render_command(const std::vector<std::string>& argv) {
   RenderOptions options;
   if (const auto exit_status = parse_command_line("render", kRenderUsage, argv, parse_render_options, options))
     return *exit_status;
+  keep_freed_memory_for_reuse();
   try {
     // Loading, planning and drawing: three steps, the first per mesh file.
     std::optional<ProgressBar> progress(std::in_place, 3);

@@ -21,6 +21,7 @@
 #include "render/text_overlay.hpp"
 #include "render/window_context.hpp"
 #include "tools/command_line.hpp"
+#include "tools/freed_memory_reuse.hpp"
 #include "tools/progress_bar.hpp"
 
 namespace umbra {
@@ -182,6 +183,7 @@ int run_view_command(const std::vector<std::string>& argv) {
   ViewOptions options;
   if (const auto exit_status = parse_command_line("view", kViewUsage, argv, parse_view_options, options))
     return *exit_status;
+  keep_freed_memory_for_reuse();
 
   // The window (and its GL context) is declared first so that it is destroyed
   // last, after the renderer's GL objects.

@@ -1,0 +1,9 @@
+#include "tools/freed_memory_reuse.hpp"
+
+#include <malloc.h>
+
+namespace umbra {
+
+void keep_freed_memory_for_reuse() { mallopt(M_MMAP_THRESHOLD, 1 << 30); }
+
+}  // namespace umbra

@@ -1,0 +1,16 @@
+#pragma once
+// Rendering a large mesh allocates and frees buffers of tens of megabytes in
+// turn (the file's soup, the edge records, the half-edge structure, the
+// surface arrays). glibc serves each block over 32 MB with its own mmap and
+// hands it back on free, so every one of them is faulted in page by page
+// from the kernel again: about a fifth of a 1.2M-triangle render.
+
+namespace umbra {
+
+// Keeps blocks of up to 1 GiB in the heap once freed, for the next
+// allocation to reuse (mallopt's M_MMAP_THRESHOLD): faster, at the cost of a
+// higher peak (bench/check_benchmark.sh measures both). For the commands that
+// render; umbra check keeps glibc's default, to hold its memory low.
+void keep_freed_memory_for_reuse();
+
+}  // namespace umbra
