@@ -23,22 +23,35 @@ std::vector<uint8_t> wrongly_facing_closed_components(const std::vector<glm::dve
                                                       const std::vector<uint32_t>& component_of, size_t count,
                                                       const std::vector<uint8_t>& closed) {
   std::vector<glm::dvec3> lo(count, glm::dvec3(1e300)), hi(count, glm::dvec3(-1e300));
-  std::vector<std::vector<uint32_t>> faces(count);
+  std::vector<uint8_t> has_faces(count, 0);
   for (uint32_t t = 0; t < triangles.size(); ++t) {
     const uint32_t c = component_of[t];
-    faces[c].push_back(t);
+    has_faces[c] = 1;
     for (const uint32_t v : triangles[t]) lo[c] = glm::min(lo[c], positions[v]), hi[c] = glm::max(hi[c], positions[v]);
   }
   std::vector<double> volume(count, 0.0);
-  for (size_t c = 0; c < count; ++c) {
+  for (uint32_t t = 0; t < triangles.size(); ++t) {
+    const uint32_t c = component_of[t];
     if (!closed[c]) continue;
     const glm::dvec3 centre = 0.5 * (lo[c] + hi[c]);
-    for (const uint32_t t : faces[c]) {
-      const glm::dvec3 a = positions[triangles[t][0]] - centre, b = positions[triangles[t][1]] - centre,
-                       e = positions[triangles[t][2]] - centre;
-      volume[c] += glm::dot(a, glm::cross(b, e)) / 6.0;
-    }
+    const glm::dvec3 a = positions[triangles[t][0]] - centre, b = positions[triangles[t][1]] - centre,
+                     e = positions[triangles[t][2]] - centre;
+    volume[c] += glm::dot(a, glm::cross(b, e)) / 6.0;
   }
+  // Nesting is tested only between closed components one of whose boxes
+  // holds the other: only those need their triangles listed (a single
+  // shell, however large, needs none).
+  const auto nest_candidates = [&](size_t d, size_t c) {
+    return d != c && closed[c] && closed[d] && has_faces[c] && has_faces[d] &&
+           !glm::any(glm::lessThan(lo[c], lo[d])) && !glm::any(glm::greaterThan(hi[c], hi[d]));
+  };
+  std::vector<uint8_t> listed(count, 0);
+  for (size_t c = 0; c < count; ++c)
+    for (size_t d = 0; d < count; ++d)
+      if (nest_candidates(d, c)) listed[c] = listed[d] = 1;
+  std::vector<std::vector<uint32_t>> faces(count);
+  for (uint32_t t = 0; t < triangles.size(); ++t)
+    if (listed[component_of[t]]) faces[component_of[t]].push_back(t);
   // How many closed components wind round component c: its depth.
   const auto winds_round = [&](size_t d, const glm::dvec3& p) {
     double sum = 0.0;
@@ -48,11 +61,10 @@ std::vector<uint8_t> wrongly_facing_closed_components(const std::vector<glm::dve
   };
   std::vector<uint8_t> wrong(count, 0);
   for (size_t c = 0; c < count; ++c) {
-    if (!closed[c] || faces[c].empty()) continue;
+    if (!closed[c] || !has_faces[c]) continue;
     int depth = 0;
     for (size_t d = 0; d < count; ++d) {
-      if (d == c || !closed[d] || faces[d].empty()) continue;
-      if (glm::any(glm::lessThan(lo[c], lo[d])) || glm::any(glm::greaterThan(hi[c], hi[d]))) continue;
+      if (!nest_candidates(d, c)) continue;
       // A vertex of c that d's surface does not pass through: winding near 0 or 1.
       double w = 0.5;
       for (size_t k = 0; k < faces[c].size() && k < 24 && std::abs(w - 0.5) < 0.25; ++k)
