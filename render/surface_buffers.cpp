@@ -5,6 +5,8 @@
 
 #include <glm/geometric.hpp>
 #include <glm/vector_relational.hpp>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "render/gl.hpp"
 
@@ -42,35 +44,44 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
   std::stable_sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) {
     return a.material != b.material ? a.material < b.material : (a.closed_mesh != nullptr) < (b.closed_mesh != nullptr);
   });
-  std::vector<float> data;  // position xyz, normal xyz
-  data.reserve(triangle_count * 18);
-  const auto add = [&data](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+  // Each triangle's three vertices (position xyz, normal xyz) at its place in
+  // one array, the runs laid out first and filled on every core after.
+  constexpr size_t kFloatsPerTriangle = 18;
+  std::vector<float> data(triangle_count * kFloatsPerTriangle);
+  const auto put = [&data](size_t at, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
     const glm::dvec3 n = glm::cross(b - a, c - a);  // flipped toward the eye in the shader
-    for (const glm::dvec3& p : {a, b, c}) data.insert(data.end(), {float(p.x), float(p.y), float(p.z), float(n.x), float(n.y), float(n.z)});
+    float* out = data.data() + at * kFloatsPerTriangle;
+    for (const glm::dvec3* p : {&a, &b, &c}) {
+      *out++ = float(p->x), *out++ = float(p->y), *out++ = float(p->z);
+      *out++ = float(n.x), *out++ = float(n.y), *out++ = float(n.z);
+    }
   };
+  size_t placed = 0;  // triangles laid out so far
   for (const Run& run : runs) {
     const bool closed = run.closed_mesh != nullptr;
     if (groups_.empty() || groups_.back().material != run.material || groups_.back().closed != closed) {
-      groups_.push_back({run.material, closed, glm::dvec3(0.0), glm::dvec3(0.0), int(data.size() / 6), 0});
+      groups_.push_back({run.material, closed, glm::dvec3(0.0), glm::dvec3(0.0), int(3 * placed), 0});
       if (closed) groups_.back().closed_lo = run.closed_mesh->bounds_min, groups_.back().closed_hi = run.closed_mesh->bounds_max;
     }
     TriangleGroup& group = groups_.back();
     if (closed)
       group.closed_lo = glm::min(group.closed_lo, run.closed_mesh->bounds_min), group.closed_hi = glm::max(group.closed_hi, run.closed_mesh->bounds_max);
     if (run.triangle) {
-      add(run.triangle->a, run.triangle->b, run.triangle->c);
+      put(placed++, run.triangle->a, run.triangle->b, run.triangle->c);
       group.vertex_count += 3;
       continue;
     }
     const std::vector<glm::dvec3>& p = run.mesh->positions;
     const auto& triangles = run.mesh->triangles;
-    if (run.subset) {
-      for (uint32_t t : *run.subset) add(p[triangles[t][0]], p[triangles[t][1]], p[triangles[t][2]]);
-      group.vertex_count += 3 * int(run.subset->size());
-      continue;
-    }
-    for (const auto& t : triangles) add(p[t[0]], p[t[1]], p[t[2]]);
-    group.vertex_count += 3 * int(triangles.size());
+    const size_t count = run.subset ? run.subset->size() : triangles.size();
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 16384), [&, first = placed](const tbb::blocked_range<size_t>& r) {
+      for (size_t i = r.begin(); i < r.end(); ++i) {
+        const auto& t = triangles[run.subset ? (*run.subset)[i] : i];
+        put(first + i, p[t[0]], p[t[1]], p[t[2]]);
+      }
+    });
+    placed += count;
+    group.vertex_count += 3 * int(count);
   }
   glGenVertexArrays(1, &triangle_vao_);
   glGenBuffers(1, &triangle_vbo_);
