@@ -7,6 +7,7 @@
 #include <glm/vector_relational.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "render/gl.hpp"
 
@@ -74,11 +75,15 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
     const std::vector<glm::dvec3>& p = run.mesh->positions;
     const auto& triangles = run.mesh->triangles;
     const size_t count = run.subset ? run.subset->size() : triangles.size();
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 16384), [&, first = placed](const tbb::blocked_range<size_t>& r) {
-      for (size_t i = r.begin(); i < r.end(); ++i) {
-        const auto& t = triangles[run.subset ? (*run.subset)[i] : i];
-        put(first + i, p[t[0]], p[t[1]], p[t[2]]);
-      }
+    // Isolated: while it waits for its share, this thread takes none of the
+    // other work under way (umbra render makes the plan meanwhile).
+    tbb::this_task_arena::isolate([&] {
+      tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 16384), [&, first = placed](const tbb::blocked_range<size_t>& r) {
+        for (size_t i = r.begin(); i < r.end(); ++i) {
+          const auto& t = triangles[run.subset ? (*run.subset)[i] : i];
+          put(first + i, p[t[0]], p[t[1]], p[t[2]]);
+        }
+      });
     });
     placed += count;
     group.vertex_count += 3 * int(count);

@@ -184,7 +184,10 @@ int layer_bound(const std::vector<glm::dvec3>& positions, const std::vector<std:
   for (const auto& t : triangles)
     for (const uint32_t v : t) lo = glm::min(lo, positions[v]), hi = glm::max(hi, positions[v]);
   const std::vector<Projection> projections = projections_for(0.5 * (lo + hi), 0.5 * glm::length(hi - lo), light);
-  const int n = int(std::clamp(1.5 * std::sqrt(double(triangles.size()) / double(projections.size())), 16.0, 2048.0));
+  // About 2.25 cells a triangle: the grid grows with the mesh, so that
+  // cells stay as fine and the work linear (8192 x 8192 cells of 16 bits is
+  // 128 MiB a thread, reached only past 30M triangles).
+  const int n = int(std::clamp(1.5 * std::sqrt(double(triangles.size()) / double(projections.size())), 16.0, 8192.0));
   const auto footprint_of = [&](size_t t, const Projection& p) {
     const glm::dvec3 d[3] = {positions[triangles[t][0]] - light, positions[triangles[t][1]] - light,
                              positions[triangles[t][2]] - light};

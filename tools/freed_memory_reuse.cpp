@@ -4,6 +4,6 @@
 
 namespace umbra {
 
-void keep_freed_memory_for_reuse() { mallopt(M_MMAP_THRESHOLD, 1 << 30); }
+void keep_freed_memory_for_reuse() { mallopt(M_MMAP_THRESHOLD, 256 << 20); }
 
 }  // namespace umbra
