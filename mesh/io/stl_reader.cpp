@@ -2,8 +2,12 @@
 // ascii ("solid ... facet normal ... outer loop / vertex x y z / endloop ...").
 // STL repeats each point in every triangle that uses it; the check merges
 // points that coincide.
+#include <atomic>
 #include <cmath>
 #include <cstring>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "mesh/io/mesh_readers.hpp"
 #include "mesh/io/text_scanner.hpp"
@@ -35,21 +39,32 @@ PolygonSoup read_binary_stl(std::string_view bytes, const std::string& path, uin
   PolygonSoup soup;
   soup.path = path;
   soup.format = "STL (binary)";
-  soup.points.reserve(size_t(triangle_count) * 3);
-  soup.corners.reserve(size_t(triangle_count) * 3);
-  soup.polygon_starts.reserve(size_t(triangle_count) + 1);
-  for (uint32_t t = 0; t < triangle_count; ++t) {
-    const char* record = bytes.data() + kBinaryHeaderBytes + size_t(t) * kBinaryTriangleBytes;
-    for (int k = 0; k < 3; ++k) {
-      const char* xyz = record + 12 + 12 * k;  // after the facet normal
-      const glm::dvec3 p(little_endian_float(xyz), little_endian_float(xyz + 4), little_endian_float(xyz + 8));
-      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-        throw InputError({path, 0, 0}, "triangle " + std::to_string(t) + " has a vertex coordinate that is not a finite number");
-      soup.corners.push_back(uint32_t(soup.points.size()));
-      soup.points.push_back(p);
+  if (size_t(triangle_count) * 3 > UINT32_MAX)  // corners are numbered in 32 bits
+    throw InputError({path, 0, 0}, "too large to read: " + std::to_string(triangle_count) + " triangles (at most 1431655765)");
+  soup.points.resize(size_t(triangle_count) * 3);
+  soup.corners.resize(size_t(triangle_count) * 3);
+  soup.polygon_starts.resize(size_t(triangle_count) + 1);
+  // Records have a fixed size: each is read at its place, on every core; the
+  // first triangle with a coordinate that is not finite is the one named.
+  std::atomic<uint32_t> first_bad{triangle_count};
+  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, triangle_count, 16384), [&](const tbb::blocked_range<uint32_t>& r) {
+    for (uint32_t t = r.begin(); t < r.end(); ++t) {
+      const char* record = bytes.data() + kBinaryHeaderBytes + size_t(t) * kBinaryTriangleBytes;
+      for (uint32_t k = 0; k < 3; ++k) {
+        const char* xyz = record + 12 + 12 * k;  // after the facet normal
+        const glm::dvec3 p(little_endian_float(xyz), little_endian_float(xyz + 4), little_endian_float(xyz + 8));
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+          uint32_t seen = first_bad.load();
+          while (t < seen && !first_bad.compare_exchange_weak(seen, t)) {}
+        }
+        soup.points[3 * size_t(t) + k] = p;
+        soup.corners[3 * size_t(t) + k] = 3 * t + k;
+      }
+      soup.polygon_starts[size_t(t) + 1] = 3 * (t + 1);
     }
-    soup.polygon_starts.push_back(uint32_t(soup.corners.size()));
-  }
+  });
+  if (first_bad < triangle_count)
+    throw InputError({path, 0, 0}, "triangle " + std::to_string(first_bad.load()) + " has a vertex coordinate that is not a finite number");
   return soup;
 }
 
