@@ -1,6 +1,7 @@
 // Reading mesh files as written, and the exact error for each kind of bad file.
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -192,6 +193,16 @@ TEST(MeshFile, BadFilesGetTheirExactLocatedError) {
   EXPECT_EQ(test::read_error_of(binary_stl({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}}).substr(0, 120), "c.stl"),
             "c.stl: not a valid STL file: as binary STL its 1 triangles need 134 bytes but the file has 120, and it "
             "does not begin with \"solid\" as ascii STL does");
+  {
+    // Records are read on every core; the first bad one is named, whichever
+    // thread finds a later one first.
+    std::vector<std::array<glm::vec3, 3>> triangles(40000, {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)});
+    triangles[39000][2].z = std::numeric_limits<float>::infinity();
+    triangles[20001][1].y = std::numeric_limits<float>::quiet_NaN();
+    triangles[20002][0].x = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_EQ(test::read_error_of(binary_stl(triangles), "e.stl"),
+              "e.stl: triangle 20001 has a vertex coordinate that is not a finite number");
+  }
   EXPECT_EQ(test::read_error_of("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n", "d.ply"),
             "d.ply:4: the PLY header has no \"end_header\"");
   EXPECT_EQ(test::read_error_of("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n0\n", "d.ply"),
