@@ -3,7 +3,8 @@
 # triangles, side by side with admesh (the checker a user would pick
 # instead), and umbra check over a folder of real meshes with one job and
 # with every core. All rows come from one run; each is the median of RUNS
-# runs of wall time and peak resident memory (GNU time's %e and %M).
+# runs of wall time and peak resident memory (GNU time's %e and %M), the rows
+# taken in turn in each round.
 #
 # The mesh: CGAL's bunny00.off (75,408 triangles, from Debian's libcgal-demo)
 # with each triangle split into four, twice (1,206,528 triangles) and three
@@ -11,7 +12,7 @@
 # glTF binary (GLB).
 # The folder: CGAL's 143 data meshes.
 #
-#   bench/check_benchmark.sh [RUNS]     (after ./build.sh; default 5 runs)
+#   bench/check_benchmark.sh [RUNS]     (after ./build.sh; default 5 rounds)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=${1:-5}
@@ -45,40 +46,52 @@ done
 
 . bench/timing.sh
 
-# measure NAME COMMAND...: runs it $runs times; prints a table row and keeps
-# the medians in $seconds and $mib for the ratios below.
-measure() {
-  local name=$1; shift
-  rm -f "$data/time.txt"
-  for ((i = 0; i < runs; i++)); do time_once "$data/time.txt" "$@"; done
-  seconds=$(median_of "$data/time.txt" 1)
-  mib=$(echo "$(median_of "$data/time.txt" 2) / 1024" | bc -l)
-  printf '| %s | %s | %.0f |\n' "$name" "$seconds" "$mib"
-}
-ratio() { echo "scale=2; $1 / $2" | bc -l; }
+# The rows, each "NAME|COMMAND". Every round runs each row once, in this
+# order, so that a shared machine's drift from fast to slow spreads over all
+# rows alike instead of landing on whichever ran last.
+rows=(
+  "admesh bunny-1M.stl|admesh $data/bunny-1M.stl"
+  "umbra check bunny-1M.stl|$build/umbra check $data/bunny-1M.stl"
+  "umbra check bunny-1M.stl --jobs 1 (one core)|$build/umbra check --jobs 1 $data/bunny-1M.stl"
+  "umbra check bunny-1M.stl --time-limit 0 (no self-intersection search)|$build/umbra check --time-limit 0 $data/bunny-1M.stl"
+  "umbra check bunny-1M.obj|$build/umbra check $data/bunny-1M.obj"
+  "umbra check bunny-1M.glb|$build/umbra check $data/bunny-1M.glb"
+  "umbra render bunny-1M.scene, 800x800|$build/umbra render $data/bunny-1M.scene -o $data/bunny-1M.png --size 800x800"
+  "umbra render bunny-4M.scene, 800x800|$build/umbra render $data/bunny-4M.scene -o $data/bunny-4M.png --size 800x800"
+  "umbra check --jobs 1 on CGAL's 143 data meshes|$build/umbra check --jobs 1 $data/data/meshes"
+  "umbra check --jobs $(nproc) on CGAL's 143 data meshes|$build/umbra check $data/data/meshes"
+)
+rm -f "$data"/time-*.txt
+for ((i = 0; i < runs; i++)); do
+  for k in "${!rows[@]}"; do
+    # shellcheck disable=SC2086 # the command is split into words on purpose (no path holds a blank)
+    time_once "$data/time-$k.txt" ${rows[$k]#*|}
+  done
+done
 
-echo "$(nproc) cores; $runs runs each; bunny-1M.stl is $(stat -c %s "$data/bunny-1M.stl") bytes"
+echo "$(nproc) cores; $runs rounds; bunny-1M.stl is $(stat -c %s "$data/bunny-1M.stl") bytes"
 echo
 echo "| command | median wall time (s) | median peak memory (MiB) |"
 echo "|---|---|---|"
-measure "admesh bunny-1M.stl" admesh "$data/bunny-1M.stl"; admesh_s=$seconds admesh_mib=$mib
-measure "umbra check bunny-1M.stl" $build/umbra check "$data/bunny-1M.stl"; check_s=$seconds check_mib=$mib
-measure "umbra check bunny-1M.stl --jobs 1 (one core)" $build/umbra check --jobs 1 "$data/bunny-1M.stl"; check1_s=$seconds
-measure "umbra check bunny-1M.stl --time-limit 0 (no self-intersection search)" $build/umbra check --time-limit 0 "$data/bunny-1M.stl"; topology_s=$seconds
-measure "umbra check bunny-1M.obj" $build/umbra check "$data/bunny-1M.obj"
-measure "umbra check bunny-1M.glb" $build/umbra check "$data/bunny-1M.glb"
-measure "umbra render bunny-1M.scene, 800x800" $build/umbra render "$data/bunny-1M.scene" -o "$data/bunny-1M.png" --size 800x800; render1_s=$seconds render1_mib=$mib
-measure "umbra render bunny-4M.scene, 800x800" $build/umbra render "$data/bunny-4M.scene" -o "$data/bunny-4M.png" --size 800x800; render4_s=$seconds
-measure "umbra check --jobs 1 on CGAL's 143 data meshes" $build/umbra check --jobs 1 "$data/data/meshes"; folder1_s=$seconds
-measure "umbra check --jobs $(nproc) on CGAL's 143 data meshes" $build/umbra check "$data/data/meshes"; folderN_s=$seconds
+for k in "${!rows[@]}"; do
+  printf '| %s | %s | %.0f |\n' "${rows[$k]%%|*}" "$(median_of "$data/time-$k.txt" 1)" \
+    "$(echo "$(median_of "$data/time-$k.txt" 2) / 1024" | bc -l)"
+done
+# ratio A B [COLUMN]: the median over the rounds of row A's figure over row
+# B's in the same round (wall time, or COLUMN 2 for memory): a slow spell of
+# the machine then weighs on both sides of each ratio alike.
+ratio() {
+  paste -d' ' "$data/time-$1.txt" "$data/time-$2.txt" |
+    awk -v c="${3:-1}" '{printf "%.4f\n", $c / $(c + 2)}' | median | awk '{printf "%.2f", $1}'
+}
 echo
-echo "| ratio | measured |"
+echo "| ratio (median of the rounds' ratios) | measured |"
 echo "|---|---|"
-echo "| umbra check / admesh, time (1.2M triangles, STL) | $(ratio "$check_s" "$admesh_s") |"
-echo "| umbra check / admesh, memory | $(ratio "$check_mib" "$admesh_mib") |"
-echo "| umbra check, every core / one core | $(ratio "$check_s" "$check1_s") |"
-echo "| umbra check without the self-intersection search / admesh, time | $(ratio "$topology_s" "$admesh_s") |"
-echo "| umbra render (1.2M, OBJ, 800x800) / admesh, time | $(ratio "$render1_s" "$admesh_s") |"
-echo "| umbra render (1.2M) / admesh, memory | $(ratio "$render1_mib" "$admesh_mib") |"
-echo "| umbra render, 4.8M / 1.2M triangles, time | $(ratio "$render4_s" "$render1_s") |"
-echo "| umbra check on a folder, --jobs $(nproc) / --jobs 1, time | $(ratio "$folderN_s" "$folder1_s") |"
+echo "| umbra check / admesh, time (1.2M triangles, STL) | $(ratio 1 0) |"
+echo "| umbra check / admesh, memory | $(ratio 1 0 2) |"
+echo "| umbra check, every core / one core | $(ratio 1 2) |"
+echo "| umbra check without the self-intersection search / admesh, time | $(ratio 3 0) |"
+echo "| umbra render (1.2M, OBJ, 800x800) / admesh, time | $(ratio 6 0) |"
+echo "| umbra render (1.2M) / admesh, memory | $(ratio 6 0 2) |"
+echo "| umbra render, 4.8M / 1.2M triangles, time | $(ratio 7 6) |"
+echo "| umbra check on a folder, --jobs $(nproc) / --jobs 1, time | $(ratio 9 8) |"
