@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -149,6 +150,7 @@ void for_each_cell(const Footprint& f, const CellBox& box, double x0, double y0,
 // although no ray crosses many of them.
 constexpr size_t kSplitAbove = 64;
 constexpr int kSplitDepth = 4;
+constexpr long kRefineTests = 64;  // footprint tests a hot cell may spend, per footprint it holds
 
 // The most footprints `members` (indices into `all`) over any subcell of the
 // square [x, x + w]^2, splitting it while that helps; as soon as a subcell
@@ -212,46 +214,74 @@ int layer_bound(const std::vector<glm::dvec3>& positions, const std::vector<std:
                       [&](int i, int j) { add(local[size_t(j) * size_t(n) + size_t(i)], 1); });
       }
     });
-    std::vector<uint16_t> count(size_t(n) * size_t(n), 0);
-    for (const std::vector<uint16_t>& local : counts)
-      for (size_t k = 0; k < count.size(); ++k) add(count[k], local[k]);
-    // Split the cells that hold many, with the footprints whose boxes touch them.
-    std::vector<int32_t> hot_index(count.size(), -1);
-    std::vector<std::vector<uint32_t>> hot_members;
+    // The threads' grids summed into one of them.
+    auto grid = counts.begin();
+    std::vector<uint16_t>& count = *grid;
+    for (++grid; grid != counts.end(); ++grid) {
+      const std::vector<uint16_t>& local = *grid;
+      tbb::parallel_for(tbb::blocked_range<size_t>(0, count.size(), 1 << 16), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t k = r.begin(); k < r.end(); ++k) add(count[k], local[k]);
+      });
+    }
+    // Split the cells that hold many (in cell order, and a bit per cell, which
+    // stays in cache where the counts do not), with the footprints whose
+    // boxes touch them.
+    std::vector<uint32_t> hot_cells;
+    std::vector<uint64_t> hot_bits((count.size() + 63) / 64, 0);
     for (size_t k = 0; k < count.size(); ++k) {
       if (count[k] > kSplitAbove) {
-        hot_index[k] = int32_t(hot_members.size());
-        hot_members.emplace_back();
+        hot_cells.push_back(uint32_t(k));
+        hot_bits[k / 64] |= uint64_t(1) << (k % 64);
       } else {
         most = std::max(most, int(count[k]));
       }
     }
-    if (hot_members.empty()) continue;
-    std::vector<Footprint> hot_footprints;
-    for (size_t t = 0; t < triangles.size(); ++t) {
-      const CellBox& box = boxes[t];
-      bool kept = false;
+    if (hot_cells.empty()) continue;
+    const auto for_each_hot_cell = [&](const CellBox& box, auto visit) {
       for (int j = box.j0; j <= box.j1; ++j)
         for (int i = box.i0; i <= box.i1; ++i) {
-          const int32_t h = hot_index[size_t(j) * size_t(n) + size_t(i)];
-          if (h < 0) continue;
-          hot_members[size_t(h)].push_back(uint32_t(hot_footprints.size()));
-          kept = true;
+          const size_t k = size_t(j) * size_t(n) + size_t(i);
+          if ((hot_bits[k / 64] >> (k % 64)) & 1) visit(k);
         }
-      if (kept) hot_footprints.push_back(footprint_of(t, p));
+    };
+    std::vector<uint8_t> touches_hot(triangles.size(), 0);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, triangles.size(), 8192), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t t = r.begin(); t < r.end(); ++t) for_each_hot_cell(boxes[t], [&](size_t) { touches_hot[t] = 1; });
+    });
+    // Each hot cell's triangles, in triangle order; their footprints are made
+    // again as each cell is refined (a hot triangle touches a cell or two),
+    // which holds far less than keeping them all would.
+    std::vector<std::vector<uint32_t>> hot_members(hot_cells.size());
+    for (uint32_t t = 0; t < triangles.size(); ++t) {
+      if (!touches_hot[t]) continue;
+      for_each_hot_cell(boxes[t], [&](size_t k) {
+        hot_members[size_t(std::lower_bound(hot_cells.begin(), hot_cells.end(), uint32_t(k)) - hot_cells.begin())].push_back(t);
+      });
     }
-    // The fullest cells first: a stack deeper than the limit shows at once.
-    std::vector<size_t> hot_cells;
-    for (size_t k = 0; k < count.size(); ++k)
-      if (hot_index[k] >= 0) hot_cells.push_back(k);
-    std::sort(hot_cells.begin(), hot_cells.end(), [&](size_t a, size_t b) { return count[a] > count[b]; });
-    long budget = 64 * long(triangles.size());
-    for (const size_t k : hot_cells) {
-      const double x = -p.range + double(k % size_t(n)) * w, y = -p.range + double(k / size_t(n)) * w;
-      most = std::max(most, int(refined_count(hot_footprints, hot_members[size_t(hot_index[k])], x, y, w, margin, 0,
-                                              size_t(limit), budget)));
-      if (most > limit) return limit + 1;
-    }
+    // The fullest cells first, so that a stack deeper than the limit shows
+    // early; each refined on its own, on every core, spending at most
+    // kRefineTests tests per footprint it holds (so the bound is the same
+    // whichever thread refines which cell).
+    std::vector<uint32_t> fullest(hot_cells.size());
+    for (uint32_t h = 0; h < fullest.size(); ++h) fullest[h] = h;
+    std::stable_sort(fullest.begin(), fullest.end(), [&](uint32_t a, uint32_t b) { return count[hot_cells[a]] > count[hot_cells[b]]; });
+    std::atomic<int> deepest{most};
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, fullest.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t i = r.begin(); i < r.end() && deepest.load() <= limit; ++i) {
+        const uint32_t h = fullest[i];
+        const size_t k = hot_cells[h];
+        const double x = -p.range + double(k % size_t(n)) * w, y = -p.range + double(k / size_t(n)) * w;
+        const std::vector<uint32_t>& members = hot_members[h];
+        std::vector<Footprint> footprints(members.size());
+        std::vector<uint32_t> local(members.size());
+        for (uint32_t m = 0; m < members.size(); ++m) footprints[m] = footprint_of(members[m], p), local[m] = m;
+        long budget = kRefineTests * long(members.size());
+        const int found = int(refined_count(footprints, local, x, y, w, margin, 0, size_t(limit), budget));
+        for (int seen = deepest.load(); found > seen && !deepest.compare_exchange_weak(seen, found);) {}
+      }
+    });
+    most = deepest.load();
+    if (most > limit) return limit + 1;
   }
   return std::min(most, limit + 1);
 }
