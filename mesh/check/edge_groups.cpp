@@ -86,8 +86,7 @@ EdgeGroups group_edges(const PolygonSoup& soup, const FaceClasses& faces, size_t
   std::vector<uint32_t> start(vertex_count + 1, 0);
   const std::vector<EdgeUse> uses = sorted_uses(soup, faces, start);
   size_t edge_count = 0;  // reserved exactly: growing by doubling would hold half as much again
-  for (size_t v = 0; v < vertex_count; ++v)
-    for (uint32_t i = start[v]; i < start[v + 1]; ++i) edge_count += i == start[v] || uses[i].other != uses[i - 1].other;
+  for_each_edge(uses, start, [&](uint32_t, uint32_t, size_t, size_t) { ++edge_count; });
   g.edges.reserve(edge_count);
   if (face_edges) {
     face_edges->vertices.reserve(edge_count);

@@ -27,13 +27,12 @@ bool room_for(const List& list) {
 // Per component, from what the stages found: closed, manifold, orientable,
 // genus, and for closed orientable ones whether they face outward.
 void summarise_components(const std::vector<glm::dvec3>& positions, const FaceTriangles& triangles,
-                          const ComponentLabels& labels, const std::vector<uint8_t>& non_manifold, MeshReport& report) {
+                          const std::vector<uint32_t>& component_of_triangle, const ComponentLabels& labels,
+                          const std::vector<uint8_t>& non_manifold, MeshReport& report) {
   std::vector<ComponentReport>& comps = report.components;
   std::vector<uint8_t> closed_and_orientable(comps.size(), 0);
   for (size_t i = 0; i < comps.size(); ++i)
     closed_and_orientable[i] = comps[i].border_edges == 0 && !non_manifold[i] && !labels.conflict[i];
-  std::vector<uint32_t> component_of_triangle(triangles.triangles.size());
-  for (size_t t = 0; t < triangles.triangles.size(); ++t) component_of_triangle[t] = labels.of_face[triangles.face[t]];
   const std::vector<uint8_t> facing_in =
       wrongly_facing_closed_components(positions, triangles.triangles, component_of_triangle, comps.size(), closed_and_orientable);
   for (size_t i = 0; i < comps.size(); ++i) {
@@ -182,20 +181,17 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   search.wait();
   turn_flipped(triangles, flip);
   report.triangles = triangles.triangles.size();
-  summarise_components(merged.positions, triangles, labels, non_manifold, report);
+  std::vector<uint32_t> component_of_triangle(triangles.triangles.size());
+  for (size_t t = 0; t < triangles.triangles.size(); ++t) component_of_triangle[t] = labels.of_face[triangles.face[t]];
+  summarise_components(merged.positions, triangles, component_of_triangle, labels, non_manifold, report);
   // The renderer gets closed components facing outward, so that it can cull
   // their back faces (the file's orientation stays in the report).
+  const auto faces_in = [&](size_t t) { return report.components[component_of_triangle[t]].outward == false; };
   for (size_t t = 0; t < triangles.triangles.size(); ++t)
-    if (report.components[labels.of_face[triangles.face[t]]].outward == false)
-      std::swap(triangles.triangles[t][1], triangles.triangles[t][2]);
+    if (faces_in(t)) std::swap(triangles.triangles[t][1], triangles.triangles[t][2]);
   if (face_edges) {
     std::vector<uint8_t> turned(triangles.triangles.size());
-    std::vector<uint32_t> component_of_triangle(triangles.triangles.size());
-    for (size_t t = 0; t < triangles.triangles.size(); ++t) {
-      const uint32_t f = triangles.face[t], c = labels.of_face[f];
-      component_of_triangle[t] = c;
-      turned[t] = flip[f] ^ uint8_t(report.components[c].outward == false);
-    }
+    for (size_t t = 0; t < triangles.triangles.size(); ++t) turned[t] = flip[triangles.face[t]] ^ uint8_t(faces_in(t));
     analysis.topology = triangle_topology(std::move(*face_edges), triangles.triangles, triangles.face, turned,
                                           component_of_triangle, report.components.size(), several_fans, report.border_loops);
   }

@@ -11,11 +11,8 @@ TriangleTopology triangle_topology(EdgeTable face_edges, const std::vector<std::
   TriangleTopology out;
   // Faces become triangles (in the same order, so each edge's uses stay
   // sorted), each use running as its triangle now does.
-  std::vector<uint32_t> triangle_of_face;
-  for (uint32_t t = 0; t < triangle_face.size(); ++t) {
-    if (triangle_of_face.size() <= triangle_face[t]) triangle_of_face.resize(triangle_face[t] + 1);
-    triangle_of_face[triangle_face[t]] = t;
-  }
+  std::vector<uint32_t> triangle_of_face(triangle_face.empty() ? 0 : triangle_face.back() + 1);  // faces come in order
+  for (uint32_t t = 0; t < triangle_face.size(); ++t) triangle_of_face[triangle_face[t]] = t;
   for (uint32_t& use : face_edges.uses) {
     const uint32_t t = triangle_of_face[EdgeTable::face_of(use)];
     use = t << 1 | (uint32_t(EdgeTable::runs_forward(use)) ^ turned[t]);
