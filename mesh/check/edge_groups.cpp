@@ -1,10 +1,12 @@
 #include "mesh/check/edge_groups.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
+#include <tbb/task_arena.h>
 
 namespace umbra {
 namespace {
@@ -27,23 +29,35 @@ struct EdgeUse {
 std::vector<EdgeUse> sorted_uses(const PolygonSoup& soup, const FaceClasses& faces, std::vector<uint32_t>& start) {
   const size_t vertex_count = start.size() - 1;
   const uint32_t face_count = uint32_t(soup.polygon_count());
-  for (uint32_t f = 0; f < face_count; ++f) {
-    if (!faces.in_topology(f)) continue;
-    for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c)
-      ++start[std::min(faces.corners[c], faces.corners[next_corner(soup, f, c)]) + 1];
-  }
-  for (size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
-  std::vector<EdgeUse> uses(start[vertex_count]);
-  {
-    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-    for (uint32_t f = 0; f < face_count; ++f) {
+  const auto for_each_use = [&](uint32_t first_face, uint32_t end_face, const auto& visit) {
+    for (uint32_t f = first_face; f < end_face; ++f) {
       if (!faces.in_topology(f)) continue;
-      for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c) {
-        const uint32_t a = faces.corners[c], b = faces.corners[next_corner(soup, f, c)];
-        uses[fill[std::min(a, b)]++] = {std::max(a, b), f, (c << 1) | uint32_t(a < b)};
-      }
+      for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c)
+        visit(f, c, faces.corners[c], faces.corners[next_corner(soup, f, c)]);
     }
+  };
+  // A counting sort on every core: each takes a run of faces, counts its
+  // uses per bucket, then fills its own part of each bucket, after the parts
+  // of the runs before it. The buckets come out as one core would fill them.
+  const size_t runs = std::clamp<size_t>(size_t(tbb::this_task_arena::max_concurrency()), 1, 8);
+  const auto run_faces = [&](size_t r) { return uint32_t(face_count * r / runs); };
+  std::vector<std::vector<uint32_t>> cursor(runs);
+  tbb::parallel_for(size_t(0), runs, [&](size_t r) {
+    cursor[r].assign(vertex_count, 0);
+    for_each_use(run_faces(r), run_faces(r + 1), [&](uint32_t, uint32_t, uint32_t a, uint32_t b) { ++cursor[r][std::min(a, b)]; });
+  });
+  for (size_t v = 0; v < vertex_count; ++v) {
+    uint32_t filled = start[v];
+    for (std::vector<uint32_t>& run_cursor : cursor) filled += std::exchange(run_cursor[v], filled);
+    start[v + 1] = filled;
   }
+  std::vector<EdgeUse> uses(start[vertex_count]);
+  tbb::parallel_for(size_t(0), runs, [&](size_t r) {
+    for_each_use(run_faces(r), run_faces(r + 1), [&](uint32_t f, uint32_t c, uint32_t a, uint32_t b) {
+      uses[cursor[r][std::min(a, b)]++] = {std::max(a, b), f, (c << 1) | uint32_t(a < b)};
+    });
+  });
+  cursor.clear();
   tbb::parallel_for(tbb::blocked_range<size_t>(0, vertex_count, 4096), [&](const tbb::blocked_range<size_t>& range) {
     for (size_t v = range.begin(); v < range.end(); ++v) {
       if (start[v + 1] - start[v] > 32) {  // a vertex of high degree, the hub of a fan
@@ -81,8 +95,8 @@ void for_each_edge(const std::vector<EdgeUse>& uses, const std::vector<uint32_t>
 
 EdgeGroups group_edges(const PolygonSoup& soup, const FaceClasses& faces, size_t vertex_count, EdgeTable* face_edges) {
   const size_t face_count = soup.polygon_count();
-  EdgeGroups g{{}, UnionFind(face_count), ParityUnionFind(face_count), UnionFind(faces.corners.size()),
-               UnionFind(vertex_count), std::vector<uint8_t>(face_count, 0), std::vector<uint8_t>(vertex_count, 0), {}};
+  // The union-finds are made by the walks that fill them, on their cores.
+  EdgeGroups g{{}, UnionFind(0), ParityUnionFind(0), UnionFind(0), UnionFind(0), {}, {}, {}};
   std::vector<uint32_t> start(vertex_count + 1, 0);
   const std::vector<EdgeUse> uses = sorted_uses(soup, faces, start);
   size_t edge_count = 0;  // reserved exactly: growing by doubling would hold half as much again
@@ -93,17 +107,18 @@ EdgeGroups group_edges(const PolygonSoup& soup, const FaceClasses& faces, size_t
     face_edges->first_use.reserve(edge_count + 1);
     face_edges->uses.reserve(uses.size());
   }
-  // Faces, their orientations and the border on one core; corners into fans
-  // on the other (the largest of the union-finds, and independent).
+  // Three walks over the edges, each on a core of its own where there are
+  // three: faces, their orientations and the border; corners into fans (the
+  // largest of the union-finds, and independent); the edge table.
   tbb::parallel_invoke(
       [&] {
+        g.components = UnionFind(face_count);
+        g.flips = ParityUnionFind(face_count);
+        g.border = UnionFind(vertex_count);
+        g.orientation_conflict.assign(face_count, 0);
+        g.on_non_manifold_edge.assign(vertex_count, 0);
         for_each_edge(uses, start, [&](uint32_t a, uint32_t b, size_t i, size_t j) {
           g.edges.push_back({a, b, uses[i].face, uint32_t(j - i)});
-          if (face_edges) {
-            face_edges->vertices.push_back({a, b});
-            for (size_t k = i; k < j; ++k) face_edges->uses.push_back(uses[k].face << 1 | uint32_t(uses[k].forward()));
-            face_edges->first_use.push_back(uint32_t(face_edges->uses.size()));
-          }
           for (size_t k = i + 1; k < j; ++k) g.components.unite(uses[i].face, uses[k].face);
           if (j - i == 1) {
             g.border.unite(a, b);
@@ -119,6 +134,7 @@ EdgeGroups group_edges(const PolygonSoup& soup, const FaceClasses& faces, size_t
         });
       },
       [&] {
+        g.fans = UnionFind(faces.corners.size());
         for_each_edge(uses, start, [&](uint32_t, uint32_t, size_t i, size_t j) {
           if (j - i != 2) return;
           // Join the two faces' corners at each end of the edge.
@@ -128,6 +144,14 @@ EdgeGroups group_edges(const PolygonSoup& soup, const FaceClasses& faces, size_t
           const uint32_t x_next = next_corner(soup, x.face, x.corner()), y_next = next_corner(soup, y.face, y.corner());
           g.fans.unite(x.corner(), same_direction ? y.corner() : y_next);
           g.fans.unite(x_next, same_direction ? y_next : y.corner());
+        });
+      },
+      [&] {
+        if (!face_edges) return;
+        for_each_edge(uses, start, [&](uint32_t a, uint32_t b, size_t i, size_t j) {
+          face_edges->vertices.push_back({a, b});
+          for (size_t k = i; k < j; ++k) face_edges->uses.push_back(uses[k].face << 1 | uint32_t(uses[k].forward()));
+          face_edges->first_use.push_back(uint32_t(face_edges->uses.size()));
         });
       });
   return g;
