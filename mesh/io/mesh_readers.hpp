@@ -11,6 +11,10 @@
 namespace umbra {
 
 PolygonSoup read_obj(std::string_view text, const std::string& path);
+// The same, read on every core in stretches of about `chunk_bytes` bytes or
+// more (read_obj takes 1 MiB): the soup, and the first error, are the same
+// however the file is split.
+PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chunk_bytes);
 PolygonSoup read_off(std::string_view text, const std::string& path);
 PolygonSoup read_stl(std::string_view bytes, const std::string& path);  // ascii or binary
 PolygonSoup read_ply(std::string_view bytes, const std::string& path);  // ascii or binary

@@ -2,14 +2,18 @@
 // are `v`, `v/vt`, `v//vn` or `v/vt/vn`, counted from 1, or from the end when
 // negative; `usemtl` gives the faces after it a material of the `mtllib`
 // files beside the OBJ (Kd, Ks, Ns). Texture coordinates, normals, groups and
-// texture maps are skipped.
+// texture maps are skipped. Large files are read in stretches of lines on
+// every core.
 #include <algorithm>
 #include <charconv>
-#include <cstring>
+#include <exception>
 #include <filesystem>
 #include <limits>
 #include <map>
 #include <set>
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <glm/common.hpp>
 
@@ -37,19 +41,6 @@ uint32_t corner_index(TextScanner& scanner, std::string_view corner, size_t poin
   if (index >= int64_t(std::numeric_limits<uint32_t>::max()))
     scanner.fail("vertex index " + std::to_string(value) + " is out of range");
   return uint32_t(index);
-}
-
-// How many lines start with "v " and "f ": one quick pass, so that the
-// arrays are allocated once rather than grown (and copied) as they fill.
-std::pair<size_t, size_t> vertex_and_face_lines(std::string_view text) {
-  size_t vertices = 0, faces = 0;
-  for (size_t at = 0; at + 1 < text.size();) {
-    if (text[at + 1] == ' ' || text[at + 1] == '\t') vertices += text[at] == 'v', faces += text[at] == 'f';
-    const void* newline = std::memchr(text.data() + at, '\n', text.size() - at);
-    if (!newline) break;
-    at = size_t(static_cast<const char*>(newline) - text.data()) + 1;
-  }
-  return {vertices, faces};
 }
 
 // The rest of the line without the blanks round it: a material's name may hold spaces.
@@ -94,51 +85,169 @@ void read_material_library(const std::string& path, int line, PolygonSoup& soup,
   }
 }
 
-}  // namespace
+// One stretch of the file, from a line's start to a line's start, read on a
+// core of its own. Points go straight into the soup; faces, whose corner
+// counts are known only once read, into the stretch's own arrays.
+struct ObjStretch {
+  std::string_view text;
+  int lines = 0, lines_before = 0;
+  size_t points = 0, points_before = 0;
+  size_t faces = 0, faces_before = 0;
+  std::vector<uint32_t> corners, polygon_ends;  // polygon_ends: into `corners`
+  std::vector<int> polygon_lines;
+  // The material statements, replayed in order once every stretch is read:
+  // what they do depends on the statements before them.
+  struct MaterialStatement {
+    int line;
+    std::string_view keyword, rest;
+    size_t faces_before;  // in the whole file
+  };
+  std::vector<MaterialStatement> material_statements;
+  std::exception_ptr error;  // the first in the stretch; it is read no further
+};
 
-PolygonSoup read_obj(std::string_view text, const std::string& path) {
-  PolygonSoup soup;
-  soup.path = path;
-  soup.format = "OBJ";
-  const auto [vertex_lines, face_lines] = vertex_and_face_lines(text);
-  soup.points.reserve(vertex_lines);
-  soup.point_lines.reserve(vertex_lines);
-  soup.corners.reserve(3 * face_lines);
-  soup.polygon_starts.reserve(face_lines + 1);
-  soup.polygon_lines.reserve(face_lines);
-  TextScanner scanner(text, path);
-  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-  std::map<std::string, int> materials;  // by name
-  std::set<std::string> missing;         // used but defined nowhere: said once each
-  int material = -1;                     // of the faces that follow
+// Splits `text` after a newline near every `chunk_bytes` bytes (a file whose
+// lines end in \r alone stays whole).
+std::vector<ObjStretch> stretches_of(std::string_view text, size_t chunk_bytes) {
+  const size_t count = std::clamp<size_t>(text.size() / std::max<size_t>(chunk_bytes, 1), 1,
+                                          8 * size_t(tbb::this_task_arena::max_concurrency()));
+  std::vector<ObjStretch> stretches;
+  for (size_t k = 0, begin = 0; k < count && (begin < text.size() || stretches.empty()); ++k) {
+    size_t end = text.size();
+    if (k + 1 < count) {
+      const size_t goal = std::max(begin, text.size() * (k + 1) / count);
+      const size_t newline = text.find('\n', goal);
+      end = newline == std::string_view::npos ? text.size() : newline + 1;
+    }
+    stretches.push_back({});
+    stretches.back().text = text.substr(begin, end - begin);
+    begin = end;
+  }
+  return stretches;
+}
+
+// Counts a stretch's lines, points and faces, as read_stretch will read them.
+void count_stretch(ObjStretch& stretch, const std::string& path) {
+  TextScanner scanner(stretch.text, path);
+  while (scanner.next_line()) {
+    const std::string_view keyword = scanner.field();
+    stretch.points += keyword == "v";
+    stretch.faces += keyword == "f";
+  }
+  stretch.lines = scanner.line_number();
+}
+
+void read_stretch(ObjStretch& stretch, const std::string& path, PolygonSoup& soup) {
+  TextScanner scanner(stretch.text, path, stretch.lines_before);
+  size_t point = stretch.points_before;
+  stretch.corners.reserve(3 * stretch.faces);
+  stretch.polygon_ends.reserve(stretch.faces);
+  stretch.polygon_lines.reserve(stretch.faces);
   while (scanner.next_line()) {
     const std::string_view keyword = scanner.field();
     if (keyword == "v") {
-      const glm::dvec3 p = scanner.vertex();
-      soup.add_point(p, scanner.line_number());
-    } else if (keyword == "mtllib") {
-      for (std::string_view name = scanner.field(); !name.empty(); name = scanner.field())
-        read_material_library((folder / std::string(name)).lexically_normal().string(), scanner.line_number(), soup, materials);
-    } else if (keyword == "usemtl") {
-      const std::string name = rest_as_name(scanner);
-      const auto it = materials.find(name);
-      material = it == materials.end() ? -1 : it->second;
-      if (it == materials.end() && missing.insert(name).second)
-        soup.warn(scanner.line_number(), "material " + quote_field(name) + " is in no material library: its faces keep the scene's material");
+      soup.points[point] = scanner.vertex();
+      soup.point_lines[point++] = scanner.line_number();
     } else if (keyword == "f") {
-      uint32_t corners = 0;
-      for (std::string_view corner = scanner.field(); !corner.empty(); corner = scanner.field()) {
-        soup.corners.push_back(corner_index(scanner, corner, soup.points.size()));
-        ++corners;
-      }
-      if (corners < 3) scanner.fail_at_line("a face needs at least 3 vertices, this one has " + std::to_string(corners));
-      soup.end_polygon(scanner.line_number());
-      // Per-face materials from the first face that has one (the faces before it have none).
-      if (material >= 0 && soup.polygon_materials.size() + 1 < soup.polygon_count()) soup.polygon_materials.assign(soup.polygon_count() - 1, -1);
-      if (material >= 0 || !soup.polygon_materials.empty()) soup.polygon_materials.push_back(material);
+      const size_t first = stretch.corners.size();
+      for (std::string_view corner = scanner.field(); !corner.empty(); corner = scanner.field())
+        stretch.corners.push_back(corner_index(scanner, corner, point));
+      if (stretch.corners.size() - first < 3)
+        scanner.fail_at_line("a face needs at least 3 vertices, this one has " + std::to_string(stretch.corners.size() - first));
+      stretch.polygon_ends.push_back(uint32_t(stretch.corners.size()));
+      stretch.polygon_lines.push_back(scanner.line_number());
+    } else if (keyword == "mtllib" || keyword == "usemtl") {
+      stretch.material_statements.push_back(
+          {scanner.line_number(), keyword, scanner.rest_of_line(), stretch.faces_before + stretch.polygon_ends.size()});
     }
   }
+}
+
+// The material statements of `stretches`, in order: libraries read as they
+// are named, each face given the material named last before it.
+void replay_material_statements(const std::vector<ObjStretch>& stretches, size_t face_count, const std::string& path,
+                                PolygonSoup& soup) {
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  std::map<std::string, int> materials;  // by name
+  std::set<std::string> missing;         // used but defined nowhere: said once each
+  std::vector<int> face_materials;
+  for (const ObjStretch& stretch : stretches) {
+    for (const ObjStretch::MaterialStatement& statement : stretch.material_statements) {
+      TextScanner rest(statement.rest, path, statement.line - 1);
+      rest.next_line();
+      if (statement.keyword == "mtllib") {
+        for (std::string_view name = rest.field(); !name.empty(); name = rest.field())
+          read_material_library((folder / std::string(name)).lexically_normal().string(), statement.line, soup, materials);
+        continue;
+      }
+      const std::string name = rest_as_name(rest);
+      const auto it = materials.find(name);
+      if (it == materials.end() && missing.insert(name).second)
+        soup.warn(statement.line, "material " + quote_field(name) + " is in no material library: its faces keep the scene's material");
+      // From here to the end; a later statement overwrites its own part.
+      face_materials.resize(face_count, -1);
+      std::fill(face_materials.begin() + std::ptrdiff_t(statement.faces_before), face_materials.end(),
+                it == materials.end() ? -1 : it->second);
+    }
+    if (stretch.error) return;
+  }
+  // Per-face materials only when some face has one.
+  if (std::any_of(face_materials.begin(), face_materials.end(), [](int m) { return m >= 0; }))
+    soup.polygon_materials = std::move(face_materials);
+}
+
+}  // namespace
+
+PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chunk_bytes) {
+  PolygonSoup soup;
+  soup.path = path;
+  soup.format = "OBJ";
+  // Each stretch is counted, then read, on every core; the counts place each
+  // stretch's lines, points and faces in the file's.
+  std::vector<ObjStretch> stretches = stretches_of(text, chunk_bytes);
+  tbb::parallel_for(size_t(0), stretches.size(), [&](size_t k) { count_stretch(stretches[k], path); });
+  for (size_t k = 1; k < stretches.size(); ++k) {
+    const ObjStretch& before = stretches[k - 1];
+    stretches[k].lines_before = before.lines_before + before.lines;
+    stretches[k].points_before = before.points_before + before.points;
+    stretches[k].faces_before = before.faces_before + before.faces;
+  }
+  const ObjStretch& last = stretches.back();
+  soup.points.resize(last.points_before + last.points);
+  soup.point_lines.resize(soup.points.size());
+  tbb::parallel_for(size_t(0), stretches.size(), [&](size_t k) {
+    try {
+      read_stretch(stretches[k], path, soup);
+    } catch (...) {
+      stretches[k].error = std::current_exception();
+    }
+  });
+  // The first error in the file: a library's before a later line's.
+  const auto failed = std::find_if(stretches.begin(), stretches.end(), [](const ObjStretch& s) { return bool(s.error); });
+  const size_t face_count = last.faces_before + last.faces;
+  if (failed == stretches.end()) {
+    size_t corner_count = 0;
+    for (const ObjStretch& stretch : stretches) corner_count += stretch.corners.size();
+    soup.corners.resize(corner_count);
+    soup.polygon_starts.resize(face_count + 1);
+    soup.polygon_lines.resize(face_count);
+    std::vector<size_t> corners_before(stretches.size(), 0);
+    for (size_t k = 1; k < stretches.size(); ++k) corners_before[k] = corners_before[k - 1] + stretches[k - 1].corners.size();
+    tbb::parallel_for(size_t(0), stretches.size(), [&](size_t k) {
+      ObjStretch& stretch = stretches[k];
+      std::copy(stretch.corners.begin(), stretch.corners.end(), soup.corners.begin() + std::ptrdiff_t(corners_before[k]));
+      for (size_t f = 0; f < stretch.polygon_ends.size(); ++f) {
+        soup.polygon_starts[stretch.faces_before + f + 1] = uint32_t(corners_before[k] + stretch.polygon_ends[f]);
+        soup.polygon_lines[stretch.faces_before + f] = stretch.polygon_lines[f];
+      }
+      std::vector<uint32_t>().swap(stretch.corners);
+    });
+  }
+  replay_material_statements(stretches, face_count, path, soup);
+  if (failed != stretches.end()) std::rethrow_exception(failed->error);
   return soup;
 }
+
+PolygonSoup read_obj(std::string_view text, const std::string& path) { return read_obj(text, path, size_t(1) << 20); }
 
 }  // namespace umbra

@@ -15,7 +15,10 @@ namespace umbra {
 
 class TextScanner {
  public:
-  TextScanner(std::string_view text, std::string path) : text_(text), path_(std::move(path)) {}
+  // `lines_before`: the lines of the file ahead of `text`, which starts a
+  // line, so that errors name the file's line.
+  TextScanner(std::string_view text, std::string path, int lines_before = 0)
+      : text_(text), path_(std::move(path)), line_number_(lines_before) {}
 
   // Moves to the next line; false at the end of the text. Lines end at \n, \r\n or \r.
   bool next_line();
