@@ -2,6 +2,7 @@
 
 #include "mesh/topology/half_edge_mesh.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <stdexcept>
 
@@ -14,9 +15,13 @@ namespace umbra {
 
 namespace {
 
-// The flat arrays, walked from the half-edge structure: each vertex, face
-// and edge on its own, so on every core.
-MeshAdjacency flatten(const HalfEdgeMesh& mesh) {
+// The flat arrays: the edges' faces and vertices walked from the half-edge
+// structure; the faces are `faces`, which it was made from (face f runs round
+// faces[f], as OpenMesh keeps the order faces are added in), their planes
+// computed in that order rather than by three jumps per face across the
+// half-edge array. Each vertex, face and edge on its own, on every core.
+MeshAdjacency flatten(const HalfEdgeMesh& mesh, std::vector<std::array<uint32_t, 3>> faces) {
+  if (faces.size() != mesh.n_faces()) throw std::logic_error("flatten: the faces are not the mesh's");
   const auto each = [](size_t count, const auto& body) {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, count), [&](const tbb::blocked_range<size_t>& range) {
       for (size_t i = range.begin(); i < range.end(); ++i) body(int(i));
@@ -28,16 +33,10 @@ MeshAdjacency flatten(const HalfEdgeMesh& mesh) {
     const auto& p = mesh.point(OpenMesh::VertexHandle(v));
     adjacency.positions[size_t(v)] = glm::dvec3(p[0], p[1], p[2]);
   });
-  adjacency.triangles.resize(mesh.n_faces());
-  adjacency.planes.resize(mesh.n_faces());
-  each(mesh.n_faces(), [&](int f) {
-    // The vertices each half-edge of the face runs to, in turn (as OpenMesh's
-    // face-vertex circulator lists them).
-    const OpenMesh::HalfedgeHandle h0 = mesh.halfedge_handle(OpenMesh::FaceHandle(f));
-    const OpenMesh::HalfedgeHandle h1 = mesh.next_halfedge_handle(h0);
-    const std::array<uint32_t, 3> tri{uint32_t(mesh.to_vertex_handle(h0).idx()), uint32_t(mesh.to_vertex_handle(h1).idx()),
-                                      uint32_t(mesh.to_vertex_handle(mesh.next_halfedge_handle(h1)).idx())};
-    adjacency.triangles[size_t(f)] = tri;
+  adjacency.triangles = std::move(faces);
+  adjacency.planes.resize(adjacency.triangles.size());
+  each(adjacency.triangles.size(), [&](int f) {
+    const auto& tri = adjacency.triangles[size_t(f)];
     adjacency.planes[size_t(f)] =
         face_plane(adjacency.positions[tri[0]], adjacency.positions[tri[1]], adjacency.positions[tri[2]]);
   });
@@ -59,13 +58,17 @@ MeshAdjacency flatten(const HalfEdgeMesh& mesh) {
 
 MeshAdjacency build_mesh_adjacency(const std::vector<glm::dvec3>& positions,
                                    const std::vector<std::array<uint32_t, 3>>& triangles) {
-  return flatten(build_half_edge_mesh(positions, triangles));
+  return flatten(build_half_edge_mesh(positions, triangles), triangles);
 }
 
 MeshAdjacency build_mesh_adjacency(const std::vector<glm::dvec3>& positions,
                                    const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeTable& edges,
                                    const std::vector<uint8_t>& closed_face) {
-  return flatten(link_half_edge_mesh(positions, triangles, edges, closed_face));
+  std::vector<std::array<uint32_t, 3>> closed;  // the linked mesh's faces, in order
+  closed.reserve(size_t(std::count(closed_face.begin(), closed_face.end(), 1)));
+  for (size_t t = 0; t < triangles.size(); ++t)
+    if (closed_face[t]) closed.push_back(triangles[t]);
+  return flatten(link_half_edge_mesh(positions, triangles, edges, closed_face), std::move(closed));
 }
 
 }  // namespace umbra

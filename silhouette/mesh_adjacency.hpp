@@ -28,9 +28,10 @@ struct MeshAdjacency {
   std::vector<std::array<uint32_t, 2>> edge_vertices;
 };
 
-// The arrays of a closed, consistently oriented 2-manifold triangle mesh,
-// walked from its OpenMesh half-edge structure (build_half_edge_mesh), which
-// stays inside this function. Throws std::invalid_argument when OpenMesh
+// The arrays of a closed, consistently oriented 2-manifold triangle mesh:
+// each edge's faces and vertices walked from its OpenMesh half-edge
+// structure (build_half_edge_mesh), which stays inside this function; the
+// faces are the triangles, in order, that the structure was made from. Throws std::invalid_argument when OpenMesh
 // refuses a triangle or a halfedge has no face.
 MeshAdjacency build_mesh_adjacency(const std::vector<glm::dvec3>& positions,
                                    const std::vector<std::array<uint32_t, 3>>& triangles);
