@@ -98,21 +98,39 @@ Footprint footprint(const Projection& p, const glm::dvec3 (&d)[3]) {
   return f;
 }
 
-// Conservatively: may the convex polygon overlap the square [x, x + w] x
+// Conservatively: may the convex polygon overlap a square [x, x + w] x
 // [y, y + w]? No when the whole square lies outside one of its edges, with a
 // margin far above the projection's rounding (the caller has checked the
-// bounding boxes).
-bool may_overlap(const Footprint& f, double x, double y, double w, double margin) {
-  if (f.everywhere) return true;
-  for (int i = 0; i < f.count; ++i) {
-    const glm::dvec2& a = f.corners[size_t(i)];
-    const glm::dvec2& b = f.corners[size_t((i + 1) % f.count)];
-    const glm::dvec2 inward = f.orientation * glm::dvec2(a.y - b.y, b.x - a.x);  // inside: inward . (q - a) >= 0
-    const glm::dvec2 corner(inward.x > 0 ? x + w : x, inward.y > 0 ? y + w : y);  // the square's most inward corner
-    if (glm::dot(inward, corner - a) < -margin * (std::abs(inward.x) + std::abs(inward.y))) return false;
+// bounding boxes). Each edge's inward normal and threshold are worked out
+// once per footprint, for the many squares it is tested against.
+class OverlapTest {
+ public:
+  OverlapTest(const Footprint& f, double margin) : count_(f.count) {
+    for (int i = 0; i < f.count; ++i) {
+      const glm::dvec2& a = f.corners[size_t(i)];
+      const glm::dvec2& b = f.corners[size_t((i + 1) % f.count)];
+      Edge& e = edges_[size_t(i)];
+      e.inward = f.orientation * glm::dvec2(a.y - b.y, b.x - a.x);  // inside: inward . (q - a) >= 0
+      e.least = glm::dot(e.inward, a) - margin * (std::abs(e.inward.x) + std::abs(e.inward.y));
+    }
   }
-  return true;
-}
+  bool may_overlap(double x, double y, double w) const {
+    for (int i = 0; i < count_; ++i) {
+      const Edge& e = edges_[size_t(i)];
+      const glm::dvec2 corner(e.inward.x > 0 ? x + w : x, e.inward.y > 0 ? y + w : y);  // the square's most inward corner
+      if (glm::dot(e.inward, corner) < e.least) return false;
+    }
+    return true;
+  }
+
+ private:
+  struct Edge {
+    glm::dvec2 inward;
+    double least;
+  };
+  std::array<Edge, 8> edges_;
+  int count_;
+};
 
 // The cells [i0, i1] x [j0, j1] of an n x n grid of cells of width w from
 // (x0, y0) that footprint f's bounding box touches (empty: i0 > i1).
@@ -138,10 +156,15 @@ CellBox cell_box(const Footprint& f, double x0, double y0, double w, int n, doub
 // footprint does not miss.
 template <typename Visit>
 void for_each_cell(const Footprint& f, const CellBox& box, double x0, double y0, double w, double margin, Visit visit) {
-  const bool exact = !f.everywhere && (box.i1 - box.i0 > 1 || box.j1 - box.j0 > 1);
+  if (f.everywhere || (box.i1 - box.i0 <= 1 && box.j1 - box.j0 <= 1)) {
+    for (int j = box.j0; j <= box.j1; ++j)
+      for (int i = box.i0; i <= box.i1; ++i) visit(i, j);
+    return;
+  }
+  const OverlapTest test(f, margin);
   for (int j = box.j0; j <= box.j1; ++j)
     for (int i = box.i0; i <= box.i1; ++i)
-      if (!exact || may_overlap(f, x0 + i * w, y0 + j * w, w, margin)) visit(i, j);
+      if (test.may_overlap(x0 + i * w, y0 + j * w, w)) visit(i, j);
 }
 
 // Cells holding more footprints than this are split, 4 x 4 at a time, while
