@@ -1,12 +1,12 @@
 #include "mesh/check/edge_groups.hpp"
 
+#include "mesh/check/bucket_fill.hpp"
+
 #include <algorithm>
-#include <utility>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
-#include <tbb/task_arena.h>
 
 namespace umbra {
 namespace {
@@ -28,36 +28,16 @@ struct EdgeUse {
 // order.
 std::vector<EdgeUse> sorted_uses(const PolygonSoup& soup, const FaceClasses& faces, std::vector<uint32_t>& start) {
   const size_t vertex_count = start.size() - 1;
-  const uint32_t face_count = uint32_t(soup.polygon_count());
-  const auto for_each_use = [&](uint32_t first_face, uint32_t end_face, const auto& visit) {
+  std::vector<EdgeUse> uses;
+  fill_buckets<EdgeUse>(soup.polygon_count(), vertex_count, [&](uint32_t first_face, uint32_t end_face, const auto& put) {
     for (uint32_t f = first_face; f < end_face; ++f) {
       if (!faces.in_topology(f)) continue;
-      for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c)
-        visit(f, c, faces.corners[c], faces.corners[next_corner(soup, f, c)]);
+      for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c) {
+        const uint32_t a = faces.corners[c], b = faces.corners[next_corner(soup, f, c)];
+        put(std::min(a, b), EdgeUse{std::max(a, b), f, (c << 1) | uint32_t(a < b)});
+      }
     }
-  };
-  // A counting sort on every core: each takes a run of faces, counts its
-  // uses per bucket, then fills its own part of each bucket, after the parts
-  // of the runs before it. The buckets come out as one core would fill them.
-  const size_t runs = std::clamp<size_t>(size_t(tbb::this_task_arena::max_concurrency()), 1, 8);
-  const auto run_faces = [&](size_t r) { return uint32_t(face_count * r / runs); };
-  std::vector<std::vector<uint32_t>> cursor(runs);
-  tbb::parallel_for(size_t(0), runs, [&](size_t r) {
-    cursor[r].assign(vertex_count, 0);
-    for_each_use(run_faces(r), run_faces(r + 1), [&](uint32_t, uint32_t, uint32_t a, uint32_t b) { ++cursor[r][std::min(a, b)]; });
-  });
-  for (size_t v = 0; v < vertex_count; ++v) {
-    uint32_t filled = start[v];
-    for (std::vector<uint32_t>& run_cursor : cursor) filled += std::exchange(run_cursor[v], filled);
-    start[v + 1] = filled;
-  }
-  std::vector<EdgeUse> uses(start[vertex_count]);
-  tbb::parallel_for(size_t(0), runs, [&](size_t r) {
-    for_each_use(run_faces(r), run_faces(r + 1), [&](uint32_t f, uint32_t c, uint32_t a, uint32_t b) {
-      uses[cursor[r][std::min(a, b)]++] = {std::max(a, b), f, (c << 1) | uint32_t(a < b)};
-    });
-  });
-  cursor.clear();
+  }, start, uses);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, vertex_count, 4096), [&](const tbb::blocked_range<size_t>& range) {
     for (size_t v = range.begin(); v < range.end(); ++v) {
       if (start[v + 1] - start[v] > 32) {  // a vertex of high degree, the hub of a fan

@@ -1,6 +1,13 @@
 #include "mesh/check/point_merging.hpp"
 
+#include "mesh/check/bucket_fill.hpp"
+
+#include <algorithm>
 #include <cstring>
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
 
 namespace umbra {
 namespace {
@@ -22,41 +29,60 @@ uint64_t hash_of(const glm::dvec3& p) {
 }  // namespace
 
 MergedPoints merge_coincident_points(const std::vector<glm::dvec3>& points) {
-  // An open-addressing table of distinct positions, at most half full: one
-  // pass, and 4 bytes per slot rather than a sorted copy of every point.
-  size_t slots = 16;
-  while (slots < 2 * points.size()) slots *= 2;
-  constexpr uint32_t kEmpty = ~uint32_t(0);
-  std::vector<uint32_t> table(slots, kEmpty);  // position index, or kEmpty
+  // Equal points hash alike, so the points are first split by their hash's
+  // top bits into parts of a few thousand, each listing its points in file
+  // order. Each part is then merged on its own, on every core, with an
+  // open-addressing table at most half full that stays in cache: a point's
+  // first point is the first one of its part with its position.
+  const size_t n = points.size();
+  int part_bits = 0;
+  while ((size_t(1) << part_bits) * 4096 < n && part_bits < 16) ++part_bits;
+  const size_t parts = size_t(1) << part_bits;
+  const auto part_of = [&](uint32_t i) { return part_bits == 0 ? 0 : size_t(hash_of(points[i]) >> (64 - part_bits)); };
+  std::vector<uint32_t> part_start, in_parts;
+  fill_buckets<uint32_t>(n, parts, [&](uint32_t first, uint32_t end, const auto& put) {
+    for (uint32_t i = first; i < end; ++i) put(part_of(i), i);
+  }, part_start, in_parts);
 
   MergedPoints merged;
-  merged.vertex_of_point.resize(points.size());
-  // Slots are random accesses into a table far larger than the caches: the
-  // next block's are computed and prefetched while this block is inserted.
-  constexpr size_t kBlock = 16;
-  size_t slot_of[2][kBlock];
-  const auto hash_block = [&](size_t first, size_t (&out)[kBlock]) {
-    for (size_t k = 0; k < kBlock && first + k < points.size(); ++k) {
-      out[k] = hash_of(points[first + k]) & (slots - 1);
-      __builtin_prefetch(&table[out[k]]);
-    }
-  };
-  hash_block(0, slot_of[0]);
-  for (size_t first = 0, b = 0; first < points.size(); first += kBlock, b ^= 1) {
-    if (first + kBlock < points.size()) hash_block(first + kBlock, slot_of[b ^ 1]);
-    for (size_t k = 0; k < kBlock && first + k < points.size(); ++k) {
-      const uint32_t i = uint32_t(first + k);
-      const glm::dvec3& p = points[i];
-      size_t slot = slot_of[b][k];
-      while (table[slot] != kEmpty && merged.positions[table[slot]] != p) slot = (slot + 1) & (slots - 1);
-      if (table[slot] == kEmpty) {
-        table[slot] = uint32_t(merged.positions.size());
-        merged.positions.push_back(p);
-        merged.first_point.push_back(i);
+  std::vector<uint32_t>& first_of = merged.vertex_of_point;  // a point's first point, until renumbered below
+  first_of.resize(n);
+  constexpr uint32_t kEmpty = ~uint32_t(0);
+  constexpr uint32_t kAhead = 16;
+  tbb::enumerable_thread_specific<std::vector<uint32_t>> tables;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, parts, 1), [&](const tbb::blocked_range<size_t>& r) {
+    std::vector<uint32_t>& table = tables.local();
+    for (size_t part = r.begin(); part < r.end(); ++part) {
+      size_t slots = 16;
+      while (slots < 2 * size_t(part_start[part + 1] - part_start[part])) slots *= 2;
+      table.assign(slots, kEmpty);
+      for (uint32_t k = part_start[part]; k < part_start[part + 1]; ++k) {
+        // A part's points lie all over the file: fetched a few ahead.
+        if (k + kAhead < part_start[part + 1]) __builtin_prefetch(&points[in_parts[k + kAhead]]);
+        const uint32_t i = in_parts[k];
+        const glm::dvec3& p = points[i];
+        size_t slot = hash_of(p) & (slots - 1);
+        while (table[slot] != kEmpty && points[table[slot]] != p) slot = (slot + 1) & (slots - 1);
+        if (table[slot] == kEmpty) table[slot] = i;
+        first_of[i] = table[slot];
       }
-      merged.vertex_of_point[i] = table[slot];
     }
-  }
+  });
+  std::vector<uint32_t>().swap(in_parts);
+  // The first points numbered in file order, then every point renumbered.
+  for (uint32_t i = 0; i < n; ++i)
+    if (first_of[i] == i) merged.first_point.push_back(i);
+  merged.positions.resize(merged.first_point.size());
+  std::vector<uint32_t> vertex_of_first(n);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, merged.first_point.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t v = r.begin(); v < r.end(); ++v) {
+      merged.positions[v] = points[merged.first_point[v]];
+      vertex_of_first[merged.first_point[v]] = uint32_t(v);
+    }
+  });
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i < r.end(); ++i) first_of[i] = vertex_of_first[first_of[i]];
+  });
   return merged;
 }
 

@@ -4,6 +4,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "mesh/check/bucket_fill.hpp"
 #include "mesh/check/coordinate_projection.hpp"
 
 namespace umbra {
@@ -74,16 +75,11 @@ std::vector<uint8_t> find_simple_stars(const std::vector<glm::dvec3>& positions,
                                        const std::vector<uint32_t>& tested) {
   // The triangles round each vertex, as offsets into one array.
   const size_t vertex_count = positions.size();
-  std::vector<uint32_t> star_begin(vertex_count + 1, 0);
-  for (const uint32_t t : tested)
-    for (const uint32_t c : triangles[t]) ++star_begin[c + 1];
-  for (size_t v = 0; v < vertex_count; ++v) star_begin[v + 1] += star_begin[v];
-  std::vector<uint32_t> star(star_begin[vertex_count]);
-  {
-    std::vector<uint32_t> filled(star_begin.begin(), star_begin.end() - 1);
-    for (const uint32_t t : tested)
-      for (const uint32_t c : triangles[t]) star[filled[c]++] = t;
-  }
+  std::vector<uint32_t> star_begin, star;
+  fill_buckets<uint32_t>(tested.size(), vertex_count, [&](uint32_t first, uint32_t end, const auto& put) {
+    for (uint32_t k = first; k < end; ++k)
+      for (const uint32_t c : triangles[tested[k]]) put(c, tested[k]);
+  }, star_begin, star);
 
   std::vector<uint8_t> simple(vertex_count, 0);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, vertex_count, 4096), [&](const tbb::blocked_range<size_t>& range) {

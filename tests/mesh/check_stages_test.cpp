@@ -2,12 +2,18 @@
 // what a face is, how edges group, components, fans and loops, and flips.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <numeric>
+#include <random>
 
+#include <tbb/task_arena.h>
+
+#include "mesh/check/bucket_fill.hpp"
 #include "mesh/check/components.hpp"
 #include "mesh/check/edge_groups.hpp"
 #include "mesh/check/face_classes.hpp"
 #include "mesh/check/face_flips.hpp"
+#include "mesh/check/point_merging.hpp"
 #include "tests/mesh/mesh_builders.hpp"
 
 namespace umbra {
@@ -89,6 +95,63 @@ TEST(CheckStages, FacesToFlipAreTheSmallerParityClassAndTurnTheirTriangles) {
   turn_flipped(triangles, flip);
   EXPECT_EQ(triangles.triangles[3], (std::array<uint32_t, 3>{before[0], before[2], before[1]}));
   EXPECT_EQ(triangles.triangles[0], triangulate_faces(soup, faces, soup.points).triangles[0]);
+}
+
+TEST(CheckStages, BucketsFillAsOneCoreWouldHoweverManyShareTheWork) {
+  // Item i puts i into buckets hash(i) % 97 and (i / 3) % 97, the second only
+  // for odd i.
+  const size_t items = 20000, buckets = 97;
+  const auto for_each_item = [](uint32_t first, uint32_t end, const auto& put) {
+    for (uint32_t i = first; i < end; ++i) {
+      put((i * 2654435761u) % buckets, i);
+      if (i % 2) put((i / 3) % buckets, i);
+    }
+  };
+  std::vector<std::vector<uint32_t>> expected(buckets);
+  for (uint32_t i = 0; i < items; ++i) {
+    expected[(i * 2654435761u) % buckets].push_back(i);
+    if (i % 2) expected[(i / 3) % buckets].push_back(i);
+  }
+  for (const int threads : {1, 2, 3, 7}) {
+    std::vector<uint32_t> start, values;
+    tbb::task_arena(threads).execute([&] { fill_buckets<uint32_t>(items, buckets, for_each_item, start, values); });
+    ASSERT_EQ(start.size(), buckets + 1);
+    for (size_t b = 0; b < buckets; ++b)
+      EXPECT_EQ(std::vector<uint32_t>(values.begin() + start[b], values.begin() + start[b + 1]), expected[b])
+          << "bucket " << b << " with " << threads << " threads";
+  }
+}
+
+TEST(CheckStages, MergedPointsAreNumberedByFirstAppearanceHoweverManyShareTheWork) {
+  // 300,000 points (many parts) drawn from 40,000 positions, with -0 and +0
+  // as one coordinate; checked against a map from position to first point.
+  std::mt19937 random(7);
+  std::vector<glm::dvec3> positions(40000);
+  for (glm::dvec3& p : positions) p = glm::dvec3(double(random() % 50), double(random() % 50), double(random() % 50) / 7.0);
+  positions[1] = {0.0, 1.0, 2.0};
+  std::vector<glm::dvec3> points(300000);
+  for (glm::dvec3& p : points) p = positions[random() % positions.size()];
+  points[5] = {-0.0, 1.0, 2.0};
+  points[9] = {0.0, 1.0, 2.0};
+  const auto less = [](const glm::dvec3& a, const glm::dvec3& b) {
+    return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+  };
+  std::map<glm::dvec3, uint32_t, decltype(less)> vertex_of(less);
+  MergedPoints expected;
+  for (uint32_t i = 0; i < points.size(); ++i) {
+    const auto [it, added] = vertex_of.emplace(points[i], uint32_t(expected.positions.size()));
+    if (added) expected.positions.push_back(points[i]), expected.first_point.push_back(i);
+    expected.vertex_of_point.push_back(it->second);
+  }
+  EXPECT_EQ(expected.vertex_of_point[5], expected.vertex_of_point[9]);
+  for (const int threads : {1, 2, 5}) {
+    MergedPoints merged;
+    tbb::task_arena(threads).execute([&] { merged = merge_coincident_points(points); });
+    EXPECT_EQ(merged.positions, expected.positions) << threads << " threads";
+    EXPECT_EQ(merged.first_point, expected.first_point) << threads << " threads";
+    EXPECT_EQ(merged.vertex_of_point, expected.vertex_of_point) << threads << " threads";
+  }
+  EXPECT_TRUE(merge_coincident_points({}).positions.empty());
 }
 
 }  // namespace
