@@ -7,6 +7,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "mesh/check/bucket_fill.hpp"
 #include "mesh/predicates/orientation.hpp"
 
 namespace umbra {
@@ -80,16 +81,11 @@ void find_duplicates(const PolygonSoup& soup, size_t vertex_count, FaceClasses& 
     const uint32_t* v = faces.corners.data() + soup.polygon_starts[f];
     return *std::min_element(v, v + soup.corner_count(f));
   };
-  std::vector<uint32_t> bucket_start(vertex_count + 1, 0);
-  for (uint32_t f = 0; f < soup.polygon_count(); ++f)
-    if (!faces.repeats_vertex[f]) ++bucket_start[smallest(f) + 1];
-  for (size_t v = 0; v < vertex_count; ++v) bucket_start[v + 1] += bucket_start[v];
-  std::vector<uint32_t> bucketed(bucket_start[vertex_count]);
-  {
-    std::vector<uint32_t> fill(bucket_start.begin(), bucket_start.end() - 1);
-    for (uint32_t f = 0; f < soup.polygon_count(); ++f)
-      if (!faces.repeats_vertex[f]) bucketed[fill[smallest(f)]++] = f;
-  }
+  std::vector<uint32_t> bucket_start, bucketed;
+  fill_buckets<uint32_t>(soup.polygon_count(), vertex_count, [&](uint32_t first, uint32_t end, const auto& put) {
+    for (uint32_t f = first; f < end; ++f)
+      if (!faces.repeats_vertex[f]) put(smallest(f), f);
+  }, bucket_start, bucketed);
   // Buckets are independent: on every core, each chunk with its own scratch.
   tbb::parallel_for(tbb::blocked_range<size_t>(0, vertex_count, 4096), [&](const tbb::blocked_range<size_t>& range) {
     std::vector<std::vector<uint32_t>> sorted;  // each face as its sorted vertices, for the faces of one bucket

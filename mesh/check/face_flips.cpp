@@ -31,6 +31,11 @@ std::vector<uint8_t> faces_to_flip(const FaceClasses& faces, ParityUnionFind& fl
 
 FaceTriangles triangulate_faces(const PolygonSoup& soup, const FaceClasses& faces, const std::vector<glm::dvec3>& positions) {
   FaceTriangles out;
+  size_t count = 0;  // a polygon of n corners makes n - 2 triangles
+  for (uint32_t f = 0; f < soup.polygon_count(); ++f)
+    if (faces.in_topology(f)) count += soup.corner_count(f) - 2;
+  out.triangles.reserve(count);
+  out.face.reserve(count);
   for (uint32_t f = 0; f < soup.polygon_count(); ++f) {
     if (!faces.in_topology(f)) continue;
     const size_t first = out.triangles.size();
