@@ -38,11 +38,15 @@ MergedPoints merge_coincident_points(const std::vector<glm::dvec3>& points) {
   int part_bits = 0;
   while ((size_t(1) << part_bits) * 4096 < n && part_bits < 16) ++part_bits;
   const size_t parts = size_t(1) << part_bits;
-  const auto part_of = [&](uint32_t i) { return part_bits == 0 ? 0 : size_t(hash_of(points[i]) >> (64 - part_bits)); };
+  std::vector<uint16_t> part_of(n);  // hashed once here, for both passes of the split
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i < r.end(); ++i) part_of[i] = part_bits == 0 ? 0 : uint16_t(hash_of(points[i]) >> (64 - part_bits));
+  });
   std::vector<uint32_t> part_start, in_parts;
   fill_buckets<uint32_t>(n, parts, [&](uint32_t first, uint32_t end, const auto& put) {
-    for (uint32_t i = first; i < end; ++i) put(part_of(i), i);
+    for (uint32_t i = first; i < end; ++i) put(part_of[i], i);
   }, part_start, in_parts);
+  std::vector<uint16_t>().swap(part_of);
 
   MergedPoints merged;
   std::vector<uint32_t>& first_of = merged.vertex_of_point;  // a point's first point, until renumbered below
