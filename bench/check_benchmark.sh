@@ -33,14 +33,15 @@ if [ ! -f "$data/bunny-4M.glb" ]; then
       "$data/bunny-$size.glb" $level
   done
 fi
-# The bunny over a floor under one light, as in the bundled mesh scenes.
+# The bunny just above a floor under one light, as in the bundled mesh scenes,
+# inside the cube [-1,1]^3 that scenes are made for.
 for size in 1M 4M; do
   cat >"$data/bunny-$size.scene" <<SCENE
 light 0.5 0.9 1.8
 material floor diffuse 0.7 0.7 0.72
 triangle -1 -1 -1   1 -1 -1   1 1 -1 material floor
 triangle -1 -1 -1   1 1 -1   -1 1 -1 material floor
-mesh bunny-$size.obj scale 1.5 rotate 1 0 0 90 translate 0 0 -0.4
+mesh bunny-$size.obj scale 1.5 rotate 1 0 0 90 translate 0 0 -0.25
 SCENE
 done
 
