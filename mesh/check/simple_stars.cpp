@@ -13,6 +13,7 @@ namespace {
 using Point = CoordinateProjection::Point;
 
 constexpr size_t kMaxStar = 32;  // larger stars are rare; they keep their pair tests
+constexpr size_t kAhead = 4;     // vertices
 
 Point point_of(const glm::dvec3& p) { return Point(p.x, p.y, p.z); }
 
@@ -86,6 +87,13 @@ std::vector<uint8_t> find_simple_stars(const std::vector<glm::dvec3>& positions,
     std::array<uint32_t, kMaxStar> a, b;
     std::array<uint32_t, kMaxStar + 1> ring;
     for (size_t v = range.begin(); v < range.end(); ++v) {
+      // A star's triangles, and then their corners, lie all over the arrays:
+      // fetched a few vertices ahead, the corners once the triangles are in.
+      if (v + 2 * kAhead < range.end())
+        for (uint32_t i = star_begin[v + 2 * kAhead]; i < star_begin[v + 2 * kAhead + 1]; ++i) __builtin_prefetch(&triangles[star[i]]);
+      if (v + kAhead < range.end())
+        for (uint32_t i = star_begin[v + kAhead]; i < star_begin[v + kAhead + 1]; ++i)
+          for (const uint32_t c : triangles[star[i]]) __builtin_prefetch(&positions[c]);
       const size_t count = star_begin[v + 1] - star_begin[v];
       if (count < 3 || count > kMaxStar) continue;
       for (size_t i = 0; i < count; ++i) {
