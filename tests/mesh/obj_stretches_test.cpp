@@ -1,8 +1,6 @@
 // An OBJ file is read on every core in stretches of lines: however it is
 // split, the soup (points, faces, their lines, materials, warnings) and the
 // first error are those of one reading from start to end.
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -11,6 +9,7 @@
 
 #include "mesh/input_error.hpp"
 #include "mesh/io/mesh_readers.hpp"
+#include "tests/scratch_folder.hpp"
 
 namespace umbra {
 namespace {
@@ -43,21 +42,7 @@ void expect_every_split_reads_alike(const std::string& text, const std::string& 
     ASSERT_EQ(reading_of(text, path, chunk), whole) << "in stretches of " << chunk << " bytes";
 }
 
-class ObjStretches : public testing::Test {
- protected:
-  void SetUp() override {
-    folder_ = std::filesystem::temp_directory_path() /
-              ("umbra-obj-stretches-" + std::to_string(::getpid()) + "-" + testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(folder_);
-  }
-  void TearDown() override { std::filesystem::remove_all(folder_); }
-  std::string write(const std::string& name, const std::string& bytes) {
-    const std::string path = (folder_ / name).string();
-    std::ofstream(path, std::ios::binary) << bytes;
-    return path;
-  }
-  std::filesystem::path folder_;
-};
+using ObjStretches = test::ScratchFolder;
 
 // A strip of quads with every corner form, relative indices reaching back
 // across many lines, CRLF and bare-CR line ends, blanks, comments and

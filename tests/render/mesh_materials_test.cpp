@@ -14,25 +14,13 @@
 #include "render/shadow_renderer.hpp"
 #include "tests/mesh/interchange_writers.hpp"
 #include "tests/mesh/mesh_builders.hpp"
+#include "tests/scratch_folder.hpp"
 
 namespace umbra {
 namespace {
 
-class MeshMaterials : public ::testing::Test {
+class MeshMaterials : public test::ScratchFolder {
  protected:
-  void SetUp() override {
-    folder_ = std::filesystem::temp_directory_path() /
-              ("umbra-materials-" + std::to_string(::getpid()) + "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(folder_);
-  }
-  void TearDown() override { std::filesystem::remove_all(folder_); }
-
-  std::string write(const std::string& name, const std::string& bytes) {
-    const std::string path = (folder_ / name).string();
-    std::ofstream(path, std::ios::binary) << bytes;
-    return path;
-  }
-
   // The floor z = -0.5 as two squares, x < 0 (face 0) and x > 0 (face 1), with a
   // box above it to cast a shadow onto both.
   static PolygonSoup floor_of_two_squares() {
@@ -46,7 +34,6 @@ class MeshMaterials : public ::testing::Test {
                             (folder_ / "t.scene").string());
   }
 
-  std::filesystem::path folder_;
 };
 
 struct Rendered {
