@@ -173,6 +173,7 @@ void for_each_cell(const Footprint& f, const CellBox& box, double x0, double y0,
 // although no ray crosses many of them.
 constexpr size_t kSplitAbove = 64;
 constexpr int kSplitDepth = 4;
+constexpr size_t kAhead = 8;  // triangles fetched ahead
 constexpr long kRefineTests = 64;  // footprint tests a hot cell may spend, per footprint it holds
 
 // The most footprints `members` (indices into `all`) over any subcell of the
@@ -231,6 +232,8 @@ int layer_bound(const std::vector<glm::dvec3>& positions, const std::vector<std:
     tbb::parallel_for(tbb::blocked_range<size_t>(0, triangles.size(), 8192), [&](const tbb::blocked_range<size_t>& r) {
       std::vector<uint16_t>& local = counts.local();
       for (size_t t = r.begin(); t < r.end(); ++t) {
+        if (t + kAhead < r.end())  // the corners lie anywhere: fetched a few triangles ahead
+          for (const uint32_t v : triangles[t + kAhead]) __builtin_prefetch(&positions[v]);
         const Footprint f = footprint_of(t, p);
         boxes[t] = cell_box(f, -p.range, -p.range, w, n, margin);
         for_each_cell(f, boxes[t], -p.range, -p.range, w, margin,

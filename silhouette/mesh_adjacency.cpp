@@ -15,6 +15,8 @@ namespace umbra {
 
 namespace {
 
+constexpr size_t kAhead = 8;  // faces
+
 // The flat arrays: the edges' faces and vertices walked from the half-edge
 // structure; the faces are `faces`, which it was made from (face f runs round
 // faces[f], as OpenMesh keeps the order faces are added in), their planes
@@ -36,6 +38,8 @@ MeshAdjacency flatten(const HalfEdgeMesh& mesh, std::vector<std::array<uint32_t,
   adjacency.triangles = std::move(faces);
   adjacency.planes.resize(adjacency.triangles.size());
   each(adjacency.triangles.size(), [&](int f) {
+    if (size_t(f) + kAhead < adjacency.triangles.size())  // the corners lie anywhere: fetched a few faces ahead
+      for (const uint32_t v : adjacency.triangles[size_t(f) + kAhead]) __builtin_prefetch(&adjacency.positions[v]);
     const auto& tri = adjacency.triangles[size_t(f)];
     adjacency.planes[size_t(f)] =
         face_plane(adjacency.positions[tri[0]], adjacency.positions[tri[1]], adjacency.positions[tri[2]]);

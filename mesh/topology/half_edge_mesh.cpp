@@ -44,6 +44,7 @@ HalfEdgeMesh link_half_edge_mesh(const std::vector<glm::dvec3>& positions,
   // are sized once (its new_edge and new_face resize every property array per
   // call) and each element is then written by the one thread that owns it.
   constexpr uint32_t kNone = ~uint32_t(0);
+  constexpr size_t kAhead = 8;  // elements fetched ahead
   std::vector<uint32_t> face_of_triangle(triangles.size(), kNone);
   uint32_t face_count = 0;
   for (size_t t = 0; t < triangles.size(); ++t)
@@ -67,6 +68,16 @@ HalfEdgeMesh link_half_edge_mesh(const std::vector<glm::dvec3>& positions,
   std::vector<OpenMesh::HalfedgeHandle> corner_halfedge(size_t(face_count) * 3);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, edges.size()), [&](const tbb::blocked_range<size_t>& range) {
     for (size_t e = range.begin(); e < range.end(); ++e) {
+      // An edge's two faces lie anywhere in the triangles: fetched a few
+      // edges ahead, and where their corners go once those are in.
+      if (e + 2 * kAhead < range.end())
+        for (uint32_t k = edges.first_use[e + 2 * kAhead]; k < edges.first_use[e + 2 * kAhead + 1]; ++k)
+          __builtin_prefetch(&triangles[EdgeTable::face_of(edges.uses[k])]),
+              __builtin_prefetch(&face_of_triangle[EdgeTable::face_of(edges.uses[k])]);
+      if (e + kAhead < range.end())
+        for (uint32_t k = edges.first_use[e + kAhead]; k < edges.first_use[e + kAhead + 1]; ++k)
+          if (const uint32_t face = face_of_triangle[EdgeTable::face_of(edges.uses[k])]; face != kNone)
+            __builtin_prefetch(&corner_halfedge[size_t(face) * 3], 1);
       if (edge_of_table_edge[e] == kNone) continue;
       const auto [a, b] = edges.vertices[e];
       const OpenMesh::HalfedgeHandle forward(int(2 * edge_of_table_edge[e])), backward(int(2 * edge_of_table_edge[e] + 1));
@@ -84,6 +95,10 @@ HalfEdgeMesh link_half_edge_mesh(const std::vector<glm::dvec3>& positions,
   std::atomic<size_t> unlinked{triangles.size()};
   tbb::parallel_for(tbb::blocked_range<size_t>(0, triangles.size()), [&](const tbb::blocked_range<size_t>& range) {
     for (size_t t = range.begin(); t < range.end(); ++t) {
+      if (t + kAhead < range.end() && face_of_triangle[t + kAhead] != kNone)  // its half-edges lie anywhere
+        for (size_t k = 0; k < 3; ++k)
+          if (const OpenMesh::HalfedgeHandle ahead = corner_halfedge[size_t(face_of_triangle[t + kAhead]) * 3 + k]; ahead.is_valid())
+            __builtin_prefetch(&mesh.halfedge(ahead), 1);
       if (face_of_triangle[t] == kNone) continue;
       const OpenMesh::FaceHandle face{int(face_of_triangle[t])};
       const OpenMesh::HalfedgeHandle* h = &corner_halfedge[size_t(face.idx()) * 3];
