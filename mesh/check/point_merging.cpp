@@ -13,7 +13,7 @@ namespace umbra {
 namespace {
 
 uint64_t bits_of(double x) {
-  if (x == 0.0) x = 0.0;  // -0.0 equals 0.0, so it must hash the same
+  x += 0.0;  // -0.0 equals 0.0, so it must hash the same: -0.0 + 0.0 is 0.0
   uint64_t bits;
   std::memcpy(&bits, &x, sizeof bits);
   return bits;
