@@ -27,14 +27,15 @@ bool room_for(const List& list) {
 // Per component, from what the stages found: closed, manifold, orientable,
 // genus, and for closed orientable ones whether they face outward.
 void summarise_components(const std::vector<glm::dvec3>& positions, const FaceTriangles& triangles,
-                          const std::vector<uint32_t>& component_of_triangle, const ComponentLabels& labels,
-                          const std::vector<uint8_t>& non_manifold, MeshReport& report) {
+                          const std::vector<uint8_t>& flipped, const std::vector<uint32_t>& component_of_triangle,
+                          const ComponentLabels& labels, const std::vector<uint8_t>& non_manifold, MeshReport& report) {
   std::vector<ComponentReport>& comps = report.components;
   std::vector<uint8_t> closed_and_orientable(comps.size(), 0);
   for (size_t i = 0; i < comps.size(); ++i)
     closed_and_orientable[i] = comps[i].border_edges == 0 && !non_manifold[i] && !labels.conflict[i];
   const std::vector<uint8_t> facing_in =
-      wrongly_facing_closed_components(positions, triangles.triangles, component_of_triangle, comps.size(), closed_and_orientable);
+      wrongly_facing_closed_components(positions, triangles.triangles, component_of_triangle, comps.size(), closed_and_orientable,
+                                       &flipped);
   for (size_t i = 0; i < comps.size(); ++i) {
     ComponentReport& c = comps[i];
     c.euler_characteristic = int64_t(c.vertices) - int64_t(c.edges) + int64_t(c.faces);
@@ -178,12 +179,18 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
     if (face_edges) several_fans = std::move(fans.several_fans);
   }
   report.components = labels.reports;
-  search.wait();
-  turn_flipped(triangles, flip);
   report.triangles = triangles.triangles.size();
   std::vector<uint32_t> component_of_triangle(triangles.triangles.size());
   for (size_t t = 0; t < triangles.triangles.size(); ++t) component_of_triangle[t] = labels.of_face[triangles.face[t]];
-  summarise_components(merged.positions, triangles, component_of_triangle, labels, non_manifold, report);
+  {
+    // Summed while the search may still read the triangles: the flips are
+    // read, not yet made.
+    std::vector<uint8_t> flipped(triangles.triangles.size());
+    for (size_t t = 0; t < triangles.triangles.size(); ++t) flipped[t] = flip[triangles.face[t]];
+    summarise_components(merged.positions, triangles, flipped, component_of_triangle, labels, non_manifold, report);
+  }
+  search.wait();
+  turn_flipped(triangles, flip);
   // The renderer gets closed components facing outward, so that it can cull
   // their back faces (the file's orientation stays in the report).
   const auto faces_in = [&](size_t t) { return report.components[component_of_triangle[t]].outward == false; };

@@ -21,7 +21,10 @@ double solid_angle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c
 std::vector<uint8_t> wrongly_facing_closed_components(const std::vector<glm::dvec3>& positions,
                                                       const std::vector<std::array<uint32_t, 3>>& triangles,
                                                       const std::vector<uint32_t>& component_of, size_t count,
-                                                      const std::vector<uint8_t>& closed) {
+                                                      const std::vector<uint8_t>& closed,
+                                                      const std::vector<uint8_t>* reversed) {
+  // Corner k of triangle t, as read turned round where `reversed` says so.
+  const auto corner = [&](size_t t, size_t k) { return triangles[t][reversed && (*reversed)[t] && k ? 3 - k : k]; };
   std::vector<glm::dvec3> lo(count, glm::dvec3(1e300)), hi(count, glm::dvec3(-1e300));
   std::vector<uint8_t> has_faces(count, 0);
   for (uint32_t t = 0; t < triangles.size(); ++t) {
@@ -34,8 +37,7 @@ std::vector<uint8_t> wrongly_facing_closed_components(const std::vector<glm::dve
     const uint32_t c = component_of[t];
     if (!closed[c]) continue;
     const glm::dvec3 centre = 0.5 * (lo[c] + hi[c]);
-    const glm::dvec3 a = positions[triangles[t][0]] - centre, b = positions[triangles[t][1]] - centre,
-                     e = positions[triangles[t][2]] - centre;
+    const glm::dvec3 a = positions[corner(t, 0)] - centre, b = positions[corner(t, 1)] - centre, e = positions[corner(t, 2)] - centre;
     volume[c] += glm::dot(a, glm::cross(b, e)) / 6.0;
   }
   // Nesting is tested only between closed components one of whose boxes
@@ -56,7 +58,7 @@ std::vector<uint8_t> wrongly_facing_closed_components(const std::vector<glm::dve
   const auto winds_round = [&](size_t d, const glm::dvec3& p) {
     double sum = 0.0;
     for (const uint32_t t : faces[d])
-      sum += solid_angle(positions[triangles[t][0]] - p, positions[triangles[t][1]] - p, positions[triangles[t][2]] - p);
+      sum += solid_angle(positions[corner(t, 0)] - p, positions[corner(t, 1)] - p, positions[corner(t, 2)] - p);
     return std::abs(sum) / (4.0 * M_PI);
   };
   std::vector<uint8_t> wrong(count, 0);
@@ -68,7 +70,7 @@ std::vector<uint8_t> wrongly_facing_closed_components(const std::vector<glm::dve
       // A vertex of c that d's surface does not pass through: winding near 0 or 1.
       double w = 0.5;
       for (size_t k = 0; k < faces[c].size() && k < 24 && std::abs(w - 0.5) < 0.25; ++k)
-        w = winds_round(d, positions[triangles[faces[c][k]][k % 3]]);
+        w = winds_round(d, positions[corner(faces[c][k], k % 3)]);
       depth += w > 0.5;
     }
     wrong[c] = (volume[c] > 0.0) != (depth % 2 == 0);

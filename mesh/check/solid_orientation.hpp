@@ -16,7 +16,9 @@ namespace umbra {
 // wrong[c] = 1 when closed component c faces the wrong way (into its solid);
 // 0 for one that faces the right way and for every component that is not
 // closed. `component_of[t]` numbers triangle t's component, below `count`;
-// `closed[c]` says which are closed and consistently oriented.
+// `closed[c]` says which are closed and consistently oriented. With
+// `reversed`, triangle t is read turned round (its corners 1 and 2 swapped)
+// where reversed[t] is set.
 //
 // Volumes are summed about the centre of each component's own box, so a
 // small solid far from the origin keeps its sign (summed about the origin,
@@ -27,6 +29,7 @@ namespace umbra {
 std::vector<uint8_t> wrongly_facing_closed_components(const std::vector<glm::dvec3>& positions,
                                                       const std::vector<std::array<uint32_t, 3>>& triangles,
                                                       const std::vector<uint32_t>& component_of, size_t count,
-                                                      const std::vector<uint8_t>& closed);
+                                                      const std::vector<uint8_t>& closed,
+                                                      const std::vector<uint8_t>* reversed = nullptr);
 
 }  // namespace umbra

@@ -14,6 +14,7 @@
 #include "mesh/check/face_classes.hpp"
 #include "mesh/check/face_flips.hpp"
 #include "mesh/check/point_merging.hpp"
+#include "mesh/check/solid_orientation.hpp"
 #include "tests/mesh/mesh_builders.hpp"
 
 namespace umbra {
@@ -152,6 +153,31 @@ TEST(CheckStages, MergedPointsAreNumberedByFirstAppearanceHoweverManyShareTheWor
     EXPECT_EQ(merged.vertex_of_point, expected.vertex_of_point) << threads << " threads";
   }
   EXPECT_TRUE(merge_coincident_points({}).positions.empty());
+}
+
+TEST(CheckStages, ShellsReadTurnedRoundFaceAsIfTurned) {
+  // The hollow cube's two shells (12 triangles each) face the right way;
+  // read with every triangle of a shell turned round, that shell faces the
+  // wrong way, whether the triangles are turned or only read so.
+  const PolygonSoup hollow = hollow_cube();
+  std::vector<std::array<uint32_t, 3>> triangles;
+  for (size_t f = 0; f < hollow.polygon_count(); ++f) triangles.push_back({hollow.polygon(f)[0], hollow.polygon(f)[1], hollow.polygon(f)[2]});
+  std::vector<uint32_t> component_of(24, 0);
+  std::fill(component_of.begin() + 12, component_of.end(), 1);
+  const std::vector<uint8_t> closed{1, 1};
+  EXPECT_EQ(wrongly_facing_closed_components(hollow.points, triangles, component_of, 2, closed), (std::vector<uint8_t>{0, 0}));
+  for (const size_t shell : {0, 1}) {
+    std::vector<uint8_t> reversed(24, 0);
+    std::fill(reversed.begin() + std::ptrdiff_t(12 * shell), reversed.begin() + std::ptrdiff_t(12 * shell + 12), 1);
+    std::vector<std::array<uint32_t, 3>> turned = triangles;
+    for (size_t t = 0; t < 24; ++t)
+      if (reversed[t]) std::swap(turned[t][1], turned[t][2]);
+    std::vector<uint8_t> expected{0, 0};
+    expected[shell] = 1;
+    EXPECT_EQ(wrongly_facing_closed_components(hollow.points, turned, component_of, 2, closed), expected) << "shell " << shell;
+    EXPECT_EQ(wrongly_facing_closed_components(hollow.points, triangles, component_of, 2, closed, &reversed), expected)
+        << "shell " << shell;
+  }
 }
 
 }  // namespace
