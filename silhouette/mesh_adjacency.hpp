@@ -12,6 +12,7 @@
 
 #include "mesh/topology/edge_table.hpp"
 #include "silhouette/face_plane.hpp"
+#include "mesh/unset_vector.hpp"
 
 namespace umbra {
 
@@ -19,13 +20,13 @@ struct MeshAdjacency {
   using FacePlane = umbra::FacePlane;
   std::vector<glm::dvec3> positions;
   std::vector<std::array<uint32_t, 3>> triangles;
-  std::vector<FacePlane> planes;
+  UnsetVector<FacePlane> planes;  // sized, then filled on every core
   // Edge e lies between faces edge_faces[e] = {left, right}: the left face
   // runs along it from edge_vertices[e][0] to edge_vertices[e][1], the right
   // face back. Two arrays, because every frame reads the faces of every edge
   // but the vertices only of the few silhouette edges.
-  std::vector<std::array<uint32_t, 2>> edge_faces;
-  std::vector<std::array<uint32_t, 2>> edge_vertices;
+  UnsetVector<std::array<uint32_t, 2>> edge_faces;
+  UnsetVector<std::array<uint32_t, 2>> edge_vertices;
 };
 
 // The arrays of a closed, consistently oriented 2-manifold triangle mesh:

@@ -18,10 +18,11 @@ namespace umbra {
 // for_each_item(first, end, put) calls put(bucket, value) for what items
 // [first, end) put, in item order; it is called twice per run (once to
 // count, once to fill), and must put the same both times. Fills `values`
-// and `start` (bucket b is values[start[b], start[b + 1])).
-template <typename Value, typename ForEachItem>
+// and `start` (bucket b is values[start[b], start[b + 1])); `values` may be
+// an UnsetVector, every element being written.
+template <typename Value, typename ForEachItem, typename Values>
 void fill_buckets(size_t item_count, size_t bucket_count, const ForEachItem& for_each_item, std::vector<uint32_t>& start,
-                  std::vector<Value>& values) {
+                  Values& values) {
   const size_t runs = std::clamp<size_t>(size_t(tbb::this_task_arena::max_concurrency()), 1, 8);
   const auto run_start = [&](size_t r) { return uint32_t(item_count * r / runs); };
   std::vector<std::vector<uint32_t>> cursor(runs);

@@ -1,6 +1,7 @@
 #include "mesh/check/edge_groups.hpp"
 
 #include "mesh/check/bucket_fill.hpp"
+#include "mesh/unset_vector.hpp"
 
 #include <algorithm>
 
@@ -26,9 +27,9 @@ struct EdgeUse {
 // start[v + 1])), each bucket sorted by the larger vertex and then by face:
 // the order a full sort of (edge, face) would give, since faces are taken in
 // order.
-std::vector<EdgeUse> sorted_uses(const PolygonSoup& soup, const FaceClasses& faces, std::vector<uint32_t>& start) {
+UnsetVector<EdgeUse> sorted_uses(const PolygonSoup& soup, const FaceClasses& faces, std::vector<uint32_t>& start) {
   const size_t vertex_count = start.size() - 1;
-  std::vector<EdgeUse> uses;
+  UnsetVector<EdgeUse> uses;
   fill_buckets<EdgeUse>(soup.polygon_count(), vertex_count, [&](uint32_t first_face, uint32_t end_face, const auto& put) {
     for (uint32_t f = first_face; f < end_face; ++f) {
       if (!faces.in_topology(f)) continue;
@@ -60,7 +61,7 @@ std::vector<EdgeUse> sorted_uses(const PolygonSoup& soup, const FaceClasses& fac
 // Calls visit(a, b, i, j) for each edge a < b, in order, whose uses are
 // uses[i, j).
 template <typename Visit>
-void for_each_edge(const std::vector<EdgeUse>& uses, const std::vector<uint32_t>& start, Visit visit) {
+void for_each_edge(const UnsetVector<EdgeUse>& uses, const std::vector<uint32_t>& start, Visit visit) {
   for (size_t i = 0, bucket = 0; i < uses.size();) {
     while (start[bucket + 1] <= i) ++bucket;  // the bucket, and so the smaller vertex, of use i
     const uint32_t b = uses[i].other;
@@ -78,7 +79,7 @@ EdgeGroups group_edges(const PolygonSoup& soup, const FaceClasses& faces, size_t
   // The union-finds are made by the walks that fill them, on their cores.
   EdgeGroups g{{}, UnionFind(0), ParityUnionFind(0), UnionFind(0), UnionFind(0), {}, {}, {}};
   std::vector<uint32_t> start(vertex_count + 1, 0);
-  const std::vector<EdgeUse> uses = sorted_uses(soup, faces, start);
+  const UnsetVector<EdgeUse> uses = sorted_uses(soup, faces, start);
   size_t edge_count = 0;  // reserved exactly: growing by doubling would hold half as much again
   for_each_edge(uses, start, [&](uint32_t, uint32_t, size_t, size_t) { ++edge_count; });
   g.edges.reserve(edge_count);

@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include "mesh/check/bucket_fill.hpp"
+#include "mesh/unset_vector.hpp"
 #include "mesh/predicates/orientation.hpp"
 
 namespace umbra {
@@ -81,7 +82,8 @@ void find_duplicates(const PolygonSoup& soup, size_t vertex_count, FaceClasses& 
     const uint32_t* v = faces.corners.data() + soup.polygon_starts[f];
     return *std::min_element(v, v + soup.corner_count(f));
   };
-  std::vector<uint32_t> bucket_start, bucketed;
+  std::vector<uint32_t> bucket_start;
+  UnsetVector<uint32_t> bucketed;
   fill_buckets<uint32_t>(soup.polygon_count(), vertex_count, [&](uint32_t first, uint32_t end, const auto& put) {
     for (uint32_t f = first; f < end; ++f)
       if (!faces.repeats_vertex[f]) put(smallest(f), f);

@@ -1,6 +1,7 @@
 #include "mesh/check/point_merging.hpp"
 
 #include "mesh/check/bucket_fill.hpp"
+#include "mesh/unset_vector.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -42,7 +43,8 @@ MergedPoints merge_coincident_points(const std::vector<glm::dvec3>& points) {
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t i = r.begin(); i < r.end(); ++i) part_of[i] = part_bits == 0 ? 0 : uint16_t(hash_of(points[i]) >> (64 - part_bits));
   });
-  std::vector<uint32_t> part_start, in_parts;
+  std::vector<uint32_t> part_start;
+  UnsetVector<uint32_t> in_parts;
   fill_buckets<uint32_t>(n, parts, [&](uint32_t first, uint32_t end, const auto& put) {
     for (uint32_t i = first; i < end; ++i) put(part_of[i], i);
   }, part_start, in_parts);
@@ -72,7 +74,7 @@ MergedPoints merge_coincident_points(const std::vector<glm::dvec3>& points) {
       }
     }
   });
-  std::vector<uint32_t>().swap(in_parts);
+  UnsetVector<uint32_t>().swap(in_parts);
   // The first points numbered in file order, then every point renumbered.
   for (uint32_t i = 0; i < n; ++i)
     if (first_of[i] == i) merged.first_point.push_back(i);

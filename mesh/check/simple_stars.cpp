@@ -5,6 +5,7 @@
 #include <tbb/parallel_for.h>
 
 #include "mesh/check/bucket_fill.hpp"
+#include "mesh/unset_vector.hpp"
 #include "mesh/check/coordinate_projection.hpp"
 
 namespace umbra {
@@ -76,7 +77,8 @@ std::vector<uint8_t> find_simple_stars(const std::vector<glm::dvec3>& positions,
                                        const std::vector<uint32_t>& tested) {
   // The triangles round each vertex, as offsets into one array.
   const size_t vertex_count = positions.size();
-  std::vector<uint32_t> star_begin, star;
+  std::vector<uint32_t> star_begin;
+  UnsetVector<uint32_t> star;
   fill_buckets<uint32_t>(tested.size(), vertex_count, [&](uint32_t first, uint32_t end, const auto& put) {
     for (uint32_t k = first; k < end; ++k)
       for (const uint32_t c : triangles[tested[k]]) put(c, tested[k]);
