@@ -11,6 +11,8 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include "mesh/unset_vector.hpp"
+
 namespace umbra {
 namespace {
 
@@ -135,12 +137,13 @@ class OverlapTest {
 // The cells [i0, i1] x [j0, j1] of an n x n grid of cells of width w from
 // (x0, y0) that footprint f's bounding box touches (empty: i0 > i1).
 struct CellBox {
-  int i0 = 0, i1 = -1, j0 = 0, j1 = -1;
+  int i0, i1, j0, j1;  // unset until made (the boxes of millions of triangles are made on every core)
 };
+constexpr CellBox kNoCells{0, -1, 0, -1};
 
 CellBox cell_box(const Footprint& f, double x0, double y0, double w, int n, double margin) {
   if (f.everywhere) return {0, n - 1, 0, n - 1};
-  if (f.count == 0) return {};
+  if (f.count == 0) return kNoCells;
   double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300;
   for (int k = 0; k < f.count; ++k) {
     const glm::dvec2& q = f.corners[size_t(k)];
@@ -225,7 +228,7 @@ int layer_bound(const std::vector<glm::dvec3>& positions, const std::vector<std:
     // Each cell's count of footprints (16 bits, stopping past the limit),
     // and each footprint's box of cells for the second pass.
     // On every core, each thread counting into its own grid, summed after.
-    std::vector<CellBox> boxes(triangles.size());
+    UnsetVector<CellBox> boxes(triangles.size());
     const uint16_t stop = uint16_t(std::min(limit + 1, 65535));
     const auto add = [stop](uint16_t& c, int more) { c = uint16_t(std::min<int>(stop, c + more)); };
     tbb::enumerable_thread_specific<std::vector<uint16_t>> counts([n] { return std::vector<uint16_t>(size_t(n) * size_t(n), 0); });
