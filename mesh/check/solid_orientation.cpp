@@ -2,8 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include <glm/geometric.hpp>
+#include <tbb/enumerable_thread_specific.h>
+
+#include "mesh/check/box_overlaps.hpp"
 
 namespace umbra {
 namespace {
@@ -42,15 +47,34 @@ std::vector<uint8_t> wrongly_facing_closed_components(const std::vector<glm::dve
   }
   // Nesting is tested only between closed components one of whose boxes
   // holds the other: only those need their triangles listed (a single
-  // shell, however large, needs none).
-  const auto nest_candidates = [&](size_t d, size_t c) {
-    return d != c && closed[c] && closed[d] && has_faces[c] && has_faces[d] &&
-           !glm::any(glm::lessThan(lo[c], lo[d])) && !glm::any(glm::greaterThan(hi[c], hi[d]));
+  // shell, however large, needs none). The pairs come from a search of the
+  // closed components' boxes, not a test of every pair: a scan's debris can
+  // be 100,000 components.
+  const auto holds = [&](size_t d, size_t c) {  // d's box holds c's
+    return !glm::any(glm::lessThan(lo[c], lo[d])) && !glm::any(glm::greaterThan(hi[c], hi[d]));
   };
+  std::vector<uint32_t> shells;  // the closed components with faces
+  for (uint32_t c = 0; c < count; ++c)
+    if (closed[c] && has_faces[c]) shells.push_back(c);
+  std::vector<std::pair<uint32_t, uint32_t>> nested;  // (c, d): d's box holds c's, sorted
+  {
+    std::vector<FloatBox> boxes(shells.size());
+    for (size_t i = 0; i < shells.size(); ++i) boxes[i] = enclosing_box(lo[shells[i]], hi[shells[i]], hi[shells[i]]);
+    tbb::enumerable_thread_specific<std::vector<std::pair<uint32_t, uint32_t>>> found;
+    for_each_overlapping_pair(boxes, [&](const std::pair<uint32_t, uint32_t>* pairs, size_t n) {
+      std::vector<std::pair<uint32_t, uint32_t>>& mine = found.local();
+      for (size_t k = 0; k < n; ++k) {
+        const uint32_t a = shells[pairs[k].first], b = shells[pairs[k].second];
+        if (holds(a, b)) mine.emplace_back(b, a);
+        if (holds(b, a)) mine.emplace_back(a, b);
+      }
+      return true;
+    });
+    for (const auto& mine : found) nested.insert(nested.end(), mine.begin(), mine.end());
+    std::sort(nested.begin(), nested.end());
+  }
   std::vector<uint8_t> listed(count, 0);
-  for (size_t c = 0; c < count; ++c)
-    for (size_t d = 0; d < count; ++d)
-      if (nest_candidates(d, c)) listed[c] = listed[d] = 1;
+  for (const auto& [c, d] : nested) listed[c] = listed[d] = 1;
   std::vector<std::vector<uint32_t>> faces(count);
   for (uint32_t t = 0; t < triangles.size(); ++t)
     if (listed[component_of[t]]) faces[component_of[t]].push_back(t);
@@ -62,11 +86,11 @@ std::vector<uint8_t> wrongly_facing_closed_components(const std::vector<glm::dve
     return std::abs(sum) / (4.0 * M_PI);
   };
   std::vector<uint8_t> wrong(count, 0);
-  for (size_t c = 0; c < count; ++c) {
-    if (!closed[c] || !has_faces[c]) continue;
+  for (size_t i = 0, next = 0; i < shells.size(); ++i) {
+    const uint32_t c = shells[i];
     int depth = 0;
-    for (size_t d = 0; d < count; ++d) {
-      if (!nest_candidates(d, c)) continue;
+    for (; next < nested.size() && nested[next].first == c; ++next) {
+      const uint32_t d = nested[next].second;
       // A vertex of c that d's surface does not pass through: winding near 0 or 1.
       double w = 0.5;
       for (size_t k = 0; k < faces[c].size() && k < 24 && std::abs(w - 0.5) < 0.25; ++k)

@@ -11,6 +11,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <utility>
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -170,7 +171,7 @@ void replay_material_statements(const std::vector<ObjStretch>& stretches, size_t
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   std::map<std::string, int> materials;  // by name
   std::set<std::string> missing;         // used but defined nowhere: said once each
-  std::vector<int> face_materials;
+  std::vector<std::pair<size_t, int>> switches;  // (first face, its material), in order
   for (const ObjStretch& stretch : stretches) {
     for (const ObjStretch::MaterialStatement& statement : stretch.material_statements) {
       TextScanner rest(statement.rest, path, statement.line - 1);
@@ -184,16 +185,22 @@ void replay_material_statements(const std::vector<ObjStretch>& stretches, size_t
       const auto it = materials.find(name);
       if (it == materials.end() && missing.insert(name).second)
         soup.warn(statement.line, "material " + quote_field(name) + " is in no material library: its faces keep the scene's material");
-      // From here to the end; a later statement overwrites its own part.
-      face_materials.resize(face_count, -1);
-      std::fill(face_materials.begin() + std::ptrdiff_t(statement.faces_before), face_materials.end(),
-                it == materials.end() ? -1 : it->second);
+      switches.emplace_back(statement.faces_before, it == materials.end() ? -1 : it->second);
     }
     if (stretch.error) return;
   }
-  // Per-face materials only when some face has one.
-  if (std::any_of(face_materials.begin(), face_materials.end(), [](int m) { return m >= 0; }))
-    soup.polygon_materials = std::move(face_materials);
+  // Each material from its statement to the next; per-face materials only
+  // when some face has one.
+  if (switches.empty()) return;
+  std::vector<int> face_materials(face_count, -1);
+  bool any = false;
+  for (size_t k = 0; k < switches.size(); ++k) {
+    const size_t end = k + 1 < switches.size() ? switches[k + 1].first : face_count;
+    std::fill(face_materials.begin() + std::ptrdiff_t(switches[k].first), face_materials.begin() + std::ptrdiff_t(end),
+              switches[k].second);
+    any |= switches[k].second >= 0 && end > switches[k].first;
+  }
+  if (any) soup.polygon_materials = std::move(face_materials);
 }
 
 }  // namespace

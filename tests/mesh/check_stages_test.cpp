@@ -180,5 +180,29 @@ TEST(CheckStages, ShellsReadTurnedRoundFaceAsIfTurned) {
   }
 }
 
+TEST(CheckStages, ThousandsOfShellsAreNestedByTheirBoxes) {
+  // A box [0, 100]^3 facing out; 1500 small tetrahedra inside it, which
+  // bound its cavities and so should face in, one of them facing out; 1500
+  // more outside it, facing out, one of them facing in.
+  PolygonSoup soup = box_triangles(glm::dvec3(0.0), glm::dvec3(100.0));
+  std::vector<uint8_t> expected{0};
+  for (int k = 0; k < 3000; ++k) {
+    const bool inside = k < 1500;
+    const glm::dvec3 at(1.0 + (k % 1500) % 40 * 2.4, 1.0 + (k % 1500) / 40 * 2.4, inside ? 50.0 : 150.0);
+    const bool odd_one = k == 700 || k == 2300;
+    const bool facing_in = inside != odd_one;
+    soup = combine(soup, facing_in ? all_reversed(tetrahedron(at)) : tetrahedron(at));
+    expected.push_back(odd_one);
+  }
+  std::vector<std::array<uint32_t, 3>> triangles;
+  std::vector<uint32_t> component_of;
+  for (size_t f = 0; f < soup.polygon_count(); ++f) {
+    triangles.push_back({soup.polygon(f)[0], soup.polygon(f)[1], soup.polygon(f)[2]});
+    component_of.push_back(f < 12 ? 0 : uint32_t(1 + (f - 12) / 4));
+  }
+  const std::vector<uint8_t> closed(3001, 1);
+  EXPECT_EQ(wrongly_facing_closed_components(soup.points, triangles, component_of, 3001, closed), expected);
+}
+
 }  // namespace
 }  // namespace umbra
