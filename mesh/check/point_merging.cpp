@@ -79,7 +79,7 @@ MergedPoints merge_coincident_points(const std::vector<glm::dvec3>& points) {
   for (uint32_t i = 0; i < n; ++i)
     if (first_of[i] == i) merged.first_point.push_back(i);
   merged.positions.resize(merged.first_point.size());
-  std::vector<uint32_t> vertex_of_first(n);
+  UnsetVector<uint32_t> vertex_of_first(n);  // read only at first points
   tbb::parallel_for(tbb::blocked_range<size_t>(0, merged.first_point.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t v = r.begin(); v < r.end(); ++v) {
       merged.positions[v] = points[merged.first_point[v]];
