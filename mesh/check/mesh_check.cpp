@@ -182,13 +182,11 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   report.triangles = triangles.triangles.size();
   std::vector<uint32_t> component_of_triangle(triangles.triangles.size());
   for (size_t t = 0; t < triangles.triangles.size(); ++t) component_of_triangle[t] = labels.of_face[triangles.face[t]];
-  {
-    // Summed while the search may still read the triangles: the flips are
-    // read, not yet made.
-    std::vector<uint8_t> flipped(triangles.triangles.size());
-    for (size_t t = 0; t < triangles.triangles.size(); ++t) flipped[t] = flip[triangles.face[t]];
-    summarise_components(merged.positions, triangles, flipped, component_of_triangle, labels, non_manifold, report);
-  }
+  // Summed while the search may still read the triangles: the flips are
+  // read, not yet made.
+  std::vector<uint8_t> flipped(triangles.triangles.size());
+  for (size_t t = 0; t < triangles.triangles.size(); ++t) flipped[t] = flip[triangles.face[t]];
+  summarise_components(merged.positions, triangles, flipped, component_of_triangle, labels, non_manifold, report);
   search.wait();
   turn_flipped(triangles, flip);
   // The renderer gets closed components facing outward, so that it can cull
@@ -197,8 +195,8 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   for (size_t t = 0; t < triangles.triangles.size(); ++t)
     if (faces_in(t)) std::swap(triangles.triangles[t][1], triangles.triangles[t][2]);
   if (face_edges) {
-    std::vector<uint8_t> turned(triangles.triangles.size());
-    for (size_t t = 0; t < triangles.triangles.size(); ++t) turned[t] = flip[triangles.face[t]] ^ uint8_t(faces_in(t));
+    std::vector<uint8_t> turned = std::move(flipped);  // flipped, then turned outward
+    for (size_t t = 0; t < turned.size(); ++t) turned[t] ^= uint8_t(faces_in(t));
     analysis.topology = triangle_topology(std::move(*face_edges), triangles.triangles, triangles.face, turned,
                                           component_of_triangle, report.components.size(), several_fans, report.border_loops);
   }
