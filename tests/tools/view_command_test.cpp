@@ -12,8 +12,13 @@ using test::CommandResult;
 
 class ViewCommand : public test::CommandTest {
  protected:
-  // The viewer in a virtual X display of its own.
-  CommandResult run_in_xvfb(const std::string& args) const { return run(args, "xvfb-run -a -s '-screen 0 640x480x24' "); }
+  // The viewer in a virtual X display of its own. Its authority file lives in
+  // the test's folder: left to make a temporary folder of its own, xvfb-run
+  // removes that folder while the server it has yet to stop may still be in
+  // it, and now and then fails with status 5 after the viewer has finished.
+  CommandResult run_in_xvfb(const std::string& args) const {
+    return run(args, "xvfb-run -a -f " + path("Xauthority") + " -s '-screen 0 640x480x24' ");
+  }
   static std::string scene(const std::string& name) { return std::string(UMBRA_SOURCE_DIR) + "/scenes/" + name; }
 };
 
