@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "tests/scratch_folder.hpp"
+
 namespace umbra {
 namespace {
 
@@ -158,13 +160,17 @@ TEST(SceneParserErrors, MeshStatementSyntaxIsCheckedBeforeAnyFileIsRead) {
   EXPECT_EQ(error_of(kLight + "mesh bunny.obj\nsphere 0 0 0 -1\n"), "t.scene:3:14: the sphere radius must be positive, got -1");
 }
 
-// Scenes that load real mesh files, written into a fresh folder.
-class SceneMeshes : public testing::Test {
+// Scenes that load real mesh files, written into a folder of the test's own:
+// ctest runs tests side by side, and two of them write different "open.obj" files.
+class SceneMeshes : public test::ScratchFolder {
  protected:
-  std::string folder_ = ::testing::TempDir() + "umbra-scene-meshes/";
-  void SetUp() override { std::filesystem::create_directories(folder_ + "parts"); }
-  void write(const std::string& name, const std::string& text) { std::ofstream(folder_ + name) << text; }
-  Scene parse(const std::string& text) { return parse_scene_text(text, folder_ + "s.scene"); }
+  void SetUp() override {
+    ScratchFolder::SetUp();
+    std::filesystem::create_directories(folder_ / "parts");
+  }
+  // The folder's path with a trailing separator, to which file names are appended.
+  std::string dir() const { return folder_.string() + "/"; }
+  Scene parse(const std::string& text) { return parse_scene_text(text, dir() + "s.scene"); }
   std::string error(const std::string& text) {
     try {
       parse(text);
@@ -183,7 +189,7 @@ TEST_F(SceneMeshes, MeshIsLoadedRelativeToTheSceneAndTransformedScaleRotateTrans
                             "mesh parts/tet.obj translate 1 2 3 rotate 0 0 1 90 material red scale 2\n");
   ASSERT_EQ(scene.meshes.size(), 1u);
   const Mesh& m = scene.meshes[0];
-  EXPECT_EQ(m.path, folder_ + "parts/tet.obj");
+  EXPECT_EQ(m.path, dir() + "parts/tet.obj");
   EXPECT_EQ(m.material, 1);
   EXPECT_EQ(m.where.line, 3);
   ASSERT_EQ(m.positions.size(), 4u);
@@ -223,14 +229,14 @@ TEST_F(SceneMeshes, FitCentresTheBoxAndScalesItsLongestSideToTheCubeBeforeTheRes
   EXPECT_EQ(open.warnings[1].message, "mesh \"open.obj\" is open, 1 hole: edge-multiplicity volume");
   write("point.obj", "v 1 1 1\nv 1 1 1\nv 1 1 1\nf 1 2 3\n");
   EXPECT_EQ(error("light 0 0 5\nmesh point.obj fit\n"),
-            folder_ + "s.scene:2:6: mesh file \"" + folder_ + "point.obj\" has no extent to fit: all its points coincide");
+            dir() + "s.scene:2:6: mesh file \"" + dir() + "point.obj\" has no extent to fit: all its points coincide");
 }
 
 TEST_F(SceneMeshes, OpenMeshGetsAWarningThatSaysHowItCastsItsShadow) {
   write("open.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n");
   const Scene scene = parse("light 0 0 5\nmesh open.obj\n");
   ASSERT_EQ(scene.warnings.size(), 1u);
-  EXPECT_EQ(scene.warnings[0].where.str(), folder_ + "s.scene:2:1");
+  EXPECT_EQ(scene.warnings[0].where.str(), dir() + "s.scene:2:1");
   EXPECT_EQ(scene.warnings[0].message,
             "mesh \"open.obj\" is open, 1 hole: edge-multiplicity volume");
   EXPECT_FALSE(scene.meshes[0].components.all_closed());
@@ -239,11 +245,11 @@ TEST_F(SceneMeshes, OpenMeshGetsAWarningThatSaysHowItCastsItsShadow) {
 TEST_F(SceneMeshes, ErrorInsideTheMeshFileNamesThatFileAndTheStatement) {
   write("bad.obj", "v 0 0 0\nv 1 0 nan\n");
   EXPECT_EQ(error("light 0 0 5\n\nmesh bad.obj\n"),
-            folder_ + "bad.obj:2:7: the vertex z coordinate is \"nan\", not a finite number (in the mesh of " + folder_ +
+            dir() + "bad.obj:2:7: the vertex z coordinate is \"nan\", not a finite number (in the mesh of " + dir() +
                 "s.scene:3:1)");
   write("short.stl", std::string(90, 'x'));
   EXPECT_EQ(error("light 0 0 5\nmesh short.stl\n"),
-            folder_ + "s.scene:2:6: mesh file \"" + folder_ +
+            dir() + "s.scene:2:6: mesh file \"" + dir() +
                 "short.stl\": not a valid STL file: as binary STL its 2021161080 triangles need 101058054084 bytes but "
                 "the file has 90, and it does not begin with \"solid\" as ascii STL does");
 }
@@ -265,7 +271,7 @@ TEST_F(SceneMeshes, ManyMeshesLoadTogetherInFileOrderAndTheFirstBrokenOneIsRepor
   ASSERT_EQ(scene.warnings.size(), 4u);
   for (size_t w = 0; w < 4; ++w) EXPECT_EQ(scene.warnings[w].where.line, int(3 * w + 3));
   EXPECT_EQ(error(text + "mesh bad2.obj\nmesh tet.obj\nmesh bad1.obj\n"),
-            folder_ + "bad2.obj:2:7: the vertex z coordinate is \"inf\", not a finite number (in the mesh of " + folder_ +
+            dir() + "bad2.obj:2:7: the vertex z coordinate is \"inf\", not a finite number (in the mesh of " + dir() +
                 "s.scene:14:1)");
 }
 
