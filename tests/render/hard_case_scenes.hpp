@@ -57,13 +57,25 @@ inline std::string read_file(const std::string& path) {
   return text.str();
 }
 
-// Writes `text` to a file named `name` in this process's temporary folder
-// (CTest runs tests in parallel processes); returns its path.
+// This process's temporary folder for the mesh files its tests write (CTest
+// runs tests in parallel processes), removed when the process exits.
+inline const std::filesystem::path& process_mesh_folder() {
+  struct Folder {
+    std::filesystem::path path =
+        std::filesystem::temp_directory_path() / ("umbra-test-meshes-" + std::to_string(::getpid()));
+    Folder() { std::filesystem::create_directories(path); }
+    ~Folder() {
+      std::error_code ignored;
+      std::filesystem::remove_all(path, ignored);
+    }
+  };
+  static const Folder folder;
+  return folder.path;
+}
+
+// Writes `text` to a file named `name` in the process's folder; returns its path.
 inline std::string write_mesh(const std::string& name, const std::string& text) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("umbra-test-meshes-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const std::filesystem::path path = dir / name;
+  const std::filesystem::path path = process_mesh_folder() / name;
   std::ofstream(path) << text;
   return path.string();
 }
