@@ -149,7 +149,7 @@ TEST_F(CheckCommand, RepairRefusesToOverwriteItsInputOrTakeTwoMeshes) {
   EXPECT_EQ(same.status, 2);
   EXPECT_EQ(same.err, "umbra check: --repair would overwrite its input \"" + input +
                           "\"; name another file\n(see umbra check --help)\n");
-  const CommandResult alias = run("check " + input + " --repair " + dir_.string() + "/./in.obj");
+  const CommandResult alias = run("check " + input + " --repair " + folder_.string() + "/./in.obj");
   EXPECT_EQ(alias.status, 2);
   const CommandResult two = run("check " + input + " " + input + " --repair " + path("x.obj"));
   EXPECT_EQ(two.status, 2);

@@ -1,5 +1,5 @@
 #pragma once
-// A test fixture that runs the umbra executable in a fresh folder and keeps
+// A test fixture that runs the umbra executable in a scratch folder and keeps
 // its exit status, stdout and stderr.
 #include <gtest/gtest.h>
 
@@ -11,6 +11,8 @@
 #include <fstream>
 #include <string>
 
+#include "tests/scratch_folder.hpp"
+
 namespace umbra::test {
 
 namespace fs = std::filesystem;
@@ -20,22 +22,9 @@ struct CommandResult {
   std::string out, err;
 };
 
-class CommandTest : public testing::Test {
+class CommandTest : public ScratchFolder {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("umbra-cli-" + std::to_string(::getpid()) + "-" +
-                                        testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(path(name)) << text;
-    return path(name);
-  }
+  std::string path(const std::string& name) const { return (folder_ / name).string(); }
 
   // Runs `umbra ARGS`, after `prefix` (such as "xvfb-run -a ") when given.
   CommandResult run(const std::string& args, const std::string& prefix = "") const {
@@ -53,8 +42,6 @@ class CommandTest : public testing::Test {
     std::ifstream in(p);
     return std::string(std::istreambuf_iterator<char>(in), {});
   }
-
-  fs::path dir_;
 };
 
 }  // namespace umbra::test
