@@ -11,8 +11,8 @@
 #include <glm/vec3.hpp>
 
 #include "mesh/topology/edge_table.hpp"
-#include "silhouette/face_plane.hpp"
 #include "mesh/unset_vector.hpp"
+#include "silhouette/face_plane.hpp"
 
 namespace umbra {
 
@@ -32,8 +32,9 @@ struct MeshAdjacency {
 // The arrays of a closed, consistently oriented 2-manifold triangle mesh:
 // each edge's faces and vertices walked from its OpenMesh half-edge
 // structure (build_half_edge_mesh), which stays inside this function; the
-// faces are the triangles, in order, that the structure was made from. Throws std::invalid_argument when OpenMesh
-// refuses a triangle or a halfedge has no face.
+// faces are the triangles, in order, that the structure was made from.
+// Throws std::invalid_argument when OpenMesh refuses a triangle or a
+// halfedge has no face.
 MeshAdjacency build_mesh_adjacency(const std::vector<glm::dvec3>& positions,
                                    const std::vector<std::array<uint32_t, 3>>& triangles);
 

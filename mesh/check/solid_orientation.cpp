@@ -59,7 +59,8 @@ std::vector<uint8_t> wrongly_facing_closed_components(const std::vector<glm::dve
   std::vector<std::pair<uint32_t, uint32_t>> nested;  // (c, d): d's box holds c's, sorted
   {
     std::vector<FloatBox> boxes(shells.size());
-    for (size_t i = 0; i < shells.size(); ++i) boxes[i] = enclosing_box(lo[shells[i]], hi[shells[i]], hi[shells[i]]);
+    for (size_t i = 0; i < shells.size(); ++i)  // the box round its two corners, rounded outward to floats
+      boxes[i] = enclosing_box(lo[shells[i]], hi[shells[i]], hi[shells[i]]);
     tbb::enumerable_thread_specific<std::vector<std::pair<uint32_t, uint32_t>>> found;
     for_each_overlapping_pair(boxes, [&](const std::pair<uint32_t, uint32_t>* pairs, size_t n) {
       std::vector<std::pair<uint32_t, uint32_t>>& mine = found.local();

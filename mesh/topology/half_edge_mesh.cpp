@@ -71,9 +71,11 @@ HalfEdgeMesh link_half_edge_mesh(const std::vector<glm::dvec3>& positions,
       // An edge's two faces lie anywhere in the triangles: fetched a few
       // edges ahead, and where their corners go once those are in.
       if (e + 2 * kAhead < range.end())
-        for (uint32_t k = edges.first_use[e + 2 * kAhead]; k < edges.first_use[e + 2 * kAhead + 1]; ++k)
-          __builtin_prefetch(&triangles[EdgeTable::face_of(edges.uses[k])]),
-              __builtin_prefetch(&face_of_triangle[EdgeTable::face_of(edges.uses[k])]);
+        for (uint32_t k = edges.first_use[e + 2 * kAhead]; k < edges.first_use[e + 2 * kAhead + 1]; ++k) {
+          const uint32_t t = EdgeTable::face_of(edges.uses[k]);
+          __builtin_prefetch(&triangles[t]);
+          __builtin_prefetch(&face_of_triangle[t]);
+        }
       if (e + kAhead < range.end())
         for (uint32_t k = edges.first_use[e + kAhead]; k < edges.first_use[e + kAhead + 1]; ++k)
           if (const uint32_t face = face_of_triangle[EdgeTable::face_of(edges.uses[k])]; face != kNone)

@@ -141,7 +141,10 @@ TEST(CheckStages, MergedPointsAreNumberedByFirstAppearanceHoweverManyShareTheWor
   MergedPoints expected;
   for (uint32_t i = 0; i < points.size(); ++i) {
     const auto [it, added] = vertex_of.emplace(points[i], uint32_t(expected.positions.size()));
-    if (added) expected.positions.push_back(points[i]), expected.first_point.push_back(i);
+    if (added) {
+      expected.positions.push_back(points[i]);
+      expected.first_point.push_back(i);
+    }
     expected.vertex_of_point.push_back(it->second);
   }
   EXPECT_EQ(expected.vertex_of_point[5], expected.vertex_of_point[9]);

@@ -33,7 +33,6 @@ class MeshMaterials : public test::ScratchFolder {
                                 "\nsphere 0 0 0 0.25 material grey\n",
                             (folder_ / "t.scene").string());
   }
-
 };
 
 struct Rendered {
