@@ -259,6 +259,20 @@ void plan_planar_light(const Scene& scene, const std::vector<ReceiverPlane>& rec
                    [](const CasterEntry& a, const CasterEntry& b) { return a.where.line < b.where.line; });
 }
 
+// The scene's camera and its near plane, which is worked out again only when
+// the view changes (a viewer whose light moves keeps it): with the eye inside
+// a mesh's box it takes a pass over the mesh's triangles.
+void place_camera(const Scene& scene, RenderPlan& plan) {
+  const Camera& c = scene.camera;
+  const double aspect = double(plan.settings.width) / plan.settings.height;
+  const std::array<double, 11> view = {c.eye.x, c.eye.y, c.eye.z, c.target.x, c.target.y, c.target.z,
+                                       c.up.x,  c.up.y,  c.up.z,  c.fovy_deg, aspect};
+  plan.camera = c;
+  if (view == plan.near_plane_view) return;
+  plan.near_plane_view = view;
+  plan.near_plane = near_plane(c, aspect, surface_bounds(scene), nearest_surface_distance(scene, c.eye));
+}
+
 }  // namespace
 
 RenderPlan make_render_plan(const Scene& scene, const RenderSettings& settings) {
@@ -267,8 +281,7 @@ RenderPlan make_render_plan(const Scene& scene, const RenderSettings& settings) 
   // the view, not each other: both are made at once, on separate cores.
   RenderPlan plan;
   plan.settings = settings;
-  plan.camera = scene.camera;
-  plan.near_plane = near_plane(plan.camera, surface_bounds(scene));
+  place_camera(scene, plan);
   std::vector<MeshCaster> casters;
   const RenderMethod m = settings.method;
   const bool counts_volumes = m != RenderMethod::kShadowMap && m != RenderMethod::kPlanar && m != RenderMethod::kTriangles &&
@@ -296,8 +309,7 @@ RenderPlan make_render_plan(const Scene& scene, const std::vector<MeshCaster>& m
 }
 
 void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshes, RenderPlan& plan) {
-  plan.camera = scene.camera;
-  plan.near_plane = near_plane(plan.camera, surface_bounds(scene));
+  place_camera(scene, plan);
   plan.camera_is_spec_default = !scene.camera_from.has_value();
   plan.lights.resize(scene.lights.size());
   plan.specular_used = false;

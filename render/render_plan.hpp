@@ -3,6 +3,7 @@
 // GL call: the camera, and per light each caster's shadow volume. `umbra
 // render --explain` prints it.
 
+#include <array>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -86,7 +87,8 @@ struct RenderPlan {
   RenderSettings settings;
   Camera camera;
   bool camera_is_spec_default = true;
-  double near_plane = 0.05;  // near_plane(camera, the scene's surface bounds)
+  double near_plane = 0.05;  // near_plane(camera, aspect, the surfaces' bounds, the nearest surface's distance)
+  std::array<double, 11> near_plane_view{};  // the eye, target, up, fovy and aspect it was worked out for
   // Shading terms that some material and light use; the shader skips the
   // specular term when none does, and a frame draws neither the shadows nor
   // the direct pass of a light with no colour (its ambient term is in the

@@ -37,8 +37,17 @@ void StencilVolumeShadows::cast(size_t light) {
     // leaves the surface lit, whatever the rasteriser's rounding.
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(0.0f, 4.0f);
+    // Edges between two vertices at infinity that cross the plane through the
+    // eye (a dark cap of a large triangle reaching behind the camera) would be
+    // clipped at the near plane to points with clip w = 0, which the
+    // rasteriser cannot place, and the cap goes missing. With depth clamping
+    // nothing is clipped at the near or far plane (Everitt and Kilgard 2002
+    // offer NV_depth_clamp for the same purpose); what lies in front of the
+    // near plane clamps to depth 0, in front of every surface, as it is.
+    glEnable(GL_DEPTH_CLAMP);
     if (batches == 1) drawing_.draw_volumes(light);
     else drawing_.draw_stencil_batch(light, batch);
+    glDisable(GL_DEPTH_CLAMP);
     baseline_state();
     if (batch + 1 < batches) mark_shadowed_in_alpha();  // the last batch's count stays in the stencil
   }

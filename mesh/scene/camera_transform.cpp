@@ -9,7 +9,7 @@
 
 namespace umbra {
 
-double near_plane(const Camera& camera, const SceneBounds& surfaces) {
+double near_plane(const Camera& camera, double aspect, const SceneBounds& surfaces, double nearest_surface) {
   if (surfaces.empty()) return kNearPlaneFraction * glm::length(camera.target - camera.eye);
   const glm::dvec3 centre = 0.5 * (surfaces.lo + surfaces.hi);
   const double radius = 0.5 * glm::length(surfaces.hi - surfaces.lo);
@@ -21,8 +21,13 @@ double near_plane(const Camera& camera, const SceneBounds& surfaces) {
                             k & 4 ? surfaces.hi.z : surfaces.lo.z);
     nearest = std::min(nearest, glm::dot(corner - camera.eye, forward));
   }
-  const double near = kNearPlaneFraction * farthest;
-  return nearest > 0.0 ? std::min(near, 0.99 * nearest) : near;
+  double near = kNearPlaneFraction * farthest;
+  if (nearest > 0.0) near = std::min(near, 0.99 * nearest);
+  // The corner ray's angle a from the axis: tan^2 a = tan^2(fovy/2) (1 + aspect^2).
+  const double t = std::tan(glm::radians(camera.fovy_deg) / 2.0);
+  const double cos_corner = 1.0 / std::sqrt(1.0 + t * t * (1.0 + aspect * aspect));
+  near = std::min(near, 0.99 * cos_corner * nearest_surface);
+  return std::max(near, kLeastNearPlaneFraction * farthest);
 }
 
 glm::dmat4 view_matrix(const Camera& camera) { return glm::lookAt(camera.eye, camera.target, camera.up); }

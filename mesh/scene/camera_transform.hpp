@@ -14,9 +14,18 @@ namespace umbra {
 // 1e-6 with its camera keeps the same depth precision (for the default view
 // of a scene that fills the cube [-1,1]^3 it is 0.05, as it always was);
 // but never beyond the nearest corner of their bounding box in front of the
-// eye, so nothing visible is clipped. The far plane is at infinity.
+// eye, nor beyond any surface point in view: a point at distance d from the
+// eye, inside a frustum whose corner rays make the angle a with the view
+// axis, lies at least d cos(a) in front of the eye. `nearest_surface` is a
+// lower bound on the distance from the eye to every surface
+// (nearest_surface_distance). The far plane is at infinity.
 constexpr double kNearPlaneFraction = 0.05 / (3.4 + 1.7320508075688772);
-double near_plane(const Camera& camera, const SceneBounds& surfaces);
+// An eye on a surface would need a near plane at 0, which no projection has:
+// below this fraction of the scene's depth range the near plane goes no
+// closer (with 24 depth bits and the far plane at infinity it still resolves
+// depths 2^-24 / 2^-20 = 1/16 of the way to the far side of the scene).
+constexpr double kLeastNearPlaneFraction = 1.0 / (1 << 20);
+double near_plane(const Camera& camera, double aspect, const SceneBounds& surfaces, double nearest_surface);
 
 // Everitt and Kilgard: with the far plane at infinity, a vertex at infinity
 // lands exactly on the far plane and rounding may clip it. Scaling depth by

@@ -110,6 +110,12 @@ struct SceneBounds {
 };
 SceneBounds surface_bounds(const Scene& scene);
 
+// A lower bound on the distance from `point` to every surface: exact for
+// spheres and triangles; for a mesh, the distance to its box when the point
+// lies outside the box, else to its nearest triangle. 0 for a point on a
+// surface; infinity when the scene has none.
+double nearest_surface_distance(const Scene& scene, const glm::dvec3& point);
+
 // The light motion of the viewer and --light-angle: every light rotated about the z axis.
 void rotate_lights_about_z(Scene& scene, double degrees);
 

@@ -1,5 +1,8 @@
 #include "mesh/scene/scene_checks.hpp"
 
+#include <cmath>
+#include <limits>
+
 #include <gtest/gtest.h>
 
 #include "mesh/scene/scene_parser.hpp"
@@ -29,6 +32,23 @@ TEST(LightsOutsideSpheres, OverflowIsAnErrorNotAWrongAnswer) {
             "t.scene:2:1: the distance from light 1 (line 1) to this sphere overflows double precision; "
             "scale the scene down");
 }
+
+// Hand-computed: the triangle (0,0,0) (2,0,0) (0,2,0) seen from above its
+// inside, beyond its long edge, beyond a corner; a sphere from outside and
+// from inside.
+TEST(NearestSurfaceDistance, TrianglesAndSpheresByHand) {
+  const Scene triangle = parse_scene_text("light 0 0 5\ntriangle 0 0 0  2 0 0  0 2 0\n", "t.scene");
+  EXPECT_DOUBLE_EQ(nearest_surface_distance(triangle, {0.5, 0.5, 3}), 3.0);
+  EXPECT_DOUBLE_EQ(nearest_surface_distance(triangle, {2, 2, 0}), std::sqrt(2.0));   // to (1, 1, 0)
+  EXPECT_DOUBLE_EQ(nearest_surface_distance(triangle, {-3, -4, 0}), 5.0);            // to the corner (0, 0, 0)
+  EXPECT_DOUBLE_EQ(nearest_surface_distance(triangle, {1, -1, 1}), std::sqrt(2.0));  // to (1, 0, 0)
+  const Scene sphere = parse_scene_text("light 0 0 5\nsphere 1 0 0 0.5\n", "s.scene");
+  EXPECT_DOUBLE_EQ(nearest_surface_distance(sphere, {4, 0, 0}), 2.5);
+  EXPECT_DOUBLE_EQ(nearest_surface_distance(sphere, {1.2, 0, 0}), 0.3);
+  EXPECT_EQ(nearest_surface_distance(parse_scene_text("light 0 0 5\n", "e.scene"), {0, 0, 0}),
+            std::numeric_limits<double>::infinity());
+}
+
 
 }  // namespace
 }  // namespace umbra

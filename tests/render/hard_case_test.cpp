@@ -13,6 +13,7 @@
 #include "hard_case_scenes.hpp"
 #include "volume_soundness.hpp"
 #include "mask_comparison.hpp"
+#include "tests/render/image_agreement.hpp"
 #include "mesh/scene/scene_checks.hpp"
 #include "mesh/scene/scene_parser.hpp"
 #include "silhouette/mesh_caster.hpp"
@@ -246,6 +247,46 @@ TEST(HardView, TheNearPlaneStaysInFrontOfTheNearestSurface) {
   const RenderPlan plan = plan_for(scene);
   EXPECT_LT(plan.near_plane, 0.005);
   EXPECT_GT(plan.near_plane, 0.004);
+  expect_hard_case_holds(scene);
+}
+
+// A ground plane reaching far behind the eye: the surfaces' box holds the
+// eye, or a corner of it lies behind the eye. Nothing in front of the eye may
+// be clipped: the near plane stays closer than the ground below the eye,
+// and the GL image draws what the ray-cast reference sees. (The ground's
+// shadow volumes reach behind the eye too, with dark caps whose edges at
+// infinity cross the plane through the eye.)
+Scene sphere_on_ground(const std::string& camera) {
+  return parse_scene_text("light 2 -3 6\nsphere 0 0 0 1\n"
+                          "triangle -500 -500 -1  500 -500 -1  500 500 -1\n"
+                          "triangle -500 -500 -1  500 500 -1  -500 500 -1\n" +
+                              camera,
+                          "ground.scene");
+}
+
+void expect_nothing_clipped(const Scene& scene, double eye_height) {
+  EXPECT_LE(plan_for(scene).near_plane, eye_height);
+  test::expect_images_agree(scene, test::render_gl_and_ray_cast(scene, 120));
+  expect_hard_case_holds(scene);
+}
+
+TEST(HardView, AGroundPlaneBehindTheEyeIsNotClipped) {
+  expect_nothing_clipped(sphere_on_ground("camera eye 0 -6 0 target 0 0 0 up 0 0 1 fovy 45\n"), 1.0);
+}
+
+TEST(HardView, AnEyeAboveAGroundPlaneThatReachesBehindItClipsNothing) {
+  expect_nothing_clipped(sphere_on_ground("camera eye 0 -6 3 target 0 0 -0.5 up 0 0 1 fovy 45\n"), 4.0);
+}
+
+TEST(HardView, TheDefaultViewInsideTheSurfacesBoxClipsNothing) {
+  // A floor y = -1 reaching 500 every way holds the default eye (0, 0, 3.4)
+  // inside the surfaces' box.
+  const Scene scene = parse_scene_text("light 0.5 2 2\nsphere 0 0 0 0.6\n"
+                                       "triangle -500 -1 -500  -500 -1 500  500 -1 500\n"
+                                       "triangle -500 -1 -500  500 -1 500  500 -1 -500\n",
+                                       "floor.scene");
+  EXPECT_LE(plan_for(scene).near_plane, 1.0);
+  test::expect_images_agree(scene, test::render_gl_and_ray_cast(scene, 120));
   expect_hard_case_holds(scene);
 }
 

@@ -6,14 +6,10 @@
 
 #include <gtest/gtest.h>
 
-#include "mesh/scene/camera_transform.hpp"
 #include "mesh/scene/scene_parser.hpp"
-#include "reference/ray_cast.hpp"
-#include "reference/ray_cast_render.hpp"
-#include "render/headless_context.hpp"
-#include "render/shadow_renderer.hpp"
 #include "tests/mesh/interchange_writers.hpp"
 #include "tests/mesh/mesh_builders.hpp"
+#include "tests/render/image_agreement.hpp"
 #include "tests/scratch_folder.hpp"
 
 namespace umbra {
@@ -35,38 +31,10 @@ class MeshMaterials : public test::ScratchFolder {
   }
 };
 
-struct Rendered {
-  Image gl, cpu;
-};
+using test::expect_images_agree;
 
-Rendered render_both(const Scene& scene, RenderMethod method = RenderMethod::kAuto) {
-  RenderSettings settings;
-  settings.method = method;
-  settings.width = settings.height = 80;
-  const RenderPlan plan = make_render_plan(scene, settings);
-  HeadlessContext context(settings.width, settings.height);
-  ShadowRenderer renderer(scene, plan);
-  return {renderer.render_image(false), ray_cast_frame(scene, 80, 80).image};
-}
-
-// Every pixel whose footprint sees one object throughout: the GL and ray-cast
-// images agree to one level in 255.
-void expect_images_agree(const Scene& scene, const Rendered& r) {
-  const auto object_at = [&](double x, double y) {
-    const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, 80, 80, x, y));
-    return hit ? hit->object : -1;
-  };
-  int differing = 0;
-  for (int y = 0; y < 80; ++y)
-    for (int x = 0; x < 80; ++x) {
-      const int object = object_at(x, y);
-      bool straddles = false;
-      for (const double dx : {-0.5, 0.5})
-        for (const double dy : {-0.5, 0.5}) straddles = straddles || object_at(x + dx, y + dy) != object;
-      if (straddles) continue;
-      for (int c = 0; c < 3; ++c) differing += std::abs(int(r.gl.at(x, y, c)) - int(r.cpu.at(x, y, c))) > 1;
-    }
-  EXPECT_EQ(differing, 0);
+test::RenderedImages render_both(const Scene& scene, RenderMethod method = RenderMethod::kAuto) {
+  return test::render_gl_and_ray_cast(scene, 80, method);
 }
 
 // The floor spans pixels 15 to 65 of 80 each way: at x = 20 it is red (no
@@ -95,7 +63,7 @@ TEST_F(MeshMaterials, ObjUsemtlColoursEachFaceInBothRenderers) {
   EXPECT_EQ(scene.meshes[0].triangle_materials, (std::vector<int>{2, 2, 3, 3}));
   ASSERT_EQ(scene.warnings.size(), 2u);  // and that the floor is open
   EXPECT_EQ(scene.warnings[0].message, "the materials' texture maps are ignored: faces take each material's Kd colour");
-  const Rendered r = render_both(scene);
+  const test::RenderedImages r = render_both(scene);
   expect_red_left_blue_right(r.gl);
   expect_red_left_blue_right(r.cpu);
   expect_images_agree(scene, r);
@@ -117,7 +85,7 @@ TEST_F(MeshMaterials, OverlappingCoplanarFacesAreLitOnce) {
       (folder_ / "t.scene").string());
   for (const RenderMethod method : {RenderMethod::kAuto, RenderMethod::kZFail, RenderMethod::kShadowMap, RenderMethod::kPlanar}) {
     SCOPED_TRACE(method_name(method));
-    const Rendered r = render_both(scene, method);
+    const test::RenderedImages r = render_both(scene, method);
     if (method == RenderMethod::kShadowMap || method == RenderMethod::kPlanar) {
       // Their shadows differ from the exact ones; compare lit pixels of the floor.
       for (const int y : {20, 60})
@@ -153,7 +121,7 @@ TEST_F(MeshMaterials, GltfAndThreeMfColoursReachTheImage) {
   // glTF: one primitive in red; 3MF: base material "blue" on every face.
   write("floor.gltf", test::gltf_json(floor, test::gltf_buffer(floor), {}));
   const Scene gltf = scene_with("mesh floor.gltf");
-  const Rendered g = render_both(gltf);
+  const test::RenderedImages g = render_both(gltf);
   EXPECT_GT(g.gl.at(60, 20, 0), 30);
   EXPECT_EQ(g.gl.at(60, 20, 2), 0);
   expect_images_agree(gltf, g);
@@ -161,7 +129,7 @@ TEST_F(MeshMaterials, GltfAndThreeMfColoursReachTheImage) {
                                        test::threemf_object(2, floor, 0),
                                    R"(<item objectid="2"/>)"));
   const Scene three = scene_with("mesh floor.3mf");
-  const Rendered t = render_both(three);
+  const test::RenderedImages t = render_both(three);
   EXPECT_EQ(t.gl.at(20, 20, 0), 0);
   EXPECT_GT(t.gl.at(20, 20, 2), 30);
   expect_images_agree(three, t);
