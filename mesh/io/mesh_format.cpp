@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cstdint>
 #include <filesystem>
 
@@ -78,20 +79,43 @@ bool is_ascii_stl(std::string_view head) {
   return facet;
 }
 
-// OBJ: a vertex or face statement, with only OBJ statements and comments before it.
+// OBJ: a vertex with a number or a face with a vertex index, with only OBJ
+// statements and comments before it (NFF's "v" alone on its line, a
+// viewpoint, is not OBJ's).
 bool is_obj(std::string_view head) {
   static const std::string_view kStatements[] = {
       "v",    "vt",   "vn",   "vp",   "f",     "l",     "p",     "o",      "g",     "s",     "mg",     "mtllib", "usemtl",
       "maplib", "usemap", "cstype", "deg", "bmat", "step", "curv", "curv2", "surf", "parm", "trim", "hole", "scrv", "sp",
       "end",  "con",  "bevel", "c_interp", "d_interp", "lod", "shadow_obj", "trace_obj", "ctech", "stech", "call", "csh"};
-  bool obj = false;
-  first_fields(head, 100000, [&](std::string_view field) {
-    if (field.front() == '#') return true;
+  const auto starts_a_number = [](std::string_view field) {
+    double value = 0.0;
+    return !field.empty() && std::from_chars(field.data(), field.data() + field.size(), value).ec == std::errc();
+  };
+  // Three or more corners, each a vertex index that is not 0 (OBJ counts
+  // from 1 or from -1), with texture and normal indices after slashes; NFF's
+  // fill colour "f 1 0 0" is not a face.
+  const auto is_face = [](TextScanner& scanner) {
+    size_t corners = 0;
+    for (std::string_view corner = scanner.field(); !corner.empty(); corner = scanner.field(), ++corners) {
+      const std::string_view vertex = corner.substr(0, corner.find('/'));
+      if (vertex.empty()) return false;
+      const std::string_view digits = vertex.substr(vertex.front() == '-' ? 1 : 0);
+      if (digits.empty() || digits.find_first_not_of("0123456789") != std::string_view::npos ||
+          digits.find_first_not_of('0') == std::string_view::npos)
+        return false;
+    }
+    return corners >= 3;
+  };
+  TextScanner scanner(head, "");
+  for (size_t lines = 0; lines < 100000 && scanner.next_line();) {
+    const std::string_view field = scanner.field();
+    if (field.empty() || field.front() == '#') continue;
+    ++lines;
     if (std::find(std::begin(kStatements), std::end(kStatements), field) == std::end(kStatements)) return false;
-    obj = field == "v" || field == "f";
-    return !obj;
-  });
-  return obj;
+    if (field == "v") return starts_a_number(scanner.field());
+    if (field == "f") return is_face(scanner);
+  }
+  return false;
 }
 
 }  // namespace

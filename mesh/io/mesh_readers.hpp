@@ -22,8 +22,10 @@ PolygonSoup read_gltf(std::string_view bytes, const std::string& path);  // .glt
 PolygonSoup read_3mf(std::string_view bytes, const std::string& path);
 
 // How many bytes (1 to 1023) follow the last triangle of `bytes` read as a
-// binary STL with at least one triangle; 0 when the size is exact or when so
-// many would follow that the bytes are no binary STL.
+// binary STL with at least one triangle; 0 when the size is exact, when so
+// many would follow that the bytes are no binary STL, or when the records do
+// not look like STL's (a number that is not finite, a facet normal whose
+// length is neither 0 nor about 1).
 size_t binary_stl_trailing_bytes(std::string_view bytes);
 
 // Throws a located error when a polygon refers to a point the file lacks.

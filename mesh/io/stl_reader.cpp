@@ -108,8 +108,23 @@ PolygonSoup read_ascii_stl(std::string_view text, const std::string& path) {
 
 size_t binary_stl_trailing_bytes(std::string_view bytes) {
   if (bytes.size() < kBinaryHeaderBytes) return 0;
-  const size_t needed = kBinaryHeaderBytes + size_t(little_endian_u32(bytes.data() + 80)) * kBinaryTriangleBytes;
+  const uint32_t count = little_endian_u32(bytes.data() + 80);
+  const size_t needed = kBinaryHeaderBytes + size_t(count) * kBinaryTriangleBytes;
   if (needed == kBinaryHeaderBytes || bytes.size() <= needed || bytes.size() - needed >= kMaxTrailingBytes) return 0;
+  // A size that only roughly fits is weak evidence (any binary file's bytes
+  // 80-83 may count about as many records as follow): the records must look
+  // like STL's too, every number finite and every facet normal of length 0
+  // (unset) or about 1.
+  for (uint32_t t = 0; t < count; ++t) {
+    const char* record = bytes.data() + kBinaryHeaderBytes + size_t(t) * kBinaryTriangleBytes;
+    double normal_length_squared = 0.0;
+    for (int k = 0; k < 12; ++k) {
+      const double value = little_endian_float(record + 4 * k);
+      if (!std::isfinite(value)) return 0;
+      if (k < 3) normal_length_squared += value * value;
+    }
+    if (normal_length_squared != 0.0 && std::abs(normal_length_squared - 1.0) > 0.2) return 0;
+  }
   return bytes.size() - needed;
 }
 

@@ -235,6 +235,31 @@ TEST(MeshFormat, ContentDecidesTheFormatWhateverTheName) {
   EXPECT_EQ(parse_polygon_soup(binary_stl({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}}), "part").polygon_count(), 1u);
 }
 
+// Binary files whose bytes 80-83 happen to count about as many 50-byte
+// records as follow: a binary STL only when its records are STL's (finite
+// numbers, normals of length 0 or 1), not by its size alone. NFF's "v" (a
+// viewpoint with no numbers) is not OBJ's.
+TEST(MeshFormat, ABinaryFileWithAPlausibleCountIsNoStl) {
+  std::string blob(1400, '\0');
+  uint32_t state = 12345;
+  for (char& c : blob) c = char((state = state * 1103515245u + 12345u) >> 24);
+  const uint32_t count = 26;  // 84 + 26 * 50 = 1384: 16 bytes to spare
+  std::memcpy(&blob[80], &count, 4);
+  EXPECT_EQ(detect_mesh_format(blob), "");
+  EXPECT_EQ(test::read_error_of(blob, "scene.3ds"), "scene.3ds: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): binary data");
+  // The same count over real STL records is still an STL with trailing bytes.
+  const std::string stl = binary_stl({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}, {{{0, 0, 0}, {0, 1, 0}, {0, 0, 1}}}});
+  EXPECT_EQ(detect_mesh_format(stl + std::string(16, '\x7f')), "stl");
+  EXPECT_EQ(detect_mesh_format("v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\nresolution 64 64\n"
+                               "f 1.0 0.0 0.0 0.5 0.5 8 0\npp 3\n"),
+            "");
+  const std::string models = "/usr/share/assimp/models/";
+  if (!std::filesystem::exists(models)) GTEST_SKIP() << "needs Debian's assimp-testmodels (build.sh installs it)";
+  for (const char* name : {"3DS/cube_with_diffuse_texture.3DS", "3DS/cube_with_specular_texture.3DS", "NFF/NFF/cone.nff",
+                           "NFF/NFF/WithCamera.nff", "NFF/NFF/hexahedron.nff"})
+    EXPECT_EQ(detect_mesh_format_of_file(models + name), "") << name;
+}
+
 TEST(MeshFormat, FilesThatAreNoMeshSayWhatTheyAre) {
   EXPECT_EQ(test::read_error_of("# umbra\nThis is a README.\n", "README.obj"),
             "README.obj: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): text starting with \"#\"");
