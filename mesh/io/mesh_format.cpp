@@ -72,8 +72,8 @@ bool is_off(std::string_view head) {
 bool is_ascii_stl(std::string_view head) {
   bool solid = false, facet = false;
   first_fields(head, 3, [&](std::string_view field) {
-    if (!solid) return solid = field == "solid";
-    facet = field == "facet" || field == "endsolid";
+    if (!solid) return solid = is_word(field, "solid");
+    facet = is_word(field, "facet") || is_word(field, "endsolid");
     return !facet;
   });
   return facet;
@@ -121,6 +121,7 @@ bool is_obj(std::string_view head) {
 }  // namespace
 
 std::string detect_mesh_format(std::string_view bytes) {
+  if (starts_with(bytes, "\xef\xbb\xbf")) bytes.remove_prefix(3);  // a UTF-8 byte-order mark
   if (starts_with(bytes, "ply\n") || starts_with(bytes, "ply\r")) return "ply";
   if (starts_with(bytes, "glTF")) return "gltf";  // GLB's magic
   if (is_zip(bytes) && has_model_part(bytes)) return "3mf";

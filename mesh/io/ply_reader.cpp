@@ -191,7 +191,9 @@ class AsciiCursor {
       if (!scanner_.next_line())
         throw InputError({scanner_.path(), scanner_.line_number(), 0}, std::string("the file ends before ") + what);
     }
-    return is_integer(type) ? double(scanner_.integer(what)) : scanner_.number(what);
+    // Any number, nan too: only the coordinates need be finite (read_body
+    // says so), as for the binary encodings.
+    return is_integer(type) ? double(scanner_.integer(what)) : scanner_.any_number(what);
   }
   int line() const { return scanner_.line_number(); }
 
@@ -244,13 +246,15 @@ void read_body(Cursor& cursor, const PlyHeader& header, const PlyLayout& layout,
   }
 }
 
-// Where the line that is "end_header" (give or take spaces and a carriage
-// return) ends, at its '\n' or at the end of the bytes; npos when no line is.
-// A comment that mentions end_header does not end the header.
+// Where the line that is "end_header" (give or take spaces) ends, at the last
+// byte of its line end (\n, \r\n or a lone \r, as TextScanner reads them)
+// or at the end of the bytes; npos when no line is. A comment that mentions
+// end_header does not end the header.
 size_t end_of_end_header_line(std::string_view bytes) {
   for (size_t start = 0; start < bytes.size();) {
-    const size_t end = std::min(bytes.find('\n', start), bytes.size());
+    size_t end = std::min(bytes.find_first_of("\r\n", start), bytes.size());
     std::string_view line = bytes.substr(start, end - start);
+    if (end + 1 < bytes.size() && bytes[end] == '\r' && bytes[end + 1] == '\n') ++end;
     while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) line.remove_suffix(1);
     while (!line.empty() && (line.front() == ' ' || line.front() == '\t')) line.remove_prefix(1);
     if (line == "end_header") return end;

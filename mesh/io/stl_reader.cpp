@@ -77,19 +77,20 @@ PolygonSoup read_ascii_stl(std::string_view text, const std::string& path) {
   uint32_t loop_corners = 0;
   while (scanner.next_line()) {
     const std::string_view keyword = scanner.field();
-    if (keyword.empty() || keyword == "solid" || keyword == "endsolid" || keyword == "facet" || keyword == "endfacet") {
+    if (keyword.empty() || is_word(keyword, "solid") || is_word(keyword, "endsolid") || is_word(keyword, "facet") ||
+        is_word(keyword, "endfacet")) {
       continue;
-    } else if (keyword == "outer") {
+    } else if (is_word(keyword, "outer")) {
       if (in_loop) scanner.fail("\"outer loop\" inside a loop: the previous loop has no \"endloop\"");
       in_loop = true;
       loop_corners = 0;
-    } else if (keyword == "vertex") {
+    } else if (is_word(keyword, "vertex")) {
       if (!in_loop) scanner.fail("\"vertex\" outside an \"outer loop\" ... \"endloop\" block");
       const glm::dvec3 p = scanner.vertex();
       soup.corners.push_back(uint32_t(soup.points.size()));
       soup.add_point(p, scanner.line_number());
       ++loop_corners;
-    } else if (keyword == "endloop") {
+    } else if (is_word(keyword, "endloop")) {
       if (!in_loop) scanner.fail("\"endloop\" without \"outer loop\"");
       if (loop_corners < 3)
         scanner.fail("a facet needs at least 3 vertices, this one has " + std::to_string(loop_corners));
@@ -137,7 +138,7 @@ PolygonSoup read_stl(std::string_view bytes, const std::string& path) {
   }
   const size_t first = bytes.find_first_not_of(" \t\r\n");
   const size_t trailing = binary_stl_trailing_bytes(bytes);
-  if (first != std::string_view::npos && bytes.substr(first, 5) == "solid" && trailing == 0) return read_ascii_stl(bytes, path);
+  if (first != std::string_view::npos && is_word(bytes.substr(first, 5), "solid") && trailing == 0) return read_ascii_stl(bytes, path);
   if (trailing > 0) {
     PolygonSoup soup = read_binary_stl(bytes, path, little_endian_u32(bytes.data() + 80));
     soup.warn(0, std::to_string(trailing) + (trailing == 1 ? " byte" : " bytes") + " after the last of the " +

@@ -1,5 +1,6 @@
 #include "mesh/io/text_scanner.hpp"
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 
@@ -45,7 +46,14 @@ bool TextScanner::at_line_end() {
 }
 
 double TextScanner::number(const char* what) {
+  const double value = any_number(what);
+  if (!std::isfinite(value)) fail(std::string("the ") + what + " is " + quote_field(last_field_) + ", not a finite number");
+  return value;
+}
+
+double TextScanner::any_number(const char* what) {
   const std::string_view text = field();
+  last_field_ = text;
   if (text.empty()) fail(std::string("expected a number for the ") + what + ", got end of line");
   const char* first = text.data();
   const char* last = text.data() + text.size();
@@ -55,7 +63,6 @@ double TextScanner::number(const char* what) {
   const auto [ptr, ec] = fast_float::from_chars(first, last, value);
   if (ec != std::errc() || ptr != last || first == last)
     fail(std::string("expected a number for the ") + what + ", got " + quote_field(text));
-  if (!std::isfinite(value)) fail(std::string("the ") + what + " is " + quote_field(text) + ", not a finite number");
   return value;
 }
 
@@ -109,6 +116,13 @@ std::string quote_field(std::string_view field) {
   }
   if (shown < field.size()) out += "...";
   return out + "\"";
+}
+
+bool is_word(std::string_view field, std::string_view word) {
+  if (field.size() != word.size()) return false;
+  for (size_t i = 0; i < field.size(); ++i)
+    if (std::tolower(static_cast<unsigned char>(field[i])) != word[i]) return false;
+  return true;
 }
 
 }  // namespace umbra

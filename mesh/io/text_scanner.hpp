@@ -30,6 +30,7 @@ class TextScanner {
   bool at_line_end();
 
   double number(const char* what);                 // a finite number, or an error naming `what`
+  double any_number(const char* what);             // the same, but also nan or inf
   glm::dvec3 vertex();                             // three numbers: a vertex's x, y and z
   int64_t integer(const char* what);               // a decimal integer
   uint64_t count(const char* what);                // a non-negative integer
@@ -49,7 +50,12 @@ class TextScanner {
   size_t pos_ = 0;
   int line_number_ = 0;
   int column_ = 0;  // 1-based column of the last field returned
+  std::string_view last_field_;  // the last number read
 };
+
+// Whether `field` is `word` (written in lower case) in any case: ascii STL's
+// keywords come as "SOLID" and "FACET" too.
+bool is_word(std::string_view field, std::string_view word);
 
 // "\"abc\"", printable for error messages however odd the bytes are.
 std::string quote_field(std::string_view field);

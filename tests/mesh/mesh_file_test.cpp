@@ -1,4 +1,5 @@
 // Reading mesh files as written, and the exact error for each kind of bad file.
+#include <cctype>
 #include <cstring>
 #include <filesystem>
 #include <limits>
@@ -165,6 +166,36 @@ TEST(MeshFile, ExporterQuirksAreReadWithAWarning) {
     EXPECT_EQ(padded.warnings[0].message, "5 bytes after the last of the 2 triangles ignored");
   }
   EXPECT_TRUE(parse_polygon_soup(stl, "exact.stl").warnings.empty());
+}
+
+// Text files as users have them: a UTF-8 byte-order mark before OBJ, OFF or
+// STL; ascii STL in upper case (as admesh's example is written); a PLY whose
+// lines end in a lone CR; an ascii PLY with nan in a property umbra does not
+// use (a normal), which its binary form reads too.
+TEST(MeshFile, TextFilesAsUsersHaveThemAreRead) {
+  const std::string bom = "\xef\xbb\xbf";
+  const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  const std::string off = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const std::string stl = "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n";
+  for (const std::string& text : {obj, off, stl}) {
+    EXPECT_NE(detect_mesh_format(bom + text), "") << text;
+    EXPECT_EQ(parse_polygon_soup(bom + text, "bom").polygon_count(), 1u) << text;
+  }
+  std::string upper = stl;
+  for (char& c : upper) c = char(std::toupper(static_cast<unsigned char>(c)));
+  EXPECT_EQ(detect_mesh_format(upper), "stl");
+  EXPECT_EQ(parse_polygon_soup(upper, "upper.stl").polygon_count(), 1u);
+
+  const std::string ply = "ply\rformat ascii 1.0\relement vertex 3\rproperty float x\rproperty float y\rproperty float z\r"
+                          "element face 1\rproperty list uchar int vertex_indices\rend_header\r0 0 0\r1 0 0\r0 1 0\r3 0 1 2\r";
+  EXPECT_EQ(parse_polygon_soup(ply, "cr.ply").polygon_count(), 1u);
+  const std::string with_normals =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nproperty float nx\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0 nan\n1 0 0 1\n0 1 0 1\n3 0 1 2\n";
+  EXPECT_EQ(parse_polygon_soup(with_normals, "nan-normal.ply").polygon_count(), 1u);
+  std::string nan_coordinate = with_normals;
+  nan_coordinate.replace(nan_coordinate.find("0 0 0 nan"), 9, "nan 0 0 1");
+  EXPECT_EQ(test::read_error_of(nan_coordinate, "nan.ply"), "nan.ply:11: vertex 0 has a coordinate that is not a finite number");
 }
 
 TEST(MeshFile, BadFilesGetTheirExactLocatedError) {
