@@ -96,7 +96,7 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
   if (o.repair_output) {
     if (o.meshes.size() != 1 || std::filesystem::is_directory(o.meshes[0])) throw UsageError("--repair takes one mesh file at a time");
     if (o.shard) throw UsageError("--repair checks one mesh: --shard does not apply");
-    if (mesh_format_of(*o.repair_output).empty())
+    if (!repair_can_write(*o.repair_output))
       throw UsageError("--repair needs an output ending in .obj, .off, .ply or .stl, got \"" + *o.repair_output + "\"");
     std::error_code ec;
     if (*o.repair_output == o.meshes[0] || std::filesystem::equivalent(*o.repair_output, o.meshes[0], ec))

@@ -17,8 +17,9 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/helpers.h>
 
-#include "mesh/input_error.hpp"
 #include "mesh/check/solid_orientation.hpp"
+#include "mesh/input_error.hpp"
+#include "mesh/io/mesh_format.hpp"
 
 namespace umbra {
 namespace {
@@ -89,6 +90,11 @@ size_t orient_closed_components_outward(Mesh& mesh) {
 }
 
 }  // namespace
+
+bool repair_can_write(const std::string& path) {
+  const std::string format = mesh_format_of(path);
+  return format == "obj" || format == "off" || format == "ply" || format == "stl";
+}
 
 RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output) {
   RepairSummary summary;

@@ -12,6 +12,10 @@ struct RepairSummary {
   std::vector<std::string> changes;  // one line per kind of change made, e.g. "merged 24 repeated vertices"
 };
 
+// Whether the repair can write a mesh to `path`, by its extension: .obj,
+// .off, .ply or .stl (any case), which CGAL writes; not glTF or 3MF.
+bool repair_can_write(const std::string& path);
+
 // Merges repeated vertices, drops degenerate and duplicate faces and unused
 // vertices, splits non-manifold vertices, orients faces consistently, stitches
 // borders that coincide, triangulates, and turns every closed component

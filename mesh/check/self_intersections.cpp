@@ -107,7 +107,14 @@ SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positio
                                           size_t max_examples) {
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
-  const auto deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(time_limit_seconds));
+  // A limit beyond what the clock can count from now (about 292 years of
+  // nanoseconds, less the time since boot) is no limit: converted, it would
+  // wrap round to a deadline already past.
+  const double seconds_left = std::chrono::duration<double>(Clock::time_point::max() - start).count();
+  const Clock::time_point deadline =
+      time_limit_seconds >= 0.5 * seconds_left
+          ? Clock::time_point::max()
+          : start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(time_limit_seconds));
 
   const auto point = [&positions](uint32_t v) { return Point(positions[v].x, positions[v].y, positions[v].z); };
   // A triangle with collinear corners has no plane: the exact tests are

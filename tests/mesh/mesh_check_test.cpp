@@ -1,4 +1,5 @@
 // check_mesh on small meshes whose every count is known by hand.
+#include <limits>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <gtest/gtest.h>
@@ -362,6 +363,18 @@ TEST(MeshCheck, SelfIntersectionSearchThatHitsItsTimeLimitSaysSo) {
   EXPECT_FALSE(r.is_closed_manifold());
   EXPECT_EQ(r.shadow_method(), ShadowMethod::kSilhouette);
   EXPECT_TRUE(check_mesh(uv_sphere(64, 64)).self_intersections.complete);
+}
+
+TEST(MeshCheck, AVeryLargeTimeLimitIsNoLimit) {
+  // 1e10 s is more than the clock's 64-bit nanoseconds reach from now: it
+  // must not wrap round to a deadline already past.
+  for (const double seconds : {9.3e9, 1e10, 1e300, std::numeric_limits<double>::infinity()}) {
+    CheckOptions options;
+    options.self_intersection_seconds = seconds;
+    const MeshReport r = check_mesh(uv_sphere(64, 64), options);
+    EXPECT_TRUE(r.self_intersections.complete) << seconds;
+    EXPECT_TRUE(r.is_closed_manifold()) << seconds;
+  }
 }
 
 TEST(MeshCheck, EmptyMeshHasNoFaces) {

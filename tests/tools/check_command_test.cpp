@@ -157,6 +157,15 @@ TEST_F(CheckCommand, RepairRefusesToOverwriteItsInputOrTakeTwoMeshes) {
   const CommandResult format = run("check " + input + " --repair " + path("x.dae"));
   EXPECT_EQ(format.status, 2);
   EXPECT_FALSE(fs::exists(path("x.obj")));
+  // glTF and 3MF are read but not written: refused before any work.
+  for (const char* name : {"x.glb", "x.gltf", "x.3mf"}) {
+    const CommandResult unwritable = run("check " + input + " --repair " + path(name));
+    EXPECT_EQ(unwritable.status, 2) << name;
+    EXPECT_EQ(unwritable.out, "") << name;
+    EXPECT_EQ(unwritable.err, "umbra check: --repair needs an output ending in .obj, .off, .ply or .stl, got \"" + path(name) +
+                                  "\"\n(see umbra check --help)\n");
+    EXPECT_FALSE(fs::exists(path(name))) << name;
+  }
 }
 
 TEST_F(CheckCommand, RepairIntoAMissingFolderFailsWithoutLeavingAFile) {
