@@ -3,34 +3,44 @@
 namespace umbra {
 namespace {
 
-constexpr RenderMethod kAll[] = {RenderMethod::kAuto, RenderMethod::kZFail, RenderMethod::kZPass,
-                                 RenderMethod::kTriangles, RenderMethod::kShadowMap, RenderMethod::kPlanar,
-                                 RenderMethod::kRaycast};
+// Every method once: its name on the command line and how it shadows, as
+// --explain says.
+struct MethodRow {
+  RenderMethod method;
+  const char* name;
+  const char* technique;
+};
+constexpr MethodRow kMethods[] = {
+    {RenderMethod::kAuto, "auto", "two-sided stencil with wrapping, z-pass or z-fail per light"},
+    {RenderMethod::kZFail, "zfail", "two-sided stencil with wrapping, capped z-fail for every light"},
+    {RenderMethod::kZPass, "zpass", "two-sided stencil with wrapping, uncapped z-pass for every light"},
+    {RenderMethod::kTriangles, "triangles", "two-sided stencil with wrapping, capped z-fail, a volume per mesh triangle"},
+    {RenderMethod::kShadowMap, "shadowmap", "no stencil: a cube map of distances from each light"},
+    {RenderMethod::kPlanar, "planar", "no stencil: casters projected onto the triangles' planes"},
+    {RenderMethod::kRaycast, "raycast", "no GL: exact shadow rays on the CPU"},
+};
+
+const MethodRow& row_of(RenderMethod method) {
+  for (const MethodRow& row : kMethods)
+    if (row.method == method) return row;
+  return kMethods[0];
+}
 
 }  // namespace
 
-const char* method_name(RenderMethod method) {
-  switch (method) {
-    case RenderMethod::kAuto: return "auto";
-    case RenderMethod::kZFail: return "zfail";
-    case RenderMethod::kZPass: return "zpass";
-    case RenderMethod::kTriangles: return "triangles";
-    case RenderMethod::kShadowMap: return "shadowmap";
-    case RenderMethod::kPlanar: return "planar";
-    case RenderMethod::kRaycast: return "raycast";
-  }
-  return "?";
-}
+const char* method_name(RenderMethod method) { return row_of(method).name; }
+
+const char* method_technique(RenderMethod method) { return row_of(method).technique; }
 
 std::optional<RenderMethod> method_from_name(const std::string& name) {
-  for (const RenderMethod m : kAll)
-    if (name == method_name(m)) return m;
+  for (const MethodRow& row : kMethods)
+    if (name == row.name) return row.method;
   return std::nullopt;
 }
 
 std::string method_names() {
   std::string names;
-  for (const RenderMethod m : kAll) names += (names.empty() ? "" : "|") + std::string(method_name(m));
+  for (const MethodRow& row : kMethods) names += (names.empty() ? "" : "|") + std::string(row.name);
   return names;
 }
 

@@ -18,6 +18,8 @@ enum class RenderMethod {
 };
 
 const char* method_name(RenderMethod method);
+// How it shadows, in a phrase: "no stencil: a cube map of distances from each light".
+const char* method_technique(RenderMethod method);
 std::optional<RenderMethod> method_from_name(const std::string& name);
 // "auto|zfail|zpass|triangles|shadowmap|planar|raycast", for usage text and errors.
 std::string method_names();

@@ -397,8 +397,7 @@ void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& 
       << "far plane at infinity (epsilon 2^-22)\n";
   out << "  shading: ambient + diffuse" << (plan.specular_used ? " + specular" : " (no material has a specular term: skipped)")
       << "\n";
-  out << "  method: " << method_name(plan.settings.method)
-      << "; two-sided stencil with wrapping, z-pass or z-fail per light\n";
+  out << "  method: " << method_name(plan.settings.method) << "; " << method_technique(plan.settings.method) << "\n";
   for (size_t i = 0; i < plan.lights.size(); ++i) {
     const Light& light = scene.lights[i];
     const LightPlan& lp = plan.lights[i];

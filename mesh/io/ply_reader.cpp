@@ -193,7 +193,10 @@ class AsciiCursor {
     }
     // Any number, nan too: only the coordinates need be finite (read_body
     // says so), as for the binary encodings.
-    return is_integer(type) ? double(scanner_.integer(what)) : scanner_.any_number(what);
+    // The scanner's messages name it after "the": "a list's length" as "list's length".
+    const std::string_view article = std::string_view(what).substr(0, std::string_view(what).find(' ') + 1);
+    const char* noun = what + (article == "a " || article == "an " ? article.size() : 0);
+    return is_integer(type) ? double(scanner_.integer(noun)) : scanner_.any_number(noun);
   }
   int line() const { return scanner_.line_number(); }
 

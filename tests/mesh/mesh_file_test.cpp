@@ -243,6 +243,9 @@ TEST(MeshFile, BadFilesGetTheirExactLocatedError) {
   EXPECT_EQ(test::read_error_of("ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
                      "element face 1\nproperty list uchar float vertex_indices\nend_header\n", "d.ply"),
             "d.ply: the face's vertex indices must have an integer type");
+  EXPECT_EQ(test::read_error_of("ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
+                                "element face 1\nproperty list uchar int vertex_indices\nend_header\n7.5 0 1 2\n", "d.ply"),
+            "d.ply:10:1: expected an integer for the list's length, got \"7.5\"");
   EXPECT_EQ(test::read_error_of("", "e.dae"), "e.dae: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): the file is empty");
 }
 

@@ -144,6 +144,23 @@ TEST(RenderPlan, PlanarListsTheReceiversSeenFromTheLightsSide) {
   for (const glm::dvec4& v : lp.all_volumes.vertices) EXPECT_EQ(v.w, 1.0);
 }
 
+TEST(RenderPlan, ExplainSaysHowEachMethodShadows) {
+  // Only the volume methods count in a stencil; the others say what they do instead.
+  const Scene scene = parse_scene_file(std::string(UMBRA_SOURCE_DIR) + "/scenes/two_spheres.scene");
+  for (const auto& [method, phrase] :
+       std::vector<std::pair<RenderMethod, std::string>>{{RenderMethod::kAuto, "method: auto; two-sided stencil with wrapping, z-pass or z-fail per light"},
+                                                         {RenderMethod::kShadowMap, "method: shadowmap; no stencil: a cube map of distances from each light"},
+                                                         {RenderMethod::kPlanar, "method: planar; no stencil: casters projected onto the triangles' planes"}}) {
+    RenderSettings settings;
+    settings.method = method;
+    std::ostringstream explain;
+    print_render_plan(explain, scene, make_render_plan(scene, settings));
+    EXPECT_NE(explain.str().find(phrase + "\n"), std::string::npos) << explain.str();
+    EXPECT_EQ(explain.str().find("stencil with wrapping") == std::string::npos,
+              method == RenderMethod::kShadowMap || method == RenderMethod::kPlanar);
+  }
+}
+
 TEST(RenderPlan, SaysWhichShadingTermsTheSceneUses) {
   const Scene matte = parse_scene_text("light 0 0 2\nlight 1 0 2 color 0 0 0\nsphere 0 0 0 0.3\n", "matte.scene");
   const RenderPlan plan = make_render_plan(matte, RenderSettings{});
