@@ -35,7 +35,7 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
   for (const Triangle& t : scene.triangles) runs.push_back({t.material, nullptr, &t, nullptr, nullptr});
   for (size_t k = 0; k < scene.meshes.size(); ++k) {
     const Mesh& mesh = scene.meshes[k];
-    const Mesh* closed = mesh.components.all_closed() ? &mesh : nullptr;
+    const Mesh* closed = mesh.culls_back_faces ? &mesh : nullptr;
     triangle_count += mesh.triangles.size();
     if (mesh.triangle_materials.empty()) {
       runs.push_back({mesh.material, closed, nullptr, &mesh, nullptr});

@@ -20,8 +20,9 @@ class SurfaceBuffers {
 
   struct TriangleGroup {
     int material = 0;
-    // From closed meshes, facing outward: their back faces are culled when
-    // seen from outside the box [closed_lo, closed_hi] round those meshes.
+    // From meshes whose every shell hides its back faces
+    // (Mesh::culls_back_faces): their back faces are culled when seen from
+    // outside the box [closed_lo, closed_hi] round those meshes.
     bool closed = false;
     glm::dvec3 closed_lo{0.0}, closed_hi{0.0};
     int first_vertex = 0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 
 #include <glm/common.hpp>
 #include <tbb/task_group.h>
@@ -24,31 +25,52 @@ bool room_for(const List& list) {
   return list.size() < MeshReport::kMaxExamples;
 }
 
-// Per component, from what the stages found: closed, manifold, orientable,
-// genus, and for closed orientable ones whether they face outward.
-void summarise_components(const std::vector<glm::dvec3>& positions, const FaceTriangles& triangles,
-                          const std::vector<uint8_t>& flipped, const std::vector<uint32_t>& component_of_triangle,
-                          const ComponentLabels& labels, const std::vector<uint8_t>& non_manifold, MeshReport& report) {
-  std::vector<ComponentReport>& comps = report.components;
-  std::vector<uint8_t> closed_and_orientable(comps.size(), 0);
-  for (size_t i = 0; i < comps.size(); ++i)
-    closed_and_orientable[i] = comps[i].border_edges == 0 && !non_manifold[i] && !labels.conflict[i];
-  const std::vector<uint8_t> facing_in =
-      wrongly_facing_closed_components(positions, triangles.triangles, component_of_triangle, comps.size(), closed_and_orientable,
-                                       &flipped);
-  for (size_t i = 0; i < comps.size(); ++i) {
-    ComponentReport& c = comps[i];
+// Per component, from what the stages found: closed, manifold, orientable
+// and genus.
+void summarise_components(const ComponentLabels& labels, const std::vector<uint8_t>& non_manifold, MeshReport& report) {
+  for (size_t i = 0; i < report.components.size(); ++i) {
+    ComponentReport& c = report.components[i];
     c.euler_characteristic = int64_t(c.vertices) - int64_t(c.edges) + int64_t(c.faces);
     c.manifold = !non_manifold[i];
     c.closed = c.border_edges == 0 && c.manifold;
     c.orientable = !labels.conflict[i];
     c.consistently_oriented = c.orientable && labels.inconsistent[i] == 0;
     if (c.manifold && c.orientable) c.genus = (2 - c.euler_characteristic - int64_t(c.border_loops)) / 2;
-    if (c.closed && c.orientable) {
-      c.outward = !facing_in[i];
-      if (!*c.outward) ++report.inward_components;
-    }
     if (!c.orientable) ++report.non_orientable_components;
+  }
+}
+
+// Which way each closed, orientable component faces (facing_of_closed_components),
+// where the search for self-intersections says which cross a face: with no
+// complete search, none is known not to. And which hide their back faces: a
+// shell that crosses none of its own faces has winding number 0 or +-1
+// round every point, by the sign of its volume.
+void decide_facing(const std::vector<glm::dvec3>& positions, const FaceTriangles& triangles, const std::vector<uint8_t>& flipped,
+                   const std::vector<uint32_t>& component_of_triangle, const std::vector<uint32_t>& component_of_face,
+                   const SelfIntersections* found, MeshReport& report) {
+  std::vector<ComponentReport>& comps = report.components;
+  const bool known = found && found->complete;
+  std::vector<uint8_t> shells(comps.size(), 0), tangled(comps.size(), known ? 0 : 1), crosses_itself(comps.size(), known ? 0 : 1);
+  for (size_t i = 0; i < comps.size(); ++i) shells[i] = comps[i].closed && comps[i].orientable;
+  if (known)
+    for (const auto& [f, g] : found->pairs) {
+      const uint32_t a = component_of_face[f], b = component_of_face[g];
+      tangled[a] = tangled[b] = 1;
+      if (a == b) crosses_itself[a] = 1;
+    }
+  const ShellFacing shell_facing = facing_of_closed_components(positions, triangles.triangles, component_of_triangle,
+                                                               comps.size(), shells, tangled, &flipped);
+  for (size_t i = 0; i < comps.size(); ++i) {
+    if (!shells[i]) continue;
+    const Facing facing = shell_facing.facing[i];
+    const bool turned = facing == Facing::kWrong;  // the renderer turns it round
+    comps[i].hides_back_faces = !crosses_itself[i] && (shell_facing.volume[i] > 0.0) != turned;
+    if (facing == Facing::kUndecided) {
+      ++report.undecided_components;
+      continue;
+    }
+    comps[i].outward = !turned;
+    if (turned) ++report.inward_components;
   }
 }
 
@@ -105,13 +127,14 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   // it uses is declared before it, so that it outlives the search should a
   // stage throw.
   SelfIntersections found;
+  bool searched = options.self_intersection_seconds > 0.0;
   tbb::task_group search;
   std::optional<EdgeTable> face_edges;  // for the triangles' topology, when asked and all faces are triangles
   std::vector<uint8_t> several_fans;
   {
     const FaceClasses faces = classify_faces(soup, std::move(corners), merged.positions);
     triangles = triangulate_faces(soup, faces, merged.positions);
-    if (options.self_intersection_seconds > 0.0) {
+    if (searched) {
       search.run([&] {
         found = find_self_intersections(merged.positions, triangles.triangles, triangles.face,
                                         options.self_intersection_seconds, MeshReport::kMaxExamples);
@@ -182,12 +205,22 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   report.triangles = triangles.triangles.size();
   std::vector<uint32_t> component_of_triangle(triangles.triangles.size());
   for (size_t t = 0; t < triangles.triangles.size(); ++t) component_of_triangle[t] = labels.of_face[triangles.face[t]];
-  // Summed while the search may still read the triangles: the flips are
-  // read, not yet made.
+  summarise_components(labels, non_manifold, report);
+  search.wait();
+  // Only a mesh whose every component is closed can have its back faces
+  // culled, and only once the search shows its shells clean: the renderer
+  // asks for the search there (and nowhere else).
+  const bool all_closed = std::all_of(report.components.begin(), report.components.end(),
+                                      [](const ComponentReport& c) { return c.closed && c.orientable; });
+  if (!searched && options.search_closed_meshes && all_closed && !report.components.empty()) {
+    found = find_self_intersections(merged.positions, triangles.triangles, triangles.face,
+                                    std::numeric_limits<double>::infinity(), MeshReport::kMaxExamples);
+    searched = true;
+  }
+  // The flips are read, not yet made.
   std::vector<uint8_t> flipped(triangles.triangles.size());
   for (size_t t = 0; t < triangles.triangles.size(); ++t) flipped[t] = flip[triangles.face[t]];
-  summarise_components(merged.positions, triangles, flipped, component_of_triangle, labels, non_manifold, report);
-  search.wait();
+  decide_facing(merged.positions, triangles, flipped, component_of_triangle, labels.of_face, searched ? &found : nullptr, report);
   turn_flipped(triangles, flip);
   // The renderer gets closed components facing outward, so that it can cull
   // their back faces (the file's orientation stays in the report).
@@ -202,7 +235,7 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   }
 
   report.self_intersections.time_limit_seconds = options.self_intersection_seconds;
-  if (options.self_intersection_seconds > 0.0) {
+  if (searched) {
     report.self_intersections.checked = true;
     report.self_intersections.complete = found.complete;
     report.self_intersections.face_pairs = found.face_pairs;

@@ -21,6 +21,11 @@ struct CheckOptions {
   // renderer: from the check's own pass over the edges, for a mesh of
   // triangles only (MeshAnalysis::topology stays empty for any other).
   bool triangle_topology = false;
+  // With the search skipped (self_intersection_seconds 0): search all the
+  // same, without a time limit, when every component is closed, so that
+  // which way its shells face is decided and the renderer may cull their
+  // back faces (MeshReport::back_faces_hidden).
+  bool search_closed_meshes = false;
 };
 
 // The report, and the mesh as the renderer takes it: coincident points

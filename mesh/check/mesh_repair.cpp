@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <map>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -17,6 +18,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include "mesh/check/self_intersections.hpp"
 #include "mesh/check/solid_orientation.hpp"
 #include "mesh/input_error.hpp"
 #include "mesh/io/mesh_format.hpp"
@@ -53,7 +55,9 @@ size_t remove_degenerate_polygons(std::vector<Polygon>& polygons) {
 }
 
 // Reverses every closed component that faces into the solid it bounds
-// (wrongly_facing_closed_components); returns how many.
+// (facing_of_closed_components, with the self-intersection search saying
+// which cross a face: those, and those inside them, stay as they are);
+// returns how many.
 size_t orient_closed_components_outward(Mesh& mesh) {
   auto component = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:component", 0).first;
   const std::size_t count = PMP::connected_components(mesh, component);
@@ -65,7 +69,7 @@ size_t orient_closed_components_outward(Mesh& mesh) {
     positions[size_t(v)] = {p.x(), p.y(), p.z()};
   }
   std::vector<std::array<uint32_t, 3>> triangles;  // each face as a fan, for the volumes
-  std::vector<uint32_t> component_of;
+  std::vector<uint32_t> component_of, face_of;
   for (const Mesh::Face_index f : mesh.faces()) {
     faces[component[f]].push_back(f);
     std::vector<uint32_t> corners;
@@ -76,12 +80,17 @@ size_t orient_closed_components_outward(Mesh& mesh) {
     for (size_t k = 1; k + 1 < corners.size(); ++k) {
       triangles.push_back({corners[0], corners[k], corners[k + 1]});
       component_of.push_back(uint32_t(component[f]));
+      face_of.push_back(uint32_t(triangles.size() - 1));  // each triangle on its own: fans cross nothing
     }
   }
-  const std::vector<uint8_t> wrong = wrongly_facing_closed_components(positions, triangles, component_of, count, closed);
+  const SelfIntersections found = find_self_intersections(positions, triangles, face_of,
+                                                          std::numeric_limits<double>::infinity(), 0);
+  std::vector<uint8_t> tangled(count, 0);
+  for (const auto& [s, t] : found.pairs) tangled[component_of[s]] = tangled[component_of[t]] = 1;
+  const std::vector<Facing> facing = facing_of_closed_components(positions, triangles, component_of, count, closed, tangled).facing;
   size_t reversed = 0;
   for (std::size_t c = 0; c < count; ++c) {
-    if (!wrong[c]) continue;
+    if (facing[c] != Facing::kWrong) continue;
     PMP::reverse_face_orientations(faces[c], mesh);
     ++reversed;
   }

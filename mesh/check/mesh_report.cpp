@@ -1,5 +1,6 @@
 #include "mesh/check/mesh_report.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
@@ -70,6 +71,11 @@ std::string MeshReport::loading_changes() const {
 }
 
 bool MeshReport::is_closed_manifold() const { return problems().empty(); }
+
+bool MeshReport::back_faces_hidden() const {
+  return !components.empty() &&
+         std::all_of(components.begin(), components.end(), [](const ComponentReport& c) { return c.hides_back_faces; });
+}
 
 std::vector<std::string> MeshReport::topology_problems() const {
   std::vector<std::string> out;
@@ -166,6 +172,10 @@ void MeshReport::print_text(std::ostream& out) const {
   if (inconsistent_edges == 0) out << "consistent";
   else out << plural(inconsistent_edges, "edge disagrees", "edges disagree") << ", " << plural(faces_to_flip, "face", "faces") << " to flip";
   if (inward_components > 0) out << "; " << plural(inward_components, "closed component faces", "closed components face") << " inward";
+  if (undecided_components > 0)
+    out << "; " << plural(undecided_components, "closed component", "closed components")
+        << (self_intersections.checked && self_intersections.complete ? " cross faces: which way they face is undecided"
+                                                                       : ": which way they face is undecided without a complete self-intersection search");
   out << "\n";
   examples_line(refs_of("flip face", examples.faces_to_flip));
   out << "  self-intersections ";
@@ -191,6 +201,7 @@ void MeshReport::print_text(std::ostream& out) const {
     if (c.border_loops) out << ", " << plural(c.border_loops, "hole", "holes");
     if (!c.orientable) out << ", non-orientable";
     if (c.outward) out << (*c.outward ? ", outward" : ", inward");
+    else if (c.closed && c.orientable) out << ", facing undecided";
     out << "\n";
   }
   if (components.size() > kListed) out << "  ... and " << components.size() - kListed << " more components\n";
@@ -227,7 +238,8 @@ void MeshReport::print_json(std::ostream& out) const {
                               {"orientable", c.orientable},
                               {"consistently_oriented", c.consistently_oriented},
                               {"genus", c.genus ? Json(*c.genus) : Json(nullptr)},
-                              {"outward", c.outward ? Json(*c.outward) : Json(nullptr)}});
+                              {"outward", c.outward ? Json(*c.outward) : Json(nullptr)},
+                              {"hides_back_faces", c.hides_back_faces}});
   }
   Json report = {
       {"path", path},
@@ -251,6 +263,7 @@ void MeshReport::print_json(std::ostream& out) const {
       {"faces_to_flip", faces_to_flip},
       {"non_orientable_components", non_orientable_components},
       {"inward_components", inward_components},
+      {"undecided_components", undecided_components},
       {"self_intersections",
        {{"checked", self_intersections.checked},
         {"complete", self_intersections.complete},

@@ -43,6 +43,12 @@ struct ComponentReport {
   // solid it bounds? Outward for a shell round solid; into the cavity for a
   // hollow solid's inner shell, whose volume is then negative.
   std::optional<bool> outward;
+  // Closed and orientable, crossing none of its own faces, and enclosing
+  // positive volume once turned as the renderer turns it (only where
+  // `outward` is false): from outside its box its back faces are hidden
+  // behind its front faces, and the renderer culls them. Shells that cross
+  // each other may each be one; nesting plays no part.
+  bool hides_back_faces = false;
 };
 
 struct SelfIntersectionReport {
@@ -82,6 +88,7 @@ struct MeshReport {
   size_t faces_to_flip = 0;         // the fewest flips that make every orientable component consistent
   size_t non_orientable_components = 0;
   size_t inward_components = 0;     // closed, orientable components that face into the solid they bound
+  size_t undecided_components = 0;  // closed, orientable components whose facing has no sound answer (solid_orientation.hpp)
   int64_t euler_characteristic = 0;
   SelfIntersectionReport self_intersections;
   glm::dvec3 bbox_min{0.0}, bbox_max{0.0};
@@ -114,6 +121,9 @@ struct MeshReport {
   // border edges in 1 hole)".
   ShadowMethod shadow_method() const;
   std::string shadow_method_reason() const;
+  // Every component hides its back faces (ComponentReport::hides_back_faces):
+  // the renderer may cull the mesh's back faces.
+  bool back_faces_hidden() const;
   // What loading the mesh for rendering changes, or "": "366 duplicate faces
   // dropped, 1234 faces flipped to agree".
   std::string loading_changes() const;

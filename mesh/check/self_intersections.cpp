@@ -170,6 +170,7 @@ SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positio
   face_pairs.erase(std::unique(face_pairs.begin(), face_pairs.end()), face_pairs.end());
   result.face_pairs = face_pairs.size();
   result.examples.assign(face_pairs.begin(), face_pairs.begin() + std::ptrdiff_t(std::min(max_examples, face_pairs.size())));
+  result.pairs = std::move(face_pairs);
   result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return result;
 }

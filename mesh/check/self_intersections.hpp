@@ -14,6 +14,7 @@ namespace umbra {
 struct SelfIntersections {
   size_t face_pairs = 0;
   std::vector<std::pair<uint32_t, uint32_t>> examples;  // the first few pairs, by face index
+  std::vector<std::pair<uint32_t, uint32_t>> pairs;  // every pair, by face index, in order (examples are the first)
   bool complete = true;  // false when the time limit stopped the search
   double seconds = 0.0;
 };

@@ -23,11 +23,11 @@ double solid_angle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c
 
 }  // namespace
 
-std::vector<uint8_t> wrongly_facing_closed_components(const std::vector<glm::dvec3>& positions,
-                                                      const std::vector<std::array<uint32_t, 3>>& triangles,
-                                                      const std::vector<uint32_t>& component_of, size_t count,
-                                                      const std::vector<uint8_t>& closed,
-                                                      const std::vector<uint8_t>* reversed) {
+ShellFacing facing_of_closed_components(const std::vector<glm::dvec3>& positions,
+                                                const std::vector<std::array<uint32_t, 3>>& triangles,
+                                                const std::vector<uint32_t>& component_of, size_t count,
+                                                const std::vector<uint8_t>& closed, const std::vector<uint8_t>& tangled,
+                                                const std::vector<uint8_t>* reversed) {
   // Corner k of triangle t, as read turned round where `reversed` says so.
   const auto corner = [&](size_t t, size_t k) { return triangles[t][reversed && (*reversed)[t] && k ? 3 - k : k]; };
   std::vector<glm::dvec3> lo(count, glm::dvec3(1e300)), hi(count, glm::dvec3(-1e300));
@@ -86,21 +86,29 @@ std::vector<uint8_t> wrongly_facing_closed_components(const std::vector<glm::dve
       sum += solid_angle(positions[corner(t, 0)] - p, positions[corner(t, 1)] - p, positions[corner(t, 2)] - p);
     return std::abs(sum) / (4.0 * M_PI);
   };
-  std::vector<uint8_t> wrong(count, 0);
+  std::vector<Facing> facing(count, Facing::kRight);
   for (size_t i = 0, next = 0; i < shells.size(); ++i) {
     const uint32_t c = shells[i];
+    bool decided = !tangled[c];
     int depth = 0;
     for (; next < nested.size() && nested[next].first == c; ++next) {
       const uint32_t d = nested[next].second;
-      // A vertex of c that d's surface does not pass through: winding near 0 or 1.
+      if (!decided || tangled[d]) {
+        decided = false;
+        continue;
+      }
+      // A vertex of c off d's surface (c and d cross nowhere, but may touch
+      // at a point): the winding there is 0 or 1. None among 24: undecided.
       double w = 0.5;
       for (size_t k = 0; k < faces[c].size() && k < 24 && std::abs(w - 0.5) < 0.25; ++k)
         w = winds_round(d, positions[corner(faces[c][k], k % 3)]);
+      decided = std::abs(w - 0.5) >= 0.25;
       depth += w > 0.5;
     }
-    wrong[c] = (volume[c] > 0.0) != (depth % 2 == 0);
+    if (!decided) facing[c] = Facing::kUndecided;
+    else if ((volume[c] > 0.0) != (depth % 2 == 0)) facing[c] = Facing::kWrong;
   }
-  return wrong;
+  return {std::move(facing), std::move(volume)};
 }
 
 }  // namespace umbra

@@ -69,7 +69,10 @@ struct Mesh {
   glm::dvec3 bounds_min{0.0}, bounds_max{0.0};  // of the positions, in scene coordinates
   EdgeTable edges;               // of `triangles`
   ClosedComponents components;   // of `triangles`
-  MeshReport report;  // the file's topology as `umbra check` reports it, without the self-intersection search
+  MeshReport report;  // the file's topology as `umbra check` reports it, searched for self-intersections only if all closed
+  // Every shell hides its back faces (MeshReport::back_faces_hidden): seen
+  // from outside the mesh's box, they may be culled.
+  bool culls_back_faces = false;
 
   int material_of(size_t triangle) const { return triangle_materials.empty() ? material : triangle_materials[triangle]; }
 };

@@ -360,6 +360,7 @@ class SceneBuilder {
       CheckOptions topology_only;
       topology_only.self_intersection_seconds = 0.0;
       topology_only.triangle_topology = true;
+      topology_only.search_closed_meshes = true;
       analysis = analyse_mesh(read_polygon_soup(m.path), topology_only);
     } catch (const InputError& e) {
       if (e.where().line == 0)  // the file as a whole: say so at the statement that names it
@@ -391,6 +392,7 @@ class SceneBuilder {
     }
     m.triangles = std::move(analysis.triangles);
     m.report = std::move(analysis.report);
+    m.culls_back_faces = m.report.back_faces_hidden();
     m.triangle_materials = std::move(analysis.triangle_materials);
     pending.file_materials = std::move(analysis.materials);
     if (analysis.topology) {  // from the check's pass over the edges

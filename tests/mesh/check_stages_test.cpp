@@ -167,19 +167,21 @@ TEST(CheckStages, ShellsReadTurnedRoundFaceAsIfTurned) {
   for (size_t f = 0; f < hollow.polygon_count(); ++f) triangles.push_back({hollow.polygon(f)[0], hollow.polygon(f)[1], hollow.polygon(f)[2]});
   std::vector<uint32_t> component_of(24, 0);
   std::fill(component_of.begin() + 12, component_of.end(), 1);
-  const std::vector<uint8_t> closed{1, 1};
-  EXPECT_EQ(wrongly_facing_closed_components(hollow.points, triangles, component_of, 2, closed), (std::vector<uint8_t>{0, 0}));
+  const std::vector<uint8_t> closed{1, 1}, untangled{0, 0};
+  const auto facing = [&](const std::vector<std::array<uint32_t, 3>>& t, const std::vector<uint8_t>* reversed = nullptr) {
+    return facing_of_closed_components(hollow.points, t, component_of, 2, closed, untangled, reversed).facing;
+  };
+  EXPECT_EQ(facing(triangles), (std::vector<Facing>{Facing::kRight, Facing::kRight}));
   for (const size_t shell : {0, 1}) {
     std::vector<uint8_t> reversed(24, 0);
     std::fill(reversed.begin() + std::ptrdiff_t(12 * shell), reversed.begin() + std::ptrdiff_t(12 * shell + 12), 1);
     std::vector<std::array<uint32_t, 3>> turned = triangles;
     for (size_t t = 0; t < 24; ++t)
       if (reversed[t]) std::swap(turned[t][1], turned[t][2]);
-    std::vector<uint8_t> expected{0, 0};
-    expected[shell] = 1;
-    EXPECT_EQ(wrongly_facing_closed_components(hollow.points, turned, component_of, 2, closed), expected) << "shell " << shell;
-    EXPECT_EQ(wrongly_facing_closed_components(hollow.points, triangles, component_of, 2, closed, &reversed), expected)
-        << "shell " << shell;
+    std::vector<Facing> expected{Facing::kRight, Facing::kRight};
+    expected[shell] = Facing::kWrong;
+    EXPECT_EQ(facing(turned), expected) << "shell " << shell;
+    EXPECT_EQ(facing(triangles, &reversed), expected) << "shell " << shell;
   }
 }
 
@@ -188,14 +190,14 @@ TEST(CheckStages, ThousandsOfShellsAreNestedByTheirBoxes) {
   // bound its cavities and so should face in, one of them facing out; 1500
   // more outside it, facing out, one of them facing in.
   PolygonSoup soup = box_triangles(glm::dvec3(0.0), glm::dvec3(100.0));
-  std::vector<uint8_t> expected{0};
+  std::vector<Facing> expected{Facing::kRight};
   for (int k = 0; k < 3000; ++k) {
     const bool inside = k < 1500;
     const glm::dvec3 at(1.0 + (k % 1500) % 40 * 2.4, 1.0 + (k % 1500) / 40 * 2.4, inside ? 50.0 : 150.0);
     const bool odd_one = k == 700 || k == 2300;
     const bool facing_in = inside != odd_one;
     soup = combine(soup, facing_in ? all_reversed(tetrahedron(at)) : tetrahedron(at));
-    expected.push_back(odd_one);
+    expected.push_back(odd_one ? Facing::kWrong : Facing::kRight);
   }
   std::vector<std::array<uint32_t, 3>> triangles;
   std::vector<uint32_t> component_of;
@@ -203,8 +205,14 @@ TEST(CheckStages, ThousandsOfShellsAreNestedByTheirBoxes) {
     triangles.push_back({soup.polygon(f)[0], soup.polygon(f)[1], soup.polygon(f)[2]});
     component_of.push_back(f < 12 ? 0 : uint32_t(1 + (f - 12) / 4));
   }
-  const std::vector<uint8_t> closed(3001, 1);
-  EXPECT_EQ(wrongly_facing_closed_components(soup.points, triangles, component_of, 3001, closed), expected);
+  const std::vector<uint8_t> closed(3001, 1), untangled(3001, 0);
+  EXPECT_EQ(facing_of_closed_components(soup.points, triangles, component_of, 3001, closed, untangled).facing, expected);
+  // A tangled outer box leaves every shell it holds undecided, not the ones outside it.
+  std::vector<uint8_t> box_tangled(3001, 0);
+  box_tangled[0] = 1;
+  const std::vector<Facing> facing =
+      facing_of_closed_components(soup.points, triangles, component_of, 3001, closed, box_tangled).facing;
+  for (size_t c = 0; c < 3001; ++c) EXPECT_EQ(facing[c] == Facing::kUndecided, c <= 1500) << c;
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
 #include "mesh/io/polygon_soup.hpp"
 
 namespace umbra::test {
@@ -107,6 +109,36 @@ inline PolygonSoup all_reversed(PolygonSoup soup) {
 inline PolygonSoup hollow_cube() {
   return combine(box_triangles(glm::dvec3(0.0), glm::dvec3(3.0)), all_reversed(box_triangles(glm::dvec3(1.0), glm::dvec3(2.0))));
 }
+
+// The prism over `polygon` (in the xy plane, counter-clockwise where it is
+// simple) from z0 to z1: each cap a fan of triangles from the polygon's first
+// corner, each side a quad, outward where the polygon turns counter-clockwise.
+// A self-crossing polygon gives a closed prism whose walls cross, with its
+// clockwise lobes turned inside out.
+inline PolygonSoup prism(const std::vector<glm::dvec2>& polygon, double z0, double z1) {
+  const uint32_t n = uint32_t(polygon.size());
+  std::vector<glm::dvec3> points;
+  for (const double z : {z0, z1})
+    for (const glm::dvec2& p : polygon) points.emplace_back(p.x, p.y, z);
+  std::vector<Face> faces;
+  for (uint32_t k = 1; k + 1 < n; ++k) {
+    faces.push_back({0, k + 1, k});          // bottom, facing -z
+    faces.push_back({n, n + k, n + k + 1});  // top, facing +z
+  }
+  for (uint32_t k = 0; k < n; ++k) faces.push_back({k, (k + 1) % n, n + (k + 1) % n, n + k});
+  return make_soup(points, faces);
+}
+
+// An L-shaped prism and a box that pokes out of its inner wall into the
+// notch: two closed, outward shells that cross, neither inside the other.
+inline PolygonSoup box_through_l_prism() {
+  return combine(prism({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, 0.0, 1.0),
+                 box_triangles(glm::dvec3(1.2, 0.5, 0.2), glm::dvec3(1.8, 1.5, 0.8)));
+}
+
+// A prism over a bow tie with a large lobe (counter-clockwise) and a small
+// one (clockwise, so inside out): one closed shell whose walls cross.
+inline PolygonSoup bow_tie_prism() { return prism({{0, 0}, {4, 2}, {4, 1.4}, {0, 2}}, 0.0, 1.0); }
 
 inline PolygonSoup without_faces(const PolygonSoup& soup, std::vector<size_t> drop) {
   std::vector<Face> faces;

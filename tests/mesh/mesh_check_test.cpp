@@ -180,6 +180,38 @@ TEST(MeshCheck, AHollowSolidsInnerShellFacingItsCavityIsNotInward) {
   EXPECT_EQ(three.inward_components, 0u);
 }
 
+// Which way a closed shell faces is decided only where the answer is sound:
+// for a shell that crosses no face, of its own or of another shell. Shells
+// that cross each other, or a shell whose walls cross, are left undecided,
+// whatever the order of their faces, and never counted inward.
+TEST(MeshCheck, ShellsThatCrossHaveNoDecidedFacing) {
+  const PolygonSoup crossing = test::box_through_l_prism();
+  for (const PolygonSoup& soup : {crossing, test::combine(test::box_triangles(glm::dvec3(1.2, 0.5, 0.2), glm::dvec3(1.8, 1.5, 0.8)),
+                                                          test::prism({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, 0.0, 1.0))}) {
+    const MeshReport r = check_mesh(soup);
+    ASSERT_EQ(r.components.size(), 2u);
+    EXPECT_GT(r.self_intersections.face_pairs, 0u);
+    EXPECT_EQ(r.inward_components, 0u);
+    EXPECT_EQ(r.undecided_components, 2u);
+    for (const ComponentReport& c : r.components) {
+      EXPECT_TRUE(c.closed);
+      EXPECT_FALSE(c.outward.has_value());
+    }
+  }
+  const MeshReport bow_tie = check_mesh(test::bow_tie_prism());
+  ASSERT_EQ(bow_tie.components.size(), 1u);
+  EXPECT_TRUE(bow_tie.components[0].closed);
+  EXPECT_GT(bow_tie.self_intersections.face_pairs, 0u);
+  EXPECT_FALSE(bow_tie.components[0].outward.has_value());
+  EXPECT_EQ(bow_tie.undecided_components, 1u);
+  // Without the search nothing shows that a shell is clean: undecided too.
+  CheckOptions no_search;
+  no_search.self_intersection_seconds = 0.0;
+  const MeshReport unsearched = check_mesh(test::hollow_cube(), no_search);
+  EXPECT_EQ(unsearched.undecided_components, 2u);
+  EXPECT_EQ(unsearched.inward_components, 0u);
+}
+
 TEST(MeshCheck, InwardCubeIsAClosedManifoldThatSaysItFacesInward) {
   const MeshReport r = check_mesh(all_reversed(unit_cube()));
   expect_clean_closed_manifold(r);

@@ -135,6 +135,17 @@ TEST_F(CheckCommand, RepairKeepsASmallBoxFarFromTheOriginOutward) {
   EXPECT_NEAR(test::signed_volume(read_polygon_soup(path("out.obj")), {9e8, 1.1e9, 7e8}), 0.75, 1e-9);
 }
 
+TEST_F(CheckCommand, RepairLeavesShellsThatCrossFacingAsTheyWere) {
+  // Neither shell is inside the other: no sound reason to turn either, and
+  // the check of the repaired mesh agrees that none faces inward.
+  const std::string input = write("in.obj", obj_text(test::box_through_l_prism()));
+  const CommandResult r = run("check " + input + " --repair " + path("out.obj"));
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_EQ(r.out.find("turned"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("inward"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("2 closed components cross faces: which way they face is undecided"), std::string::npos) << r.out;
+}
+
 TEST_F(CheckCommand, RepairSaysWhatRemainsWhenAHoleCannotBeStitched) {
   const std::string input = write("in.obj", obj_text(test::without_faces(test::unit_cube(), {4, 5})));
   const CommandResult r = run("check " + input + " --repair " + path("out.obj"));

@@ -1,0 +1,56 @@
+// Back faces of a closed mesh are culled only where culling is provably
+// invisible: every shell closed, crossing none of its own faces, and
+// enclosing positive volume as drawn. Two such shells that cross each other
+// are culled as they are, neither turned; a shell whose walls cross (a lobe
+// turned inside out) is drawn whole; either way the picture is the ray-cast
+// reference's.
+#include <gtest/gtest.h>
+
+#include "mesh/scene/scene_parser.hpp"
+#include "tests/mesh/mesh_builders.hpp"
+#include "tests/render/image_agreement.hpp"
+#include "tests/scratch_folder.hpp"
+
+namespace umbra {
+namespace {
+
+class ShellCulling : public test::ScratchFolder {
+ protected:
+  // The mesh fitted into the cube over a floor, seen from a raised corner.
+  Scene scene_of(const PolygonSoup& soup) {
+    write("shells.obj", test::obj_text(soup));
+    return parse_scene_text("light 1.5 -2 3\n"
+                            "triangle -1 -1 -1  1 -1 -1  1 1 -1\ntriangle -1 -1 -1  1 1 -1  -1 1 -1\n"
+                            "mesh shells.obj fit\n"
+                            "camera eye 2.2 -2.6 2.4 target 0 0 -0.3 up 0 0 1 fovy 45\n",
+                            (folder_ / "t.scene").string());
+  }
+};
+
+TEST_F(ShellCulling, CrossingShellsAreCulledAsTheyAreNotTurned) {
+  const Scene scene = scene_of(test::box_through_l_prism());
+  EXPECT_TRUE(scene.meshes[0].culls_back_faces);
+  test::expect_images_agree(scene, test::render_gl_and_ray_cast(scene, 120));
+}
+
+TEST_F(ShellCulling, AShellWithAnInsideOutLobeIsDrawnWhole) {
+  const Scene scene = scene_of(test::bow_tie_prism());
+  EXPECT_FALSE(scene.meshes[0].culls_back_faces);
+  test::expect_images_agree(scene, test::render_gl_and_ray_cast(scene, 120));
+}
+
+TEST_F(ShellCulling, ACleanSolidIsCulledAndAnInwardOneTurnedFirst) {
+  for (const PolygonSoup& soup : {test::unit_cube(), test::all_reversed(test::unit_cube())}) {
+    const Scene scene = scene_of(soup);
+    EXPECT_TRUE(scene.meshes[0].culls_back_faces);
+    test::expect_images_agree(scene, test::render_gl_and_ray_cast(scene, 120));
+  }
+  // A hollow solid's cavity encloses negative volume: drawn whole (it is
+  // hidden from outside all the same).
+  const Scene hollow = scene_of(test::hollow_cube());
+  EXPECT_FALSE(hollow.meshes[0].culls_back_faces);
+  test::expect_images_agree(hollow, test::render_gl_and_ray_cast(hollow, 120));
+}
+
+}  // namespace
+}  // namespace umbra
