@@ -5,13 +5,16 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <future>
+#include <mutex>
 #include <iostream>
 #include <optional>
 #include <sstream>
 #include <thread>
+#include <vector>
 
 #include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "mesh/input_error.hpp"
 #include "mesh/check/mesh_check.hpp"
@@ -47,6 +50,7 @@ options:
                     docs/check.md)
   --jobs N          check N meshes at a time, using at most N threads in all
                     (default: the number of cores)
+  --                end of options: every argument after it is a PATH
   --shard K/N       check only part K (counting from 0) of N disjoint parts
                     of the list: N machines with K = 0 ... N-1 check it all,
                     and their outputs, concatenated in order of K, are this
@@ -113,24 +117,25 @@ struct CheckOutcome {
 
 CheckOutcome check_one(const std::string& path, const CheckCommandOptions& options) {
   CheckOutcome outcome;
-  std::ostringstream out, err;
+  std::ostringstream out;
+  // Every mesh gets its line of JSON: a report, or what stopped it.
+  const auto failed = [&](const std::string& message) {
+    outcome.err = message + "\n";
+    if (options.json) out << json_error_line(path, message);
+    outcome.status = 2;
+  };
   try {
     const MeshReport report = check_mesh(read_polygon_soup(path), options.check);
     options.json ? report.print_json(out) : report.print_text(out);
     outcome.status = report.is_closed_manifold() ? 0 : 1;
   } catch (const InputError& e) {
-    err << e.what() << "\n";
-    if (options.json) out << json_error_line(path, e.what());
-    outcome.status = 2;
+    failed(e.what());
   } catch (const std::bad_alloc&) {
-    err << path << ": not enough memory to check this mesh\n";
-    outcome.status = 2;
+    failed(path + ": not enough memory to check this mesh");
   } catch (const std::exception& e) {
-    err << path << ": the check failed: " << e.what() << "\n";
-    outcome.status = 2;
+    failed(path + ": the check failed: " + e.what());
   }
   outcome.out = out.str();
-  outcome.err = err.str();
   return outcome;
 }
 
@@ -175,39 +180,46 @@ int run_check_command(const std::vector<std::string>& argv) {
   }
   const std::vector<std::string> meshes = options.shard ? shard_of(all, *options.shard) : all;
   const auto start = std::chrono::steady_clock::now();
-  // --jobs bounds the threads of the whole process: the meshes checked at once
-  // and the self-intersection searches inside them share them.
+  // --jobs bounds the threads of the whole process: this one and TBB's
+  // workers, which check meshes and run the searches inside them alike.
   const tbb::global_control threads(tbb::global_control::max_allowed_parallelism, options.jobs);
 
   // Workers take meshes in order; reports are printed in order, each as soon
-  // as it and those before it are done.
+  // as it and those before it are done, by whichever worker finishes the
+  // last of them.
   const size_t count = meshes.size();
-  std::vector<std::promise<CheckOutcome>> promises(count);
-  std::vector<std::future<CheckOutcome>> results;
-  for (auto& p : promises) results.push_back(p.get_future());
-  std::atomic<size_t> next{0}, finished{0};
-  std::vector<std::thread> workers;
-  for (size_t w = 0; w < std::min(count, options.jobs); ++w) {
-    workers.emplace_back([&] {
+  std::vector<std::optional<CheckOutcome>> outcomes(count);
+  std::atomic<size_t> next{0};
+  std::mutex print_mutex;
+  size_t finished = 0, printed = 0, closed = 0, open = 0, unreadable = 0;
+  int status = 0;
+  ProgressBar progress(count);
+  const auto print_ready = [&] {  // under print_mutex
+    for (; printed < count && outcomes[printed]; ++printed) {
+      const CheckOutcome& outcome = *outcomes[printed];
+      progress.clear();
+      std::cout << outcome.out << std::flush;
+      std::cerr << outcome.err << std::flush;
+      status = std::max(status, outcome.status);
+      (outcome.status == 0 ? closed : outcome.status == 1 ? open : unreadable) += 1;
+      outcomes[printed].reset();
+    }
+    if (printed < count) progress.update(finished, meshes[printed]);
+  };
+  tbb::task_arena arena(int(options.jobs));
+  arena.execute([&] {
+    tbb::parallel_for(size_t(0), std::min(count, options.jobs), [&](size_t) {
       for (size_t i = next++; i < count; i = next++) {
-        promises[i].set_value(check_one(meshes[i], options));
+        // Isolated: while a check waits for its own parallel work, its thread
+        // takes no other mesh, which would hold back this mesh's report.
+        CheckOutcome outcome = tbb::this_task_arena::isolate([&] { return check_one(meshes[i], options); });
+        const std::lock_guard<std::mutex> lock(print_mutex);
+        outcomes[i] = std::move(outcome);
         ++finished;
+        print_ready();
       }
     });
-  }
-  ProgressBar progress(count);
-  size_t closed = 0, open = 0, unreadable = 0;
-  int status = 0;
-  for (size_t i = 0; i < count; ++i) {
-    progress.update(finished, meshes[i]);
-    const CheckOutcome outcome = results[i].get();
-    progress.clear();
-    std::cout << outcome.out << std::flush;
-    std::cerr << outcome.err << std::flush;
-    status = std::max(status, outcome.status);
-    (outcome.status == 0 ? closed : outcome.status == 1 ? open : unreadable) += 1;
-  }
-  for (std::thread& t : workers) t.join();
+  });
   if (count > 1 || all.size() != options.meshes.size() || options.shard) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     char elapsed[32];

@@ -29,9 +29,14 @@ void CommandOptions::flag(const std::string& names, bool& set) { app_->add_flag(
 
 void CommandOptions::positionals(std::vector<std::string>& arguments) {
   app_->add_option("arguments", arguments)->allow_extra_args();
+  positionals_ = &arguments;
 }
 
-void CommandOptions::parse(const std::vector<std::string>& argv) {
+void CommandOptions::parse(const std::vector<std::string>& all) {
+  // "--" ends the options, as POSIX utilities have it: whatever follows is
+  // an argument, even "-name.obj".
+  const auto end_of_options = std::find(all.begin(), all.end(), "--");
+  const std::vector<std::string> argv(all.begin(), end_of_options);
   // CLI11 would say "1 required TEXT missing"; say which option lacks its value.
   if (!argv.empty() && std::find(value_names_.begin(), value_names_.end(), argv.back()) != value_names_.end())
     throw UsageError(argv.back() + " needs a value");
@@ -43,6 +48,9 @@ void CommandOptions::parse(const std::vector<std::string>& argv) {
   }
   for (const std::string& extra : app_->remaining())
     if (extra.size() > 1 && extra[0] == '-') throw UsageError("unknown option " + extra.substr(0, extra.find('=')));
+  if (end_of_options == all.end()) return;
+  if (!positionals_) throw UsageError("takes no arguments, got \"" + (end_of_options + 1 == all.end() ? std::string("--") : *(end_of_options + 1)) + "\"");
+  positionals_->insert(positionals_->end(), end_of_options + 1, all.end());
 }
 
 double parse_finite_number(const std::string& option, const std::string& text) {

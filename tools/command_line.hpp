@@ -41,11 +41,12 @@ class CommandOptions {
   // The arguments that are not options, in order.
   void positionals(std::vector<std::string>& arguments);
   // Throws UsageError for an unknown option, a missing value or a value
-  // its callback refuses.
+  // its callback refuses. Everything after "--" is a positional argument.
   void parse(const std::vector<std::string>& argv);
 
  private:
   std::unique_ptr<CLI::App> app_;
+  std::vector<std::string>* positionals_ = nullptr;
   std::vector<std::string> value_names_;  // to say "--size needs a value"
 };
 

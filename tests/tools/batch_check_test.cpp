@@ -3,6 +3,7 @@
 // reports as before on CGAL's data meshes.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <regex>
 
 #include "tests/mesh/mesh_builders.hpp"
@@ -157,6 +158,28 @@ TEST_F(BatchCheck, UsageErrorsForJobsAndShards) {
 // The reports of every mesh in CGAL's data, as the check gave them before it
 // was made parallel and faster (tests/data/cgal_check_reports.tsv, made by
 // tests/tools/report_digests.py), checked as one folder on every core.
+TEST_F(BatchCheck, JobsCapsTheThreadsOfTheWholeProcess) {
+  // CGAL's 143 data meshes, checked for about a second; the process's
+  // threads sampled every 2 ms (/proc/PID/status) never number more than
+  // --jobs (no terminal here, so no progress bar's thread).
+  const std::string folder = std::string(UMBRA_CGAL_DATA) + "/meshes";
+  for (const int jobs : {1, 2}) {
+    const std::string script = std::string(UMBRA_EXECUTABLE) + " check --jobs " + std::to_string(jobs) + " " + folder +
+                               " >/dev/null 2>&1 & pid=$!; most=0\n"
+                               "while kill -0 $pid 2>/dev/null; do\n"
+                               "  n=$(awk '/^Threads:/ {print $2}' /proc/$pid/status 2>/dev/null)\n"
+                               "  [ -n \"$n\" ] && [ \"$n\" -gt $most ] && most=$n\n"
+                               "  sleep 0.002\n"
+                               "done\n"
+                               "echo $most >" + path("most.txt") + "\n";
+    std::ofstream(path("sample.sh")) << script;
+    ASSERT_EQ(std::system(("sh " + path("sample.sh")).c_str()), 0);
+    const int most = std::stoi(read(path("most.txt")));
+    EXPECT_GE(most, 1) << jobs;
+    EXPECT_LE(most, jobs) << jobs;
+  }
+}
+
 TEST_F(BatchCheck, CgalDataMeshesGetTheSameReportsAsBefore) {
   const std::string folder = std::string(UMBRA_CGAL_DATA) + "/meshes";
   const std::string command = std::string(UMBRA_EXECUTABLE) + " check --json " + folder + " 2>/dev/null | python3 " +

@@ -74,6 +74,28 @@ TEST_F(CheckCommand, JsonIsOneValidObjectPerMeshPerLine) {
             "flipped.obj False 1 silhouette False [{'face': 7, 'line': 16}]\n");
 }
 
+TEST_F(CheckCommand, JsonHasALineForEveryMeshEvenWhenItsCheckRunsOutOfMemory) {
+  // A strip of 400,000 triangles as binary STL (20 MB), checked with the
+  // address space capped at 140 MB, which starting takes under 100 MB of:
+  // the check of the strip fails for want of memory; its line says so.
+  std::string stl(80, ' ');
+  const uint32_t count = 400000;
+  stl.append(reinterpret_cast<const char*>(&count), 4);
+  for (uint32_t i = 0; i < count; ++i) {
+    const float record[12] = {0, 0, 1, float(i), 0, 0, float(i) + 1, 0, 0, float(i), 1, 0};
+    stl.append(reinterpret_cast<const char*>(record), sizeof record);
+    stl.append(2, '\0');
+  }
+  const std::string strip = write("strip.stl", stl);
+  const std::string good = write("good.obj", obj_text(test::unit_cube()));
+  const CommandResult r = run("check --json --jobs 1 " + good + " " + strip, "ulimit -v 140000; ");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err.substr(0, r.err.find("umbra check: ")), strip + ": not enough memory to check this mesh\n");
+  const size_t second = r.out.find('\n') + 1;
+  ASSERT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 2) << r.out;
+  EXPECT_EQ(r.out.substr(second), "{\"path\":\"" + strip + "\",\"error\":\"" + strip + ": not enough memory to check this mesh\"}\n");
+}
+
 TEST_F(CheckCommand, JsonIsValidUtf8EvenForFileNamesThatAreNot) {
   // Latin-1 "café.obj" and "broken-é.off": the é is the single byte 0xE9.
   const std::string good = write("caf\xe9.obj", obj_text(test::tetrahedron()));

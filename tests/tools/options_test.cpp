@@ -32,6 +32,17 @@ TEST_F(Options, EveryCommandTakesEqualsForms) {
   EXPECT_FALSE(read(path("b.csv")).empty());
 }
 
+TEST_F(Options, DoubleDashEndsTheOptions) {
+  // A file whose name starts with "-" is reached after "--"; before it, it is an unknown option.
+  const std::string dash = write("-dash.obj", test::obj_text(test::unit_cube()));
+  EXPECT_EQ(run("check -- " + dash).status, 0);
+  const CommandResult check = run("check --jobs 1 -- -dash.obj", "cd " + folder_.string() + " && ");
+  EXPECT_EQ(check.status, 0) << check.err;
+  EXPECT_EQ(run("check -dash.obj", "cd " + folder_.string() + " && ").err, "umbra check: unknown option -dash.obj\n(see umbra check --help)\n");
+  EXPECT_EQ(run("render -o " + path("a.png") + " --size 32x32 -- " + scene).status, 0);
+  EXPECT_TRUE(test::fs::exists(path("a.png")));
+}
+
 TEST_F(Options, MistakesAreNamedInUmbrasWords) {
   EXPECT_EQ(run("render " + scene + " -o x.png --size").err, "umbra render: --size needs a value\n(see umbra render --help)\n");
   EXPECT_EQ(run("render " + scene + " -o x.png --size=10by10").err,
