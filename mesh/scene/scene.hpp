@@ -66,7 +66,7 @@ struct Mesh {
 
   std::vector<glm::dvec3> positions;
   std::vector<std::array<uint32_t, 3>> triangles;
-  glm::dvec3 bounds_min{0.0}, bounds_max{0.0};  // of the positions, in scene coordinates
+  glm::dvec3 bounds_min{0.0}, bounds_max{0.0};  // of the triangles' corners, in scene coordinates
   EdgeTable edges;               // of `triangles`
   ClosedComponents components;   // of `triangles`
   MeshReport report;  // the file's topology as `umbra check` reports it, searched for self-intersections only if all closed

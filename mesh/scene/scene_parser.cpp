@@ -3,6 +3,7 @@
 #include <atomic>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -372,25 +373,28 @@ class SceneBuilder {
     glm::dvec3 fit_centre(0.0);
     double fit_scale = 1.0;
     if (m.fit && !analysis.positions.empty()) {
-      // The check's box: over every point of the file, as the positions are.
-      const glm::dvec3 lo = analysis.report.bbox_min, hi = analysis.report.bbox_max;
+      // The box of the faces' corners: a point no face uses is no part of the shape.
+      glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+      for (const auto& t : analysis.triangles)
+        for (const uint32_t v : t) lo = glm::min(lo, analysis.positions[v]), hi = glm::max(hi, analysis.positions[v]);
       const double longest = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
-      if (!(longest > 0.0)) throw InputError(pending.path_at, "mesh file " + in_quotes(m.path) + " has no extent to fit: all its points coincide");
-      fit_centre = (lo + hi) / 2.0;
+      if (std::isinf(longest) && !analysis.triangles.empty())
+        throw InputError(pending.path_at, "mesh file " + in_quotes(m.path) + " is too large to fit: its extent overflows double precision");
+      if (!(longest > 0.0))
+        throw InputError(pending.path_at, "mesh file " + in_quotes(m.path) + " has no extent to fit: all its faces' corners coincide");
+      fit_centre = lo / 2.0 + hi / 2.0;  // halves first: lo + hi may overflow where each does not
       fit_scale = 2.0 / longest;
     }
     const glm::dmat3 rotation(glm::rotate(glm::dmat4(1.0), glm::radians(m.rotation_deg), glm::normalize(m.rotation_axis)));
     m.positions.reserve(analysis.positions.size());
     for (const glm::dvec3& p : analysis.positions)
       m.positions.push_back(rotation * (m.scale * fit_scale * (p - fit_centre)) + m.translation);
-    if (!m.positions.empty()) {
-      m.bounds_min = m.bounds_max = m.positions[0];
-      for (const glm::dvec3& p : m.positions) {
-        m.bounds_min = glm::min(m.bounds_min, p);
-        m.bounds_max = glm::max(m.bounds_max, p);
-      }
-    }
     m.triangles = std::move(analysis.triangles);
+    if (!m.triangles.empty()) {  // the faces' box, as fit measures it
+      m.bounds_min = m.bounds_max = m.positions[m.triangles[0][0]];
+      for (const auto& t : m.triangles)
+        for (const uint32_t v : t) m.bounds_min = glm::min(m.bounds_min, m.positions[v]), m.bounds_max = glm::max(m.bounds_max, m.positions[v]);
+    }
     m.report = std::move(analysis.report);
     m.culls_back_faces = m.report.back_faces_hidden();
     m.triangle_materials = std::move(analysis.triangle_materials);

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "tests/mesh/mesh_builders.hpp"
 #include "tests/scratch_folder.hpp"
 
 namespace umbra {
@@ -229,7 +230,20 @@ TEST_F(SceneMeshes, FitCentresTheBoxAndScalesItsLongestSideToTheCubeBeforeTheRes
   EXPECT_EQ(open.warnings[1].message, "mesh \"open.obj\" is open, 1 hole: edge-multiplicity volume");
   write("point.obj", "v 1 1 1\nv 1 1 1\nv 1 1 1\nf 1 2 3\n");
   EXPECT_EQ(error("light 0 0 5\nmesh point.obj fit\n"),
-            dir() + "s.scene:2:6: mesh file \"" + dir() + "point.obj\" has no extent to fit: all its points coincide");
+            dir() + "s.scene:2:6: mesh file \"" + dir() + "point.obj\" has no extent to fit: all its faces' corners coincide");
+}
+
+TEST_F(SceneMeshes, FitMeasuresTheFacesNotPointsNoFaceUses) {
+  // A cube at 100-101 and a stray point at the origin that no face uses:
+  // the cube fills the cube [-1,1]^3, not a corner of it.
+  write("stray.obj", test::obj_text(test::box_triangles(glm::dvec3(100.0), glm::dvec3(101.0))) + "v 0 0 0\n");
+  const Mesh fitted = parse("light 0 0 5\nmesh stray.obj fit\n").meshes[0];
+  EXPECT_EQ(fitted.bounds_min, glm::dvec3(-1.0));
+  EXPECT_EQ(fitted.bounds_max, glm::dvec3(1.0));
+  // An extent that overflows double precision is no extent to fit.
+  write("huge.obj", "v -1e308 0 0\nv 1e308 0 0\nv 0 1 0\nf 1 2 3\n");
+  EXPECT_EQ(error("light 0 0 5\nmesh huge.obj fit\n"),
+            dir() + "s.scene:2:6: mesh file \"" + dir() + "huge.obj\" is too large to fit: its extent overflows double precision");
 }
 
 TEST_F(SceneMeshes, OpenMeshGetsAWarningThatSaysHowItCastsItsShadow) {
