@@ -63,27 +63,39 @@ void read_material_library(const std::string& path, int line, PolygonSoup& soup,
   TextScanner scanner(file.bytes(), path);
   SoupMaterial* current = nullptr;
   bool noted_maps = false;
+  // A statement that cannot be read (a decimal comma, say) is passed over:
+  // colours are no reason to refuse a mesh, but the warning says so.
+  size_t unread = 0;
+  std::string first_unread;
   while (scanner.next_line()) {
-    const std::string_view keyword = scanner.field();
-    if (keyword == "newmtl") {
-      const std::string name = rest_as_name(scanner);
-      soup.materials.push_back({name});
-      named[name] = int(soup.materials.size() - 1);
-      current = &soup.materials.back();
-    } else if (current && (keyword == "Kd" || keyword == "Ks")) {
-      glm::dvec3 rgb;
-      rgb.r = scanner.number("red");
-      // "Kd r" alone means grey r (the format allows g and b to be left out).
-      rgb.g = scanner.at_line_end() ? rgb.r : scanner.number("green");
-      rgb.b = scanner.at_line_end() ? rgb.g : scanner.number("blue");
-      (keyword == "Kd" ? current->diffuse : current->specular) = glm::clamp(rgb, 0.0, 1.0);
-    } else if (current && keyword == "Ns") {
-      current->shininess = std::max(0.0, scanner.number("shininess"));
-    } else if (!noted_maps && keyword.substr(0, 4) == "map_") {
-      soup.warn(line, "the materials' texture maps are ignored: faces take each material's Kd colour");
-      noted_maps = true;
+    try {
+      const std::string_view keyword = scanner.field();
+      if (keyword == "newmtl") {
+        const std::string name = rest_as_name(scanner);
+        soup.materials.push_back({name});
+        named[name] = int(soup.materials.size() - 1);
+        current = &soup.materials.back();
+      } else if (current && (keyword == "Kd" || keyword == "Ks")) {
+        glm::dvec3 rgb;
+        rgb.r = scanner.number("red");
+        // "Kd r" alone means grey r (the format allows g and b to be left out).
+        rgb.g = scanner.at_line_end() ? rgb.r : scanner.number("green");
+        rgb.b = scanner.at_line_end() ? rgb.g : scanner.number("blue");
+        (keyword == "Kd" ? current->diffuse : current->specular) = glm::clamp(rgb, 0.0, 1.0);
+      } else if (current && keyword == "Ns") {
+        current->shininess = std::max(0.0, scanner.number("shininess"));
+      } else if (!noted_maps && keyword.substr(0, 4) == "map_") {
+        soup.warn(line, "the materials' texture maps are ignored: faces take each material's Kd colour");
+        noted_maps = true;
+      }
+    } catch (const InputError& e) {
+      if (unread++ == 0) first_unread = "line " + std::to_string(e.where().line) + ": " + e.message();
     }
   }
+  if (unread > 0)
+    soup.warn(line, "material library \"" + path + "\": " +
+                        (unread == 1 ? std::string("1 statement it could not read was") : std::to_string(unread) + " statements it could not read were") +
+                        " passed over, the first at " + first_unread);
 }
 
 // One stretch of the file, from a line's start to a line's start, read on a
@@ -177,7 +189,16 @@ void replay_material_statements(const std::vector<ObjStretch>& stretches, size_t
       TextScanner rest(statement.rest, path, statement.line - 1);
       rest.next_line();
       if (statement.keyword == "mtllib") {
-        for (std::string_view name = rest.field(); !name.empty(); name = rest.field())
+        // Several names, or one with spaces in it, as Blender writes "my model.mtl" unquoted.
+        const std::string whole = (folder / rest_as_name(rest)).lexically_normal().string();
+        std::error_code error;
+        if (std::filesystem::is_regular_file(whole, error)) {
+          read_material_library(whole, statement.line, soup, materials);
+          continue;
+        }
+        TextScanner names(statement.rest, path, statement.line - 1);
+        names.next_line();
+        for (std::string_view name = names.field(); !name.empty(); name = names.field())
           read_material_library((folder / std::string(name)).lexically_normal().string(), statement.line, soup, materials);
         continue;
       }

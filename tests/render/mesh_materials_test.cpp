@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "mesh/io/mesh_file.hpp"
 #include "mesh/scene/scene_parser.hpp"
 #include "tests/mesh/interchange_writers.hpp"
 #include "tests/mesh/mesh_builders.hpp"
@@ -114,6 +115,22 @@ TEST_F(MeshMaterials, MissingLibrariesAndNamesAreSaidOnce) {
   EXPECT_EQ(scene.warnings[0].where.line, 1);
   EXPECT_EQ(scene.warnings[0].message, "material library \"" + (folder_ / "gone.mtl").string() + "\" not found: its materials are left out");
   EXPECT_EQ(scene.warnings[1].message, "material \"red\" is in no material library: its faces keep the scene's material");
+}
+
+TEST_F(MeshMaterials, ABrokenLibraryIsAWarningAndANameWithSpacesIsOneLibrary) {
+  // A decimal comma, as a German locale writes it: the statement is passed
+  // over with a warning, the rest of the library read, the OBJ with it.
+  write("my model.mtl", "newmtl red\nKd 0,8 0,2 0,2\nnewmtl blue\nKd 0 0 1\nNs x\n");
+  write("floor.obj", "mtllib my model.mtl\nusemtl blue\n" + test::obj_text(floor_of_two_squares()));
+  const PolygonSoup soup = read_polygon_soup((folder_ / "floor.obj").string());
+  ASSERT_EQ(soup.materials.size(), 2u);
+  EXPECT_EQ(soup.materials[1].diffuse, glm::dvec3(0, 0, 1));
+  ASSERT_EQ(soup.warnings.size(), 1u);
+  EXPECT_EQ(soup.warnings[0].line, 1);
+  EXPECT_EQ(soup.warnings[0].message, "material library \"" + (folder_ / "my model.mtl").string() +
+                                          "\": 2 statements it could not read were passed over, the first at line 2: "
+                                          "expected a number for the red, got \"0,8\"");
+  EXPECT_EQ(soup.polygon_material(0), 1);
 }
 
 TEST_F(MeshMaterials, GltfAndThreeMfColoursReachTheImage) {
