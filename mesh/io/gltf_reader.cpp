@@ -14,6 +14,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat4x4.hpp>
+#include <nlohmann/json.hpp>
 
 #include <tiny_gltf.h>
 
@@ -72,12 +73,28 @@ class GltfReader {
       for (size_t m = 0; m < model_.meshes.size(); ++m) add_mesh(int(m), glm::dmat4(1.0));
       return;
     }
+    require_trees();
     const int scene = model_.defaultScene >= 0 && size_t(model_.defaultScene) < model_.scenes.size() ? model_.defaultScene : 0;
     for (int node : model_.scenes[size_t(scene)].nodes) add_node(node, glm::dmat4(1.0));
   }
 
  private:
   [[noreturn]] void fail(const std::string& message) const { throw InputError({soup_.path, 0, 0}, message); }
+
+  // glTF's nodes form trees: no node has two parents. A graph would be read
+  // once along every path to a node, which a few hundred bytes can make
+  // exponential; refused, the work is bounded by the file.
+  void require_trees() const {
+    std::vector<int> parent(model_.nodes.size(), -1);
+    for (size_t n = 0; n < model_.nodes.size(); ++n)
+      for (const int child : model_.nodes[n].children) {
+        if (child < 0 || size_t(child) >= model_.nodes.size()) continue;  // said where it is read
+        if (parent[size_t(child)] >= 0 && parent[size_t(child)] != int(n))
+          fail("not a valid glTF 2.0 file: node " + std::to_string(child) + " has two parents (nodes " +
+               std::to_string(parent[size_t(child)]) + " and " + std::to_string(n) + "); glTF's nodes form trees");
+        parent[size_t(child)] = int(n);
+      }
+  }
 
   void add_node(int index, const glm::dmat4& parent) {
     if (index < 0 || size_t(index) >= model_.nodes.size()) fail("node " + std::to_string(index) + " does not exist");
@@ -238,6 +255,51 @@ class GltfReader {
   std::set<int> on_path_;  // the nodes from the scene's root to the one being read
 };
 
+// The JSON of a .gltf, or of a GLB's first chunk; empty when there is none
+// to read (tinygltf then says what is wrong).
+std::string_view json_of(std::string_view bytes, bool binary) {
+  if (!binary) return bytes;
+  if (bytes.size() < 20) return {};
+  uint32_t length = 0;
+  std::memcpy(&length, bytes.data() + 12, 4);  // little endian, as GLB is
+  if (bytes.substr(16, 4) != "JSON" || length > bytes.size() - 20) return {};
+  return bytes.substr(20, length);
+}
+
+// What tinygltf would read wrongly or not name: glTF 1.0 (a GLB header of
+// version 1, or dictionaries where 2.0 has arrays), compressed meshes, a
+// mesh whose "primitives" is not an array (tinygltf reads none, silently).
+void require_gltf_2(std::string_view bytes, bool binary, const std::string& path) {
+  const auto refuse = [&](const std::string& message) { throw InputError({path, 0, 0}, message); };
+  const std::string version_one =
+      "glTF 1.0, which umbra does not read: only glTF 2.0 (convert it, with gltf-pipeline or Blender, say)";
+  if (binary && bytes.size() >= 8) {
+    uint32_t version = 0;
+    std::memcpy(&version, bytes.data() + 4, 4);
+    if (version == 1) refuse(version_one);
+  }
+  const std::string_view text = json_of(bytes, binary);
+  const nlohmann::json json = nlohmann::json::parse(text.begin(), text.end(), nullptr, false);
+  if (!json.is_object()) return;
+  const auto version = json.find("asset");
+  if (version != json.end() && version->is_object() && version->contains("version") && (*version)["version"].is_string() &&
+      (*version)["version"].get<std::string>().substr(0, 2) == "1.")
+    refuse(version_one);
+  for (const char* key : {"meshes", "nodes", "accessors", "buffers", "bufferViews"})
+    if (json.contains(key) && json[key].is_object()) refuse(version_one);
+  if (const auto required = json.find("extensionsRequired"); required != json.end() && required->is_array())
+    for (const nlohmann::json& name : *required)
+      if (name == "EXT_meshopt_compression")
+        refuse("its meshes are compressed with EXT_meshopt_compression, which umbra does not read (gltfpack writes it with "
+               "-c or -cc, and plain meshes without them)");
+  if (const auto meshes = json.find("meshes"); meshes != json.end() && meshes->is_array())
+    for (size_t m = 0; m < meshes->size(); ++m) {
+      const nlohmann::json& mesh = (*meshes)[m];
+      if (mesh.is_object() && mesh.contains("primitives") && !mesh["primitives"].is_array())
+        refuse("not a valid glTF 2.0 file: mesh " + std::to_string(m) + "'s \"primitives\" must be an array");
+    }
+}
+
 }  // namespace
 
 PolygonSoup read_gltf(std::string_view bytes, const std::string& path) {
@@ -248,6 +310,7 @@ PolygonSoup read_gltf(std::string_view bytes, const std::string& path) {
   const std::string folder = std::filesystem::path(path).parent_path().string();
   const bool binary = bytes.substr(0, 4) == "glTF";
   if (bytes.size() > std::numeric_limits<unsigned>::max()) throw InputError({path, 0, 0}, "too large for the glTF reader (4 GiB or more)");
+  require_gltf_2(bytes, binary, path);
   const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &error, &warning, reinterpret_cast<const unsigned char*>(bytes.data()),
                                                       unsigned(bytes.size()), folder)
                          : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(), unsigned(bytes.size()), folder);

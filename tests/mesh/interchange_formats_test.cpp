@@ -193,6 +193,40 @@ TEST(InterchangeFormats, FilesThatAreNoMeshSayWhatTheyAre) {
             "archive.3mf: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): a zip archive without a 3D model part");
 }
 
+// glTF 1.0 is refused by name, as GLB (header version 1) and as JSON (its
+// dictionaries of meshes and nodes, where 2.0 has arrays), never read as an
+// empty mesh; what 2.0's schema forbids is refused too; compressed meshes
+// name their extension.
+TEST(InterchangeFormats, GltfOnlyVersionTwoAsItsSchemaHasIt) {
+  const std::string only_two = "m.gltf: glTF 1.0, which umbra does not read: only glTF 2.0 (convert it, with gltf-pipeline or Blender, say)";
+  EXPECT_EQ(test::read_error_of(R"({"asset": {"version": "1.0"}, "meshes": {"box": {"primitives": []}}, "nodes": {}})", "m.gltf"), only_two);
+  EXPECT_EQ(test::read_error_of(R"({"asset": {}, "meshes": {"box": {"primitives": []}}})", "m.gltf"), only_two);
+  std::string glb1 = "glTF";
+  test::append_le(glb1, uint32_t(1));
+  test::append_le(glb1, uint32_t(40));
+  glb1 += std::string(28, ' ');
+  EXPECT_EQ(test::read_error_of(glb1, "m.glb"), "m.glb: glTF 1.0, which umbra does not read: only glTF 2.0 (convert it, with gltf-pipeline or Blender, say)");
+
+  const PolygonSoup cube = test::unit_cube();
+  std::string object = gltf_of(cube, {});
+  object.replace(object.find(R"("primitives": [)"), 15, R"("primitives": {"0": )");
+  object.replace(object.find(R"(}]}], "materials")"), 17, R"(}}}], "materials")");
+  EXPECT_EQ(test::read_error_of(object, "m.gltf"), "m.gltf: not a valid glTF 2.0 file: mesh 0's \"primitives\" must be an array");
+
+  // Node 2 under both node 0 and node 1: a graph, not the tree glTF requires.
+  GltfOptions shared;
+  shared.node = R"("children": [1, 2])";
+  shared.extra_nodes = R"(, {"children": [2]}, {"mesh": 0})";
+  EXPECT_EQ(test::read_error_of(gltf_of(cube, shared), "m.gltf"),
+            "m.gltf: not a valid glTF 2.0 file: node 2 has two parents (nodes 0 and 1); glTF's nodes form trees");
+
+  std::string meshopt = gltf_of(cube, {});
+  meshopt.replace(meshopt.find(R"("asset")"), 7, R"("extensionsRequired": ["EXT_meshopt_compression"], "extensionsUsed": ["EXT_meshopt_compression"], "asset")");
+  EXPECT_EQ(test::read_error_of(meshopt, "m.gltf"),
+            "m.gltf: its meshes are compressed with EXT_meshopt_compression, which umbra does not read (gltfpack writes it with -c "
+            "or -cc, and plain meshes without them)");
+}
+
 TEST(InterchangeFormats, BrokenFilesGiveTheirExactMessage) {
   const PolygonSoup cube = test::unit_cube();
   std::string buffer = test::gltf_buffer(cube);

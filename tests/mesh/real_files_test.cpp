@@ -48,6 +48,14 @@ TEST_F(RealFiles, OneModelFromFourExportersGetsOneReport) {
   }
 }
 
+TEST_F(RealFiles, GltfOneFilesAreRefusedByName) {
+  // assimp's glTF 1.0 set, as JSON, embedded and binary: never an empty mesh.
+  for (const char* name : {"glTF/TwoBoxes/TwoBoxes.gltf", "glTF/CesiumMilkTruck/CesiumMilkTruck.gltf",
+                           "glTF/BoxTextured-glTF-Embedded/BoxTextured.gltf", "glTF/BoxTextured-glTF-Binary/BoxTextured.glb"})
+    EXPECT_EQ(error(name), ": glTF 1.0, which umbra does not read: only glTF 2.0 (convert it, with gltf-pipeline or Blender, say)")
+        << name;
+}
+
 TEST_F(RealFiles, InterchangeFormatsReadWithTheirVerdicts) {
   const MeshReport box3mf = check("3MF/box.3mf");
   EXPECT_EQ(box3mf.format, "3MF");
