@@ -5,11 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <regex>
 #include <set>
+#include <string>
 
 #include <glm/mat4x4.hpp>
 
 #include <Model/COM/NMR_DLLInterfaces.h>
+#include <zip.h>
 
 #include "mesh/input_error.hpp"
 #include "mesh/io/mesh_readers.hpp"
@@ -162,6 +165,47 @@ bool has_end_of_central_directory(std::string_view bytes) {
   return bytes.substr(bytes.size() - tail).find("PK\x05\x06") != std::string_view::npos;
 }
 
+// The model part of a 3MF package (its 3D/3dmodel.model, as every producer
+// names it), read with libzip; "" when there is none.
+std::string model_part(std::string_view bytes) {
+  zip_error_t error;
+  zip_error_init(&error);
+  zip_source_t* source = zip_source_buffer_create(bytes.data(), bytes.size(), 0, &error);
+  zip_t* archive = source ? zip_open_from_source(source, ZIP_RDONLY, &error) : nullptr;
+  std::string xml;
+  if (!archive) {
+    if (source) zip_source_free(source);
+  } else {
+    zip_stat_t stat;
+    zip_file_t* part = zip_stat(archive, "3D/3dmodel.model", 0, &stat) == 0 ? zip_fopen(archive, "3D/3dmodel.model", 0) : nullptr;
+    if (part) {
+      xml.resize(stat.size);
+      if (zip_fread(part, xml.data(), stat.size) != zip_int64_t(stat.size)) xml.clear();
+      zip_fclose(part);
+    }
+    zip_close(archive);
+  }
+  zip_error_fini(&error);
+  return xml;
+}
+
+// The first object of `xml` with neither a mesh nor components, as
+// "object 3 (\"Box\")", or "": lib3mf refuses one without naming it.
+std::string object_without_content(const std::string& xml) {
+  static const std::regex object(R"re(<(?:\w+:)?object\b([^>]*?)(/>|>([\s\S]*?)</(?:\w+:)?object>))re");
+  static const std::regex id(R"re(\bid\s*=\s*"([^"]*)")re"), name(R"re(\bname\s*=\s*"([^"]*)")re");
+  for (std::sregex_iterator it(xml.begin(), xml.end(), object), end; it != end; ++it) {
+    const std::string body = (*it)[3];
+    if (body.find("mesh") != std::string::npos || body.find("components") != std::string::npos) continue;
+    const std::string attributes = (*it)[1];
+    std::smatch m;
+    std::string named = "object " + (std::regex_search(attributes, m, id) ? m[1].str() : std::string("?"));
+    if (std::regex_search(attributes, m, name)) named += " (\"" + m[1].str() + "\")";
+    return named;
+  }
+  return "";
+}
+
 }  // namespace
 
 PolygonSoup read_3mf(std::string_view bytes, const std::string& path) {
@@ -182,20 +226,30 @@ PolygonSoup read_3mf(std::string_view bytes, const std::string& path) {
     DWORD code = 0;
     LPCSTR message = nullptr;
     lib3mf_getlasterror(reader.object, &code, &message);
-    throw InputError({path, 0, 0}, "not a valid 3MF file: " + std::string(message && *message ? message : "lib3mf could not read it"));
+    const std::string said = message && *message ? message : "lib3mf could not read it";
+    if (said.find("no supported content type") != std::string::npos)
+      if (const std::string empty = object_without_content(model_part(bytes)); !empty.empty())
+        throw InputError({path, 0, 0}, "not a valid 3MF file: " + empty + " has neither a mesh nor components (lib3mf: " + said + ")");
+    throw InputError({path, 0, 0}, "not a valid 3MF file: " + said);
   }
   PolygonSoup soup;
   soup.path = path;
   soup.format = "3MF";
+  // lib3mf warns once per element: each kind of warning is said once, counted.
   DWORD warnings = 0;
   lib3mf_reader_getwarningcount(reader.object, &warnings);
-  for (DWORD w = 0; w < warnings && w < 10; ++w) {
+  std::vector<std::pair<std::string, size_t>> kinds;
+  for (DWORD w = 0; w < warnings; ++w) {
     char text[512] = {};
     DWORD code = 0;
     ULONG needed = 0;
-    if (lib3mf_reader_getwarningutf8(reader.object, w, &code, text, sizeof text, &needed) == LIB3MF_OK)
-      soup.warn(0, std::string("lib3mf: ") + text);
+    if (lib3mf_reader_getwarningutf8(reader.object, w, &code, text, sizeof text, &needed) != LIB3MF_OK) continue;
+    const auto same = std::find_if(kinds.begin(), kinds.end(), [&](const auto& kind) { return kind.first == text; });
+    if (same != kinds.end()) ++same->second;
+    else kinds.emplace_back(text, 1);
   }
+  for (const auto& [text, count] : kinds)
+    soup.warn(0, "lib3mf: " + text + (count > 1 ? " (" + std::to_string(count) + " times)" : ""));
   ThreeMfReader(model.object, soup).read();
   return soup;
 }

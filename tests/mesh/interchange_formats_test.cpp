@@ -258,6 +258,17 @@ TEST(InterchangeFormats, BrokenFilesGiveTheirExactMessage) {
       R"(<vertex x="0" y="1" z="0"/></vertices><triangles><triangle v1="0" v2="1" v3="7"/></triangles></mesh></object>)",
       R"(<item objectid="2"/>)");
   EXPECT_EQ(test::read_error_of(outside, "m.3mf"), "m.3mf: not a valid 3MF file: Invalid model node index");  // a triangle names vertex 7 of 3
+  // lib3mf's warnings, one per element, are said once per kind, counted.
+  const PolygonSoup warned = parse_polygon_soup(test::threemf(test::threemf_object(2, cube) + "<unknown/><unknown/><unknown/>",
+                                                              R"(<item objectid="2"/>)"),
+                                                "w.3mf");
+  ASSERT_EQ(warned.warnings.size(), 1u);
+  EXPECT_EQ(warned.warnings[0].message, "lib3mf: Invalid Element in namespace. (3 times)");
+  // An object with no content, as assimp's exporter writes one: named.
+  const std::string hollow = test::threemf(test::threemf_object(2, cube) + R"(<object id="3" type="model" name="Empty"></object>)",
+                                           R"(<item objectid="2"/>)");
+  EXPECT_EQ(test::read_error_of(hollow, "m.3mf"), "m.3mf: not a valid 3MF file: object 3 (\"Empty\") has neither a mesh nor "
+                                                  "components (lib3mf: An object has no supported content type)");
 }
 
 }  // namespace
