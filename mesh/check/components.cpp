@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "mesh/topology/border_loops.hpp"
+
 namespace umbra {
 namespace {
 constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
@@ -92,18 +94,13 @@ VertexFans find_vertex_fans(const PolygonSoup& soup, const FaceClasses& faces, E
   return out;
 }
 
-BorderLoops count_border_loops(EdgeGroups& groups, const ComponentLabels& labels, size_t vertex_count) {
+BorderLoops count_border_loops(const EdgeGroups& groups, const ComponentLabels& labels, size_t vertex_count) {
+  std::vector<BorderEdge> border;
+  for (const EdgeRun& e : groups.edges)
+    if (e.uses == 1) border.push_back({labels.of_face[e.face], e.a, e.b});
   BorderLoops out;
-  out.per_component.assign(labels.reports.size(), 0);
-  std::vector<uint8_t> loop_counted(vertex_count, 0);
-  for (const EdgeRun& e : groups.edges) {
-    if (e.uses != 1) continue;
-    const uint32_t root = groups.border.find(e.a);
-    if (loop_counted[root]) continue;
-    loop_counted[root] = 1;
-    ++out.loops;
-    ++out.per_component[labels.of_face[e.face]];
-  }
+  out.per_component = border_loops_per_component(std::move(border), labels.reports.size(), vertex_count);
+  for (const size_t loops : out.per_component) out.loops += loops;
   return out;
 }
 

@@ -31,10 +31,11 @@ struct VertexFans {
 VertexFans find_vertex_fans(const PolygonSoup& soup, const FaceClasses& faces, EdgeGroups& groups,
                             const ComponentLabels& labels, size_t vertex_count);
 
+// The holes of each component (border_loops_per_component).
 struct BorderLoops {
   size_t loops = 0;
   std::vector<size_t> per_component;
 };
-BorderLoops count_border_loops(EdgeGroups& groups, const ComponentLabels& labels, size_t vertex_count);
+BorderLoops count_border_loops(const EdgeGroups& groups, const ComponentLabels& labels, size_t vertex_count);
 
 }  // namespace umbra

@@ -77,7 +77,7 @@ void for_each_edge(const UnsetVector<EdgeUse>& uses, const std::vector<uint32_t>
 EdgeGroups group_edges(const PolygonSoup& soup, const FaceClasses& faces, size_t vertex_count, EdgeTable* face_edges) {
   const size_t face_count = soup.polygon_count();
   // The union-finds are made by the walks that fill them, on their cores.
-  EdgeGroups g{{}, UnionFind(0), ParityUnionFind(0), UnionFind(0), UnionFind(0), {}, {}, {}};
+  EdgeGroups g{{}, UnionFind(0), ParityUnionFind(0), UnionFind(0), {}, {}, {}};
   std::vector<uint32_t> start(vertex_count + 1, 0);
   const UnsetVector<EdgeUse> uses = sorted_uses(soup, faces, start);
   size_t edge_count = 0;  // reserved exactly: growing by doubling would hold half as much again
@@ -89,27 +89,24 @@ EdgeGroups group_edges(const PolygonSoup& soup, const FaceClasses& faces, size_t
     face_edges->uses.reserve(uses.size());
   }
   // Three walks over the edges, each on a core of its own where there are
-  // three: faces, their orientations and the border; corners into fans (the
+  // three: faces and their orientations; corners into fans (the
   // largest of the union-finds, and independent); the edge table.
   tbb::parallel_invoke(
       [&] {
         g.components = UnionFind(face_count);
         g.flips = ParityUnionFind(face_count);
-        g.border = UnionFind(vertex_count);
         g.orientation_conflict.assign(face_count, 0);
         g.on_non_manifold_edge.assign(vertex_count, 0);
         for_each_edge(uses, start, [&](uint32_t a, uint32_t b, size_t i, size_t j) {
           g.edges.push_back({a, b, uses[i].face, uint32_t(j - i)});
           for (size_t k = i + 1; k < j; ++k) g.components.unite(uses[i].face, uses[k].face);
-          if (j - i == 1) {
-            g.border.unite(a, b);
-          } else if (j - i == 2) {
+          if (j - i == 2) {
             const EdgeUse& x = uses[i];
             const EdgeUse& y = uses[i + 1];
             const bool same_direction = x.forward() == y.forward();
             if (same_direction) g.inconsistent_edge_faces.push_back(x.face);
             if (!g.flips.unite(x.face, y.face, same_direction ? 1 : 0)) g.orientation_conflict[x.face] = 1;
-          } else {
+          } else if (j - i > 2) {
             g.on_non_manifold_edge[a] = g.on_non_manifold_edge[b] = 1;
           }
         });

@@ -3,7 +3,7 @@
 // in the topology, grouped by edge with a counting sort on the smaller vertex
 // (linear), and what the groups say: which faces are joined, which must flip
 // to agree with their neighbours, which corners share a fan round their
-// vertex, and which vertices the border edges join.
+// vertex.
 
 #include <cstdint>
 #include <vector>
@@ -28,7 +28,6 @@ struct EdgeGroups {
   UnionFind components;        // faces joined across any edge
   ParityUnionFind flips;       // parity 1: the face must flip to agree with its set's root
   UnionFind fans;              // corners joined across the manifold edges at their vertex
-  UnionFind border;            // vertices joined by border edges
   std::vector<uint8_t> orientation_conflict;      // per face: no flips can make its set agree
   std::vector<uint8_t> on_non_manifold_edge;      // per vertex
   std::vector<uint32_t> inconsistent_edge_faces;  // a face of each edge two faces run the same way

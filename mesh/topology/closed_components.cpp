@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include "mesh/topology/border_loops.hpp"
 #include "mesh/topology/union_find.hpp"
 
 namespace umbra {
@@ -45,7 +46,8 @@ ClosedComponents find_closed_components(const std::vector<std::array<uint32_t, 3
                                         size_t vertex_count) {
   ClosedComponents result;
   const uint32_t face_count = uint32_t(triangles.size());
-  UnionFind components(face_count), fans(3 * size_t(face_count)), border_graph(vertex_count);
+  UnionFind components(face_count), fans(3 * size_t(face_count));
+  std::vector<BorderEdge> border;  // numbered by one face of each, until the components are known
   std::vector<uint8_t> irregular_vertex(vertex_count, 0);  // on an edge that is not two opposite faces
   std::vector<uint32_t> irregular_faces;                   // one face of each irregular edge
   for (size_t e = 0; e < edges.size(); ++e) {
@@ -64,21 +66,16 @@ ClosedComponents find_closed_components(const std::vector<std::array<uint32_t, 3
     irregular_faces.push_back(EdgeTable::face_of(use[0]));
     if (count == 1) {
       ++result.border_edges;
-      border_graph.unite(u, v);
+      border.push_back({EdgeTable::face_of(use[0]), u, v});
     } else if (count == 2) {
       ++result.inconsistent_edges;
     } else {
       ++result.non_manifold_edges;
     }
   }
-  // Border loops: one per connected piece of border edges.
-  std::vector<uint8_t> loop_counted(vertex_count, 0);
-  for (size_t e = 0; e < edges.size(); ++e) {
-    if (edges.use_count(e) != 1) continue;
-    uint8_t& counted = loop_counted[border_graph.find(edges.vertices[e][0])];
-    result.border_loops += !counted;
-    counted = 1;
-  }
+  // Border loops, per component (numbered by its root face).
+  for (BorderEdge& e : border) e.component = components.find(e.component);
+  for (const size_t loops : border_loops_per_component(std::move(border), face_count, vertex_count)) result.border_loops += loops;
   // Vertices whose corners make more than one fan; and components.
   std::vector<uint32_t> fan_of_vertex(vertex_count, kNone);
   std::vector<uint8_t> several_fans(vertex_count, 0);

@@ -21,7 +21,7 @@ struct ClosedComponents {
   size_t components = 0;
   size_t closed_components = 0;
   size_t border_edges = 0;           // one face
-  size_t border_loops = 0;           // connected pieces of the border edges
+  size_t border_loops = 0;           // cycles of the border edges, per component (border_loops.hpp), summed
   size_t non_manifold_edges = 0;     // three or more faces
   size_t inconsistent_edges = 0;     // two faces running the same way
   size_t non_manifold_vertices = 0;  // two or more fans, on no edge counted above

@@ -81,6 +81,39 @@ TEST(CheckStages, ComponentsFansAndLoopsOfTwoBowlsTouchingAtAVertex) {
   EXPECT_EQ(loops.per_component, (std::vector<size_t>{1, 1}));
 }
 
+// Border loops are counted per component, as the cycles of its border
+// edges (edges - vertices + pieces of its border graph): loops that touch at
+// a vertex stay two, and one component's loop never takes another's.
+TEST(CheckStages, BorderLoopsThatTouchAtAVertexAreCountedPerComponent) {
+  // Two triangles sharing one vertex: two components, a loop each.
+  const PolygonSoup bow_tie = make_soup({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 0, 0}, {-1, -1, 0}}, {{0, 1, 2}, {0, 3, 4}});
+  {
+    const FaceClasses faces = classes_of(bow_tie);
+    EdgeGroups groups = group_edges(bow_tie, faces, bow_tie.points.size());
+    const ComponentLabels labels = label_components(faces, groups);
+    const BorderLoops loops = count_border_loops(groups, labels, bow_tie.points.size());
+    EXPECT_EQ(loops.loops, 2u);
+    EXPECT_EQ(loops.per_component, (std::vector<size_t>{1, 1}));
+  }
+  // A 4 x 4 grid of quads without quads (1, 1) and (2, 2), whose holes touch
+  // at grid vertex (2, 2): one component, its outer loop and two holes.
+  std::vector<glm::dvec3> points;
+  for (int y = 0; y <= 4; ++y)
+    for (int x = 0; x <= 4; ++x) points.emplace_back(x, y, 0);
+  std::vector<Face> quads;
+  for (uint32_t y = 0; y < 4; ++y)
+    for (uint32_t x = 0; x < 4; ++x)
+      if (!(x == y && (x == 1 || x == 2))) quads.push_back({5 * y + x, 5 * y + x + 1, 5 * (y + 1) + x + 1, 5 * (y + 1) + x});
+  const PolygonSoup grid = make_soup(points, quads);
+  const FaceClasses faces = classes_of(grid);
+  EdgeGroups groups = group_edges(grid, faces, grid.points.size());
+  const ComponentLabels labels = label_components(faces, groups);
+  ASSERT_EQ(labels.reports.size(), 1u);
+  const BorderLoops loops = count_border_loops(groups, labels, grid.points.size());
+  EXPECT_EQ(loops.loops, 3u);
+  EXPECT_EQ(loops.per_component, (std::vector<size_t>{3}));
+}
+
 TEST(CheckStages, FacesToFlipAreTheSmallerParityClassAndTurnTheirTriangles) {
   const PolygonSoup soup = reversed(unit_cube(), {3, 8});
   const FaceClasses faces = classes_of(soup);
