@@ -20,6 +20,11 @@ enum class RenderMethod {
 const char* method_name(RenderMethod method);
 // How it shadows, in a phrase: "no stencil: a cube map of distances from each light".
 const char* method_technique(RenderMethod method);
+// It counts shadow volumes in the stencil (z-pass or z-fail).
+bool counts_volumes(RenderMethod method);
+// umbra view draws it; the next such method in the table's order, after the last the first.
+bool is_interactive(RenderMethod method);
+RenderMethod next_interactive_method(RenderMethod method);
 std::optional<RenderMethod> method_from_name(const std::string& name);
 // "auto|zfail|zpass|triangles|shadowmap|planar|raycast", for usage text and errors.
 std::string method_names();

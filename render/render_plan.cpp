@@ -284,11 +284,11 @@ RenderPlan make_render_plan(const Scene& scene, const RenderSettings& settings) 
   place_camera(scene, plan);
   std::vector<MeshCaster> casters;
   const RenderMethod m = settings.method;
-  const bool counts_volumes = m != RenderMethod::kShadowMap && m != RenderMethod::kPlanar && m != RenderMethod::kTriangles &&
-                              m != RenderMethod::kRaycast;
+  // Triangles casts each mesh triangle's own volume: no mesh's layers to bound.
+  const bool bounds_mesh_layers = counts_volumes(m) && m != RenderMethod::kTriangles;
   tbb::parallel_invoke([&] { casters = prepare_mesh_casters(scene); },
                        [&] {
-                         if (!counts_volumes) return;
+                         if (!bounds_mesh_layers) return;
                          plan.layer_bounds.assign(scene.lights.size(), std::vector<RenderPlan::LayerBounds>(scene.meshes.size()));
                          for (size_t i = 0; i < scene.lights.size(); ++i) {
                            const LightCulling culling = cull_for_light(scene, plan, scene.lights[i].position);

@@ -113,7 +113,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   if (o.output.empty()) throw UsageError("no output image given (-o OUT.png)");
   if (o.mask && *o.mask == o.output) throw UsageError("--mask and -o name the same file");
   const RenderMethod m = o.settings.method;
-  if (o.show_volumes && (m == RenderMethod::kRaycast || m == RenderMethod::kShadowMap || m == RenderMethod::kPlanar))
+  if (o.show_volumes && !counts_volumes(m))
     throw UsageError(std::string("--show-volumes needs shadow volumes; --method ") + method_name(m) + " has none");
   return o;
 }

@@ -42,7 +42,7 @@ keys:
   up, down      double or halve the light's speed
   v             show or hide the shadow volumes
   ] and [       double or halve the sphere segments N (3 to 4096)
-  m             switch method: auto, zfail, zpass, triangles, shadowmap
+  m             switch method: auto, zfail, zpass, triangles, shadowmap, planar
                 (see umbra render --help)
   r             return to the scene's camera
   s             return to the default view (eye (0, 0, 3.4), looking down -z)
@@ -53,7 +53,7 @@ mouse: drag to orbit the camera around its target, scroll to zoom
 
 options:
   --size WxH           window size (default 800x800)
-  --method M           auto (default), zfail, zpass, triangles or shadowmap
+  --method M           auto (default), zfail, zpass, triangles, shadowmap or planar
   --map-size N         shadow map texels a side (default 1024)
   --light-angle DEG    start with the lights rotated by DEG (default 0)
   --speed DEG          degrees per second the light turns (default 30)
@@ -103,8 +103,9 @@ ViewOptions parse_view_options(const std::vector<std::string>& argv) {
   if (o.help) return o;
   if (o.scene_path.empty()) throw UsageError("no scene or mesh file given");
   if (o.screenshot && o.frames == 0) throw UsageError("--screenshot needs --frames N");
-  if (o.settings.method == RenderMethod::kRaycast)
-    throw UsageError("--method raycast is not interactive; use umbra render --method raycast");
+  if (!is_interactive(o.settings.method))
+    throw UsageError(std::string("--method ") + method_name(o.settings.method) + " is not interactive; use umbra render --method " +
+                     method_name(o.settings.method));
   return o;
 }
 
@@ -144,16 +145,6 @@ void orbit(Camera& camera, double yaw_deg, double pitch_deg) {
   camera.eye = camera.target + offset;
 }
 
-RenderMethod next_interactive_method(RenderMethod m) {
-  switch (m) {
-    case RenderMethod::kAuto: return RenderMethod::kZFail;
-    case RenderMethod::kZFail: return RenderMethod::kZPass;
-    case RenderMethod::kZPass: return RenderMethod::kTriangles;
-    case RenderMethod::kTriangles: return RenderMethod::kShadowMap;
-    default: return RenderMethod::kAuto;
-  }
-}
-
 // What the overlay shows: the frame, the volumes, a message (an error), the keys.
 std::vector<std::string> status_lines(const std::string& path, const RenderPlan& plan, double frame_ms, double angle,
                                       bool paused, double speed, const std::string& message) {
@@ -161,9 +152,9 @@ std::vector<std::string> status_lines(const std::string& path, const RenderPlan&
   std::vector<std::string> lines = {path};
   const LightPlan& light = plan.lights[0];
   const int segments = plan.settings.sphere_segments;
-  const bool mapped = plan.settings.method == RenderMethod::kShadowMap;
-  std::snprintf(line, sizeof line, "method %s (light 1 %s)   frame time %.1f ms", method_name(plan.settings.method),
-                mapped ? "shadow map" : light.z_pass ? "z-pass" : "z-fail", frame_ms);
+  const RenderMethod method = plan.settings.method;
+  std::snprintf(line, sizeof line, "method %s (light 1 %s)   frame time %.1f ms", method_name(method),
+                !counts_volumes(method) ? method_technique(method) : light.z_pass ? "z-pass" : "z-fail", frame_ms);
   lines.push_back(line);
   std::snprintf(line, sizeof line, "light 1 at %.1f deg, %s%.3g deg/s   sphere N = %d", std::fmod(angle, 360.0),
                 paused ? "paused, " : "", speed, segments);

@@ -144,6 +144,20 @@ TEST(RenderPlan, PlanarListsTheReceiversSeenFromTheLightsSide) {
   for (const glm::dvec4& v : lp.all_volumes.vertices) EXPECT_EQ(v.w, 1.0);
 }
 
+TEST(RenderMethods, TheViewersKeyCyclesThroughEveryInteractiveMethod) {
+  // planar included (it was accepted but not cycled to); raycast never.
+  std::vector<std::string> seen;
+  RenderMethod m = RenderMethod::kAuto;
+  do {
+    seen.push_back(method_name(m));
+    m = next_interactive_method(m);
+  } while (m != RenderMethod::kAuto && seen.size() < 10);
+  EXPECT_EQ(seen, (std::vector<std::string>{"auto", "zfail", "zpass", "triangles", "shadowmap", "planar"}));
+  EXPECT_FALSE(is_interactive(RenderMethod::kRaycast));
+  EXPECT_FALSE(counts_volumes(RenderMethod::kPlanar));
+  EXPECT_TRUE(counts_volumes(RenderMethod::kTriangles));
+}
+
 TEST(RenderPlan, ExplainSaysHowEachMethodShadows) {
   // Only the volume methods count in a stencil; the others say what they do instead.
   const Scene scene = parse_scene_file(std::string(UMBRA_SOURCE_DIR) + "/scenes/two_spheres.scene");
