@@ -378,10 +378,12 @@ class SceneBuilder {
       for (const auto& t : analysis.triangles)
         for (const uint32_t v : t) lo = glm::min(lo, analysis.positions[v]), hi = glm::max(hi, analysis.positions[v]);
       const double longest = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
-      if (std::isinf(longest) && !analysis.triangles.empty())
+      if (analysis.triangles.empty())
+        throw InputError(pending.path_at, "mesh file " + in_quotes(m.path) + " has no faces with area to fit");
+      if (std::isinf(longest))
         throw InputError(pending.path_at, "mesh file " + in_quotes(m.path) + " is too large to fit: its extent overflows double precision");
       if (!(longest > 0.0))
-        throw InputError(pending.path_at, "mesh file " + in_quotes(m.path) + " has no extent to fit: all its faces' corners coincide");
+        throw InputError(pending.path_at, "mesh file " + in_quotes(m.path) + " has no extent to fit: its faces' corners coincide");
       fit_centre = lo / 2.0 + hi / 2.0;  // halves first: lo + hi may overflow where each does not
       fit_scale = 2.0 / longest;
     }

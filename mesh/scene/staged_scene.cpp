@@ -33,7 +33,22 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
     throw InputError({path}, "a scene cannot name a file whose name holds a double quote: rename it to stage it");
   const std::string text = staged_scene_text(path);
   if (staged) *staged = text;
-  return parse_scene_text(text, staged_scene_name(path), progress);
+  // What the staged scene's mesh statement says belongs to the file: no
+  // line of a scene the user never wrote.
+  const std::string name = staged_scene_name(path);
+  const std::string about_the_file = "mesh file \"" + path + "\"";
+  Scene scene;
+  try {
+    scene = parse_scene_text(text, name, progress);
+  } catch (const InputError& e) {
+    if (e.where().file != name) throw;
+    std::string message = e.message();
+    if (message.rfind(about_the_file, 0) == 0) message.erase(0, about_the_file.size() + (message[about_the_file.size()] == ':' ? 2 : 1));
+    throw InputError({path}, message);
+  }
+  for (Warning& w : scene.warnings)
+    if (w.where.file == name) w.where = {path};
+  return scene;
 }
 
 }  // namespace umbra

@@ -230,7 +230,7 @@ TEST_F(SceneMeshes, FitCentresTheBoxAndScalesItsLongestSideToTheCubeBeforeTheRes
   EXPECT_EQ(open.warnings[1].message, "mesh \"open.obj\" is open, 1 hole: edge-multiplicity volume");
   write("point.obj", "v 1 1 1\nv 1 1 1\nv 1 1 1\nf 1 2 3\n");
   EXPECT_EQ(error("light 0 0 5\nmesh point.obj fit\n"),
-            dir() + "s.scene:2:6: mesh file \"" + dir() + "point.obj\" has no extent to fit: all its faces' corners coincide");
+            dir() + "s.scene:2:6: mesh file \"" + dir() + "point.obj\" has no faces with area to fit");
 }
 
 TEST_F(SceneMeshes, FitMeasuresTheFacesNotPointsNoFaceUses) {

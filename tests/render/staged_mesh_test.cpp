@@ -40,6 +40,24 @@ TEST(StagedMesh, AMeshFileIsToldFromASceneByItsContent) {
   }
 }
 
+TEST(StagedMesh, WarningsAndErrorsNameTheMeshFileNotTheStagedScene) {
+  // An open box: its warning belongs to the file, not to line 7 of a scene
+  // the user never wrote.
+  const std::string open = test::write_mesh("open-box.obj", test::obj_text(test::without_faces(test::unit_cube(), {0, 1})));
+  const Scene scene = parse_scene_or_mesh_file(open);
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  EXPECT_EQ(scene.warnings[0].where.str(), open);
+  EXPECT_EQ(scene.warnings[0].message, "mesh \"open-box.obj\" is open, 1 hole: edge-multiplicity volume");
+  // A file-level error: said of the file, once.
+  const std::string point = test::write_mesh("point.obj", "v 1 1 1\nv 1 1 1\nv 1 1 1\nf 1 2 3\n");
+  try {
+    parse_scene_or_mesh_file(point);
+    ADD_FAILURE() << "a mesh without area was staged";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), point + ": has no faces with area to fit");
+  }
+}
+
 TEST(StagedMesh, FitsTheMeshIntoTheCubeOverTheFloorUnderOneLight) {
   const std::string path = write_torus_glb();
   std::string text;
