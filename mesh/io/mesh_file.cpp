@@ -36,7 +36,18 @@ PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path) 
 
 PolygonSoup read_polygon_soup(const std::string& path) {
   const MappedFile file(path);
-  return parse_polygon_soup(file.bytes(), path);
+  // A file cut short while it was read reads as zeros past its new end:
+  // whatever that made of it, say what happened instead.
+  const auto changed = [&] { return InputError({path, 0, 0}, "the file was cut short while it was read: read it again once it is written"); };
+  PolygonSoup soup;
+  try {
+    soup = parse_polygon_soup(file.bytes(), path);
+  } catch (const InputError&) {
+    if (file.cut_short()) throw changed();
+    throw;
+  }
+  if (file.cut_short()) throw changed();
+  return soup;
 }
 
 void require_corners_in_range(const PolygonSoup& soup) {

@@ -1,13 +1,18 @@
 // Reading mesh files as written, and the exact error for each kind of bad file.
+#include <unistd.h>
+
 #include <cctype>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <random>
 
 #include <gtest/gtest.h>
 
 #include "mesh/input_error.hpp"
+#include "mesh/io/mapped_file.hpp"
 #include "mesh/io/mesh_file.hpp"
 #include "tests/mesh/read_error.hpp"
 
@@ -322,6 +327,29 @@ TEST(MeshFile, MissingFileAndFolderAreReportedByName) {
 }
 
 // Any bytes give a soup or an InputError: never a crash, a hang or another exception.
+// A file cut short while it is mapped: reading past its new end would end
+// the process with SIGBUS. Its lost pages read as zeros, the mapping says it
+// was cut short, and reading a mesh so says instead of crashing.
+TEST(MeshFile, AFileCutShortWhileMappedReadsAsZerosAndSaysSo) {
+  const std::string path = testing::TempDir() + "umbra-cut-" + std::to_string(::getpid()) + ".stl";
+  std::string stl = binary_stl(std::vector<std::array<glm::vec3, 3>>(40000, {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}));
+  std::ofstream(path, std::ios::binary) << stl;
+  {
+    const MappedFile file(path);
+    EXPECT_FALSE(file.cut_short());
+    ASSERT_EQ(::truncate(path.c_str(), 100), 0);
+    const std::string_view bytes = file.bytes();
+    size_t nonzero = 0;
+    for (size_t i = 8192; i < bytes.size(); i += 4096) nonzero += bytes[i] != 0;  // every lost page
+    EXPECT_EQ(nonzero, 0u);
+    EXPECT_TRUE(file.cut_short());
+    EXPECT_EQ(parse_polygon_soup(bytes, path).polygon_count(), 40000u);  // read to the end, zeros and all
+  }
+  const MappedFile again(path);  // a fresh mapping of the short file is whole
+  EXPECT_FALSE(again.cut_short());
+  std::remove(path.c_str());
+}
+
 TEST(MeshFile, MangledFilesNeverCrashTheReaders) {
   const std::vector<std::pair<std::string, std::string>> seeds = {
       {"m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf -1 -2 -3\n"},
