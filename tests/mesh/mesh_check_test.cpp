@@ -99,6 +99,30 @@ TEST(MeshCheck, KeyholePolygonIsSplitIntoTheTrianglesItCovers) {
   EXPECT_EQ(a.report.warnings[0].message, "face 0 (10 corners) visits a vertex more than once: read as 8 triangles");
 }
 
+TEST(MeshCheck, AKeyholeWhoseBridgeEndsAreEqualPointsIsSplitAlike) {
+  // The same keyhole with its bridge's ends written as separate points at
+  // the same place (8 and 9 repeat 0 and 4): points are merged first, so it
+  // is the same polygon, not one that repeats a vertex and is dropped.
+  const PolygonSoup keyhole = test::make_soup(
+      {{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}, {1, 1, 0}, {3, 1, 0}, {3, 3, 0}, {1, 3, 0}, {0, 0, 0}, {1, 1, 0}},
+      {{0, 1, 2, 3, 8, 4, 7, 6, 5, 9}});
+  const MeshAnalysis a = analyse_mesh(keyhole);
+  EXPECT_EQ(a.report.degenerate_faces, 0u);
+  EXPECT_EQ(a.report.triangles, 8u);
+  EXPECT_EQ(a.report.border_loops, 2u);
+}
+
+TEST(MeshCheck, APolygonThatWalksRoundItsLoopAgainIsReadOnce) {
+  // "f 1 2 3 4 1 2 3 4 1 2 3 4", as an exporter's test file has it: the
+  // square once, its repeats said in the warning, no duplicate faces.
+  const MeshAnalysis a = analyse_mesh(test::make_soup({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3}}));
+  EXPECT_EQ(a.report.triangles, 2u);
+  EXPECT_EQ(a.report.duplicate_faces, 0u);
+  ASSERT_EQ(a.report.warnings.size(), 1u);
+  EXPECT_EQ(a.report.warnings[0].message,
+            "face 0 (12 corners) visits a vertex more than once: read as 2 triangles (4 without area and 4 repeats dropped)");
+}
+
 TEST(MeshCheck, TwoCubesSharingAnEdgeHaveOneNonManifoldEdge) {
   // [0,1]^3 and [1,2]x[1,2]x[0,1] share the edge x = y = 1.
   const PolygonSoup soup = combine(unit_cube(), box_triangles({1, 1, 0}, {2, 2, 1}));
