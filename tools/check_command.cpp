@@ -170,14 +170,19 @@ int run_check_command(const std::vector<std::string>& argv) {
     return *exit_status;
   if (options.repair_output) return repair_one(options.meshes[0], *options.repair_output, options);
 
-  std::vector<std::string> all;
+  MeshPaths found;
   try {
-    all = expand_mesh_paths(options.meshes);
-    if (all.empty()) throw UsageError("no mesh files in " + options.meshes[0] + (options.meshes.size() > 1 ? " or the others" : ""));
+    found = expand_mesh_paths(options.meshes);
+    if (found.meshes.empty())
+      throw UsageError("no mesh files in " + options.meshes[0] + (options.meshes.size() > 1 ? " or the others" : ""));
   } catch (const UsageError& e) {
     std::cerr << "umbra check: " << e.what() << "\n";
     return 2;
   }
+  const std::vector<std::string>& all = found.meshes;
+  // Said once for all the shards: by the first.
+  if (options.shard && options.shard->index > 0) found.passed_over.clear();
+  for (const auto& [path, what] : found.passed_over) std::cerr << "umbra check: passed over " << path << ": " << what << ", not a mesh\n";
   const std::vector<std::string> meshes = options.shard ? shard_of(all, *options.shard) : all;
   const auto start = std::chrono::steady_clock::now();
   // --jobs bounds the threads of the whole process: this one and TBB's
@@ -220,14 +225,18 @@ int run_check_command(const std::vector<std::string>& argv) {
       }
     });
   });
-  if (count > 1 || all.size() != options.meshes.size() || options.shard) {
+  if (count > 1 || all.size() != options.meshes.size() || options.shard || !found.passed_over.empty()) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     char elapsed[32];
     std::snprintf(elapsed, sizeof elapsed, "%.1f s", seconds);
     std::cerr << "umbra check: " << count << (count == 1 ? " mesh" : " meshes")
               << (options.shard ? " (shard " + std::to_string(options.shard->index) + "/" + std::to_string(options.shard->count) + " of " + std::to_string(all.size()) + ")" : "")
               << " in " << elapsed << ": " << closed << " closed 2-manifold" << (closed == 1 ? "" : "s") << ", " << open
-              << " not, " << unreadable << " unreadable\n";
+              << " not, " << unreadable << " unreadable"
+              << (found.passed_over.empty() ? std::string()
+                                            : "; " + std::to_string(found.passed_over.size()) +
+                                                  (found.passed_over.size() == 1 ? " file" : " files") + " passed over")
+              << "\n";
   }
   return status;
 }

@@ -9,37 +9,41 @@
 namespace umbra {
 namespace {
 
-// Unreadable and without a mesh extension: not one of the meshes.
-bool has_mesh_name_or_content(const std::filesystem::path& path) {
-  return !mesh_format_of(path.string()).empty() || !detect_mesh_format_of_file(path.string()).empty();
-}
-
-std::vector<std::string> meshes_in_folder(const std::string& folder) {
+// A folder's files that are meshes by content, or by name unless their
+// content is plainly something else.
+void meshes_in_folder(const std::string& folder, MeshPaths& out) {
   namespace fs = std::filesystem;
   std::vector<std::string> found;
+  std::vector<std::pair<std::string, std::string>> passed_over;
   std::error_code ec;
   fs::recursive_directory_iterator it(folder, fs::directory_options::skip_permission_denied, ec), end;
   for (; !ec && it != end; it.increment(ec)) {
     std::error_code type_ec;
-    if (it->is_regular_file(type_ec) && has_mesh_name_or_content(it->path())) found.push_back(it->path().string());
+    if (!it->is_regular_file(type_ec)) continue;
+    const std::string path = it->path().string();
+    if (!detect_mesh_format_of_file(path).empty()) {
+      found.push_back(path);
+    } else if (!mesh_format_of(path).empty()) {
+      const std::string other = other_known_format_of_file(path);
+      if (other.empty()) found.push_back(path);  // a mesh too broken to tell: its reader says why
+      else passed_over.emplace_back(path, other);
+    }
   }
   if (ec) throw UsageError("cannot search the folder \"" + folder + "\": " + ec.message());
   std::sort(found.begin(), found.end());
-  return found;
+  std::sort(passed_over.begin(), passed_over.end());
+  out.meshes.insert(out.meshes.end(), found.begin(), found.end());
+  out.passed_over.insert(out.passed_over.end(), passed_over.begin(), passed_over.end());
 }
 
 }  // namespace
 
-std::vector<std::string> expand_mesh_paths(const std::vector<std::string>& arguments) {
-  std::vector<std::string> paths;
+MeshPaths expand_mesh_paths(const std::vector<std::string>& arguments) {
+  MeshPaths paths;
   for (const std::string& argument : arguments) {
     std::error_code ec;
-    if (!std::filesystem::is_directory(argument, ec)) {
-      paths.push_back(argument);
-      continue;
-    }
-    const std::vector<std::string> found = meshes_in_folder(argument);
-    paths.insert(paths.end(), found.begin(), found.end());
+    if (std::filesystem::is_directory(argument, ec)) meshes_in_folder(argument, paths);
+    else paths.meshes.push_back(argument);
   }
   return paths;
 }

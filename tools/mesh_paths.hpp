@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace umbra {
@@ -11,8 +12,15 @@ namespace umbra {
 // Each argument in order: a file as given (even one that cannot be read, so
 // that the check reports it), or a folder searched recursively for the files
 // whose content is a mesh format or whose name has a mesh extension, in
-// sorted order. Throws UsageError for a folder that cannot be searched.
-std::vector<std::string> expand_mesh_paths(const std::vector<std::string>& arguments);
+// sorted order. A file in a folder that has a mesh's name but is plainly
+// something else (a JPEG, a PDF, UTF-16 text, a zip without a model) is
+// passed over, with what it is. Throws UsageError for a folder that cannot
+// be searched.
+struct MeshPaths {
+  std::vector<std::string> meshes;
+  std::vector<std::pair<std::string, std::string>> passed_over;  // (path, what it is)
+};
+MeshPaths expand_mesh_paths(const std::vector<std::string>& arguments);
 
 // Part `index` (from 0) of `count` disjoint, contiguous parts of `paths`,
 // which together are all of it in order: shards' outputs, concatenated in

@@ -160,6 +160,14 @@ std::string other_known_format(std::string_view bytes) {
   return "";
 }
 
+std::string other_known_format_of_file(const std::string& path) {
+  try {
+    return other_known_format(MappedFile(path).bytes());
+  } catch (const InputError&) {
+    return "";
+  }
+}
+
 std::string describe_content(std::string_view bytes) {
   if (bytes.empty()) return "the file is empty";
   if (const std::string other = other_known_format(bytes); !other.empty()) return other;

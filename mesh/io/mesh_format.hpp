@@ -26,6 +26,9 @@ std::string mesh_format_of(const std::string& path);
 // archive with no 3D model part, a JPEG or PNG image, a PDF), or "".
 std::string other_known_format(std::string_view bytes);
 
+// The same for the file at `path`; "" too when it cannot be read.
+std::string other_known_format_of_file(const std::string& path);
+
 // What `bytes` look like, for the message when they are no mesh format:
 // "empty", "binary data", "UTF-16 text", "text starting with \"...\"".
 std::string describe_content(std::string_view bytes);

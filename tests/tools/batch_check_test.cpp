@@ -56,6 +56,22 @@ TEST_F(BatchCheck, AFolderIsSearchedRecursivelyForMeshesByContentInSortedOrder) 
   EXPECT_EQ(without_time(r.err), "umbra check: 3 meshes in T s: 2 closed 2-manifolds, 1 not, 0 unreadable\n");
 }
 
+TEST_F(BatchCheck, FilesThatAreNoMeshInAFolderArePassedOverAndNamed) {
+  // A JPEG saved as .obj and a zip without a model named .3mf are no meshes:
+  // a folder of them is not unreadable (exit 1 for the open mesh, not 2).
+  // Named on the command line, the JPEG is still an error.
+  const std::string folder = mesh_folder();
+  const std::string photo = write("meshes/photo.obj", std::string("\xff\xd8\xff\xe0\0\x10JFIF", 10));
+  const std::string zip = write("meshes/notes.3mf", std::string("PK\x03\x04", 4) + "notes.txt");
+  const CommandResult r = run("check --json " + folder);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(verdicts(r.out), "a-closed.obj True\nb/deep/tet True\nb/open.obj False\n");
+  EXPECT_EQ(without_time(r.err), "umbra check: passed over " + zip + ": a zip archive without a 3D model part, not a mesh\n"
+                                 "umbra check: passed over " + photo + ": a JPEG image, not a mesh\n"
+                                 "umbra check: 3 meshes in T s: 2 closed 2-manifolds, 1 not, 0 unreadable; 2 files passed over\n");
+  EXPECT_EQ(run("check " + photo).status, 2);
+}
+
 TEST_F(BatchCheck, AMixOfGoodOpenAndUnreadableMeshesIsAllReportedAndExitsTwo) {
   const std::string folder = mesh_folder();
   const std::string broken = write("meshes/broken.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n");
