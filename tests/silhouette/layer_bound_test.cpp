@@ -63,6 +63,53 @@ TEST(LayerBound, NoRayFromTheLightCrossesMoreTrianglesThanTheBound) {
   }
 }
 
+TEST(LayerBound, RefinedCellsStillBoundEveryRayOnRandomInputs) {
+  // Thousands of thin triangles, most of them nearly edge-on to the light
+  // (so that cells full of footprints are split), in clusters over wide
+  // sheets: the bound,
+  // refined, is still no less than the crossings of any ray, whether the
+  // ray aims at random or at a triangle's centre or corners, where the
+  // layers stack deepest.
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int trial = 0; trial < 6; ++trial) {
+    const glm::dvec3 light = trial % 3 == 2 ? glm::dvec3(0.1, -0.2, 0.05) : glm::dvec3(unit(rng), unit(rng), 4.0 + trial);
+    std::vector<glm::dvec3> p;
+    Triangles t;
+    for (int cluster = 0; cluster < 6; ++cluster) {
+      const glm::dvec3 centre = 0.6 * glm::dvec3(unit(rng), unit(rng), unit(rng));
+      for (int i = 0; i < 400; ++i) {
+        const glm::dvec3 a = centre + 0.15 * glm::dvec3(unit(rng), unit(rng), unit(rng));
+        const glm::dvec3 towards_light = glm::normalize(light - a);
+        const glm::dvec3 across = glm::normalize(glm::cross(towards_light, glm::dvec3(unit(rng), unit(rng), unit(rng))));
+        // Edge-on: two corners along the ray from the light, the third a hair across it (or a fair way, one in five).
+        const double width = i % 5 ? 1e-4 : 0.05;
+        const uint32_t first = uint32_t(p.size());
+        p.insert(p.end(), {a, a + 0.2 * towards_light, a + 0.1 * towards_light + width * across});
+        t.push_back({first, first + 1, first + 2});
+      }
+    }
+    // And 20 wide sheets below them all, which every downward ray crosses.
+    for (int k = 0; k < 20; ++k) {
+      const uint32_t first = uint32_t(p.size());
+      const double z = -1.0 - 0.05 * k;
+      p.insert(p.end(), {{-3, -3, z}, {3, -3, z}, {0, 3, z}});
+      t.push_back({first, first + 1, first + 2});
+    }
+    const int bound = layer_bound(p, t, light, 255);
+    int most = 0;
+    const auto aim = [&](const glm::dvec3& target) { most = std::max(most, crossings(p, t, light, target - light)); };
+    for (const auto& tri : t) {
+      aim((p[tri[0]] + p[tri[1]] + p[tri[2]]) / 3.0);
+      aim(p[tri[2]]);
+    }
+    for (int k = 0; k < 2000; ++k) aim(0.8 * glm::dvec3(unit(rng), unit(rng), unit(rng)));
+    EXPECT_GE(bound, std::min(most, 256)) << "trial " << trial;
+    EXPECT_GT(most, 20) << "trial " << trial;  // the sheets and some of the thin ones
+    EXPECT_LE(bound, 255) << "trial " << trial;  // a bound, refined, not "more than the limit"
+  }
+}
+
 TEST(LayerBound, ManyTrianglesSideBySideAreFewLayers) {
   // A 100 x 100 grid of squares (20,000 triangles) under the light: any ray
   // crosses at most 2 (at a shared edge), and a cell of the bound's grid
