@@ -24,6 +24,8 @@
 namespace umbra {
 namespace {
 
+constexpr size_t kMostCorners = size_t(1) << 31;  // as the check takes at most
+
 // Textures are not drawn: their images are not even decoded.
 bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
   return true;
@@ -227,6 +229,9 @@ class GltfReader {
         for (uint32_t i = 0; i < points.count; ++i) indices[i] = i;
       }
       const size_t triangles = primitive.mode == TINYGLTF_MODE_TRIANGLES ? indices.size() / 3 : std::max<size_t>(indices.size(), 2) - 2;
+      // Nodes may place one mesh many times: the work stays bounded by what umbra checks at all.
+      if (soup_.corners.size() + 3 * triangles >= kMostCorners)
+        fail("its nodes place more than 2^31 triangle corners (" + what + " among them), more than umbra reads");
       soup_.corners.reserve(soup_.corners.size() + 3 * triangles);
       soup_.polygon_starts.reserve(soup_.polygon_starts.size() + triangles);
       soup_.polygon_lines.reserve(soup_.polygon_lines.size() + triangles);
