@@ -26,14 +26,13 @@ ComponentLabels label_components(const FaceClasses& faces, EdgeGroups& groups) {
     ++labels.reports[id].faces;
   }
   const size_t count = labels.reports.size();
-  labels.non_manifold.assign(count, 0);
   labels.conflict.assign(count, 0);
   labels.inconsistent.assign(count, 0);
   for (const EdgeRun& e : groups.edges) {
     ComponentReport& c = labels.reports[labels.of_face[e.face]];
     ++c.edges;
     if (e.uses == 1) ++c.border_edges;
-    if (e.uses > 2) labels.non_manifold[labels.of_face[e.face]] = 1;
+    if (e.uses > 2) ++c.non_manifold_edges;
   }
   for (uint32_t f : groups.inconsistent_edge_faces) ++labels.inconsistent[labels.of_face[f]];
   for (uint32_t f = 0; f < face_count; ++f)
@@ -46,7 +45,7 @@ VertexFans find_vertex_fans(const PolygonSoup& soup, const FaceClasses& faces, E
   const uint32_t face_count = uint32_t(faces.repeats_vertex.size());
   VertexFans out;
   out.vertices.assign(labels.reports.size(), 0);
-  out.non_manifold.assign(labels.reports.size(), 0);
+  out.pinched_vertices.assign(labels.reports.size(), 0);
   std::vector<uint32_t> component_of_vertex(vertex_count, kNone);
   std::vector<uint64_t> vertex_in_other_component;  // (component << 32) | vertex: only where components touch
   std::vector<uint32_t> fan_of_vertex(vertex_count, kNone);
@@ -75,7 +74,8 @@ VertexFans find_vertex_fans(const PolygonSoup& soup, const FaceClasses& faces, E
   for (uint64_t cv : vertex_in_other_component) ++out.vertices[cv >> 32];
   for (uint32_t v = 0; v < vertex_count; ++v)
     if (several_fans[v] && !groups.on_non_manifold_edge[v]) out.non_manifold_vertices.push_back(v);
-  // A component is non-manifold at a vertex when two of the vertex's fans lie in it.
+  // A component is pinched at a vertex when two of the vertex's fans lie in
+  // it; counted once per vertex however many fans it has there.
   std::vector<std::pair<uint32_t, uint64_t>> vertex_fans;
   for (uint32_t f = 0; f < face_count; ++f) {
     if (!faces.in_topology(f)) continue;
@@ -87,10 +87,12 @@ VertexFans find_vertex_fans(const PolygonSoup& soup, const FaceClasses& faces, E
   }
   std::sort(vertex_fans.begin(), vertex_fans.end());
   vertex_fans.erase(std::unique(vertex_fans.begin(), vertex_fans.end()), vertex_fans.end());
-  for (size_t i = 1; i < vertex_fans.size(); ++i) {
-    if (vertex_fans[i].first == vertex_fans[i - 1].first && (vertex_fans[i].second >> 32) == (vertex_fans[i - 1].second >> 32))
-      out.non_manifold[vertex_fans[i].second >> 32] = 1;
-  }
+  const auto same_component_vertex = [&](size_t i, size_t j) {
+    return vertex_fans[i].first == vertex_fans[j].first && (vertex_fans[i].second >> 32) == (vertex_fans[j].second >> 32);
+  };
+  for (size_t i = 1; i < vertex_fans.size(); ++i)
+    if (same_component_vertex(i, i - 1) && (i < 2 || !same_component_vertex(i, i - 2)))
+      ++out.pinched_vertices[vertex_fans[i].second >> 32];
   return out;
 }
 

@@ -14,8 +14,7 @@ namespace umbra {
 
 struct ComponentLabels {
   std::vector<uint32_t> of_face;          // a face's component; none for faces outside the topology
-  std::vector<ComponentReport> reports;   // faces, edges and border_edges counted
-  std::vector<uint8_t> non_manifold;      // per component: an edge with more than two faces
+  std::vector<ComponentReport> reports;   // faces, edges, border_edges and non_manifold_edges counted
   std::vector<uint8_t> conflict;          // per component: faces no flips can make agree
   std::vector<size_t> inconsistent;       // per component: edges two faces run the same way
 };
@@ -23,7 +22,7 @@ ComponentLabels label_components(const FaceClasses& faces, EdgeGroups& groups);
 
 struct VertexFans {
   std::vector<size_t> vertices;           // per component
-  std::vector<uint8_t> non_manifold;      // per component: two fans of one vertex in it
+  std::vector<size_t> pinched_vertices;   // per component: vertices two of whose fans lie in it (on no non-manifold edge)
   std::vector<uint32_t> non_manifold_vertices;  // in vertex order; vertices on a non-manifold edge are counted with the edge
   std::vector<uint8_t> several_fans;      // per vertex: its corners form more than one fan
   size_t topology_vertices = 0;           // vertices of the faces in the topology

@@ -27,12 +27,12 @@ bool room_for(const List& list) {
 
 // Per component, from what the stages found: closed, manifold, orientable
 // and genus.
-void summarise_components(const ComponentLabels& labels, const std::vector<uint8_t>& non_manifold, MeshReport& report) {
+void summarise_components(const ComponentLabels& labels, MeshReport& report) {
   for (size_t i = 0; i < report.components.size(); ++i) {
     ComponentReport& c = report.components[i];
     c.euler_characteristic = int64_t(c.vertices) - int64_t(c.edges) + int64_t(c.faces);
-    c.manifold = !non_manifold[i];
-    c.closed = c.border_edges == 0 && c.manifold;
+    c.manifold = c.non_manifold_edges == 0 && c.non_manifold_vertices == 0;
+    c.closed = is_closed_2_manifold(c.shape());
     c.orientable = !labels.conflict[i];
     c.consistently_oriented = c.orientable && labels.inconsistent[i] == 0;
     if (c.manifold && c.orientable) c.genus = (2 - c.euler_characteristic - int64_t(c.border_loops)) / 2;
@@ -72,6 +72,22 @@ void decide_facing(const std::vector<glm::dvec3>& positions, const FaceTriangles
     comps[i].outward = !turned;
     if (turned) ++report.inward_components;
   }
+}
+
+// Per component, the triangle edges with more than two faces that are no
+// non-manifold edge of its polygons: diagonals along another edge.
+void count_overlapping_diagonals(const EdgeTable& edges, const std::vector<uint32_t>& component_of_triangle, MeshReport& report) {
+  std::vector<uint32_t> touched;
+  for (size_t e = 0; e < edges.size(); ++e) {
+    const uint32_t count = edges.use_count(e);
+    if (count <= 2) continue;
+    touched.clear();
+    for (uint32_t k = 0; k < count; ++k) touched.push_back(component_of_triangle[EdgeTable::face_of(edges.uses[edges.first_use[e] + k])]);
+    std::sort(touched.begin(), touched.end());
+    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+    for (const uint32_t component : touched) ++report.components[component].overlapping_diagonals;
+  }
+  for (ComponentReport& c : report.components) c.overlapping_diagonals -= std::min(c.overlapping_diagonals, c.non_manifold_edges);
 }
 
 // The stages in order, each a function of what the ones before it found
@@ -121,7 +137,7 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   // The topological stages; what only they need is freed at the end of the block.
   FaceTriangles triangles;
   ComponentLabels labels;
-  std::vector<uint8_t> flip, non_manifold;
+  std::vector<uint8_t> flip;
   // The self-intersection search needs only the triangles: it runs beside the
   // topological stages, and they are turned round only once it is done. What
   // it uses is declared before it, so that it outlives the search should a
@@ -130,7 +146,7 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   bool searched = options.self_intersection_seconds > 0.0;
   tbb::task_group search;
   std::optional<EdgeTable> face_edges;  // for the triangles' topology, when asked and all faces are triangles
-  std::vector<uint8_t> several_fans;
+  bool has_polygons = false;            // faces in the topology with more than three corners
   {
     const FaceClasses faces = classify_faces(soup, std::move(corners), merged.positions);
     triangles = triangulate_faces(soup, faces, merged.positions);
@@ -155,12 +171,9 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
       if (room_for(examples.duplicate_faces)) examples.duplicate_faces.push_back({face_ref(f), face_ref(faces.duplicate_of[f])});
     }
 
-    if (options.triangle_topology) {
-      bool all_triangles = true;
-      for (uint32_t f = 0; f < soup.polygon_count() && all_triangles; ++f)
-        all_triangles = !faces.in_topology(f) || soup.corner_count(f) == 3;
-      if (all_triangles) face_edges.emplace();
-    }
+    for (uint32_t f = 0; f < soup.polygon_count() && !has_polygons; ++f)
+      has_polygons = faces.in_topology(f) && soup.corner_count(f) > 3;
+    if (options.triangle_topology && !has_polygons) face_edges.emplace();
     EdgeGroups groups = group_edges(soup, faces, vertex_count, face_edges ? &*face_edges : nullptr);
     report.edges = groups.edges.size();
     report.inconsistent_edges = groups.inconsistent_edge_faces.size();
@@ -181,11 +194,10 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
       examples.non_manifold_vertices.push_back(vertex_ref(fans.non_manifold_vertices[k]));
     const BorderLoops loops = count_border_loops(groups, labels, vertex_count);
     report.border_loops = loops.loops;
-    non_manifold = labels.non_manifold;
     for (size_t i = 0; i < labels.reports.size(); ++i) {
       labels.reports[i].vertices = fans.vertices[i];
       labels.reports[i].border_loops = loops.per_component[i];
-      non_manifold[i] |= fans.non_manifold[i];
+      labels.reports[i].non_manifold_vertices = fans.pinched_vertices[i];
     }
 
     flip = faces_to_flip(faces, groups.flips, labels.of_face, labels.conflict);
@@ -199,13 +211,12 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
     size_t topology_faces = 0;
     for (const ComponentReport& c : labels.reports) topology_faces += c.faces;
     report.euler_characteristic = int64_t(fans.topology_vertices) - int64_t(groups.edges.size()) + int64_t(topology_faces);
-    if (face_edges) several_fans = std::move(fans.several_fans);
   }
   report.components = labels.reports;
   report.triangles = triangles.triangles.size();
   std::vector<uint32_t> component_of_triangle(triangles.triangles.size());
   for (size_t t = 0; t < triangles.triangles.size(); ++t) component_of_triangle[t] = labels.of_face[triangles.face[t]];
-  summarise_components(labels, non_manifold, report);
+  summarise_components(labels, report);
   search.wait();
   // Only a mesh whose every component is closed can have its back faces
   // culled, and only once the search shows its shells clean: the renderer
@@ -227,11 +238,24 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   const auto faces_in = [&](size_t t) { return report.components[component_of_triangle[t]].outward == false; };
   for (size_t t = 0; t < triangles.triangles.size(); ++t)
     if (faces_in(t)) std::swap(triangles.triangles[t][1], triangles.triangles[t][2]);
-  if (face_edges) {
-    std::vector<uint8_t> turned = std::move(flipped);  // flipped, then turned outward
-    for (size_t t = 0; t < turned.size(); ++t) turned[t] ^= uint8_t(faces_in(t));
-    analysis.topology = triangle_topology(std::move(*face_edges), triangles.triangles, triangles.face, turned,
-                                          component_of_triangle, report.components.size(), several_fans, report.border_loops);
+  // A mesh with polygons: its triangles' own edges, whose diagonals may run
+  // along other edges.
+  std::optional<EdgeTable> triangle_edges;
+  if (has_polygons) {
+    triangle_edges = build_edge_table(triangles.triangles, merged.positions.size());
+    count_overlapping_diagonals(*triangle_edges, component_of_triangle, report);
+  }
+  if (options.triangle_topology) {
+    EdgeTable edges;
+    if (triangle_edges) {
+      edges = std::move(*triangle_edges);
+    } else {
+      std::vector<uint8_t> turned = std::move(flipped);  // flipped, then turned outward
+      for (size_t t = 0; t < turned.size(); ++t) turned[t] ^= uint8_t(faces_in(t));
+      edges = triangle_edges_from_face_edges(std::move(*face_edges), triangles.face, turned);
+    }
+    ClosedComponents components = closed_components_of(edges, component_of_triangle, report);
+    analysis.topology = TriangleTopology{std::move(edges), std::move(components)};
   }
 
   report.self_intersections.time_limit_seconds = options.self_intersection_seconds;

@@ -17,9 +17,8 @@ struct CheckOptions {
   // The search for self-intersections stops after this long and says so;
   // 0 skips it.
   double self_intersection_seconds = 60.0;
-  // Also hand over the triangles' edge table and closed components, for the
-  // renderer: from the check's own pass over the edges, for a mesh of
-  // triangles only (MeshAnalysis::topology stays empty for any other).
+  // Also hand over the triangles' edge table and which components cast from
+  // their silhouette, for the renderer (triangle_topology.hpp).
   bool triangle_topology = false;
   // With the search skipped (self_intersection_seconds 0): search all the
   // same, without a time limit, when every component is closed, so that

@@ -46,21 +46,22 @@ std::string json_line(const nlohmann::ordered_json& value) {
 }  // namespace
 
 const char* shadow_method_name(ShadowMethod method) {
-  return method == ShadowMethod::kSilhouette ? "silhouette" : "edge-multiplicity";
+  switch (method) {
+    case ShadowMethod::kSilhouette: return "silhouette";
+    case ShadowMethod::kEdgeMultiplicity: return "edge-multiplicity";
+    case ShadowMethod::kMixed: break;
+  }
+  return "mixed";
+}
+
+size_t MeshReport::silhouette_components() const {
+  return size_t(std::count_if(components.begin(), components.end(), [](const ComponentReport& c) { return c.casts_from_silhouette(); }));
 }
 
 ShadowMethod MeshReport::shadow_method() const {
-  const bool closed_2_manifold = !components.empty() && border_edges == 0 && non_manifold_edges == 0 &&
-                                 non_manifold_vertices == 0 && non_orientable_components == 0;
-  return closed_2_manifold ? ShadowMethod::kSilhouette : ShadowMethod::kEdgeMultiplicity;
-}
-
-std::string MeshReport::shadow_method_reason() const {
-  const std::vector<std::string> why = topology_problems();
-  if (why.empty()) return "closed 2-manifold";
-  std::string s = "not a closed 2-manifold (";
-  for (size_t i = 0; i < why.size(); ++i) s += (i ? ", " : "") + why[i];
-  return s + ")";
+  const size_t silhouette = silhouette_components();
+  if (silhouette == 0) return ShadowMethod::kEdgeMultiplicity;
+  return silhouette == components.size() ? ShadowMethod::kSilhouette : ShadowMethod::kMixed;
 }
 
 std::string MeshReport::loading_changes() const {
@@ -108,17 +109,26 @@ std::vector<std::string> MeshReport::problems() const {
 
 std::string MeshReport::verdict() const {
   const std::vector<std::string> why = problems();
-  const bool silhouette = shadow_method() == ShadowMethod::kSilhouette;
   std::string s;
+  if (why.empty() && shadow_method() != ShadowMethod::kSilhouette)  // only overlapping diagonals keep it from the silhouette
+    return "closed 2-manifold: casts its shadow from an edge-multiplicity volume where a polygon's diagonal, once "
+           "triangulated, runs along another edge";
   if (why.empty()) {
     s = "closed 2-manifold: casts its shadow from silhouette edges";
     if (inward_components > 0) s += " (oriented inward, which shadows the same; --repair turns it outward)";
     return s;
   }
   const bool oriented = inconsistent_edges == 0;
-  s = silhouette && oriented ? "closed and consistently oriented, but not clean (" : "not a closed 2-manifold (";
+  s = topology_problems().empty() ? "closed and consistently oriented, but not clean (" : "not a closed 2-manifold (";
   for (size_t i = 0; i < why.size(); ++i) s += (i ? ", " : "") + why[i];
-  if (!silhouette) return s + "): shadow from an edge-multiplicity volume (exact for any triangles)";
+  if (shadow_method() == ShadowMethod::kEdgeMultiplicity)
+    return s + "): shadow from an edge-multiplicity volume (exact for any triangles)";
+  if (shadow_method() == ShadowMethod::kMixed) {
+    const size_t silhouette = silhouette_components();
+    return s + "): shadow from silhouette edges for its " + plural(silhouette, "closed component", "closed components") +
+           (oriented ? "" : " (once the renderer flips those faces)") + ", from an edge-multiplicity volume for the other " +
+           std::to_string(components.size() - silhouette);
+  }
   return s + (oriented ? "): still casts its shadow from silhouette edges"
                        : "): casts its shadow from silhouette edges once the renderer flips those faces");
 }
@@ -199,10 +209,14 @@ void MeshReport::print_text(std::ostream& out) const {
         << (c.closed ? "closed" : c.manifold ? "open" : "non-manifold") << ", chi " << c.euler_characteristic;
     if (c.genus) out << ", genus " << *c.genus;
     if (c.border_loops) out << ", " << plural(c.border_loops, "hole", "holes");
+    if (c.non_manifold_edges) out << ", " << plural(c.non_manifold_edges, "non-manifold edge", "non-manifold edges");
+    if (c.non_manifold_vertices) out << ", " << plural(c.non_manifold_vertices, "non-manifold vertex", "non-manifold vertices");
+    if (c.overlapping_diagonals)
+      out << ", " << plural(c.overlapping_diagonals, "diagonal", "diagonals") << " along another edge once triangulated";
     if (!c.orientable) out << ", non-orientable";
     if (c.outward) out << (*c.outward ? ", outward" : ", inward");
     else if (c.closed && c.orientable) out << ", facing undecided";
-    out << "\n";
+    out << "; " << (c.casts_from_silhouette() ? "silhouette" : "edge-multiplicity") << " volume\n";
   }
   if (components.size() > kListed) out << "  ... and " << components.size() - kListed << " more components\n";
   out << "  verdict            " << verdict() << "\n";
@@ -232,6 +246,9 @@ void MeshReport::print_json(std::ostream& out) const {
                               {"edges", c.edges},
                               {"border_edges", c.border_edges},
                               {"border_loops", c.border_loops},
+                              {"non_manifold_edges", c.non_manifold_edges},
+                              {"non_manifold_vertices", c.non_manifold_vertices},
+                              {"overlapping_diagonals", c.overlapping_diagonals},
                               {"euler_characteristic", c.euler_characteristic},
                               {"closed", c.closed},
                               {"manifold", c.manifold},
@@ -239,7 +256,9 @@ void MeshReport::print_json(std::ostream& out) const {
                               {"consistently_oriented", c.consistently_oriented},
                               {"genus", c.genus ? Json(*c.genus) : Json(nullptr)},
                               {"outward", c.outward ? Json(*c.outward) : Json(nullptr)},
-                              {"hides_back_faces", c.hides_back_faces}});
+                              {"hides_back_faces", c.hides_back_faces},
+                              {"shadow_method", shadow_method_name(c.casts_from_silhouette() ? ShadowMethod::kSilhouette
+                                                                                              : ShadowMethod::kEdgeMultiplicity)}});
   }
   Json report = {
       {"path", path},

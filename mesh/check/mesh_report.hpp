@@ -16,6 +16,7 @@
 #include <glm/vec3.hpp>
 
 #include "mesh/io/polygon_soup.hpp"
+#include "mesh/topology/component_shape.hpp"
 
 namespace umbra {
 
@@ -33,8 +34,11 @@ struct ComponentReport {
   size_t edges = 0;
   size_t border_edges = 0;
   size_t border_loops = 0;
+  size_t non_manifold_edges = 0;       // three or more faces
+  size_t non_manifold_vertices = 0;    // two or more fans of its own faces round one vertex, on no non-manifold edge
+  size_t overlapping_diagonals = 0;    // polygons' diagonals, once triangulated, along another edge (component_shape.hpp)
   int64_t euler_characteristic = 0;    // V - E + F
-  bool closed = false;                 // no border and no non-manifold edge
+  bool closed = false;                 // a closed 2-manifold: is_closed_2_manifold(shape())
   bool manifold = false;               // no non-manifold edge or vertex
   bool orientable = false;             // faces can be flipped to agree on every edge
   bool consistently_oriented = false;  // they already agree
@@ -49,6 +53,12 @@ struct ComponentReport {
   // behind its front faces, and the renderer culls them. Shells that cross
   // each other may each be one; nesting plays no part.
   bool hides_back_faces = false;
+
+  // Its faces as the renderer draws them: orientable ones flipped to agree.
+  ComponentShape shape() const {
+    return {border_edges, non_manifold_edges, non_manifold_vertices, orientable, overlapping_diagonals};
+  }
+  bool casts_from_silhouette() const { return umbra::casts_from_silhouette(shape()); }
 };
 
 struct SelfIntersectionReport {
@@ -59,9 +69,10 @@ struct SelfIntersectionReport {
   double time_limit_seconds = 0.0;
 };
 
-// How the renderer casts a mesh's shadow: from the silhouette of a closed
-// 2-manifold (once its faces are flipped to agree), or by edge multiplicity.
-enum class ShadowMethod { kSilhouette, kEdgeMultiplicity };
+// How the renderer casts a mesh's shadow, decided per component
+// (casts_from_silhouette): from the silhouette of every component, by edge
+// multiplicity for every component, or each component its own way.
+enum class ShadowMethod { kSilhouette, kEdgeMultiplicity, kMixed };
 const char* shadow_method_name(ShadowMethod method);
 
 // The JSON line for a file that could not be read: {"path": ..., "error": ...},
@@ -81,7 +92,7 @@ struct MeshReport {
   size_t border_edges = 0;
   size_t border_loops = 0;
   size_t non_manifold_edges = 0;    // shared by more than two faces
-  size_t non_manifold_vertices = 0; // faces around it form more than one fan (vertices of non-manifold edges not counted)
+  size_t non_manifold_vertices = 0; // faces around it form more than one fan, within a component or across components that touch there (vertices of non-manifold edges not counted)
   size_t duplicate_faces = 0;       // same vertices as an earlier face, in any order
   size_t degenerate_faces = 0;      // a repeated vertex, or all vertices on one line
   size_t inconsistent_edges = 0;    // two faces traverse the edge in the same direction
@@ -115,12 +126,11 @@ struct MeshReport {
   // The problems that decide the shadow method: no faces, border, non-manifold
   // edges or vertices, orientation.
   std::vector<std::string> topology_problems() const;
-  // The shadow method the renderer uses for this mesh (whether the faces
-  // agree on their orientation or not: it flips them to agree first), and
-  // why in a phrase: "closed 2-manifold" or "not a closed 2-manifold (4
-  // border edges in 1 hole)".
+  // The shadow method the renderer uses for this mesh, from its components'
+  // (whether the faces agree on their orientation or not: it flips them to
+  // agree first). None: edge multiplicity.
   ShadowMethod shadow_method() const;
-  std::string shadow_method_reason() const;
+  size_t silhouette_components() const;
   // Every component hides its back faces (ComponentReport::hides_back_faces):
   // the renderer may cull the mesh's back faces.
   bool back_faces_hidden() const;

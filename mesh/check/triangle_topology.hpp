@@ -1,16 +1,17 @@
 #pragma once
-// What the renderer needs of a mesh's edges, taken from the check's own pass
-// over them rather than from a second one: the edge table of the analysed
-// triangles, as they were turned, and their closed components, equal to what
-// build_edge_table and find_closed_components make of those triangles. Only
-// for a mesh whose faces in the topology are all triangles, so that faces
-// and triangles are one to one (a polygon's diagonals are edges the check
-// never saw); the renderer builds both itself for any other.
+// What the renderer needs of a mesh's edges: the edge table of the analysed
+// triangles, as they were turned, and which of their components cast from
+// their silhouette, as the check's report decides them
+// (ComponentReport::casts_from_silhouette). For a mesh whose faces in the
+// topology are all triangles, the edge table comes from the check's own pass
+// over the edges rather than a second one; a polygon's diagonals are edges
+// that pass never saw, so any other mesh gets a pass over its triangles.
 
 #include <array>
 #include <cstdint>
 #include <vector>
 
+#include "mesh/check/mesh_report.hpp"
 #include "mesh/topology/closed_components.hpp"
 #include "mesh/topology/edge_table.hpp"
 
@@ -23,14 +24,16 @@ struct TriangleTopology {
 
 // `face_edges` is the check's edge table over the file's faces (each use
 // face << 1 | 1 when the face, as written, runs from the edge's smaller
-// vertex to its larger). Triangle t comes from face triangle_face[t] and runs
-// against it when turned[t]; component_of_triangle numbers the check's
-// components (below component_count). `several_fans` marks the vertices
-// whose corners form more than one fan; `border_loops` counts the border's
-// connected pieces.
-TriangleTopology triangle_topology(EdgeTable face_edges, const std::vector<std::array<uint32_t, 3>>& triangles,
-                                   const std::vector<uint32_t>& triangle_face, const std::vector<uint8_t>& turned,
-                                   const std::vector<uint32_t>& component_of_triangle, size_t component_count,
-                                   const std::vector<uint8_t>& several_fans, size_t border_loops);
+// vertex to its larger), all of them triangles. Triangle t comes from face
+// triangle_face[t] and runs against it when turned[t].
+EdgeTable triangle_edges_from_face_edges(EdgeTable face_edges, const std::vector<uint32_t>& triangle_face,
+                                         const std::vector<uint8_t>& turned);
+
+// `edges` is the triangles' edge table; component_of_triangle numbers the
+// report's components. The counts are the report's, overlapping diagonals
+// counted with the non-manifold edges, and the edges whose two triangles
+// still run the same way (in non-orientable components).
+ClosedComponents closed_components_of(const EdgeTable& edges, const std::vector<uint32_t>& component_of_triangle,
+                                      const MeshReport& report);
 
 }  // namespace umbra

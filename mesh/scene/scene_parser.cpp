@@ -401,13 +401,8 @@ class SceneBuilder {
     m.culls_back_faces = m.report.back_faces_hidden();
     m.triangle_materials = std::move(analysis.triangle_materials);
     pending.file_materials = std::move(analysis.materials);
-    if (analysis.topology) {  // from the check's pass over the edges
-      m.edges = std::move(analysis.topology->edges);
-      m.components = std::move(analysis.topology->components);
-    } else {  // polygons: their diagonals are edges too
-      m.edges = build_edge_table(m.triangles, m.positions.size());
-      m.components = find_closed_components(m.triangles, m.edges, m.positions.size());
-    }
+    m.edges = std::move(analysis.topology->edges);  // asked for above: always given
+    m.components = std::move(analysis.topology->components);
   }
 
   void camera(StatementReader& r) {

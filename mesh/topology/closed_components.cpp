@@ -1,8 +1,11 @@
 #include "mesh/topology/closed_components.hpp"
 
+#include <algorithm>
 #include <limits>
+#include <utility>
 
 #include "mesh/topology/border_loops.hpp"
+#include "mesh/topology/component_shape.hpp"
 #include "mesh/topology/union_find.hpp"
 
 namespace umbra {
@@ -46,37 +49,41 @@ ClosedComponents find_closed_components(const std::vector<std::array<uint32_t, 3
                                         size_t vertex_count) {
   ClosedComponents result;
   const uint32_t face_count = uint32_t(triangles.size());
+  // Faces join across any edge; corners round a vertex join into fans across
+  // the edges with two faces, however those run (as the check joins them).
   UnionFind components(face_count), fans(3 * size_t(face_count));
   std::vector<BorderEdge> border;  // numbered by one face of each, until the components are known
-  std::vector<uint8_t> irregular_vertex(vertex_count, 0);  // on an edge that is not two opposite faces
-  std::vector<uint32_t> irregular_faces;                   // one face of each irregular edge
+  std::vector<uint8_t> on_non_manifold_edge(vertex_count, 0);
+  std::vector<std::pair<uint32_t, ComponentShape>> found;  // (a face of the component, what one edge adds)
   for (size_t e = 0; e < edges.size(); ++e) {
     const uint32_t* use = edges.uses.data() + edges.first_use[e];
     const uint32_t count = edges.use_count(e);
     const auto [u, v] = edges.vertices[e];
     for (uint32_t k = 1; k < count; ++k) components.unite(EdgeTable::face_of(use[0]), EdgeTable::face_of(use[k]));
-    const bool regular = count == 2 && EdgeTable::runs_forward(use[0]) != EdgeTable::runs_forward(use[1]);
-    if (regular) {
-      const uint32_t x = EdgeTable::face_of(use[0]), y = EdgeTable::face_of(use[1]);
+    const uint32_t x = EdgeTable::face_of(use[0]);
+    if (count == 2) {
+      const uint32_t y = EdgeTable::face_of(use[1]);
       fans.unite(corner_at(triangles[x], x, u), corner_at(triangles[y], y, u));
       fans.unite(corner_at(triangles[x], x, v), corner_at(triangles[y], y, v));
-      continue;
-    }
-    irregular_vertex[u] = irregular_vertex[v] = 1;
-    irregular_faces.push_back(EdgeTable::face_of(use[0]));
-    if (count == 1) {
+      if (EdgeTable::runs_forward(use[0]) == EdgeTable::runs_forward(use[1])) {
+        ++result.inconsistent_edges;
+        found.push_back({x, ComponentShape{0, 0, 0, false}});
+      }
+    } else if (count == 1) {
       ++result.border_edges;
-      border.push_back({EdgeTable::face_of(use[0]), u, v});
-    } else if (count == 2) {
-      ++result.inconsistent_edges;
+      border.push_back({x, u, v});
+      found.push_back({x, ComponentShape{1, 0, 0, true}});
     } else {
       ++result.non_manifold_edges;
+      on_non_manifold_edge[u] = on_non_manifold_edge[v] = 1;
+      found.push_back({x, ComponentShape{0, 1, 0, true}});
     }
   }
   // Border loops, per component (numbered by its root face).
   for (BorderEdge& e : border) e.component = components.find(e.component);
   for (const size_t loops : border_loops_per_component(std::move(border), face_count, vertex_count)) result.border_loops += loops;
-  // Vertices whose corners make more than one fan; and components.
+  // Vertices whose corners make more than one fan: non-manifold, and pinched
+  // in each component that holds two of its fans.
   std::vector<uint32_t> fan_of_vertex(vertex_count, kNone);
   std::vector<uint8_t> several_fans(vertex_count, 0);
   for (uint32_t t = 0; t < face_count; ++t)
@@ -85,20 +92,37 @@ ClosedComponents find_closed_components(const std::vector<std::array<uint32_t, 3
       if (fan_of_vertex[v] == kNone) fan_of_vertex[v] = fan;
       else if (fan_of_vertex[v] != fan) several_fans[v] = 1;
     }
-  std::vector<uint8_t> open_root(face_count, 0), root_seen(face_count, 0);
-  for (uint32_t f : irregular_faces) open_root[components.find(f)] = 1;
+  std::vector<std::array<uint32_t, 3>> vertex_fans;  // (vertex, component root, fan) of the non-manifold vertices' corners
   for (uint32_t t = 0; t < face_count; ++t)
-    for (uint32_t v : triangles[t])
-      if (several_fans[v]) open_root[components.find(t)] = 1;
-  for (size_t v = 0; v < vertex_count; ++v) result.non_manifold_vertices += several_fans[v] && !irregular_vertex[v];
+    for (uint32_t i = 0; i < 3; ++i)
+      if (const uint32_t v = triangles[t][i]; several_fans[v] && !on_non_manifold_edge[v])
+        vertex_fans.push_back({v, components.find(t), fans.find(3 * t + i)});
+  std::sort(vertex_fans.begin(), vertex_fans.end());
+  vertex_fans.erase(std::unique(vertex_fans.begin(), vertex_fans.end()), vertex_fans.end());
+  for (size_t i = 1; i < vertex_fans.size(); ++i)
+    if (vertex_fans[i][0] == vertex_fans[i - 1][0] && vertex_fans[i][1] == vertex_fans[i - 1][1] &&
+        (i < 2 || vertex_fans[i - 2][0] != vertex_fans[i][0] || vertex_fans[i - 2][1] != vertex_fans[i][1]))
+      found.push_back({vertex_fans[i][1], ComponentShape{0, 0, 1, true}});
+  for (size_t v = 0; v < vertex_count; ++v) result.non_manifold_vertices += several_fans[v] && !on_non_manifold_edge[v];
+  // Each component's shape, summed from what was found, and the one rule.
+  std::vector<ComponentShape> shape(face_count, ComponentShape{0, 0, 0, true});
+  for (const auto& [face, part] : found) {
+    ComponentShape& s = shape[components.find(face)];
+    s.border_edges += part.border_edges;
+    s.non_manifold_edges += part.non_manifold_edges;
+    s.pinched_vertices += part.pinched_vertices;
+    s.oriented = s.oriented && part.oriented;
+  }
+  std::vector<uint8_t> root_seen(face_count, 0);
   result.closed_face.resize(face_count);
   for (uint32_t t = 0; t < face_count; ++t) {
     const uint32_t root = components.find(t);
-    result.closed_face[t] = !open_root[root];
+    const bool closed = casts_from_silhouette(shape[root]);
+    result.closed_face[t] = closed;
     if (root_seen[root]) continue;
     root_seen[root] = 1;
     ++result.components;
-    result.closed_components += !open_root[root];
+    result.closed_components += closed;
   }
   return result;
 }

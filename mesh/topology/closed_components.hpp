@@ -1,8 +1,10 @@
 #pragma once
-// Which parts of a triangle mesh can cast their shadow from a silhouette:
-// the components that are closed, consistently oriented 2-manifolds. Decided
-// from the edge table alone, with counts of what keeps the other components
-// from it, for a one-phrase explanation.
+// Which parts of a triangle mesh cast their shadow from a silhouette: per
+// component, as casts_from_silhouette (component_shape.hpp) decides, with
+// counts of what keeps the other components from it, for a one-phrase
+// explanation. The renderer takes this from the check's report
+// (mesh/check/triangle_topology); find_closed_components makes it from bare
+// triangles, as they are, for tests, benchmarks and the fuzzers.
 
 #include <array>
 #include <cstdint>
@@ -15,16 +17,15 @@ namespace umbra {
 
 struct ClosedComponents {
   // closed_face[t] = 1 when face t's component (faces joined across any
-  // edge) has exactly two faces on every edge, running along it in opposite
-  // directions, and one fan of faces round every vertex.
+  // edge) casts from its silhouette: casts_from_silhouette.
   std::vector<uint8_t> closed_face;
   size_t components = 0;
-  size_t closed_components = 0;
+  size_t closed_components = 0;      // those that cast from their silhouette
   size_t border_edges = 0;           // one face
   size_t border_loops = 0;           // cycles of the border edges, per component (border_loops.hpp), summed
   size_t non_manifold_edges = 0;     // three or more faces
   size_t inconsistent_edges = 0;     // two faces running the same way
-  size_t non_manifold_vertices = 0;  // two or more fans, on no edge counted above
+  size_t non_manifold_vertices = 0;  // two or more fans, on no non-manifold edge
 
   bool all_closed() const { return closed_components == components && components > 0; }
   // "closed 2-manifold", or what is not: "open, 3 holes, 2 non-manifold edges".

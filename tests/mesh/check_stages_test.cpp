@@ -74,7 +74,7 @@ TEST(CheckStages, ComponentsFansAndLoopsOfTwoBowlsTouchingAtAVertex) {
   const VertexFans fans = find_vertex_fans(soup, faces, groups, labels, soup.points.size());
   EXPECT_EQ(fans.non_manifold_vertices, std::vector<uint32_t>{0});  // the shared apex: two fans
   EXPECT_EQ(fans.vertices, (std::vector<size_t>{5, 5}));            // the apex counts in both
-  EXPECT_EQ(fans.non_manifold, (std::vector<uint8_t>{0, 0}));        // but each component holds one fan of it
+  EXPECT_EQ(fans.pinched_vertices, (std::vector<size_t>{0, 0}));     // but each component holds one fan of it
   EXPECT_EQ(fans.topology_vertices, 9u);
   const BorderLoops loops = count_border_loops(groups, labels, soup.points.size());
   EXPECT_EQ(loops.loops, 2u);

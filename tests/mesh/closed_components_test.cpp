@@ -81,7 +81,7 @@ TEST(ClosedComponents, AFaceWoundTheOtherWayGivesThreeEdgesOfMixedWinding) {
   EXPECT_EQ(c.phrase(), "3 edges with mixed winding");
 }
 
-TEST(ClosedComponents, TwoTetrahedraSharingAVertexHaveANonManifoldVertexAndNeitherIsClosed) {
+TEST(ClosedComponents, TwoTetrahedraSharingAVertexHaveANonManifoldVertexAndEachIsClosed) {
   // Vertex 0 is the apex of both; the second uses vertices 0, 4, 5, 6.
   Triangles second = tetrahedron(3);
   for (auto& tri : second)
@@ -90,8 +90,10 @@ TEST(ClosedComponents, TwoTetrahedraSharingAVertexHaveANonManifoldVertexAndNeith
   const ClosedComponents c = components_of(tetrahedron() + second, 7);
   EXPECT_EQ(c.components, 2u);
   EXPECT_EQ(c.non_manifold_vertices, 1u);
-  EXPECT_EQ(c.closed_components, 0u);  // OpenMesh could not hold that vertex
-  EXPECT_EQ(c.phrase(), "1 non-manifold vertex");
+  // Each has one fan round the vertex: a closed 2-manifold on its own.
+  EXPECT_EQ(c.closed_components, 2u);
+  EXPECT_EQ(c.closed_face, std::vector<uint8_t>(8, 1));
+  EXPECT_EQ(c.phrase(), "1 non-manifold vertex; 2 of 2 components closed");
 }
 
 TEST(ClosedComponents, AClosedAndAnOpenComponentCastEachTheirOwnWay) {

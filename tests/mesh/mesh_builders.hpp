@@ -223,6 +223,26 @@ inline std::string obj_text(const PolygonSoup& soup) {
   return out.str();
 }
 
+// A horn torus: a ring of quads between two circles, each circle fanned to
+// the one centre point, so that the centre is pinched between the top fan and
+// the bottom fan of one component. Every edge has two faces, which agree.
+inline PolygonSoup horn_torus(uint32_t n) {
+  std::vector<glm::dvec3> points{glm::dvec3(0.0)};
+  std::vector<Face> faces;
+  for (uint32_t i = 0; i < n; ++i) {
+    const double a = 2.0 * M_PI * i / n;
+    points.push_back({std::cos(a), std::sin(a), 0.5});
+    points.push_back({std::cos(a), std::sin(a), -0.5});
+  }
+  for (uint32_t i = 0; i < n; ++i) {
+    const uint32_t top = 1 + 2 * i, bottom = top + 1, next_top = 1 + 2 * ((i + 1) % n), next_bottom = next_top + 1;
+    faces.push_back({0, top, next_top});
+    faces.push_back({next_top, top, bottom, next_bottom});
+    faces.push_back({0, next_bottom, bottom});
+  }
+  return make_soup(points, faces);
+}
+
 // The lower half (z <= 0) of a unit sphere of `rings` x `segments` quads: a
 // bowl, open at its rim.
 inline PolygonSoup bowl(int rings, int segments) {

@@ -166,7 +166,66 @@ TEST(MeshCheck, TwoTetrahedraSharingAVertexHaveOneNonManifoldVertex) {
   EXPECT_EQ(r.euler_characteristic, 7 - 12 + 8);
   EXPECT_EQ(r.self_intersections.face_pairs, 0u);
   EXPECT_EQ(r.problems(), std::vector<std::string>{"1 non-manifold vertex"});
+  // The vertex is non-manifold in the mesh, but each component has one fan
+  // there: each is a closed 2-manifold on its own and casts from its silhouette.
+  for (const ComponentReport& c : r.components) {
+    EXPECT_EQ(c.non_manifold_vertices, 0u);
+    EXPECT_TRUE(c.casts_from_silhouette());
+  }
+  EXPECT_EQ(r.shadow_method(), ShadowMethod::kSilhouette);
+  EXPECT_EQ(r.verdict(), "not a closed 2-manifold (1 non-manifold vertex): still casts its shadow from silhouette edges");
+}
+
+TEST(MeshCheck, AVertexPinchedWithinAComponentKeepsItFromTheSilhouettePath) {
+  const MeshReport r = check_mesh(horn_torus(8));
+  EXPECT_EQ(r.border_edges, 0u);
+  EXPECT_EQ(r.non_manifold_edges, 0u);
+  EXPECT_EQ(r.inconsistent_edges, 0u);
+  EXPECT_EQ(r.non_manifold_vertices, 1u);
+  ASSERT_EQ(r.components.size(), 1u);
+  const ComponentReport& c = r.components[0];
+  EXPECT_EQ(c.non_manifold_edges, 0u);
+  EXPECT_EQ(c.non_manifold_vertices, 1u);
+  EXPECT_FALSE(c.manifold);
+  EXPECT_FALSE(c.closed);
+  EXPECT_TRUE(c.orientable);
+  EXPECT_FALSE(c.casts_from_silhouette());
   EXPECT_EQ(r.shadow_method(), ShadowMethod::kEdgeMultiplicity);
+  EXPECT_EQ(r.self_intersections.face_pairs, 0u);  // the fans meet only at the centre
+  EXPECT_EQ(r.verdict(), "not a closed 2-manifold (1 non-manifold vertex): shadow from an edge-multiplicity volume (exact "
+                         "for any triangles)");
+}
+
+TEST(MeshCheck, ComponentsThatCastTheirShadowsDifferentWaysAreEachReported) {
+  // A tetrahedron, a lone triangle beside it, and a cube with a face wound the other way.
+  const PolygonSoup soup = combine(combine(tetrahedron(), make_soup({{3, 0, 0}, {4, 0, 0}, {3, 1, 0}}, {{0, 1, 2}})),
+                                   reversed(box_triangles({5, 0, 0}, {6, 1, 1}), {4}));
+  CheckOptions options;
+  options.self_intersection_seconds = 0.0;
+  const MeshReport r = check_mesh(soup, options);
+  ASSERT_EQ(r.components.size(), 3u);
+  EXPECT_TRUE(r.components[0].casts_from_silhouette());
+  EXPECT_FALSE(r.components[1].casts_from_silhouette());
+  EXPECT_TRUE(r.components[2].casts_from_silhouette());  // once that face is flipped
+  EXPECT_EQ(r.silhouette_components(), 2u);
+  EXPECT_EQ(r.shadow_method(), ShadowMethod::kMixed);
+  EXPECT_EQ(r.verdict(), "not a closed 2-manifold (3 border edges in 1 hole, inconsistent orientation (1 face to flip), "
+                         "self-intersections not checked): shadow from silhouette edges for its 2 closed components (once "
+                         "the renderer flips those faces), from an edge-multiplicity volume for the other 1");
+  std::ostringstream json;
+  r.print_json(json);
+  const std::string line = json.str();
+  EXPECT_NE(line.find("\"shadow_method\":\"mixed\""), std::string::npos) << line;
+  const auto component_method = [&](size_t k) {  // the k-th component's shadow_method in the JSON
+    size_t at = line.find("\"component_list\"");
+    for (size_t i = 0; i <= k; ++i) at = line.find("\"shadow_method\":", at + 1);
+    return line.substr(at, line.find(',', at) - at);
+  };
+  EXPECT_EQ(component_method(0), "\"shadow_method\":\"silhouette\"}");
+  EXPECT_EQ(component_method(1), "\"shadow_method\":\"edge-multiplicity\"}");
+  EXPECT_EQ(component_method(2), "\"shadow_method\":\"silhouette\"}]");
+  // The renderer's per-triangle choice is the report's, component by component.
+  EXPECT_TRUE(test::expect_triangle_topology_as_built(soup));
 }
 
 TEST(MeshCheck, OneFlippedFaceIsNamedAsTheFaceToFlip) {
@@ -488,17 +547,18 @@ TEST(MeshCheck, RandomSoupsAreCheckedWithConsistentCounts) {
   }
 }
 
-// The renderer takes the edge table and closed components from the check's
-// pass over the edges; they must be what its own pass would make, on meshes
-// closed, open, flipped, inward, non-orientable and touching at a vertex, and
-// on random soups full of repeats, duplicates and non-manifold edges.
+// The renderer takes the edge table and closed components from the check;
+// they must be what a pass over the triangles alone would make, on meshes
+// closed, open, flipped, inward, non-orientable, pinched and touching at a
+// vertex, of triangles and of polygons, and on random soups full of repeats,
+// duplicates and non-manifold edges.
 TEST(MeshCheck, TriangleTopologyIsWhatASecondPassOverTheTrianglesGives) {
   const PolygonSoup bowtie = combine(tetrahedron(), tetrahedron(glm::dvec3(1.0, 0.0, 0.0)));  // vertex 1 of one is vertex 0 of the other
   for (const PolygonSoup& soup : {unit_cube(), reversed(unit_cube(), {0, 3, 7}), all_reversed(unit_cube()),
                                   triangulated(hollow_cube()), without_faces(unit_cube(), {2}), triangulated(moebius_strip(12)),
-                                  bowtie, triangulated(uv_sphere(8, 12)), combine(unit_cube(), reversed(octahedron(), {1}))})
+                                  bowtie, triangulated(uv_sphere(8, 12)), combine(unit_cube(), reversed(octahedron(), {1})),
+                                  box_quads(glm::dvec3(0.0), glm::dvec3(1.0)), horn_torus(6), uv_sphere(6, 8)})
     EXPECT_TRUE(test::expect_triangle_topology_as_built(soup));
-  EXPECT_FALSE(test::expect_triangle_topology_as_built(box_quads(glm::dvec3(0.0), glm::dvec3(1.0))));  // quads: not given
 
   std::mt19937 random(5);
   size_t given = 0;
@@ -508,9 +568,11 @@ TEST(MeshCheck, TriangleTopologyIsWhatASecondPassOverTheTrianglesGives) {
     for (int i = 0; i < point_count; ++i) points.push_back(glm::dvec3(random() % 3, random() % 3, random() % 3));
     std::vector<Face> faces;
     const int face_count = 1 + int(random() % 16);
-    for (int f = 0; f < face_count; ++f) faces.push_back({uint32_t(random() % uint32_t(point_count)),
-                                                          uint32_t(random() % uint32_t(point_count)),
-                                                          uint32_t(random() % uint32_t(point_count))});
+    for (int f = 0; f < face_count; ++f) {
+      Face face(3);
+      for (uint32_t& v : face) v = uint32_t(random() % uint32_t(point_count));
+      faces.push_back(face);
+    }
     SCOPED_TRACE(trial);
     given += test::expect_triangle_topology_as_built(make_soup(points, faces));
   }

@@ -74,6 +74,8 @@ const OpenCase kCases[] = {
     {"crossing_bowls", two_crossing_bowls, "open, 2 holes"},
     {"bowl_and_box", [] { return test::combine(test::bowl(10, 32), test::box_triangles({-0.3, -0.3, -0.9}, {0.3, 0.3, -0.5})); },
      "open, 1 hole; 1 of 2 components closed"},
+    // Closed, but its centre is pinched between its top fan and its bottom fan.
+    {"horn_torus", [] { return test::horn_torus(24); }, "1 non-manifold vertex"},
 };
 
 class OpenMeshScene : public testing::TestWithParam<OpenCase> {};
@@ -101,6 +103,22 @@ INSTANTIATE_TEST_SUITE_P(Meshes, OpenMeshScene, testing::ValuesIn(kCases),
 
 namespace umbra {
 namespace {
+
+// Two boxes that touch at a corner: the corner is a non-manifold vertex of
+// the file, but each box has one fan of faces round it, so each is a closed
+// 2-manifold on its own and casts from its silhouette, as the check says.
+TEST(MeshCasterPhrase, ComponentsTouchingAtAVertexEachCastFromTheirSilhouette) {
+  const PolygonSoup soup = test::combine(test::box_triangles({0, 0, 0}, {1, 1, 1}), test::box_triangles({1, 1, 1}, {2, 1.5, 2.5}));
+  const Scene scene = scene_with("corner_boxes", soup, 30.0);
+  EXPECT_EQ(scene.meshes[0].report.non_manifold_vertices, 1u);
+  EXPECT_EQ(scene.meshes[0].report.shadow_method(), ShadowMethod::kSilhouette);
+  const MeshCaster caster = prepare_mesh_casters(scene)[0];
+  EXPECT_EQ(caster.phrase(), "1 non-manifold vertex; 2 of 2 components closed: silhouette volume");
+  EXPECT_EQ(caster.closed.triangles.size(), 24u);
+  EXPECT_TRUE(caster.open.empty());
+  test::expect_masks_match_reference(scene, 160, 120, 64);
+  test::expect_masks_match_reference(scene_with("corner_boxes_turned", soup, 110.0), 120, 120, 64, 100.0);
+}
 
 TEST(MeshCasterPhrase, SaysWhatLoadingChangedBeforeTheSilhouettePath) {
   // A box with one face wound the other way and one face repeated: loading
