@@ -65,16 +65,13 @@ case "${1:-}" in
     seconds="${2:-60}"
     CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DUMBRA_FUZZERS=ON \
       -DUMBRA_BUILD_TESTS=OFF -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link $sanitizers" -DCMAKE_C_FLAGS="$sanitizers"
-    cmake --build build-fuzz -j"$(nproc)" --target scene_fuzzer mesh_fuzzer
+    cmake --build build-fuzz -j"$(nproc)" --target scene_fuzzer mesh_fuzzer mesh_seed
     # Seed corpus: the bundled scenes, and the bundled meshes and fuzz/seeds/mesh/
-    # (glTF, GLB, 3MF) behind their format byte.
+    # (glTF, GLB, 3MF) behind their format byte (written by mesh_seed).
     rm -rf build-fuzz/corpus && mkdir -p build-fuzz/corpus/scene build-fuzz/corpus/mesh build-fuzz/crashes
     cp scenes/*.scene fuzz/regressions/scene/* build-fuzz/corpus/scene/ 2>/dev/null || true
     cp fuzz/regressions/mesh/* build-fuzz/corpus/mesh/ 2>/dev/null || true
-    for f in scenes/meshes/*.obj scenes/meshes/*.off fuzz/seeds/mesh/*; do
-      case "$f" in *.obj) byte='\000' ;; *.off) byte='\001' ;; *.gltf | *.glb) byte='\004' ;; *.3mf) byte='\005' ;; esac
-      { printf "$byte"; cat "$f"; } > "build-fuzz/corpus/mesh/$(basename "$f")"
-    done
+    build-fuzz/fuzz/mesh_seed build-fuzz/corpus/mesh scenes/meshes/* fuzz/seeds/mesh/*
     for target in scene mesh; do
       echo "fuzzing the $target input for $seconds s"
       "build-fuzz/fuzz/${target}_fuzzer" -max_total_time="$seconds" -max_len=8192 -timeout=20 -rss_limit_mb=4096 \

@@ -1,4 +1,5 @@
 #include "fuzz/fuzz_entries.hpp"
+#include "fuzz/format_byte.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -30,13 +31,9 @@ void scene_input(const uint8_t* data, size_t size) {
 
 void mesh_input(const uint8_t* data, size_t size) {
   if (size == 0) return;
-  // The name's extension picks the reader for content too broken to tell;
-  // glTF's external buffers are looked for in a folder that does not exist.
-  static const char* const names[] = {"/nonexistent/fuzz.obj", "/nonexistent/fuzz.off", "/nonexistent/fuzz.ply",
-                                      "/nonexistent/fuzz.stl", "/nonexistent/fuzz.gltf", "/nonexistent/fuzz.3mf"};
   try {
     const PolygonSoup soup =
-        parse_polygon_soup(std::string_view(reinterpret_cast<const char*>(data) + 1, size - 1), names[data[0] % 6]);
+        parse_polygon_soup(std::string_view(reinterpret_cast<const char*>(data) + 1, size - 1), mesh_format_name_of_byte(data[0]));
     CheckOptions options;
     options.self_intersection_seconds = 0.5;
     const MeshAnalysis analysis = analyse_mesh(soup, options);

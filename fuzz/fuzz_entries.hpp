@@ -15,8 +15,8 @@ namespace umbra::fuzz {
 // as the renderer would make it, all on the CPU.
 void scene_input(const uint8_t* data, size_t size);
 
-// The first byte picks the format by its name (OBJ, OFF, PLY, STL, glTF, 3MF;
-// the content decides where it can), the rest is the file;
+// The first byte picks the format by its name (format_byte.hpp; the
+// content decides where it can), the rest is the file;
 // then the check's analysis, and the mesh's shadow volume from a few fixed
 // lights, which must have no boundary and only finite vertices (or true
 // directions at infinity): a volume that breaks either throws

@@ -101,8 +101,8 @@ size_t orient_closed_components_outward(Mesh& mesh) {
 }  // namespace
 
 bool repair_can_write(const std::string& path) {
-  const std::string format = mesh_format_of(path);
-  return format == "obj" || format == "off" || format == "ply" || format == "stl";
+  const MeshFormat* format = mesh_format_by_id(mesh_format_of(path));
+  return format && format->repair_writes;
 }
 
 RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output) {

@@ -19,14 +19,9 @@ PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path) 
   // Not OBJ, though: any text would read as an OBJ without faces.
   // Nor for what is plainly some other format.
   if (format.empty() && mesh_format_of(path) != "obj" && other_known_format(bytes).empty()) format = mesh_format_of(path);
-  PolygonSoup soup;
-  if (format == "obj") soup = read_obj(bytes, path);
-  else if (format == "off") soup = read_off(bytes, path);
-  else if (format == "ply") soup = read_ply(bytes, path);
-  else if (format == "stl") soup = read_stl(bytes, path);
-  else if (format == "gltf") soup = read_gltf(bytes, path);
-  else if (format == "3mf") soup = read_3mf(bytes, path);
-  else throw InputError({path, 0, 0}, "not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): " + describe_content(bytes));
+  const MeshFormat* reader = mesh_format_by_id(format);
+  if (!reader) throw InputError({path, 0, 0}, "not a mesh file (" + mesh_format_names() + "): " + describe_content(bytes));
+  PolygonSoup soup = reader->read(bytes, path);
   require_corners_in_range(soup);
   if (!soup.polygon_materials.empty() && soup.polygon_materials.size() != soup.polygon_count())
     throw std::logic_error("a reader gave " + std::to_string(soup.polygon_materials.size()) + " face materials for " +

@@ -118,20 +118,60 @@ bool is_obj(std::string_view head) {
   return false;
 }
 
+bool never(std::string_view) { return false; }
+
 }  // namespace
+
+const std::vector<MeshFormat>& mesh_formats() {
+  static const std::vector<MeshFormat> formats{
+      {"obj", "OBJ", {".obj"}, never, is_obj, [](std::string_view b, const std::string& p) { return read_obj(b, p); }, true},
+      {"off", "OFF", {".off"}, never, is_off, read_off, true},
+      {"ply", "PLY", {".ply"}, [](std::string_view b) { return starts_with(b, "ply\n") || starts_with(b, "ply\r"); }, never,
+       read_ply, true},
+      {"stl", "STL", {".stl"}, is_binary_stl, is_ascii_stl, read_stl, true},
+      {"gltf", "glTF", {".gltf", ".glb"}, [](std::string_view b) { return starts_with(b, "glTF"); }, is_gltf_json, read_gltf,
+       false},
+      {"3mf", "3MF", {".3mf"}, [](std::string_view b) { return is_zip(b) && has_model_part(b); }, never, read_3mf, false},
+  };
+  return formats;
+}
+
+const MeshFormat* mesh_format_by_id(std::string_view id) {
+  for (const MeshFormat& f : mesh_formats())
+    if (f.id == id) return &f;
+  return nullptr;
+}
+
+namespace {
+// "a, b or c"
+std::string listed(const std::vector<std::string_view>& items) {
+  std::string s;
+  for (size_t i = 0; i < items.size(); ++i) s += std::string(i == 0 ? "" : i + 1 == items.size() ? " or " : ", ") + std::string(items[i]);
+  return s;
+}
+}  // namespace
+
+std::string mesh_format_names() {
+  std::vector<std::string_view> names;
+  for (const MeshFormat& f : mesh_formats()) names.push_back(f.name);
+  return listed(names);
+}
+
+std::string mesh_format_extensions(bool repair_writes_only) {
+  std::vector<std::string_view> extensions;
+  for (const MeshFormat& f : mesh_formats())
+    if (f.repair_writes || !repair_writes_only) extensions.insert(extensions.end(), f.extensions.begin(), f.extensions.end());
+  return listed(extensions);
+}
 
 std::string detect_mesh_format(std::string_view bytes) {
   if (starts_with(bytes, "\xef\xbb\xbf")) bytes.remove_prefix(3);  // a UTF-8 byte-order mark
-  if (starts_with(bytes, "ply\n") || starts_with(bytes, "ply\r")) return "ply";
-  if (starts_with(bytes, "glTF")) return "gltf";  // GLB's magic
-  if (is_zip(bytes) && has_model_part(bytes)) return "3mf";
-  if (is_binary_stl(bytes)) return "stl";
+  for (const MeshFormat& f : mesh_formats())
+    if (f.has_signature(bytes)) return std::string(f.id);
   const std::string_view head = bytes.substr(0, kSniffBytes);
   if (!looks_like_text(head)) return "";
-  if (is_gltf_json(head)) return "gltf";
-  if (is_off(head)) return "off";
-  if (is_ascii_stl(head)) return "stl";
-  if (is_obj(head)) return "obj";
+  for (const MeshFormat& f : mesh_formats())
+    if (f.has_text(head)) return std::string(f.id);
   return "";
 }
 
@@ -146,8 +186,9 @@ std::string detect_mesh_format_of_file(const std::string& path) {
 std::string mesh_format_of(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl" || ext == ".3mf") return ext.substr(1);
-  if (ext == ".gltf" || ext == ".glb") return "gltf";
+  for (const MeshFormat& f : mesh_formats())
+    for (const std::string_view e : f.extensions)
+      if (e == ext) return std::string(f.id);
   return "";
 }
 

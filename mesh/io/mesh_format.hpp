@@ -6,20 +6,48 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
+
+#include "mesh/io/polygon_soup.hpp"
 
 namespace umbra {
 
-// "obj", "off", "ply", "stl", "gltf" (JSON or GLB) or "3mf" when `bytes` (a
-// whole file) plainly are one;
-// "" when they are not, or are too broken to say.
+// One row per format umbra reads. Detection, the readers' dispatch, the
+// usage and error texts, --repair's outputs, the fuzzers' format byte and
+// the tests all iterate this table: adding a format is a reader, a row, a
+// test and the docs (docs/design.md).
+struct MeshFormat {
+  std::string_view id;                       // "obj": what detect_mesh_format returns
+  std::string_view name;                     // "OBJ", as messages list it
+  std::vector<std::string_view> extensions;  // lower case, dot first: the name's fallback
+  // Plainly this format by a signature that binary data can carry (a magic
+  // number, a size); tried for every row before any text test.
+  bool (*has_signature)(std::string_view bytes);
+  // Plainly this format as text: the file's first 64 KiB, known to be text.
+  bool (*has_text)(std::string_view head);
+  PolygonSoup (*read)(std::string_view bytes, const std::string& path);
+  bool repair_writes;  // --repair can write it
+};
+
+// Every format, in the order messages list them and the fuzzers number them.
+const std::vector<MeshFormat>& mesh_formats();
+// The row with this id; nullptr for none.
+const MeshFormat* mesh_format_by_id(std::string_view id);
+// "OBJ, OFF, PLY, STL, glTF or 3MF": the names of every format.
+std::string mesh_format_names();
+// ".obj, .off, .ply, .stl, .gltf, .glb or .3mf": every extension, or those
+// of the formats --repair writes.
+std::string mesh_format_extensions(bool repair_writes_only = false);
+
+// The id of the format `bytes` (a whole file) plainly are, by signature
+// first, then as text; "" when they are none, or too broken to say.
 std::string detect_mesh_format(std::string_view bytes);
 
 // The same for the file at `path`, read by memory mapping; "" too when it
 // cannot be read (whoever reads it next says why).
 std::string detect_mesh_format_of_file(const std::string& path);
 
-// "obj", "off", "ply", "stl", "3mf" for a path with one of those extensions
-// (any case), "gltf" for .gltf and .glb, or "" for any other.
+// The id of the format whose extension `path` has (any case), or "".
 std::string mesh_format_of(const std::string& path);
 
 // What `bytes` are when they are plainly some other format (UTF-16 text, a zip

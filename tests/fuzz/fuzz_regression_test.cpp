@@ -3,13 +3,16 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <optional>
 #include <fstream>
 #include <iterator>
 #include <string>
 #include <vector>
 
+#include "fuzz/format_byte.hpp"
 #include "fuzz/fuzz_entries.hpp"
 #include "mesh/io/mesh_file.hpp"
+#include "mesh/io/mesh_format.hpp"
 
 namespace umbra {
 namespace {
@@ -49,14 +52,14 @@ TEST(FuzzRegressions, MeshInputsReturnNormally) {
   std::vector<std::vector<uint8_t>> inputs;
   for (const fs::path& p : files_in(kSource / "fuzz/regressions/mesh")) inputs.push_back(bytes_of(p));
   // The seeds as the fuzzer sees them: the format's byte, then the file.
-  static const std::string formats[] = {"obj", "off", "ply", "stl", "gltf", "3mf"};
   std::vector<fs::path> seeds = files_in(kSource / "scenes/meshes");
   for (const fs::path& p : files_in(kSource / "fuzz/seeds/mesh")) seeds.push_back(p);
   for (const fs::path& p : seeds) {
-    const std::string format = mesh_format_of(p.string());
-    if (format.empty()) continue;
+    const std::optional<uint8_t> byte = fuzz::mesh_format_byte_of(p.string());
+    if (!byte) continue;
+    EXPECT_EQ(mesh_format_of(fuzz::mesh_format_name_of_byte(*byte)), mesh_format_of(p.string()));
     std::vector<uint8_t> bytes = bytes_of(p);
-    bytes.insert(bytes.begin(), uint8_t(std::find(std::begin(formats), std::end(formats), format) - std::begin(formats)));
+    bytes.insert(bytes.begin(), *byte);
     inputs.push_back(bytes);
   }
   ASSERT_GE(inputs.size(), 7u);
