@@ -5,23 +5,34 @@
 namespace umbra {
 namespace {
 
-// Every method once: its name on the command line and how it shadows, as
-// --explain says.
+// Every method once: its name on the command line, how it shadows (as
+// --explain says), and its line in the commands' --help.
 struct MethodRow {
   RenderMethod method;
   const char* name;
   const char* technique;
-  bool counts_volumes;  // in the stencil, z-pass or z-fail
-  bool interactive;     // umbra view draws it, and its m key cycles to it
+  ShadowPass pass;
+  bool interactive;  // umbra view draws it, and its m key cycles to it
+  const char* help;
 };
 constexpr MethodRow kMethods[] = {
-    {RenderMethod::kAuto, "auto", "two-sided stencil with wrapping, z-pass or z-fail per light", true, true},
-    {RenderMethod::kZFail, "zfail", "two-sided stencil with wrapping, capped z-fail for every light", true, true},
-    {RenderMethod::kZPass, "zpass", "two-sided stencil with wrapping, uncapped z-pass for every light", true, true},
-    {RenderMethod::kTriangles, "triangles", "two-sided stencil with wrapping, capped z-fail, a volume per mesh triangle", true, true},
-    {RenderMethod::kShadowMap, "shadowmap", "no stencil: a cube map of distances from each light", false, true},
-    {RenderMethod::kPlanar, "planar", "no stencil: casters projected onto the triangles' planes", false, true},
-    {RenderMethod::kRaycast, "raycast", "no GL: exact shadow rays on the CPU", false, false},
+    {RenderMethod::kAuto, "auto", "two-sided stencil with wrapping, z-pass or z-fail per light", ShadowPass::kStencilVolumes, true,
+     "shadow volumes; per light z-pass without caps where the near plane is outside every volume, capped z-fail "
+     "elsewhere; casters whose volumes cannot reach the view are left out"},
+    {RenderMethod::kZFail, "zfail", "two-sided stencil with wrapping, capped z-fail for every light", ShadowPass::kStencilVolumes, true,
+     "capped z-fail for every light (Everitt and Kilgard 2002)"},
+    {RenderMethod::kZPass, "zpass", "two-sided stencil with wrapping, uncapped z-pass for every light", ShadowPass::kStencilVolumes, true,
+     "uncapped z-pass for every light (Heidmann 1991); wrong where the near plane is in a volume"},
+    {RenderMethod::kTriangles, "triangles", "two-sided stencil with wrapping, capped z-fail, a volume per mesh triangle", ShadowPass::kStencilVolumes,
+     true,
+     "z-fail, every mesh cast per triangle (the slow reference) rather than from its silhouette or by edge multiplicity"},
+    {RenderMethod::kShadowMap, "shadowmap", "no stencil: a cube map of distances from each light", ShadowPass::kShadowMap, true,
+     "a cube shadow map per light (Williams 1978), --map-size texels a side; no volumes"},
+    {RenderMethod::kPlanar, "planar", "no stencil: casters projected onto the triangles' planes", ShadowPass::kPlanar, true,
+     "every caster projected onto the planes of the scene's triangles (Blinn 1988); spheres and meshes receive no "
+     "shadow, which --explain says"},
+    {RenderMethod::kRaycast, "raycast", "no GL: exact shadow rays on the CPU", ShadowPass::kRayCast, false,
+     "the CPU reference: exact shadow rays (Appel 1968, Whitted 1980), true spheres (no GL, no N-gon)"},
 };
 
 const MethodRow& row_of(RenderMethod method) {
@@ -36,7 +47,9 @@ const char* method_name(RenderMethod method) { return row_of(method).name; }
 
 const char* method_technique(RenderMethod method) { return row_of(method).technique; }
 
-bool counts_volumes(RenderMethod method) { return row_of(method).counts_volumes; }
+ShadowPass method_pass(RenderMethod method) { return row_of(method).pass; }
+
+bool counts_volumes(RenderMethod method) { return method_pass(method) == ShadowPass::kStencilVolumes; }
 
 bool is_interactive(RenderMethod method) { return row_of(method).interactive; }
 
@@ -52,6 +65,14 @@ std::optional<RenderMethod> method_from_name(const std::string& name) {
   for (const MethodRow& row : kMethods)
     if (name == row.name) return row.method;
   return std::nullopt;
+}
+
+std::string method_help(RenderMethod method) { return row_of(method).help; }
+
+std::vector<RenderMethod> all_methods() {
+  std::vector<RenderMethod> methods;
+  for (const MethodRow& row : kMethods) methods.push_back(row.method);
+  return methods;
 }
 
 std::string method_names() {

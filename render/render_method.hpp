@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace umbra {
 
@@ -17,15 +18,29 @@ enum class RenderMethod {
   kRaycast,    // the CPU reference: exact shadow rays (Appel 1968, Whitted 1980)
 };
 
+// The pass that draws a method's shadows: one ShadowTechnique each
+// (shadow_technique.hpp), but for the CPU reference, which draws no GL frame.
+enum class ShadowPass {
+  kStencilVolumes,  // auto, zfail, zpass, triangles: the plan says how each light counts
+  kShadowMap,
+  kPlanar,
+  kRayCast,
+};
+
 const char* method_name(RenderMethod method);
+ShadowPass method_pass(RenderMethod method);
 // How it shadows, in a phrase: "no stencil: a cube map of distances from each light".
 const char* method_technique(RenderMethod method);
-// It counts shadow volumes in the stencil (z-pass or z-fail).
+// It counts shadow volumes in the stencil (z-pass or z-fail): its pass is kStencilVolumes.
 bool counts_volumes(RenderMethod method);
 // umbra view draws it; the next such method in the table's order, after the last the first.
 bool is_interactive(RenderMethod method);
 RenderMethod next_interactive_method(RenderMethod method);
 std::optional<RenderMethod> method_from_name(const std::string& name);
+// What it does, in a sentence or two for --help.
+std::string method_help(RenderMethod method);
+// Every method, in the table's order.
+std::vector<RenderMethod> all_methods();
 // "auto|zfail|zpass|triangles|shadowmap|planar|raycast", for usage text and errors.
 std::string method_names();
 

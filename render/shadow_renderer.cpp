@@ -16,8 +16,7 @@ ShadowRenderer::~ShadowRenderer() = default;
 
 ShadowTechnique& ShadowRenderer::technique() {
   const RenderMethod method = plan_.settings.method;
-  const auto kind = [](RenderMethod m) { return m == RenderMethod::kShadowMap ? 1 : m == RenderMethod::kPlanar ? 2 : 0; };
-  if (!technique_ || kind(method) != kind(technique_method_)) technique_ = make_shadow_technique(method, *drawing_);
+  if (!technique_ || method_pass(method) != method_pass(technique_method_)) technique_ = make_shadow_technique(method, *drawing_);
   technique_method_ = method;
   return *technique_;
 }

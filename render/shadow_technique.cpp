@@ -9,16 +9,17 @@
 namespace umbra {
 
 std::unique_ptr<ShadowTechnique> make_shadow_technique(RenderMethod method, FrameDrawing& drawing) {
-  switch (method) {
-    case RenderMethod::kShadowMap:
-      return std::make_unique<ShadowMapShadows>(drawing);
-    case RenderMethod::kPlanar:
-      return std::make_unique<PlanarShadows>(drawing);
-    case RenderMethod::kRaycast:
-      throw std::logic_error("the ray-cast reference draws no GL frame");
-    default:  // auto, zfail, zpass, triangles: the plan says how each light counts
+  switch (method_pass(method)) {
+    case ShadowPass::kStencilVolumes:
       return std::make_unique<StencilVolumeShadows>(drawing);
+    case ShadowPass::kShadowMap:
+      return std::make_unique<ShadowMapShadows>(drawing);
+    case ShadowPass::kPlanar:
+      return std::make_unique<PlanarShadows>(drawing);
+    case ShadowPass::kRayCast:
+      break;
   }
+  throw std::logic_error("the ray-cast reference draws no GL frame");
 }
 
 }  // namespace umbra

@@ -20,7 +20,7 @@
 
 namespace umbra {
 
-const char* const kBenchUsage =
+const std::string kBenchUsage = usage_text(
     R"(usage: umbra bench [SCENES...] [options]
 
 Shows what accuracy costs in time. For each scene, method and sphere N, it
@@ -55,7 +55,7 @@ options:
 A bad scene is reported as FILE:LINE:COL: message before anything is
 measured; nothing is written and the exit status is 1. A usage error exits
 with 2.
-)";
+)");
 
 namespace {
 

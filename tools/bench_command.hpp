@@ -6,7 +6,7 @@
 
 namespace umbra {
 
-extern const char* const kBenchUsage;
+extern const std::string kBenchUsage;
 int run_bench_command(const std::vector<std::string>& argv);
 
 }  // namespace umbra

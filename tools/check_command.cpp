@@ -19,6 +19,7 @@
 #include "mesh/input_error.hpp"
 #include "mesh/check/mesh_check.hpp"
 #include "mesh/io/mesh_file.hpp"
+#include "mesh/io/mesh_format.hpp"
 #include "mesh/check/mesh_repair.hpp"
 #include "tools/command_line.hpp"
 #include "tools/mesh_paths.hpp"
@@ -26,11 +27,11 @@
 
 namespace umbra {
 
-const char* const kCheckUsage =
+const std::string kCheckUsage = usage_text(
     R"(usage: umbra check PATH... [--json] [--jobs N] [--shard K/N] [--time-limit SEC]
        umbra check MESH --repair OUT
 
-Checks that each mesh (OBJ, OFF, PLY, STL, glTF or 3MF, told by its
+Checks that each mesh ({mesh formats}, told by its
 content) is a closed, consistently oriented 2-manifold without
 self-intersections, which is what casting a shadow from silhouette edges
 needs, and says exactly why not: border edges and holes, non-manifold
@@ -40,7 +41,7 @@ the file (counting from 0) and line. Exporters' quirks that are read anyway
 (docs/check.md) come as warnings.
 
 A PATH is a mesh file or a folder, searched recursively for mesh files (by
-content, or by a .obj, .off, .ply, .stl, .gltf, .glb or .3mf name), each
+content, or by a {mesh extensions} name), each
 folder's files in sorted order. Reports come in the order of the list, each
 as soon as it and those before it are done; with more than one mesh, a
 summary line follows on stderr.
@@ -55,8 +56,8 @@ options:
                     of the list: N machines with K = 0 ... N-1 check it all,
                     and their outputs, concatenated in order of K, are this
                     command's output without --shard (docs/batch-checks.md)
-  --repair OUT      (one MESH only) write a repaired copy to OUT (OBJ, OFF,
-                    PLY or STL by its extension): merge repeated vertices,
+  --repair OUT      (one MESH only) write a repaired copy to OUT, a
+                    {repair extensions} file: merge repeated vertices,
                     drop degenerate and duplicate faces, stitch borders,
                     orient consistently and outward; then check OUT and say
                     what changed and what is still wrong. Never writes MESH.
@@ -67,7 +68,7 @@ options:
 exit status: 0 every mesh is a closed 2-manifold; 1 one is not (after the
 repair, with --repair); 2 one could not be read (every other mesh is still
 reported), the repaired mesh could not be written, or a usage error.
-)";
+)");
 
 namespace {
 
@@ -101,7 +102,7 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
     if (o.meshes.size() != 1 || std::filesystem::is_directory(o.meshes[0])) throw UsageError("--repair takes one mesh file at a time");
     if (o.shard) throw UsageError("--repair checks one mesh: --shard does not apply");
     if (!repair_can_write(*o.repair_output))
-      throw UsageError("--repair needs an output ending in .obj, .off, .ply or .stl, got \"" + *o.repair_output + "\"");
+      throw UsageError("--repair needs an output ending in " + mesh_format_extensions(true) + ", got \"" + *o.repair_output + "\"");
     std::error_code ec;
     if (*o.repair_output == o.meshes[0] || std::filesystem::equivalent(*o.repair_output, o.meshes[0], ec))
       throw UsageError("--repair would overwrite its input \"" + o.meshes[0] + "\"; name another file");

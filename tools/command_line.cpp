@@ -6,7 +6,59 @@
 
 #include <CLI/CLI.hpp>
 
+#include "mesh/io/mesh_format.hpp"
+
 namespace umbra {
+namespace {
+
+// `words` wrapped to lines of at most `width` columns, every line after the
+// first indented by `indent` spaces.
+std::string wrapped(const std::string& words, size_t first_column, size_t indent, size_t width) {
+  std::string out;
+  size_t column = first_column;
+  for (size_t at = 0; at < words.size();) {
+    const size_t end = std::min(words.find(' ', at), words.size());
+    const std::string word = words.substr(at, end - at);
+    if (column > first_column && column + 1 + word.size() > width) {
+      out += "\n" + std::string(indent, ' ');
+      column = indent;
+    } else if (column > first_column) {
+      out += ' ';
+      ++column;
+    }
+    out += word;
+    column += word.size();
+    at = end + 1;
+  }
+  return out;
+}
+
+void replace_all(std::string& text, const std::string& from, const std::string& to) {
+  for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) text.replace(at, from.size(), to);
+}
+
+}  // namespace
+
+std::string usage_text(std::string text) {
+  constexpr size_t kNameColumn = 26, kHelpColumn = 37, kWidth = 79;
+  std::string methods;
+  std::vector<std::string> interactive;
+  for (const RenderMethod m : all_methods()) {
+    std::string name = method_name(m);
+    if (is_interactive(m)) interactive.push_back(name);
+    name.resize(kHelpColumn - kNameColumn, ' ');
+    methods += std::string(kNameColumn, ' ') + name + wrapped(method_help(m), kHelpColumn, kHelpColumn, kWidth) + "\n";
+  }
+  std::string interactive_list;
+  for (size_t i = 0; i < interactive.size(); ++i)
+    interactive_list += (i == 0 ? "" : i + 1 == interactive.size() ? " or " : ", ") + interactive[i];
+  replace_all(text, "{methods}\n", methods);
+  replace_all(text, "{interactive methods}", interactive_list);
+  replace_all(text, "{mesh formats}", mesh_format_names());
+  replace_all(text, "{mesh extensions}", mesh_format_extensions());
+  replace_all(text, "{repair extensions}", mesh_format_extensions(true));
+  return text;
+}
 
 CommandOptions::CommandOptions() : app_(std::make_unique<CLI::App>()) {
   app_->set_help_flag();        // umbra prints its own help text

@@ -50,11 +50,18 @@ class CommandOptions {
   std::vector<std::string> value_names_;  // to say "--size needs a value"
 };
 
+// A command's --help text with the lists that live in tables filled in:
+// {mesh formats} ("OBJ, OFF, PLY, STL, glTF or 3MF"), {mesh extensions},
+// {repair extensions}, {interactive methods} ("auto, zfail, ... or planar")
+// and {methods} (each method's name and help, one wrapped entry each, in
+// --method's column of umbra render --help).
+std::string usage_text(std::string text);
+
 // Runs `parse` over a command's arguments. On a usage error prints it with a
 // hint to --help and returns 2; when the options ask for help prints `usage`
 // and returns 0; otherwise returns nothing and the command goes on.
 template <typename Options, typename Parse>
-std::optional<int> parse_command_line(const char* command, const char* usage, const std::vector<std::string>& argv,
+std::optional<int> parse_command_line(const char* command, const std::string& usage, const std::vector<std::string>& argv,
                                       Parse parse, Options& options) {
   try {
     options = parse(argv);

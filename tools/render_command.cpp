@@ -20,7 +20,7 @@
 
 namespace umbra {
 
-const char* const kRenderUsage =
+const std::string kRenderUsage = usage_text(
     R"(usage: umbra render SCENE -o OUT.png [options]
        umbra render MESH -o OUT.png [options]
 
@@ -28,7 +28,7 @@ Renders SCENE headless (OSMesa) with exact hard shadows from stencil shadow
 volumes (Crow 1977; Heidmann 1991) and writes OUT.png. The sources cited
 here are listed in docs/references.md.
 
-A mesh file (OBJ, OFF, PLY, STL, glTF or 3MF, told by its content) is shown
+A mesh file ({mesh formats}, told by its content) is shown
 on its own: fitted into the cube [-1,1]^3 over a floor, lit by one light;
 --explain prints that scene as text to save and edit.
 
@@ -39,29 +39,7 @@ options:
   --segments N          sides of the N-gon that stands for a sphere's tangent
                         circle in its shadow volume (default 64, 3 to 4096)
   --method M            how shadows are made (default auto):
-                          auto       shadow volumes; per light z-pass without
-                                     caps where the near plane is outside every
-                                     volume, capped z-fail elsewhere; casters
-                                     whose volumes cannot reach the view are
-                                     left out
-                          zfail      capped z-fail for every light (Everitt
-                                     and Kilgard 2002)
-                          zpass      uncapped z-pass for every light
-                                     (Heidmann 1991); wrong where the near
-                                     plane is in a volume
-                          triangles  z-fail, every mesh cast per triangle
-                                     (the slow reference) rather than from
-                                     its silhouette or by edge multiplicity
-                          shadowmap  a cube shadow map per light (Williams
-                                     1978), --map-size texels a side; no
-                                     volumes
-                          planar     every caster projected onto the planes
-                                     of the scene's triangles (Blinn 1988);
-                                     spheres and meshes receive no shadow,
-                                     which --explain says
-                          raycast    the CPU reference: exact shadow rays
-                                     (Appel 1968, Whitted 1980), true
-                                     spheres (no GL, no N-gon)
+{methods}
   --map-size N          texels along a side of each shadow map cube face
                         (default 1024, 16 to 8192; for --method shadowmap)
   --show-volumes        draw the shadow volumes translucently over the image
@@ -75,7 +53,7 @@ options:
 
 Errors in SCENE are printed as FILE:LINE:COL: message; nothing is written
 and the exit status is 1. A usage error exits with 2.
-)";
+)");
 
 namespace {
 

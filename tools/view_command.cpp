@@ -26,7 +26,7 @@
 
 namespace umbra {
 
-const char* const kViewUsage =
+const std::string kViewUsage = usage_text(
     R"(usage: umbra view SCENE [options]
        umbra view MESH [options]
 
@@ -42,7 +42,7 @@ keys:
   up, down      double or halve the light's speed
   v             show or hide the shadow volumes
   ] and [       double or halve the sphere segments N (3 to 4096)
-  m             switch method: auto, zfail, zpass, triangles, shadowmap, planar
+  m             switch method: {interactive methods}
                 (see umbra render --help)
   r             return to the scene's camera
   s             return to the default view (eye (0, 0, 3.4), looking down -z)
@@ -53,7 +53,7 @@ mouse: drag to orbit the camera around its target, scroll to zoom
 
 options:
   --size WxH           window size (default 800x800)
-  --method M           auto (default), zfail, zpass, triangles, shadowmap or planar
+  --method M           {interactive methods} (default auto)
   --map-size N         shadow map texels a side (default 1024)
   --light-angle DEG    start with the lights rotated by DEG (default 0)
   --speed DEG          degrees per second the light turns (default 30)
@@ -65,7 +65,7 @@ options:
                        the overlay, so that it is the headless render's frame)
   --overlay-in-screenshot  include the overlay in the screenshot
   -h, --help           show this help
-)";
+)");
 
 namespace {
 

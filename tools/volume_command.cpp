@@ -13,7 +13,7 @@
 
 namespace umbra {
 
-const char* const kVolumeUsage =
+const std::string kVolumeUsage = usage_text(
     R"(usage: umbra volume SCENE -o OUT.obj [options]
 
 Writes the shadow volumes of one light as an OBJ file, to look at in any mesh
@@ -29,7 +29,7 @@ options:
   --segments N          sides of a sphere's tangent-circle N-gon (default 64)
   --far D               distance of the far vertices beyond the caster (default 3)
   -h, --help            show this help
-)";
+)");
 
 namespace {
 
