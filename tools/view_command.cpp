@@ -32,9 +32,9 @@ const std::string kViewUsage = usage_text(
 
 Opens SCENE in a window and renders it as `umbra render` does, with the light
 orbiting the z axis. A mesh file is staged on its own as `umbra render MESH`
-stages it. The scene (or mesh) is reloaded when its file changes; an error keeps the last good scene and shows in the window and
-on the terminal. An overlay shows the method, the frame time, the volume
-sizes and the keys.
+stages it. The scene (or mesh) is reloaded when its file changes; an error
+keeps the last good scene and shows in the window and on the terminal. An
+overlay shows the method, the frame time, the volume sizes and the keys.
 
 keys:
   space         pause or resume the light
@@ -42,7 +42,8 @@ keys:
   up, down      double or halve the light's speed
   v             show or hide the shadow volumes
   ] and [       double or halve the sphere segments N (3 to 4096)
-  m             switch method: {interactive methods}
+  m             switch method:
+                {interactive methods}
                 (see umbra render --help)
   r             return to the scene's camera
   s             return to the default view (eye (0, 0, 3.4), looking down -z)
@@ -53,7 +54,8 @@ mouse: drag to orbit the camera around its target, scroll to zoom
 
 options:
   --size WxH           window size (default 800x800)
-  --method M           {interactive methods} (default auto)
+  --method M           {interactive methods}
+                       (default auto)
   --map-size N         shadow map texels a side (default 1024)
   --light-angle DEG    start with the lights rotated by DEG (default 0)
   --speed DEG          degrees per second the light turns (default 30)

@@ -104,7 +104,8 @@ TEST_F(ViewCommand, UsageErrors) {
   const CommandResult help = run("view --help");
   EXPECT_EQ(help.status, 0);
   EXPECT_NE(help.out.find("  v             show or hide the shadow volumes\n"), std::string::npos);
-  EXPECT_NE(help.out.find("  m             switch method: auto, zfail, zpass, triangles, shadowmap or planar\n"), std::string::npos);
+  EXPECT_NE(help.out.find("  m             switch method:\n                auto, zfail, zpass, triangles, shadowmap or planar\n"),
+            std::string::npos);
 }
 
 }  // namespace
