@@ -103,7 +103,7 @@ void find_duplicates(const PolygonSoup& soup, size_t vertex_count, FaceClasses& 
 
 }  // namespace
 
-FaceClasses classify_faces(const PolygonSoup& soup, std::vector<uint32_t> corners, const std::vector<glm::dvec3>& positions) {
+FaceClasses classify_file_faces(const PolygonSoup& soup, std::vector<uint32_t> corners, const std::vector<glm::dvec3>& positions) {
   const size_t face_count = soup.polygon_count();
   FaceClasses faces;
   faces.corners = std::move(corners);

@@ -23,6 +23,6 @@ struct FaceClasses {
 
 // `corners` is soup.corners mapped to merged vertices, whose positions are
 // `positions`; duplicates are found whatever their rotation or orientation.
-FaceClasses classify_faces(const PolygonSoup& soup, std::vector<uint32_t> corners, const std::vector<glm::dvec3>& positions);
+FaceClasses classify_file_faces(const PolygonSoup& soup, std::vector<uint32_t> corners, const std::vector<glm::dvec3>& positions);
 
 }  // namespace umbra

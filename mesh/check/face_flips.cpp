@@ -2,8 +2,6 @@
 
 #include <utility>
 
-#include "mesh/check/polygon_triangulation.hpp"
-
 namespace umbra {
 
 std::vector<uint8_t> faces_to_flip(const FaceClasses& faces, ParityUnionFind& flips, const std::vector<uint32_t>& component_of,
@@ -27,22 +25,6 @@ std::vector<uint8_t> faces_to_flip(const FaceClasses& faces, ParityUnionFind& fl
     flip[f] = parity_of[f] != keep;
   }
   return flip;
-}
-
-FaceTriangles triangulate_faces(const PolygonSoup& soup, const FaceClasses& faces, const std::vector<glm::dvec3>& positions) {
-  FaceTriangles out;
-  size_t count = 0;  // a polygon of n corners makes n - 2 triangles
-  for (uint32_t f = 0; f < soup.polygon_count(); ++f)
-    if (faces.in_topology(f)) count += soup.corner_count(f) - 2;
-  out.triangles.reserve(count);
-  out.face.reserve(count);
-  for (uint32_t f = 0; f < soup.polygon_count(); ++f) {
-    if (!faces.in_topology(f)) continue;
-    const size_t first = out.triangles.size();
-    triangulate_polygon(positions, faces.corners.data() + soup.polygon_starts[f], soup.corner_count(f), out.triangles);
-    out.face.insert(out.face.end(), out.triangles.size() - first, f);
-  }
-  return out;
 }
 
 void turn_flipped(FaceTriangles& triangles, const std::vector<uint8_t>& flip) {

@@ -12,6 +12,7 @@
 #include "mesh/check/face_classes.hpp"
 #include "mesh/check/face_flips.hpp"
 #include "mesh/check/point_merging.hpp"
+#include "mesh/check/polygon_triangulation.hpp"
 #include "mesh/check/revisiting_polygons.hpp"
 #include "mesh/check/self_intersections.hpp"
 #include "mesh/check/solid_orientation.hpp"
@@ -148,7 +149,7 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   std::optional<EdgeTable> face_edges;  // for the triangles' topology, when asked and all faces are triangles
   bool has_polygons = false;            // faces in the topology with more than three corners
   {
-    const FaceClasses faces = classify_faces(soup, std::move(corners), merged.positions);
+    const FaceClasses faces = classify_file_faces(soup, std::move(corners), merged.positions);
     triangles = triangulate_faces(soup, faces, merged.positions);
     if (searched) {
       search.run([&] {

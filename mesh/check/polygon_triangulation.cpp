@@ -88,4 +88,20 @@ void triangulate_polygon(const std::vector<glm::dvec3>& positions, const uint32_
   triangles.push_back({corners[remaining[0]], corners[remaining[1]], corners[remaining[2]]});
 }
 
+FaceTriangles triangulate_faces(const PolygonSoup& soup, const FaceClasses& faces, const std::vector<glm::dvec3>& positions) {
+  FaceTriangles out;
+  size_t count = 0;  // a polygon of n corners makes n - 2 triangles
+  for (uint32_t f = 0; f < soup.polygon_count(); ++f)
+    if (faces.in_topology(f)) count += soup.corner_count(f) - 2;
+  out.triangles.reserve(count);
+  out.face.reserve(count);
+  for (uint32_t f = 0; f < soup.polygon_count(); ++f) {
+    if (!faces.in_topology(f)) continue;
+    const size_t first = out.triangles.size();
+    triangulate_polygon(positions, faces.corners.data() + soup.polygon_starts[f], soup.corner_count(f), out.triangles);
+    out.face.insert(out.face.end(), out.triangles.size() - first, f);
+  }
+  return out;
+}
+
 }  // namespace umbra

@@ -22,7 +22,7 @@ namespace {
 
 using namespace umbra::test;
 
-FaceClasses classes_of(const PolygonSoup& soup) { return classify_faces(soup, soup.corners, soup.points); }
+FaceClasses classes_of(const PolygonSoup& soup) { return classify_file_faces(soup, soup.corners, soup.points); }
 
 TEST(CheckStages, ClassifyFacesFindsRepeatsCollinearCornersAndCopiesInAnyRotation) {
   // 0: a triangle; 1: it rotated and reversed; 2: a repeated corner; 3: three points on a line.
