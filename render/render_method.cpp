@@ -13,26 +13,29 @@ struct MethodRow {
   const char* technique;
   ShadowPass pass;
   bool interactive;  // umbra view draws it, and its m key cycles to it
+  BenchSweep bench;
   const char* help;
 };
 constexpr MethodRow kMethods[] = {
     {RenderMethod::kAuto, "auto", "two-sided stencil with wrapping, z-pass or z-fail per light", ShadowPass::kStencilVolumes, true,
+     BenchSweep::kSphereSegments,
      "shadow volumes; per light z-pass without caps where the near plane is outside every volume, capped z-fail "
      "elsewhere; casters whose volumes cannot reach the view are left out"},
     {RenderMethod::kZFail, "zfail", "two-sided stencil with wrapping, capped z-fail for every light", ShadowPass::kStencilVolumes, true,
-     "capped z-fail for every light (Everitt and Kilgard 2002)"},
+     BenchSweep::kSphereSegments, "capped z-fail for every light (Everitt and Kilgard 2002)"},
     {RenderMethod::kZPass, "zpass", "two-sided stencil with wrapping, uncapped z-pass for every light", ShadowPass::kStencilVolumes, true,
-     "uncapped z-pass for every light (Heidmann 1991); wrong where the near plane is in a volume"},
+     BenchSweep::kSphereSegments, "uncapped z-pass for every light (Heidmann 1991); wrong where the near plane is in a volume"},
     {RenderMethod::kTriangles, "triangles", "two-sided stencil with wrapping, capped z-fail, a volume per mesh triangle", ShadowPass::kStencilVolumes,
-     true,
+     true, BenchSweep::kSegmentsWithMeshes,
      "z-fail, every mesh cast per triangle (the slow reference) rather than from its silhouette or by edge multiplicity"},
     {RenderMethod::kShadowMap, "shadowmap", "no stencil: a cube map of distances from each light", ShadowPass::kShadowMap, true,
-     "a cube shadow map per light (Williams 1978), --map-size texels a side; no volumes"},
+     BenchSweep::kMapSizes, "a cube shadow map per light (Williams 1978), --map-size texels a side; no volumes"},
     {RenderMethod::kPlanar, "planar", "no stencil: casters projected onto the triangles' planes", ShadowPass::kPlanar, true,
+     BenchSweep::kSphereSegments,
      "every caster projected onto the planes of the scene's triangles (Blinn 1988); spheres and meshes receive no "
      "shadow, which --explain says"},
     {RenderMethod::kRaycast, "raycast", "no GL: exact shadow rays on the CPU", ShadowPass::kRayCast, false,
-     "the CPU reference: exact shadow rays (Appel 1968, Whitted 1980), true spheres (no GL, no N-gon)"},
+     BenchSweep::kReference, "the CPU reference: exact shadow rays (Appel 1968, Whitted 1980), true spheres (no GL, no N-gon)"},
 };
 
 const MethodRow& row_of(RenderMethod method) {
@@ -48,6 +51,8 @@ const char* method_name(RenderMethod method) { return row_of(method).name; }
 const char* method_technique(RenderMethod method) { return row_of(method).technique; }
 
 ShadowPass method_pass(RenderMethod method) { return row_of(method).pass; }
+
+BenchSweep method_bench_sweep(RenderMethod method) { return row_of(method).bench; }
 
 bool counts_volumes(RenderMethod method) { return method_pass(method) == ShadowPass::kStencilVolumes; }
 

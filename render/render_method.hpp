@@ -27,7 +27,13 @@ enum class ShadowPass {
   kRayCast,
 };
 
+// How umbra bench sweeps a method: at each sphere N (--segments), at each N
+// but only in scenes with meshes, at each shadow map size (--map-sizes), or
+// once, as the reference every other method is measured against.
+enum class BenchSweep { kSphereSegments, kSegmentsWithMeshes, kMapSizes, kReference };
+
 const char* method_name(RenderMethod method);
+BenchSweep method_bench_sweep(RenderMethod method);
 ShadowPass method_pass(RenderMethod method);
 // How it shadows, in a phrase: "no stencil: a cube map of distances from each light".
 const char* method_technique(RenderMethod method);

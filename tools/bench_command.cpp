@@ -7,8 +7,8 @@
 #include <optional>
 #include <tuple>
 
-#include "mesh/scene/scene_checks.hpp"
-#include "mesh/scene/scene_parser.hpp"
+#include "scene/scene_checks.hpp"
+#include "scene/scene_parser.hpp"
 #include "render/headless_context.hpp"
 #include "image/mask_error.hpp"
 #include "reference/ray_cast_render.hpp"
@@ -34,10 +34,10 @@ progress bar on stderr.
 
 With no SCENES, every scenes/*.scene under the current folder.
 
-methods (see umbra render --help): zfail, zpass, auto and planar at each N;
-triangles (scenes with meshes only); shadowmap at each map size; and
-raycast, the reference itself (labelled "reference": it has no error of its own). A method whose
-first frame takes over 250 ms is timed over 3 frames after that one.
+Methods, measured in the order umbra render --help lists them:
+{bench methods}.
+The reference is labelled "reference": it has no error of its own. A method
+whose first frame takes over 250 ms is timed over 3 frames after that one.
 
 options:
   --size WxH          image size (default 400x400)
@@ -146,15 +146,23 @@ struct Measurement {
 std::vector<Measurement> measurements_for(const Scene& scene, const BenchOptions& o) {
   const std::vector<int>& segments = o.segments;
   std::vector<Measurement> list;
-  std::vector<RenderMethod> methods = {RenderMethod::kZFail, RenderMethod::kZPass, RenderMethod::kAuto,
-                                      RenderMethod::kPlanar};
-  if (!scene.meshes.empty()) methods.push_back(RenderMethod::kTriangles);
-  for (const RenderMethod m : methods) {
-    if (scene.spheres.empty()) list.push_back({m, 0});
-    else
-      for (const int n : segments) list.push_back({m, n});
+  for (const RenderMethod m : all_methods()) {  // in the method table's order, each as the table says
+    switch (method_bench_sweep(m)) {
+      case BenchSweep::kReference:  // measured first, on its own
+        break;
+      case BenchSweep::kMapSizes:
+        for (const int size : o.map_sizes) list.push_back({m, 0, size});
+        break;
+      case BenchSweep::kSegmentsWithMeshes:
+        if (scene.meshes.empty()) break;
+        [[fallthrough]];
+      case BenchSweep::kSphereSegments:
+        if (scene.spheres.empty()) list.push_back({m, 0});
+        else
+          for (const int n : segments) list.push_back({m, n});
+        break;
+    }
   }
-  for (const int size : o.map_sizes) list.push_back({RenderMethod::kShadowMap, 0, size});
   return list;
 }
 
@@ -162,9 +170,10 @@ std::vector<BenchRow> bench_scene(const Scene& scene, const std::vector<MeshCast
                                   ProgressBar& progress) {
   const std::string name = std::filesystem::path(scene.path).filename().string();
   std::vector<BenchRow> rows;
-  progress.step(name + " raycast (the reference)");
+  const std::string reference_name = method_name(RenderMethod::kRaycast);
+  progress.step(name + " " + reference_name + " (the reference)");
   RayCastFrame reference;  // the last timed frame is the reference
-  BenchRow ray{name, "raycast"};
+  BenchRow ray{name, reference_name};
   ray.reference = true;
   std::tie(ray.median_ms, ray.frames) =
       median_frame_ms(o.frames, [&] { reference = ray_cast_frame(scene, o.width, o.height); });

@@ -7,6 +7,8 @@
 #include <CLI/CLI.hpp>
 
 #include "mesh/io/mesh_format.hpp"
+#include "mesh/word_list.hpp"
+#include "render/render_method.hpp"
 
 namespace umbra {
 namespace {
@@ -37,6 +39,29 @@ void replace_all(std::string& text, const std::string& from, const std::string& 
   for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) text.replace(at, from.size(), to);
 }
 
+// How umbra bench sweeps the methods, from the method table: "auto, zfail,
+// zpass and planar at each N; triangles at each N, in scenes with meshes;
+// shadowmap at each map size; raycast, the reference itself".
+std::string bench_sweeps() {
+  const std::pair<BenchSweep, const char*> sweeps[] = {
+      {BenchSweep::kSphereSegments, "at each N"},
+      {BenchSweep::kSegmentsWithMeshes, "at each N, in scenes with meshes"},
+      {BenchSweep::kMapSizes, "at each map size"},
+      {BenchSweep::kReference, "the reference itself"},
+  };
+  std::vector<std::string> parts;
+  for (const auto& [sweep, phrase] : sweeps) {
+    std::vector<std::string> names;
+    for (const RenderMethod m : all_methods())
+      if (method_bench_sweep(m) == sweep) names.push_back(method_name(m));
+    if (!names.empty())
+      parts.push_back(word_list(names, "and") + (sweep == BenchSweep::kReference ? ", " : " ") + phrase);
+  }
+  std::string text;
+  for (const std::string& part : parts) text += (text.empty() ? "" : "; ") + part;
+  return text;
+}
+
 }  // namespace
 
 std::string usage_text(std::string text) {
@@ -49,11 +74,9 @@ std::string usage_text(std::string text) {
     name.resize(kHelpColumn - kNameColumn, ' ');
     methods += std::string(kNameColumn, ' ') + name + wrapped(method_help(m), kHelpColumn, kHelpColumn, kWidth) + "\n";
   }
-  std::string interactive_list;
-  for (size_t i = 0; i < interactive.size(); ++i)
-    interactive_list += (i == 0 ? "" : i + 1 == interactive.size() ? " or " : ", ") + interactive[i];
   replace_all(text, "{methods}\n", methods);
-  replace_all(text, "{interactive methods}", interactive_list);
+  replace_all(text, "{bench methods}", wrapped(bench_sweeps(), 0, 0, kWidth));
+  replace_all(text, "{interactive methods}", word_list(interactive));
   replace_all(text, "{mesh formats}", mesh_format_names());
   replace_all(text, "{mesh extensions}", mesh_format_extensions());
   replace_all(text, "{repair extensions}", mesh_format_extensions(true));

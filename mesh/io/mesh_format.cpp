@@ -10,6 +10,7 @@
 #include "mesh/io/mapped_file.hpp"
 #include "mesh/io/mesh_readers.hpp"
 #include "mesh/io/text_scanner.hpp"
+#include "mesh/word_list.hpp"
 
 namespace umbra {
 namespace {
@@ -142,26 +143,17 @@ const MeshFormat* mesh_format_by_id(std::string_view id) {
   return nullptr;
 }
 
-namespace {
-// "a, b or c"
-std::string listed(const std::vector<std::string_view>& items) {
-  std::string s;
-  for (size_t i = 0; i < items.size(); ++i) s += std::string(i == 0 ? "" : i + 1 == items.size() ? " or " : ", ") + std::string(items[i]);
-  return s;
-}
-}  // namespace
-
 std::string mesh_format_names() {
   std::vector<std::string_view> names;
   for (const MeshFormat& f : mesh_formats()) names.push_back(f.name);
-  return listed(names);
+  return word_list(names);
 }
 
 std::string mesh_format_extensions(bool repair_writes_only) {
   std::vector<std::string_view> extensions;
   for (const MeshFormat& f : mesh_formats())
     if (f.repair_writes || !repair_writes_only) extensions.insert(extensions.end(), f.extensions.begin(), f.extensions.end());
-  return listed(extensions);
+  return word_list(extensions);
 }
 
 std::string detect_mesh_format(std::string_view bytes) {
