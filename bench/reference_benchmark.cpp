@@ -10,8 +10,8 @@
 #include <sstream>
 #include <string>
 
-#include "mesh/scene/scene_parser.hpp"
-#include "mesh/scene/camera_transform.hpp"
+#include "scene/scene_parser.hpp"
+#include "scene/camera_transform.hpp"
 #include "reference/ray_caster.hpp"
 
 namespace umbra {

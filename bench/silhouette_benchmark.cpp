@@ -11,11 +11,11 @@
 
 #include "mesh/topology/half_edge_mesh.hpp"
 #include "mesh/check/mesh_check.hpp"
-#include "mesh/scene/scene_parser.hpp"
+#include "scene/scene_parser.hpp"
 #include "render/headless_context.hpp"
 #include "render/render_plan.hpp"
 #include "render/shadow_renderer.hpp"
-#include "silhouette/classify_faces.hpp"
+#include "silhouette/light_facing.hpp"
 #include "silhouette/face_plane.hpp"
 #include "silhouette/layer_bound.hpp"
 #include "silhouette/mesh_adjacency.hpp"
@@ -113,7 +113,7 @@ void BM_SilhouetteEdges(benchmark::State& state) {
     const double light_distance = glm::length(light);
     silhouette.clear();
     if (state.range(2) == 0) {
-      classify_faces(flat, light, facing);
+      classify_light_facing(flat, light, facing);
       for (size_t e = 0; e < flat.edge_faces.size(); ++e)
         if (facing[flat.edge_faces[e][0]] != facing[flat.edge_faces[e][1]]) silhouette.push_back(flat.edge_vertices[e]);
     } else {
@@ -228,9 +228,8 @@ void BM_RenderFrame(benchmark::State& state) {
   Mesh mesh;
   mesh.positions = std::move(analysis.positions);
   mesh.triangles = std::move(analysis.triangles);
-  mesh.report = std::move(analysis.report);
-  mesh.bounds_min = mesh.report.bbox_min;
-  mesh.bounds_max = mesh.report.bbox_max;
+  mesh.bounds_min = analysis.report.bbox_min;
+  mesh.bounds_max = analysis.report.bbox_max;
   mesh.edges = build_edge_table(mesh.triangles, mesh.positions.size());
   mesh.components = find_closed_components(mesh.triangles, mesh.edges, mesh.positions.size());
   scene.meshes.push_back(std::move(mesh));

@@ -8,8 +8,8 @@
 
 #include "mesh/check/mesh_check.hpp"
 #include "mesh/io/mesh_file.hpp"
-#include "mesh/scene/scene_checks.hpp"
-#include "mesh/scene/scene_parser.hpp"
+#include "scene/scene_checks.hpp"
+#include "scene/scene_parser.hpp"
 #include "render/render_plan.hpp"
 #include "silhouette/mesh_caster.hpp"
 #include "silhouette/mesh_volume.hpp"

@@ -6,7 +6,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "mesh/scene/camera_transform.hpp"
+#include "scene/camera_transform.hpp"
 #include "reference/ray_primitives.hpp"
 
 namespace umbra {

@@ -7,7 +7,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "mesh/scene/scene.hpp"
+#include "scene/scene.hpp"
 #include "image/image.hpp"
 
 namespace umbra {

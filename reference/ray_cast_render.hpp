@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "mesh/scene/scene.hpp"
+#include "scene/scene.hpp"
 #include "image/image.hpp"
 
 namespace umbra {

@@ -8,7 +8,7 @@
 #include <memory>
 #include <optional>
 
-#include "mesh/scene/scene.hpp"
+#include "scene/scene.hpp"
 #include "reference/ray_cast.hpp"
 
 namespace umbra {

@@ -9,7 +9,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "mesh/scene/scene.hpp"
+#include "scene/scene.hpp"
 
 namespace umbra {
 

@@ -4,7 +4,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "mesh/scene/camera_transform.hpp"
+#include "scene/camera_transform.hpp"
 #include "render/gl.hpp"
 #include "render/planar_receivers.hpp"
 #include "render/shader_program.hpp"
@@ -122,6 +122,8 @@ void FrameDrawing::draw_volumes(size_t light, const glm::vec4* tint) {
 }
 
 void FrameDrawing::upload_volumes(size_t light) { volumes_->upload(plan_.lights[light].all_volumes); }
+
+void FrameDrawing::upload_projected_casters(size_t light) { volumes_->upload(plan_.lights[light].planar.casters); }
 
 void FrameDrawing::draw_stencil_batch(size_t light, size_t batch) {
   const LightPlan& lp = plan_.lights[light];

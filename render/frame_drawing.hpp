@@ -10,7 +10,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "mesh/scene/scene.hpp"
+#include "scene/scene.hpp"
 #include "render/render_plan.hpp"
 
 namespace umbra {
@@ -51,6 +51,9 @@ class FrameDrawing {
   void draw_stencil_batch(size_t light, size_t batch);
   // The visible pixels of the triangles in `plane`, with the current stencil operation.
   void mark_receiver(const glm::dvec4& plane);
+  // Sends light `light`'s casters for the planar method to the GL, for
+  // draw_projected_casters to draw onto each receiver.
+  void upload_projected_casters(size_t light);
   // Light `light`'s projected casters (the planar method), with the current state.
   void draw_projected_casters(size_t light, const glm::dvec4& plane);
 

@@ -8,7 +8,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
 
-#include "mesh/scene/scene.hpp"
+#include "scene/scene.hpp"
 
 namespace umbra {
 

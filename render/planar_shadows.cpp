@@ -11,11 +11,11 @@ namespace umbra {
 void PlanarShadows::cast(size_t light) {
   glClearStencil(0);
   glClear(GL_STENCIL_BUFFER_BIT);
-  drawing_.upload_volumes(light);
+  drawing_.upload_projected_casters(light);
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glDepthMask(GL_FALSE);
   glEnable(GL_STENCIL_TEST);
-  for (const glm::dvec4& plane : drawing_.plan().lights[light].receiver_planes) {
+  for (const glm::dvec4& plane : drawing_.plan().lights[light].planar.receiver_planes) {
     glStencilFunc(GL_ALWAYS, 1, 0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
     drawing_.mark_receiver(plane);

@@ -8,7 +8,7 @@
 #include <tbb/parallel_invoke.h>
 
 #include "mesh/predicates/orientation.hpp"
-#include "mesh/scene/camera_transform.hpp"
+#include "scene/camera_transform.hpp"
 #include "render/planar_receivers.hpp"
 #include "render/view_culling.hpp"
 #include "silhouette/layer_bound.hpp"
@@ -24,19 +24,19 @@ std::ostream& operator<<(std::ostream& out, const glm::dvec3& v) {
 
 CasterEntry sphere_entry(const Sphere& s, const Light& light, int segments) {
   CasterEntry e{"sphere", s.where, "", sphere_volume(s.center, s.radius, light.position, segments)};
-  e.method = "tangent-circle " + std::to_string(segments) + "-gon";
+  e.volume_phrase = "tangent-circle " + std::to_string(segments) + "-gon";
   return e;
 }
 
 CasterEntry triangle_entry(const Triangle& t, const Light& light) {
   CasterEntry e{"triangle", t.where, "", {}};
   if (collinear(t.a, t.b, t.c)) {
-    e.method = "none: degenerate (collinear vertices)";
+    e.volume_phrase = "none: degenerate (collinear vertices)";
   } else if (auto volume = triangle_volume(t.a, t.b, t.c, light.position)) {
     e.volume = std::move(*volume);
-    e.method = "three side quads";
+    e.volume_phrase = "three side quads";
   } else {
-    e.method = "none: its plane contains the light, so it is seen edge-on";
+    e.volume_phrase = "none: its plane contains the light, so it is seen edge-on";
   }
   return e;
 }
@@ -71,7 +71,7 @@ CasterEntry mesh_entry(const Scene& scene, size_t index, const MeshCaster& caste
   const std::string triangles = std::to_string(mesh.triangles.size()) + " triangles";
   if (per_triangle_asked) {
     e.volume = per_triangle_volume(mesh.positions, mesh.triangles, light.position);
-    e.method = "per-triangle volumes, the slow reference (--method triangles; " + triangles + ")";
+    e.volume_phrase = "per-triangle volumes, the slow reference (--method triangles; " + triangles + ")";
     return e;
   }
   if (cached.light != light.position) cached = layer_bounds_of(mesh, light.position);
@@ -86,7 +86,7 @@ CasterEntry mesh_entry(const Scene& scene, size_t index, const MeshCaster& caste
     MeshVolumePlan& volume = next_volume();
     volume.max_count = cached.bound;
     mesh_caster_volume_indices(caster, light.position, scratch, volume.volume, !light_plan.z_pass);
-    e.method = caster.phrase() + " (" + triangles + ")";
+    e.volume_phrase = caster.phrase() + " (" + triangles + ")";
   } else {
     const uint32_t far = uint32_t(mesh.positions.size());
     for (size_t k = 0; k < cached.runs.size(); ++k) {
@@ -97,7 +97,7 @@ CasterEntry mesh_entry(const Scene& scene, size_t index, const MeshCaster& caste
       if (!light_plan.z_pass) append_multiplicity_caps(cached.run_volumes[k], scratch.side, far, volume.volume);
       append_multiplicity_quads(cached.run_volumes[k], scratch.side, far, volume.volume);
     }
-    e.method = caster.shape + ", but more than " + std::to_string(kMaxStencilCount) + " of its layers may lie over a point: " +
+    e.volume_phrase = caster.shape + ", but more than " + std::to_string(kMaxStencilCount) + " of its layers may lie over a point: " +
                std::to_string(cached.runs.size()) + " runs of its faces, each an edge-multiplicity volume counted on its own (" +
                triangles + ")";
   }
@@ -212,6 +212,7 @@ void plan_planar_light(const Scene& scene, const std::vector<ReceiverPlane>& rec
                        LightPlan& lp) {
   clear_volumes(lp);
   lp.mesh_volumes.clear();
+  lp.stencil_batches.clear();
   lp.z_pass = false;
   lp.culled_casters = 0;
   std::string lines;
@@ -220,7 +221,7 @@ void plan_planar_light(const Scene& scene, const std::vector<ReceiverPlane>& rec
     const Triangle& t = scene.triangles[r.first_triangle];
     if (orientation(t.a, t.b, t.c, light.position) == 0) continue;  // the light in the plane (exactly): no shadow on it
     const double height = glm::dot(r.plane, glm::dvec4(light.position, 1.0));
-    lp.receiver_planes.push_back(height > 0.0 ? r.plane : -r.plane);
+    lp.planar.receiver_planes.push_back(height > 0.0 ? r.plane : -r.plane);
     ++planes;
     for (const int line : r.lines) lines += (lines.empty() ? "" : ", ") + std::to_string(line);
   }
@@ -237,7 +238,7 @@ void plan_planar_light(const Scene& scene, const std::vector<ReceiverPlane>& rec
       if (index[t[0]] != UINT32_MAX && index[t[1]] != UINT32_MAX && index[t[2]] != UINT32_MAX)
         finite.triangles.push_back({index[t[0]], index[t[1]], index[t[2]]});
     finite.part_ends = {uint32_t(finite.triangles.size())};
-    append_volume(lp.all_volumes, finite);
+    append_volume(lp.planar.casters, finite);
   };
   for (const Sphere& s : scene.spheres)
     add("sphere", s.where, "its tangent " + std::to_string(segments) + "-gon disc",
@@ -254,7 +255,6 @@ void plan_planar_light(const Scene& scene, const std::vector<ReceiverPlane>& rec
     v.triangles = m.triangles;
     add("mesh", m.where, "its " + std::to_string(m.triangles.size()) + " triangles", v);
   }
-  lp.stencil_batches = {{0, uint32_t(lp.all_volumes.triangles.size()), {}, 1}};
   std::stable_sort(lp.casters.begin(), lp.casters.end(),
                    [](const CasterEntry& a, const CasterEntry& b) { return a.where.line < b.where.line; });
 }
@@ -265,8 +265,7 @@ void plan_planar_light(const Scene& scene, const std::vector<ReceiverPlane>& rec
 void place_camera(const Scene& scene, RenderPlan& plan) {
   const Camera& c = scene.camera;
   const double aspect = double(plan.settings.width) / plan.settings.height;
-  const std::array<double, 11> view = {c.eye.x, c.eye.y, c.eye.z, c.target.x, c.target.y, c.target.z,
-                                       c.up.x,  c.up.y,  c.up.z,  c.fovy_deg, aspect};
+  const std::pair<Camera, double> view{c, aspect};
   plan.camera = c;
   if (view == plan.near_plane_view) return;
   plan.near_plane_view = view;
@@ -274,6 +273,16 @@ void place_camera(const Scene& scene, RenderPlan& plan) {
 }
 
 }  // namespace
+
+std::vector<MeshCaster> prepare_mesh_casters(const Scene& scene) {
+  std::vector<MeshCaster> casters;
+  casters.reserve(scene.meshes.size());
+  for (const Mesh& mesh : scene.meshes) {
+    casters.push_back(prepare_mesh_caster(mesh.positions, mesh.triangles, mesh.edges, mesh.components));
+    if (!mesh.loading_changes.empty()) casters.back().shape += " (" + mesh.loading_changes + ")";
+  }
+  return casters;
+}
 
 RenderPlan make_render_plan(const Scene& scene, const RenderSettings& settings) {
   // The meshes' casters and, for the methods that count volumes, the layer
@@ -324,19 +333,14 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
   // The same for every light.
   const std::vector<ReceiverPlane> receivers =
       plan.settings.method == RenderMethod::kPlanar ? receiver_planes(scene) : std::vector<ReceiverPlane>{};
-  const RenderSettings& s = plan.settings;
-  const Camera& c = plan.camera;
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& light = scene.lights[i];
     LightPlan& lp = plan.lights[i];
-    std::vector<double> inputs = {light.position.x, light.position.y, light.position.z, c.eye.x, c.eye.y, c.eye.z,
-                                  c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z, c.fovy_deg, plan.near_plane,
-                                  double(s.width), double(s.height), double(s.sphere_segments), double(s.method),
-                                  double(s.shadow_map_size)};
-    if (inputs == lp.made_for) continue;
-    lp.made_for = std::move(inputs);
+    const LightPlanInputs inputs{light.position, plan.camera, plan.near_plane, plan.settings};
+    if (lp.made_for == inputs) continue;
+    lp.made_for = inputs;
     lp.casters.clear();
-    lp.receiver_planes.clear();
+    lp.planar = {};
     if (plan.settings.method == RenderMethod::kShadowMap) {  // no volumes at all
       clear_volumes(lp);
       lp.mesh_volumes.clear();
@@ -417,7 +421,7 @@ void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& 
       out << " layers\n";
     }
     for (const CasterEntry& e : lp.casters) {
-      out << "    " << e.kind << " (line " << e.where.line << "): " << e.method;
+      out << "    " << e.kind << " (line " << e.where.line << "): " << e.volume_phrase;
       if (e.mesh_volume >= 0) {
         int quads = 0, caps = 0;
         for (int k = e.mesh_volume; k < e.mesh_volume + e.mesh_volume_count; ++k) {

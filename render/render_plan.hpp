@@ -3,14 +3,15 @@
 // GL call: the camera, and per light each caster's shadow volume. `umbra
 // render --explain` prints it.
 
-#include <array>
+#include <cmath>
+#include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
-#include "mesh/scene/scene.hpp"
 #include "render/render_method.hpp"
-#include <cmath>
+#include "scene/scene.hpp"
 
 #include "silhouette/layer_bound.hpp"
 #include "silhouette/mesh_caster.hpp"
@@ -25,12 +26,33 @@ struct RenderSettings {
   int sphere_segments = 64;  // N of the tangent circle's inscribed N-gon (docs/geometry.md)
   RenderMethod method = RenderMethod::kAuto;  // the plan is for every method but kRaycast
   int shadow_map_size = 1024;                 // texels along a cube face's side, for kShadowMap
+
+  bool operator==(const RenderSettings& o) const {
+    return width == o.width && height == o.height && sphere_segments == o.sphere_segments && method == o.method &&
+           shadow_map_size == o.shadow_map_size;
+  }
+};
+// A setting added here must join operator==, or a plan made for the old value would be kept.
+static_assert(sizeof(RenderSettings) == 5 * sizeof(int), "compare the new member of RenderSettings in operator==");
+
+// What a light's plan is made from besides the scene's casters: a frame
+// whose inputs compare equal to the plan's (a paused viewer, or a light that
+// stays while another moves) keeps the plan as it is.
+struct LightPlanInputs {
+  glm::dvec3 light{0.0};
+  Camera camera;
+  double near_plane = 0.0;
+  RenderSettings settings;
+
+  bool operator==(const LightPlanInputs& o) const {
+    return light == o.light && camera == o.camera && near_plane == o.near_plane && settings == o.settings;
+  }
 };
 
 struct CasterEntry {
   std::string kind;    // "sphere", "triangle" or "mesh"
   FileLoc where;
-  std::string method;  // how its volume was made, or why it has none
+  std::string volume_phrase;  // how its volume was made, or why it has none
   ShadowVolume volume;  // empty when it casts no shadow from this light, or when it is a mesh_volume
   // For a mesh (but with --method triangles): its volumes are
   // LightPlan::mesh_volumes[mesh_volume, mesh_volume + mesh_volume_count),
@@ -60,6 +82,15 @@ struct StencilBatch {
   int max_count = 0;
 };
 
+// What the planar method (Blinn 1988) projects, for one light: the
+// receivers' planes (n, d), each with the light on its positive side, and
+// the casters' finite triangles (a sphere's N-gon disc, a triangle, a mesh's
+// triangles) to flatten onto each. No volumes, no counts.
+struct PlanarProjection {
+  std::vector<glm::dvec4> receiver_planes;
+  ShadowVolume casters;  // light caps only: every vertex finite
+};
+
 struct LightPlan {
   std::vector<CasterEntry> casters;
   ShadowVolume all_volumes;                  // every other caster's volume, one draw call
@@ -72,15 +103,9 @@ struct LightPlan {
   bool z_pass = false;
   std::string count_reason;  // why this light is counted as it is
   int culled_casters = 0;    // casters whose volumes cannot reach the view (auto only)
-  // For kPlanar: the receivers' planes (n, d), each with the light on its
-  // positive side; all_volumes then holds the casters' finite triangles
-  // (a sphere's N-gon disc, a triangle, a mesh's triangles) to project.
-  std::vector<glm::dvec4> receiver_planes;
+  PlanarProjection planar;  // kPlanar's plan, which counts no volumes; empty for every other method
   int side_quads = 0, light_cap_triangles = 0, dark_cap_triangles = 0;  // of all of them
-  // What this plan was made for: the light's position, the view and the
-  // settings. A frame that changes none of them (a paused viewer, or a
-  // light that stays while another moves) keeps it as it is.
-  std::vector<double> made_for;
+  std::optional<LightPlanInputs> made_for;  // none until it is first made
 };
 
 struct RenderPlan {
@@ -88,7 +113,8 @@ struct RenderPlan {
   Camera camera;
   bool camera_is_spec_default = true;
   double near_plane = 0.05;  // near_plane(camera, aspect, the surfaces' bounds, the nearest surface's distance)
-  std::array<double, 11> near_plane_view{};  // the eye, target, up, fovy and aspect it was worked out for
+  // The view the near plane was worked out for: a camera and its aspect.
+  std::optional<std::pair<Camera, double>> near_plane_view;
   // Shading terms that some material and light use; the shader skips the
   // specular term when none does, and a frame draws neither the shadows nor
   // the direct pass of a light with no colour (its ambient term is in the
@@ -107,6 +133,10 @@ struct RenderPlan {
   };
   std::vector<std::vector<LayerBounds>> layer_bounds;
 };
+
+// One caster per scene.meshes entry, in order, each sharing its mesh's
+// points: made once per scene and kept across frames.
+std::vector<MeshCaster> prepare_mesh_casters(const Scene& scene);
 
 // Requires the lights outside every sphere (require_lights_off_casters).
 // `meshes` is prepare_mesh_casters(scene), made once and kept across frames.

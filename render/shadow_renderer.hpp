@@ -10,7 +10,7 @@
 #include <memory>
 
 #include "image/image.hpp"
-#include "mesh/scene/scene.hpp"
+#include "scene/scene.hpp"
 #include "render/render_plan.hpp"
 
 namespace umbra {

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "mesh/scene/scene.hpp"
+#include "scene/scene.hpp"
 #include "silhouette/shadow_volume.hpp"
 
 namespace umbra {

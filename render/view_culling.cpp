@@ -6,7 +6,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "mesh/scene/camera_transform.hpp"
+#include "scene/camera_transform.hpp"
 
 namespace umbra {
 namespace {

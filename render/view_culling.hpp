@@ -6,7 +6,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "mesh/scene/scene.hpp"
+#include "scene/scene.hpp"
 
 namespace umbra {
 

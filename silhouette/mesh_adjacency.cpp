@@ -18,23 +18,21 @@ namespace {
 constexpr size_t kAhead = 8;  // faces
 
 // The flat arrays: the edges' faces and vertices walked from the half-edge
-// structure; the faces are `faces`, which it was made from (face f runs round
-// faces[f], as OpenMesh keeps the order faces are added in), their planes
-// computed in that order rather than by three jumps per face across the
-// half-edge array. Each vertex, face and edge on its own, on every core.
-MeshAdjacency flatten(const HalfEdgeMesh& mesh, std::vector<std::array<uint32_t, 3>> faces) {
-  if (faces.size() != mesh.n_faces()) throw std::logic_error("flatten: the faces are not the mesh's");
+// structure; the faces are `faces` and the points `positions`, which it was
+// made from (face f runs round faces[f], as OpenMesh keeps the order faces
+// are added in; vertex v is positions[v]), their planes computed in that
+// order rather than by three jumps per face across the half-edge array. Each
+// face and edge on its own, on every core.
+MeshAdjacency flatten(const HalfEdgeMesh& mesh, const SharedPositions& positions, std::vector<std::array<uint32_t, 3>> faces) {
+  if (faces.size() != mesh.n_faces() || positions.size() != mesh.n_vertices())
+    throw std::logic_error("flatten: the faces or points are not the mesh's");
   const auto each = [](size_t count, const auto& body) {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, count), [&](const tbb::blocked_range<size_t>& range) {
       for (size_t i = range.begin(); i < range.end(); ++i) body(int(i));
     });
   };
   MeshAdjacency adjacency;
-  adjacency.positions.resize(mesh.n_vertices());
-  each(mesh.n_vertices(), [&](int v) {
-    const auto& p = mesh.point(OpenMesh::VertexHandle(v));
-    adjacency.positions[size_t(v)] = glm::dvec3(p[0], p[1], p[2]);
-  });
+  adjacency.positions = positions;
   adjacency.triangles = std::move(faces);
   adjacency.planes.resize(adjacency.triangles.size());
   each(adjacency.triangles.size(), [&](int f) {
@@ -60,19 +58,19 @@ MeshAdjacency flatten(const HalfEdgeMesh& mesh, std::vector<std::array<uint32_t,
 
 }  // namespace
 
-MeshAdjacency build_mesh_adjacency(const std::vector<glm::dvec3>& positions,
+MeshAdjacency build_mesh_adjacency(const SharedPositions& positions,
                                    const std::vector<std::array<uint32_t, 3>>& triangles) {
-  return flatten(build_half_edge_mesh(positions, triangles), triangles);
+  return flatten(build_half_edge_mesh(positions, triangles), positions, triangles);
 }
 
-MeshAdjacency build_mesh_adjacency(const std::vector<glm::dvec3>& positions,
+MeshAdjacency build_mesh_adjacency(const SharedPositions& positions,
                                    const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeTable& edges,
                                    const std::vector<uint8_t>& closed_face) {
   std::vector<std::array<uint32_t, 3>> closed;  // the linked mesh's faces, in order
   closed.reserve(size_t(std::count(closed_face.begin(), closed_face.end(), 1)));
   for (size_t t = 0; t < triangles.size(); ++t)
     if (closed_face[t]) closed.push_back(triangles[t]);
-  return flatten(link_half_edge_mesh(positions, triangles, edges, closed_face), std::move(closed));
+  return flatten(link_half_edge_mesh(positions, triangles, edges, closed_face), positions, std::move(closed));
 }
 
 }  // namespace umbra

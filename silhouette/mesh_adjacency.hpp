@@ -1,7 +1,7 @@
 #pragma once
 // What a silhouette pass reads, as flat arrays built once per mesh from its
 // OpenMesh half-edge structure (which no interface above this one sees): per
-// light and frame only classify_faces and the extraction run, streaming over
+// light and frame only classify_light_facing and the extraction run, streaming over
 // these arrays.
 
 #include <array>
@@ -10,6 +10,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "mesh/shared_positions.hpp"
 #include "mesh/topology/edge_table.hpp"
 #include "mesh/unset_vector.hpp"
 #include "silhouette/face_plane.hpp"
@@ -18,7 +19,7 @@ namespace umbra {
 
 struct MeshAdjacency {
   using FacePlane = umbra::FacePlane;
-  std::vector<glm::dvec3> positions;
+  SharedPositions positions;  // the mesh's, shared: the structure's own copy is not kept
   std::vector<std::array<uint32_t, 3>> triangles;
   UnsetVector<FacePlane> planes;  // sized, then filled on every core
   // Edge e lies between faces edge_faces[e] = {left, right}: the left face
@@ -35,13 +36,13 @@ struct MeshAdjacency {
 // faces are the triangles, in order, that the structure was made from.
 // Throws std::invalid_argument when OpenMesh refuses a triangle or a
 // halfedge has no face.
-MeshAdjacency build_mesh_adjacency(const std::vector<glm::dvec3>& positions,
+MeshAdjacency build_mesh_adjacency(const SharedPositions& positions,
                                    const std::vector<std::array<uint32_t, 3>>& triangles);
 
 // The same for the triangles marked in closed_face, which
 // find_closed_components proved closed (link_half_edge_mesh): what the
 // renderer uses, in linear time from the edge table it already has.
-MeshAdjacency build_mesh_adjacency(const std::vector<glm::dvec3>& positions,
+MeshAdjacency build_mesh_adjacency(const SharedPositions& positions,
                                    const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeTable& edges,
                                    const std::vector<uint8_t>& closed_face);
 

@@ -2,12 +2,12 @@
 
 #include <stdexcept>
 
-#include "silhouette/classify_faces.hpp"
+#include "silhouette/light_facing.hpp"
 #include "silhouette/mesh_volume.hpp"
 
 namespace umbra {
 
-MeshCaster prepare_mesh_caster(const std::vector<glm::dvec3>& positions,
+MeshCaster prepare_mesh_caster(const SharedPositions& positions,
                                const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeTable& edges,
                                const ClosedComponents& components) {
   MeshCaster caster;
@@ -15,7 +15,7 @@ MeshCaster prepare_mesh_caster(const std::vector<glm::dvec3>& positions,
   caster.shape = components.phrase();
   std::vector<uint8_t> open_face(triangles.size());
   for (size_t t = 0; t < triangles.size(); ++t) open_face[t] = !components.closed_face[t];
-  caster.volume_kind = components.volume_phrase();
+  caster.volume_phrase = components.volume_phrase();
   if (components.closed_components > 0) {
     try {
       caster.closed = build_mesh_adjacency(positions, triangles, edges, components.closed_face);
@@ -23,35 +23,23 @@ MeshCaster prepare_mesh_caster(const std::vector<glm::dvec3>& positions,
       // The edge table proved these components closed 2-manifolds; should
       // linking one fail, multiplicity is exact too.
       open_face.assign(triangles.size(), 1);
-      caster.volume_kind = "edge-multiplicity volume (OpenMesh refused its closed components)";
+      caster.volume_phrase = "edge-multiplicity volume (OpenMesh refused its closed components)";
     }
   }
   caster.open = build_multiplicity_adjacency(positions, triangles, edges, open_face);
   return caster;
 }
 
-MeshCaster prepare_mesh_caster(const std::vector<glm::dvec3>& positions,
-                               const std::vector<std::array<uint32_t, 3>>& triangles) {
+MeshCaster prepare_mesh_caster(const SharedPositions& positions, const std::vector<std::array<uint32_t, 3>>& triangles) {
   const EdgeTable edges = build_edge_table(triangles, positions.size());
   return prepare_mesh_caster(positions, triangles, edges, find_closed_components(triangles, edges, positions.size()));
-}
-
-std::vector<MeshCaster> prepare_mesh_casters(const Scene& scene) {
-  std::vector<MeshCaster> casters;
-  casters.reserve(scene.meshes.size());
-  for (const Mesh& mesh : scene.meshes) {
-    casters.push_back(prepare_mesh_caster(mesh.positions, mesh.triangles, mesh.edges, mesh.components));
-    const std::string changes = mesh.report.loading_changes();
-    if (!changes.empty()) casters.back().shape += " (" + changes + ")";
-  }
-  return casters;
 }
 
 void mesh_caster_volume_indices(const MeshCaster& caster, const glm::dvec3& light, MeshCasterScratch& scratch,
                                 MeshVolumeIndices& volume, bool with_caps) {
   const uint32_t far = uint32_t(caster.positions.size());
   volume.clear();
-  if (!caster.closed.triangles.empty()) classify_faces(caster.closed, light, scratch.facing);
+  if (!caster.closed.triangles.empty()) classify_light_facing(caster.closed, light, scratch.facing);
   classify_light_sides(caster.positions, caster.open, light, scratch.side);
   if (with_caps) {
     if (!caster.closed.triangles.empty()) append_silhouette_caps(caster.closed, scratch.facing, volume);

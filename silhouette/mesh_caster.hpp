@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "mesh/shared_positions.hpp"
 #include "mesh/topology/closed_components.hpp"
 #include "mesh/topology/edge_table.hpp"
-#include "mesh/scene/scene.hpp"
 #include "silhouette/mesh_adjacency.hpp"
 #include "silhouette/multiplicity_volume.hpp"
 #include "silhouette/shadow_volume.hpp"
@@ -22,26 +22,23 @@
 namespace umbra {
 
 struct MeshCaster {
-  std::vector<glm::dvec3> positions;
+  SharedPositions positions;   // the mesh's own array, shared, not copied
   MeshAdjacency closed;        // the faces of closed, consistently oriented 2-manifold components
   MultiplicityAdjacency open;  // every other face
   std::string shape;           // ClosedComponents::phrase(): "closed 2-manifold", "open, 3 holes", ...
-  std::string volume_kind;     // "silhouette volume", "edge-multiplicity volume", or which parts get which
+  std::string volume_phrase;   // "silhouette volume", "edge-multiplicity volume", or which parts get which
 
   // "open, 3 holes: edge-multiplicity volume"
-  std::string phrase() const { return shape + ": " + volume_kind; }
+  std::string phrase() const { return shape + ": " + volume_phrase; }
 };
 
-// `edges` and `components` are those of `triangles`.
-MeshCaster prepare_mesh_caster(const std::vector<glm::dvec3>& positions,
+// `edges` and `components` are those of `triangles`. The caster and its
+// silhouette arrays share `positions` rather than copy them.
+MeshCaster prepare_mesh_caster(const SharedPositions& positions,
                                const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeTable& edges,
                                const ClosedComponents& components);
 // The same, finding the edges and components itself.
-MeshCaster prepare_mesh_caster(const std::vector<glm::dvec3>& positions,
-                               const std::vector<std::array<uint32_t, 3>>& triangles);
-
-// One per scene.meshes entry, in order.
-std::vector<MeshCaster> prepare_mesh_casters(const Scene& scene);
+MeshCaster prepare_mesh_caster(const SharedPositions& positions, const std::vector<std::array<uint32_t, 3>>& triangles);
 
 // What a frame's classification writes, kept by the caller so that a frame
 // allocates nothing once it has grown.

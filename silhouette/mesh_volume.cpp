@@ -1,6 +1,6 @@
 #include "silhouette/mesh_volume.hpp"
 
-#include "silhouette/classify_faces.hpp"
+#include "silhouette/light_facing.hpp"
 #include "silhouette/triangle_volume.hpp"
 
 namespace umbra {
@@ -64,7 +64,7 @@ void append_silhouette_quads(const MeshAdjacency& mesh, const std::vector<uint8_
 
 void mesh_volume_indices(const MeshAdjacency& mesh, const glm::dvec3& light, std::vector<uint8_t>& facing,
                          MeshVolumeIndices& volume) {
-  classify_faces(mesh, light, facing);
+  classify_light_facing(mesh, light, facing);
   volume.clear();
   append_silhouette_caps(mesh, facing, volume);
   append_silhouette_quads(mesh, facing, volume);

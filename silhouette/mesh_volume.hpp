@@ -22,13 +22,13 @@ namespace umbra {
 // The silhouette edges, each as (a, b) in the direction the facing face runs along it.
 std::vector<std::array<uint32_t, 2>> silhouette_edges(const MeshAdjacency& mesh, const std::vector<uint8_t>& facing);
 
-// The volume's parts for a given classify_faces output, appended to
+// The volume's parts for a given classify_light_facing output, appended to
 // `volume`: the caps, then (after every other part's caps) the side quads.
 void append_silhouette_caps(const MeshAdjacency& mesh, const std::vector<uint8_t>& facing, MeshVolumeIndices& volume);
 void append_silhouette_quads(const MeshAdjacency& mesh, const std::vector<uint8_t>& facing, MeshVolumeIndices& volume);
 
 // The whole volume, replacing `volume`'s. `facing` is scratch space
-// (classify_faces' output), kept by the caller so that a frame allocates
+// (classify_light_facing' output), kept by the caller so that a frame allocates
 // nothing once the buffers have grown.
 void mesh_volume_indices(const MeshAdjacency& mesh, const glm::dvec3& light, std::vector<uint8_t>& facing,
                          MeshVolumeIndices& volume);

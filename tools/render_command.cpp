@@ -6,9 +6,9 @@
 
 #include <tbb/task_group.h>
 
-#include "mesh/scene/scene_checks.hpp"
-#include "mesh/scene/scene_parser.hpp"
-#include "mesh/scene/staged_scene.hpp"
+#include "scene/scene_checks.hpp"
+#include "scene/scene_parser.hpp"
+#include "scene/staged_scene.hpp"
 #include "render/headless_context.hpp"
 #include "image/image.hpp"
 #include "reference/ray_cast_render.hpp"

@@ -12,9 +12,9 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "mesh/scene/scene_checks.hpp"
-#include "mesh/scene/scene_parser.hpp"
-#include "mesh/scene/staged_scene.hpp"
+#include "scene/scene_checks.hpp"
+#include "scene/scene_parser.hpp"
+#include "scene/staged_scene.hpp"
 #include "image/image.hpp"
 #include "render/render_plan.hpp"
 #include "render/shadow_renderer.hpp"

@@ -6,8 +6,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "mesh/scene/scene_checks.hpp"
-#include "mesh/scene/scene_parser.hpp"
+#include "scene/scene_checks.hpp"
+#include "scene/scene_parser.hpp"
 #include "render/render_plan.hpp"
 #include "tools/command_line.hpp"
 

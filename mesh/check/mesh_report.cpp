@@ -45,11 +45,11 @@ std::string json_line(const nlohmann::ordered_json& value) {
 
 }  // namespace
 
-const char* shadow_method_name(ShadowMethod method) {
-  switch (method) {
-    case ShadowMethod::kSilhouette: return "silhouette";
-    case ShadowMethod::kEdgeMultiplicity: return "edge-multiplicity";
-    case ShadowMethod::kMixed: break;
+const char* volume_kind_name(VolumeKind kind) {
+  switch (kind) {
+    case VolumeKind::kSilhouette: return "silhouette";
+    case VolumeKind::kEdgeMultiplicity: return "edge-multiplicity";
+    case VolumeKind::kMixed: break;
   }
   return "mixed";
 }
@@ -58,10 +58,10 @@ size_t MeshReport::silhouette_components() const {
   return size_t(std::count_if(components.begin(), components.end(), [](const ComponentReport& c) { return c.casts_from_silhouette(); }));
 }
 
-ShadowMethod MeshReport::shadow_method() const {
+VolumeKind MeshReport::volume_kind() const {
   const size_t silhouette = silhouette_components();
-  if (silhouette == 0) return ShadowMethod::kEdgeMultiplicity;
-  return silhouette == components.size() ? ShadowMethod::kSilhouette : ShadowMethod::kMixed;
+  if (silhouette == 0) return VolumeKind::kEdgeMultiplicity;
+  return silhouette == components.size() ? VolumeKind::kSilhouette : VolumeKind::kMixed;
 }
 
 std::string MeshReport::loading_changes() const {
@@ -110,7 +110,7 @@ std::vector<std::string> MeshReport::problems() const {
 std::string MeshReport::verdict() const {
   const std::vector<std::string> why = problems();
   std::string s;
-  if (why.empty() && shadow_method() != ShadowMethod::kSilhouette)  // only overlapping diagonals keep it from the silhouette
+  if (why.empty() && volume_kind() != VolumeKind::kSilhouette)  // only overlapping diagonals keep it from the silhouette
     return "closed 2-manifold: casts its shadow from an edge-multiplicity volume where a polygon's diagonal, once "
            "triangulated, runs along another edge";
   if (why.empty()) {
@@ -121,9 +121,9 @@ std::string MeshReport::verdict() const {
   const bool oriented = inconsistent_edges == 0;
   s = topology_problems().empty() ? "closed and consistently oriented, but not clean (" : "not a closed 2-manifold (";
   for (size_t i = 0; i < why.size(); ++i) s += (i ? ", " : "") + why[i];
-  if (shadow_method() == ShadowMethod::kEdgeMultiplicity)
+  if (volume_kind() == VolumeKind::kEdgeMultiplicity)
     return s + "): shadow from an edge-multiplicity volume (exact for any triangles)";
-  if (shadow_method() == ShadowMethod::kMixed) {
+  if (volume_kind() == VolumeKind::kMixed) {
     const size_t silhouette = silhouette_components();
     return s + "): shadow from silhouette edges for its " + plural(silhouette, "closed component", "closed components") +
            (oriented ? "" : " (once the renderer flips those faces)") + ", from an edge-multiplicity volume for the other " +
@@ -257,8 +257,8 @@ void MeshReport::print_json(std::ostream& out) const {
                               {"genus", c.genus ? Json(*c.genus) : Json(nullptr)},
                               {"outward", c.outward ? Json(*c.outward) : Json(nullptr)},
                               {"hides_back_faces", c.hides_back_faces},
-                              {"shadow_method", shadow_method_name(c.casts_from_silhouette() ? ShadowMethod::kSilhouette
-                                                                                              : ShadowMethod::kEdgeMultiplicity)}});
+                              {"shadow_method", volume_kind_name(c.casts_from_silhouette() ? VolumeKind::kSilhouette
+                                                                                              : VolumeKind::kEdgeMultiplicity)}});
   }
   Json report = {
       {"path", path},
@@ -301,7 +301,7 @@ void MeshReport::print_json(std::ostream& out) const {
         {"faces_to_flip", refs("face", examples.faces_to_flip)},
         {"self_intersections", pairs("face", examples.self_intersections)}}},
       {"closed_manifold", is_closed_manifold()},
-      {"shadow_method", shadow_method_name(shadow_method())},
+      {"shadow_method", volume_kind_name(volume_kind())},
       {"problems", problems()},
       {"verdict", verdict()}};
   if (!warnings.empty()) {  // only when the reader warned: reports of well-formed files keep their keys

@@ -69,11 +69,11 @@ struct SelfIntersectionReport {
   double time_limit_seconds = 0.0;
 };
 
-// How the renderer casts a mesh's shadow, decided per component
+// Which shadow volume the renderer gives a mesh, decided per component
 // (casts_from_silhouette): from the silhouette of every component, by edge
 // multiplicity for every component, or each component its own way.
-enum class ShadowMethod { kSilhouette, kEdgeMultiplicity, kMixed };
-const char* shadow_method_name(ShadowMethod method);
+enum class VolumeKind { kSilhouette, kEdgeMultiplicity, kMixed };
+const char* volume_kind_name(VolumeKind kind);
 
 // The JSON line for a file that could not be read: {"path": ..., "error": ...},
 // valid UTF-8 as print_json's lines are.
@@ -129,7 +129,7 @@ struct MeshReport {
   // The shadow method the renderer uses for this mesh, from its components'
   // (whether the faces agree on their orientation or not: it flips them to
   // agree first). None: edge multiplicity.
-  ShadowMethod shadow_method() const;
+  VolumeKind volume_kind() const;
   size_t silhouette_components() const;
   // Every component hides its back faces (ComponentReport::hides_back_faces):
   // the renderer may cull the mesh's back faces.

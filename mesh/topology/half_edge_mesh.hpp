@@ -30,7 +30,7 @@ struct HalfEdgeTraits : public OpenMesh::DefaultTraits {
 using HalfEdgeMesh = OpenMesh::TriMesh_ArrayKernelT<HalfEdgeTraits>;
 
 // Builds the half-edge mesh of triangles that check_mesh found to be closed
-// and consistently oriented (MeshReport::shadow_method() is kSilhouette).
+// and consistently oriented (MeshReport::volume_kind() is kSilhouette).
 // Vertex i and face t are positions[i] and triangles[t]. Throws
 // std::invalid_argument when OpenMesh refuses a triangle, which such input
 // never makes it do.

@@ -57,7 +57,7 @@ TEST(CgalData, EveryMeshIsReadAndAgreesWithCgal) {
     MeshAnalysis analysis;
     ASSERT_NO_THROW(analysis = analyse_mesh(read_polygon_soup(path)));
     const MeshReport& report = analysis.report;
-    if (report.shadow_method() == ShadowMethod::kSilhouette) {
+    if (report.volume_kind() == VolumeKind::kSilhouette) {
       // OpenMesh takes every triangle, and finds no border.
       HalfEdgeMesh half_edges;
       ASSERT_NO_THROW(half_edges = build_half_edge_mesh(analysis.positions, analysis.triangles));
@@ -80,7 +80,7 @@ TEST(CgalData, EveryMeshIsReadAndAgreesWithCgal) {
     if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
       ++refused_soups;
       // CGAL refuses it as a mesh: it is not a closed 2-manifold, or its faces disagree on their orientation.
-      EXPECT_TRUE(report.shadow_method() != ShadowMethod::kSilhouette || report.inconsistent_edges > 0);
+      EXPECT_TRUE(report.volume_kind() != VolumeKind::kSilhouette || report.inconsistent_edges > 0);
       EXPECT_GT(report.non_manifold_edges + report.non_manifold_vertices + report.inconsistent_edges +
                     report.non_orientable_components + report.degenerate_faces + report.duplicate_faces,
                 0u);

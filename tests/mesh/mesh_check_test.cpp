@@ -27,7 +27,7 @@ void expect_clean_closed_manifold(const MeshReport& r) {
   EXPECT_EQ(r.self_intersections.face_pairs, 0u);
   EXPECT_TRUE(r.self_intersections.complete);
   EXPECT_TRUE(r.is_closed_manifold()) << r.verdict();
-  EXPECT_EQ(r.shadow_method(), ShadowMethod::kSilhouette);
+  EXPECT_EQ(r.volume_kind(), VolumeKind::kSilhouette);
 }
 
 TEST(MeshCheck, TetrahedronIsAClosedGenusZeroManifoldFacingOutward) {
@@ -70,7 +70,7 @@ TEST(MeshCheck, CubeMissingAFaceHasOneHoleOfFourBorderEdges) {
   EXPECT_EQ(r.components[0].genus, 0);
   EXPECT_FALSE(r.components[0].outward.has_value());  // an open surface has no inside
   EXPECT_FALSE(r.is_closed_manifold());
-  EXPECT_EQ(r.shadow_method(), ShadowMethod::kEdgeMultiplicity);
+  EXPECT_EQ(r.volume_kind(), VolumeKind::kEdgeMultiplicity);
   EXPECT_EQ(r.problems(), std::vector<std::string>{"4 border edges in 1 hole"});
   ASSERT_EQ(r.examples.border_edges.size(), 4u);
   for (const auto& [a, b] : r.examples.border_edges) {
@@ -143,7 +143,7 @@ TEST(MeshCheck, TwoCubesSharingAnEdgeHaveOneNonManifoldEdge) {
   const glm::dvec3 b = soup.points[r.examples.non_manifold_edges[0].second.index];
   EXPECT_EQ(glm::dvec2(a), glm::dvec2(1.0, 1.0));
   EXPECT_EQ(glm::dvec2(b), glm::dvec2(1.0, 1.0));
-  EXPECT_EQ(r.shadow_method(), ShadowMethod::kEdgeMultiplicity);
+  EXPECT_EQ(r.volume_kind(), VolumeKind::kEdgeMultiplicity);
 }
 
 TEST(MeshCheck, TwoTetrahedraSharingAVertexHaveOneNonManifoldVertex) {
@@ -172,7 +172,7 @@ TEST(MeshCheck, TwoTetrahedraSharingAVertexHaveOneNonManifoldVertex) {
     EXPECT_EQ(c.non_manifold_vertices, 0u);
     EXPECT_TRUE(c.casts_from_silhouette());
   }
-  EXPECT_EQ(r.shadow_method(), ShadowMethod::kSilhouette);
+  EXPECT_EQ(r.volume_kind(), VolumeKind::kSilhouette);
   EXPECT_EQ(r.verdict(), "not a closed 2-manifold (1 non-manifold vertex): still casts its shadow from silhouette edges");
 }
 
@@ -190,7 +190,7 @@ TEST(MeshCheck, AVertexPinchedWithinAComponentKeepsItFromTheSilhouettePath) {
   EXPECT_FALSE(c.closed);
   EXPECT_TRUE(c.orientable);
   EXPECT_FALSE(c.casts_from_silhouette());
-  EXPECT_EQ(r.shadow_method(), ShadowMethod::kEdgeMultiplicity);
+  EXPECT_EQ(r.volume_kind(), VolumeKind::kEdgeMultiplicity);
   EXPECT_EQ(r.self_intersections.face_pairs, 0u);  // the fans meet only at the centre
   EXPECT_EQ(r.verdict(), "not a closed 2-manifold (1 non-manifold vertex): shadow from an edge-multiplicity volume (exact "
                          "for any triangles)");
@@ -208,7 +208,7 @@ TEST(MeshCheck, ComponentsThatCastTheirShadowsDifferentWaysAreEachReported) {
   EXPECT_FALSE(r.components[1].casts_from_silhouette());
   EXPECT_TRUE(r.components[2].casts_from_silhouette());  // once that face is flipped
   EXPECT_EQ(r.silhouette_components(), 2u);
-  EXPECT_EQ(r.shadow_method(), ShadowMethod::kMixed);
+  EXPECT_EQ(r.volume_kind(), VolumeKind::kMixed);
   EXPECT_EQ(r.verdict(), "not a closed 2-manifold (3 border edges in 1 hole, inconsistent orientation (1 face to flip), "
                          "self-intersections not checked): shadow from silhouette edges for its 2 closed components (once "
                          "the renderer flips those faces), from an edge-multiplicity volume for the other 1");
@@ -216,14 +216,14 @@ TEST(MeshCheck, ComponentsThatCastTheirShadowsDifferentWaysAreEachReported) {
   r.print_json(json);
   const std::string line = json.str();
   EXPECT_NE(line.find("\"shadow_method\":\"mixed\""), std::string::npos) << line;
-  const auto component_method = [&](size_t k) {  // the k-th component's shadow_method in the JSON
+  const auto component_volume = [&](size_t k) {  // the k-th component's shadow_method in the JSON
     size_t at = line.find("\"component_list\"");
     for (size_t i = 0; i <= k; ++i) at = line.find("\"shadow_method\":", at + 1);
     return line.substr(at, line.find(',', at) - at);
   };
-  EXPECT_EQ(component_method(0), "\"shadow_method\":\"silhouette\"}");
-  EXPECT_EQ(component_method(1), "\"shadow_method\":\"edge-multiplicity\"}");
-  EXPECT_EQ(component_method(2), "\"shadow_method\":\"silhouette\"}]");
+  EXPECT_EQ(component_volume(0), "\"shadow_method\":\"silhouette\"}");
+  EXPECT_EQ(component_volume(1), "\"shadow_method\":\"edge-multiplicity\"}");
+  EXPECT_EQ(component_volume(2), "\"shadow_method\":\"silhouette\"}]");
   // The renderer's per-triangle choice is the report's, component by component.
   EXPECT_TRUE(test::expect_triangle_topology_as_built(soup));
 }
@@ -241,7 +241,7 @@ TEST(MeshCheck, OneFlippedFaceIsNamedAsTheFaceToFlip) {
   EXPECT_EQ(r.components[0].outward, true);  // once the face is flipped
   EXPECT_EQ(r.problems(), std::vector<std::string>{"inconsistent orientation (1 face to flip)"});
   // The renderer flips it and casts the shadow from the silhouette.
-  EXPECT_EQ(r.shadow_method(), ShadowMethod::kSilhouette);
+  EXPECT_EQ(r.volume_kind(), VolumeKind::kSilhouette);
   EXPECT_EQ(r.verdict(), "not a closed 2-manifold (inconsistent orientation (1 face to flip)): casts its shadow from "
                          "silhouette edges once the renderer flips those faces");
 }
@@ -318,7 +318,7 @@ TEST(MeshCheck, InterpenetratingCubesCrossInSixFacePairs) {
   EXPECT_FALSE(r.is_closed_manifold());
   EXPECT_EQ(r.problems(), std::vector<std::string>{"6 self-intersecting face pairs"});
   // Closed and consistently oriented: the silhouette method still holds.
-  EXPECT_EQ(r.shadow_method(), ShadowMethod::kSilhouette);
+  EXPECT_EQ(r.volume_kind(), VolumeKind::kSilhouette);
 }
 
 TEST(MeshCheck, DegenerateFacesAreCountedAndKeptOutOfTheTests) {
@@ -385,7 +385,7 @@ TEST(MeshCheck, DuplicateFaceIsNamedWithTheFaceItRepeats) {
   EXPECT_EQ(r.non_manifold_edges, 0u);
   EXPECT_EQ(r.border_edges, 0u);
   EXPECT_EQ(r.problems(), std::vector<std::string>{"1 duplicate face"});
-  EXPECT_EQ(r.shadow_method(), ShadowMethod::kSilhouette);
+  EXPECT_EQ(r.volume_kind(), VolumeKind::kSilhouette);
 }
 
 TEST(MeshCheck, TorusHasGenusOne) {
@@ -407,7 +407,7 @@ TEST(MeshCheck, MoebiusStripIsNotOrientable) {
   EXPECT_EQ(r.border_loops, 1u);  // its one edge runs around twice
   EXPECT_EQ(r.border_edges, 24u);
   EXPECT_EQ(r.euler_characteristic, 0);
-  EXPECT_EQ(r.shadow_method(), ShadowMethod::kEdgeMultiplicity);
+  EXPECT_EQ(r.volume_kind(), VolumeKind::kEdgeMultiplicity);
 }
 
 TEST(MeshCheck, BowTieOfTwoTrianglesHasANonManifoldVertex) {
@@ -464,7 +464,7 @@ TEST(MeshCheck, TimeLimitOfZeroSkipsTheSelfIntersectionSearchAndSaysSo) {
   EXPECT_FALSE(r.self_intersections.checked);
   EXPECT_FALSE(r.is_closed_manifold());
   EXPECT_EQ(r.problems(), std::vector<std::string>{"self-intersections not checked"});
-  EXPECT_EQ(r.shadow_method(), ShadowMethod::kSilhouette);
+  EXPECT_EQ(r.volume_kind(), VolumeKind::kSilhouette);
 }
 
 TEST(MeshCheck, SelfIntersectionSearchThatHitsItsTimeLimitSaysSo) {
@@ -476,7 +476,7 @@ TEST(MeshCheck, SelfIntersectionSearchThatHitsItsTimeLimitSaysSo) {
   EXPECT_EQ(r.self_intersections.face_pairs, 0u);
   EXPECT_EQ(r.problems(), std::vector<std::string>{"self-intersection search stopped after 1e-09 s"});
   EXPECT_FALSE(r.is_closed_manifold());
-  EXPECT_EQ(r.shadow_method(), ShadowMethod::kSilhouette);
+  EXPECT_EQ(r.volume_kind(), VolumeKind::kSilhouette);
   EXPECT_TRUE(check_mesh(uv_sphere(64, 64)).self_intersections.complete);
 }
 
@@ -495,7 +495,7 @@ TEST(MeshCheck, AVeryLargeTimeLimitIsNoLimit) {
 TEST(MeshCheck, EmptyMeshHasNoFaces) {
   const MeshReport r = check_mesh(make_soup({}, {}));
   EXPECT_EQ(r.problems(), std::vector<std::string>{"no faces"});
-  EXPECT_EQ(r.shadow_method(), ShadowMethod::kEdgeMultiplicity);
+  EXPECT_EQ(r.volume_kind(), VolumeKind::kEdgeMultiplicity);
 }
 
 TEST(MeshCheck, SelfIntersectionSearchSkipsTrianglesWithoutAPlane) {

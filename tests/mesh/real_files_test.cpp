@@ -58,7 +58,7 @@ TEST_F(RealFiles, APolygonWhoseDiagonalRunsAlongAnotherEdgeKeepsItsComponentFrom
   EXPECT_TRUE(r.components[0].closed);
   EXPECT_EQ(r.components[0].overlapping_diagonals, 1u);
   EXPECT_FALSE(r.components[0].casts_from_silhouette());
-  EXPECT_EQ(r.shadow_method(), ShadowMethod::kEdgeMultiplicity);
+  EXPECT_EQ(r.volume_kind(), VolumeKind::kEdgeMultiplicity);
 }
 
 TEST_F(RealFiles, GltfOneFilesAreRefusedByName) {
@@ -166,7 +166,7 @@ TEST(RealFilesAgreement, TheRendererCastsEveryComponentAsTheCheckDecides) {
     EXPECT_EQ(c.non_manifold_vertices, a.report.non_manifold_vertices);
     EXPECT_TRUE(test::expect_triangle_topology_as_built(soup));
     ++meshes;
-    mixed += a.report.shadow_method() == ShadowMethod::kMixed;
+    mixed += a.report.volume_kind() == VolumeKind::kMixed;
   }
   EXPECT_GE(meshes, 77u);  // the rest of the set is in formats umbra does not read, or broken
   EXPECT_GT(mixed, 10u);  // files whose closed and open parts cast each their own way

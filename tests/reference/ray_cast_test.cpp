@@ -3,8 +3,8 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "mesh/scene/scene_parser.hpp"
-#include "mesh/scene/camera_transform.hpp"
+#include "scene/scene_parser.hpp"
+#include "scene/camera_transform.hpp"
 
 namespace umbra {
 namespace {

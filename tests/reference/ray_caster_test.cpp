@@ -7,8 +7,8 @@
 
 #include <filesystem>
 
-#include "mesh/scene/scene_parser.hpp"
-#include "mesh/scene/camera_transform.hpp"
+#include "scene/scene_parser.hpp"
+#include "scene/camera_transform.hpp"
 
 namespace umbra {
 namespace {

@@ -14,8 +14,9 @@
 #include "volume_soundness.hpp"
 #include "mask_comparison.hpp"
 #include "tests/render/image_agreement.hpp"
-#include "mesh/scene/scene_checks.hpp"
-#include "mesh/scene/scene_parser.hpp"
+#include "scene/scene_checks.hpp"
+#include "scene/scene_parser.hpp"
+#include "render/render_plan.hpp"
 #include "silhouette/mesh_caster.hpp"
 #include "silhouette/mesh_volume.hpp"
 #include "silhouette/volume_topology.hpp"
@@ -39,7 +40,7 @@ void expect_hard_case_holds(const Scene& scene, int segments = 64) {
   test::expect_masks_match_reference(scene, 120, 120, segments);
 }
 
-std::string method_of(const Scene& scene, size_t caster) { return plan_for(scene).lights[0].casters[caster].method; }
+std::string volume_phrase_of(const Scene& scene, size_t caster) { return plan_for(scene).lights[0].casters[caster].volume_phrase; }
 
 // --- spheres -----------------------------------------------------------------
 
@@ -90,14 +91,14 @@ Scene light_by_triangle_plane(double offset) {
 
 TEST(HardTriangle, LightInItsPlaneCastsNothing) {
   const Scene scene = light_by_triangle_plane(0.0);
-  EXPECT_EQ(method_of(scene, 2), "none: its plane contains the light, so it is seen edge-on");
+  EXPECT_EQ(volume_phrase_of(scene, 2), "none: its plane contains the light, so it is seen edge-on");
   expect_hard_case_holds(scene);
 }
 
 TEST(HardTriangle, LightWithin1e7OfItsPlane) {
   for (const double offset : {1e-7, -1e-7, 1e-15}) {
     const Scene scene = light_by_triangle_plane(offset);
-    EXPECT_EQ(method_of(scene, 2), "three side quads");
+    EXPECT_EQ(volume_phrase_of(scene, 2), "three side quads");
     expect_hard_case_holds(scene);
   }
 }
@@ -110,10 +111,10 @@ TEST(HardTriangle, DegenerateTrianglesCastNothingAndSliversTheirShadow) {
                                            "triangle -0.6 -0.5 -0.2  0.6 -0.5 -0.2  0 -0.4999 -0.2\n"  // a sliver
                                            "sphere 0 0.4 -0.6 0.2\n",
                                        "degenerate.scene");
-  EXPECT_EQ(method_of(scene, 2), "none: degenerate (collinear vertices)");
-  EXPECT_EQ(method_of(scene, 3), "none: degenerate (collinear vertices)");
-  EXPECT_EQ(method_of(scene, 4), "none: degenerate (collinear vertices)");
-  EXPECT_EQ(method_of(scene, 5), "three side quads");
+  EXPECT_EQ(volume_phrase_of(scene, 2), "none: degenerate (collinear vertices)");
+  EXPECT_EQ(volume_phrase_of(scene, 3), "none: degenerate (collinear vertices)");
+  EXPECT_EQ(volume_phrase_of(scene, 4), "none: degenerate (collinear vertices)");
+  EXPECT_EQ(volume_phrase_of(scene, 5), "three side quads");
   EXPECT_EQ(scene.warnings.size(), 3u);
   expect_hard_case_holds(scene);
 }
@@ -431,7 +432,7 @@ TEST(HardStencil, OneOpenMeshOf256And300LayersOverVisiblePixels) {
     ASSERT_EQ(mesh.kind, "mesh");
     EXPECT_GE(mesh.mesh_volume_count, 2);
     EXPECT_TRUE(mesh.volume.triangles.empty());
-    EXPECT_NE(mesh.method.find("runs of its faces, each an edge-multiplicity volume"), std::string::npos) << mesh.method;
+    EXPECT_NE(mesh.volume_phrase.find("runs of its faces, each an edge-multiplicity volume"), std::string::npos) << mesh.volume_phrase;
     for (const StencilBatch& b : plan.lights[0].stencil_batches) EXPECT_LE(b.max_count, 255);
     test::expect_masks_match_reference(scene, 100, 100, 64);
   }

@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "mesh/scene/camera_transform.hpp"
+#include "scene/camera_transform.hpp"
 #include "tests/render/mask_comparison.hpp"
 #include "reference/ray_cast.hpp"
 #include "reference/ray_cast_render.hpp"

@@ -17,8 +17,8 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "mesh/scene/scene_checks.hpp"
-#include "mesh/scene/camera_transform.hpp"
+#include "scene/scene_checks.hpp"
+#include "scene/camera_transform.hpp"
 #include "render/headless_context.hpp"
 #include "image/image.hpp"
 #include "reference/ray_cast.hpp"

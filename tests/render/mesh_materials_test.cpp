@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "mesh/io/mesh_file.hpp"
-#include "mesh/scene/scene_parser.hpp"
+#include "scene/scene_parser.hpp"
 #include "tests/mesh/interchange_writers.hpp"
 #include "tests/mesh/mesh_builders.hpp"
 #include "tests/render/image_agreement.hpp"

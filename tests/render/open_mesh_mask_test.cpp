@@ -6,8 +6,10 @@
 
 #include "../mesh/mesh_builders.hpp"
 #include "hard_case_scenes.hpp"
+#include "mesh/check/mesh_check.hpp"
 #include "mask_comparison.hpp"
-#include "mesh/scene/scene_parser.hpp"
+#include "scene/scene_parser.hpp"
+#include "render/render_plan.hpp"
 #include "silhouette/mesh_caster.hpp"
 
 namespace umbra {
@@ -27,7 +29,9 @@ Scene scene_with(const std::string& name, const PolygonSoup& soup, double rotate
   // Centre it over the floor whatever the turn did.
   Mesh& m = scene.meshes[0];
   const glm::dvec3 shift = glm::dvec3(0, 0, -0.3) - 0.5 * (m.bounds_min + m.bounds_max);
-  for (glm::dvec3& p : m.positions) p += shift;
+  std::vector<glm::dvec3> points = m.positions;
+  for (glm::dvec3& p : points) p += shift;
+  m.positions = std::move(points);
   m.bounds_min += shift, m.bounds_max += shift;
   return scene;
 }
@@ -110,8 +114,9 @@ namespace {
 TEST(MeshCasterPhrase, ComponentsTouchingAtAVertexEachCastFromTheirSilhouette) {
   const PolygonSoup soup = test::combine(test::box_triangles({0, 0, 0}, {1, 1, 1}), test::box_triangles({1, 1, 1}, {2, 1.5, 2.5}));
   const Scene scene = scene_with("corner_boxes", soup, 30.0);
-  EXPECT_EQ(scene.meshes[0].report.non_manifold_vertices, 1u);
-  EXPECT_EQ(scene.meshes[0].report.shadow_method(), ShadowMethod::kSilhouette);
+  const MeshReport report = check_mesh(soup, CheckOptions{});
+  EXPECT_EQ(report.non_manifold_vertices, 1u);
+  EXPECT_EQ(report.volume_kind(), VolumeKind::kSilhouette);
   const MeshCaster caster = prepare_mesh_casters(scene)[0];
   EXPECT_EQ(caster.phrase(), "1 non-manifold vertex; 2 of 2 components closed: silhouette volume");
   EXPECT_EQ(caster.closed.triangles.size(), 24u);

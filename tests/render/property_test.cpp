@@ -14,7 +14,7 @@
 
 #include "hard_case_scenes.hpp"
 #include "mask_comparison.hpp"
-#include "mesh/scene/scene_parser.hpp"
+#include "scene/scene_parser.hpp"
 #include "volume_soundness.hpp"
 
 namespace umbra {
@@ -121,7 +121,9 @@ Scene moved(Scene scene, const glm::dmat4& motion) {
     point(t.c);
   }
   for (Mesh& mesh : scene.meshes) {
-    for (glm::dvec3& p : mesh.positions) point(p);
+    std::vector<glm::dvec3> points = mesh.positions;
+    for (glm::dvec3& p : points) point(p);
+    mesh.positions = std::move(points);
     mesh.bounds_min = mesh.bounds_max = mesh.positions[0];
     for (const glm::dvec3& p : mesh.positions) {
       mesh.bounds_min = glm::min(mesh.bounds_min, p);

@@ -7,9 +7,9 @@
 
 #include <glm/trigonometric.hpp>
 
-#include "mesh/scene/scene_parser.hpp"
+#include "scene/scene_parser.hpp"
 #include "render/planar_receivers.hpp"
-#include "mesh/scene/camera_transform.hpp"
+#include "scene/camera_transform.hpp"
 #include "render/render_plan.hpp"
 
 namespace umbra {
@@ -39,7 +39,7 @@ TEST(RenderPlan, UpdateForAMovedLightEqualsAFreshPlanAndReusesTheIndexBuffers) {
   EXPECT_EQ(plan.lights[0].side_quads, fresh.lights[0].side_quads);
   ASSERT_EQ(plan.lights[0].casters.size(), fresh.lights[0].casters.size());
   for (size_t i = 0; i < plan.lights[0].casters.size(); ++i)
-    EXPECT_EQ(plan.lights[0].casters[i].method, fresh.lights[0].casters[i].method);
+    EXPECT_EQ(plan.lights[0].casters[i].volume_phrase, fresh.lights[0].casters[i].volume_phrase);
 }
 
 TEST(RenderPlan, AFrameThatChangesNothingForALightKeepsItsPlanAndAnyChangeRemakesIt) {
@@ -68,6 +68,15 @@ TEST(RenderPlan, AFrameThatChangesNothingForALightKeepsItsPlanAndAnyChangeRemake
   plan.settings.method = RenderMethod::kZPass;
   update_render_plan(scene, casters, plan);
   EXPECT_NE(plan.lights[0].count_reason, "kept");
+  // Every setting is an input of the plan, not only the method.
+  mark();
+  plan.settings.shadow_map_size = 512;
+  update_render_plan(scene, casters, plan);
+  EXPECT_NE(plan.lights[0].count_reason, "kept");
+  mark();
+  plan.settings.sphere_segments = 32;
+  update_render_plan(scene, casters, plan);
+  EXPECT_NE(plan.lights[1].count_reason, "kept");
 }
 
 TEST(RenderPlan, SplitsMoreThan255VolumesIntoStencilBatches) {
@@ -134,14 +143,16 @@ TEST(RenderPlan, PlanarListsTheReceiversSeenFromTheLightsSide) {
   settings.sphere_segments = 8;
   const RenderPlan plan = make_render_plan(scene, settings);
   const LightPlan& lp = plan.lights[0];
-  ASSERT_EQ(lp.receiver_planes.size(), 1u);
-  EXPECT_EQ(lp.receiver_planes[0], glm::dvec4(0, 0, 1, 1));  // the light on its positive side
+  ASSERT_EQ(lp.planar.receiver_planes.size(), 1u);
+  EXPECT_EQ(lp.planar.receiver_planes[0], glm::dvec4(0, 0, 1, 1));  // the light on its positive side
   EXPECT_EQ(lp.count_reason,
             "no stencil count: every caster projected onto 1 receiver plane(s) (triangles at lines 2); spheres and meshes "
             "receive no shadow");
   // Projected: the floor, the wall, and the sphere's 8-gon disc as a fan of 8.
-  EXPECT_EQ(lp.all_volumes.triangles.size(), 1u + 1u + 8u);
-  for (const glm::dvec4& v : lp.all_volumes.vertices) EXPECT_EQ(v.w, 1.0);
+  EXPECT_EQ(lp.planar.casters.triangles.size(), 1u + 1u + 8u);
+  for (const glm::dvec4& v : lp.planar.casters.vertices) EXPECT_EQ(v.w, 1.0);
+  EXPECT_TRUE(lp.all_volumes.triangles.empty());  // it counts no volumes
+  EXPECT_TRUE(lp.stencil_batches.empty());
 }
 
 TEST(RenderMethods, TheViewersKeyCyclesThroughEveryInteractiveMethod) {

@@ -7,11 +7,11 @@
 #include <filesystem>
 
 #include "mask_comparison.hpp"
-#include "mesh/scene/scene_checks.hpp"
-#include "mesh/scene/scene_parser.hpp"
+#include "scene/scene_checks.hpp"
+#include "scene/scene_parser.hpp"
 #include "render/headless_context.hpp"
 #include "image/mask_error.hpp"
-#include "mesh/scene/camera_transform.hpp"
+#include "scene/camera_transform.hpp"
 #include "reference/ray_cast.hpp"
 #include "reference/ray_cast_render.hpp"
 #include "render/shadow_renderer.hpp"
@@ -252,7 +252,7 @@ TEST(Auto, LeavesOutCastersWhoseVolumesCannotReachTheView) {
   below.spheres[0].center = {0.0, 0.0, 5.0};
   const RenderPlan culled = make_render_plan(below, settings);
   EXPECT_EQ(culled.lights[0].culled_casters, 1);
-  EXPECT_EQ(culled.lights[0].casters[1].method, "none: its shadow volume cannot reach the view");
+  EXPECT_EQ(culled.lights[0].casters[1].volume_phrase, "none: its shadow volume cannot reach the view");
   test::expect_masks_match_reference(below, 120, 120, 64);
 }
 

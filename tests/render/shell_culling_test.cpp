@@ -6,7 +6,7 @@
 // reference's.
 #include <gtest/gtest.h>
 
-#include "mesh/scene/scene_parser.hpp"
+#include "scene/scene_parser.hpp"
 #include "tests/mesh/mesh_builders.hpp"
 #include "tests/render/image_agreement.hpp"
 #include "tests/scratch_folder.hpp"

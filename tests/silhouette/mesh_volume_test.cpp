@@ -12,7 +12,7 @@
 #include "mesh/io/mesh_file.hpp"
 #include "mesh/check/mesh_check.hpp"
 #include "mesh/predicates/orientation.hpp"
-#include "silhouette/classify_faces.hpp"
+#include "silhouette/light_facing.hpp"
 #include "silhouette/mesh_volume.hpp"
 #include "silhouette/volume_topology.hpp"
 #include "tests/mesh/mesh_builders.hpp"
@@ -38,7 +38,7 @@ using EdgeSet = std::set<std::pair<glm::dvec3, glm::dvec3>, bool (*)(const std::
 
 EdgeSet silhouette_of(const MeshAdjacency& mesh, const glm::dvec3& light) {
   std::vector<uint8_t> facing;
-  classify_faces(mesh, light, facing);
+  classify_light_facing(mesh, light, facing);
   EdgeSet edges(less_edge);
   for (const auto& [a, b] : silhouette_edges(mesh, facing)) edges.insert({mesh.positions[a], mesh.positions[b]});
   return edges;
@@ -92,7 +92,7 @@ TEST(MeshSilhouette, ClassificationAgreesWithTheExactPredicateForLightsOnAndNear
     glm::dvec3 light = a + far(random) * (b - a) + far(random) * (c - a);
     light.z = std::nextafter(light.z, trial % 3 == 0 ? 10.0 : -10.0);
     std::vector<uint8_t> facing;
-    classify_faces(tetrahedron, light, facing);
+    classify_light_facing(tetrahedron, light, facing);
     const int exact = orientation(a, b, c, light);
     EXPECT_EQ(facing[0], exact > 0) << "trial " << trial;
     decided_near_zero += std::abs(glm::dot(glm::cross(b - a, c - a), light - a)) < 1e-12;
@@ -161,7 +161,7 @@ TEST(MeshVolume, ConvexMeshesGiveClosedOrientedManifoldVolumes) {
                                                           << light.y << " " << light.z;
       EXPECT_GE(v.side_quads, 3);
       std::vector<uint8_t> facing;
-      classify_faces(mesh, light, facing);
+      classify_light_facing(mesh, light, facing);
       const int turned_away = int(std::count(facing.begin(), facing.end(), 0));
       EXPECT_EQ(v.light_cap_triangles, turned_away);
       EXPECT_EQ(v.dark_cap_triangles, turned_away);

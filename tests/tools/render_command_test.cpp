@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "mesh/scene/scene_parser.hpp"
+#include "scene/scene_parser.hpp"
 #include "image/image.hpp"
 #include "reference/ray_cast.hpp"
 #include "tests/tools/command_fixture.hpp"
@@ -141,7 +141,7 @@ TEST_F(RenderCommand, ExplainPrintsThePlan) {
   EXPECT_NE(r.out.find("triangle (line 5): three side quads, 3 quads + 2 cap triangles"), std::string::npos);
 }
 
-TEST_F(RenderCommand, ExplainSaysWhichShadowMethodEachMeshGotAndWhy) {
+TEST_F(RenderCommand, ExplainSaysWhichVolumeKindEachMeshGotAndWhy) {
   const CommandResult r = run("render " + std::string(UMBRA_SOURCE_DIR) + "/scenes/mesh_open_box.scene --size 32x32 --method zfail --explain -o " +
                               path("a.png"));
   EXPECT_EQ(r.status, 0) << r.err;

@@ -1,24 +1,17 @@
-#include "mesh/scene/scene_parser.hpp"
+#include "scene/scene_parser.hpp"
 
-#include <atomic>
 #include <charconv>
 #include <cmath>
-#include <limits>
-#include <exception>
-#include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
 
 #include <glm/geometric.hpp>
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/mat3x3.hpp>
-#include <tbb/parallel_for.h>
 
-#include "mesh/check/mesh_check.hpp"
-#include "mesh/io/mesh_file.hpp"
 #include "mesh/predicates/orientation.hpp"
+#include "mesh/word_list.hpp"
+#include "scene/scene_text.hpp"
 
 namespace umbra {
 namespace {
@@ -53,8 +46,6 @@ std::vector<Token> tokenize(const std::string& line, const FileLoc& where) {
   }
   return tokens;
 }
-
-std::string in_quotes(const std::string& s) { return "\"" + s + "\""; }
 
 // Reads the tokens of one statement left to right, with located errors.
 class StatementReader {
@@ -117,10 +108,7 @@ class StatementReader {
     bool known = false;
     for (const std::string& a : allowed) known = known || a == k;
     if (!known) {
-      std::string list;
-      for (size_t i = 0; i < allowed.size(); ++i)
-        list += (i == 0 ? "" : i + 1 == allowed.size() ? " or " : ", ") + allowed[i];
-      fail_at_next("unknown keyword " + in_quotes(k) + " in " + statement + " (expected " + list + ")");
+      fail_at_next("unknown keyword " + in_quotes(k) + " in " + statement + " (expected " + word_list(allowed) + ")");
     }
     if (!seen_.insert(k).second) fail_at_next("keyword " + in_quotes(k) + " is given twice");
     ++next_;
@@ -138,12 +126,6 @@ class StatementReader {
 };
 
 class SceneBuilder {
-  struct PendingMesh {
-    Mesh mesh;
-    FileLoc path_at;
-    std::vector<SoupMaterial> file_materials;  // the file's own, which triangle_materials index until placed in the scene
-  };
-
  public:
   explicit SceneBuilder(const std::string& name) {
     scene_.path = name;
@@ -164,7 +146,9 @@ class SceneBuilder {
   }
 
   Scene finish(const MeshLoadProgress& progress) {
-    load_meshes(progress);
+    // Every mesh file is read once the whole scene has parsed, so that a
+    // typo later in the scene is reported before a large file is read.
+    load_scene_meshes(std::move(pending_meshes_), scene_, progress);
     if (scene_.lights.empty())
       throw InputError({scene_.path}, "the scene has no light: add a line such as \"light 0.6 0.8 1.6\"");
     return std::move(scene_);
@@ -226,7 +210,7 @@ class SceneBuilder {
     const FileLoc radius_at = r.next_loc();
     s.radius = r.number("sphere radius");
     if (s.radius <= 0)
-      throw InputError(radius_at, "the sphere radius must be positive, got " + format(s.radius));
+      throw InputError(radius_at, "the sphere radius must be positive, got " + number_text(s.radius));
     s.material = material_ref(r, "sphere");
     if (glm::any(glm::greaterThan(glm::abs(s.center) + s.radius, glm::dvec3(1.0))))
       warn(s.where, "sphere reaches outside the cube [-1,1]^3 that scenes are made for");
@@ -264,7 +248,7 @@ class SceneBuilder {
       } else if (*k == "scale") {
         const FileLoc at = r.next_loc();
         m.scale = r.number("mesh scale");
-        if (m.scale <= 0) throw InputError(at, "the mesh scale must be positive, got " + format(m.scale));
+        if (m.scale <= 0) throw InputError(at, "the mesh scale must be positive, got " + number_text(m.scale));
       } else if (*k == "rotate") {
         const FileLoc at = r.next_loc();
         m.rotation_axis = r.vec3("mesh rotation axis");
@@ -274,135 +258,7 @@ class SceneBuilder {
         m.translation = r.vec3("mesh translation");
       }
     }
-    pending_meshes_.push_back({std::move(m), path_at, {}});
-  }
-
-  // Reads every mesh file once the whole scene has parsed, so that a typo
-  // later in the scene is reported before a large file is read.
-  // Meshes load on every core, each on its own; the first error in file
-  // order is the one reported, and warnings come in file order.
-  void load_meshes(const MeshLoadProgress& progress) {
-    const std::filesystem::path folder = std::filesystem::path(scene_.path).parent_path();
-    std::vector<std::string> written(pending_meshes_.size());
-    for (size_t k = 0; k < pending_meshes_.size(); ++k) {
-      Mesh& m = pending_meshes_[k].mesh;
-      written[k] = m.path;
-      m.path = (folder / written[k]).lexically_normal().string();
-    }
-    std::vector<std::exception_ptr> errors(pending_meshes_.size());
-    std::atomic<size_t> started{0};
-    tbb::parallel_for(size_t(0), pending_meshes_.size(), [&](size_t k) {
-      if (progress) progress(started++, pending_meshes_.size(), pending_meshes_[k].mesh.path);
-      try {
-        load_mesh(pending_meshes_[k]);
-      } catch (...) {
-        errors[k] = std::current_exception();
-      }
-    });
-    for (size_t k = 0; k < pending_meshes_.size(); ++k) {
-      if (errors[k]) std::rethrow_exception(errors[k]);
-      Mesh& m = pending_meshes_[k].mesh;
-      for (const ReadWarning& w : m.report.warnings) {
-        if (w.line > 0) warn({m.path, w.line, 0}, w.message);
-        else warn(m.where, "mesh " + in_quotes(written[k]) + ": " + w.message);
-      }
-      place_file_materials(pending_meshes_[k], written[k]);
-      if (m.triangles.empty()) {
-        warn(m.where, "mesh " + in_quotes(written[k]) + " has no faces: it casts no shadow");
-      } else {
-        if (outside_the_cube(m))
-          warn(m.where, "mesh " + in_quotes(written[k]) + " reaches outside the cube [-1,1]^3 that scenes are made for (its box is " +
-                            box_text(m.bounds_min, m.bounds_max) + (m.fit ? ")" : "; \"fit\" scales it into the cube)"));
-        if (!m.components.all_closed())
-          warn(m.where, "mesh " + in_quotes(written[k]) + " is " + m.components.phrase() + ": " + m.components.volume_phrase());
-      }
-      scene_.meshes.push_back(std::move(m));
-    }
-  }
-
-  // Beyond the cube by more than fitting's rounding.
-  static bool outside_the_cube(const Mesh& m) {
-    constexpr double kRounding = 1e-9;
-    return glm::any(glm::greaterThan(glm::max(glm::abs(m.bounds_min), glm::abs(m.bounds_max)), glm::dvec3(1.0 + kRounding)));
-  }
-
-  static std::string box_text(const glm::dvec3& lo, const glm::dvec3& hi) {
-    const auto point = [](const glm::dvec3& p) { return "(" + format(p.x) + ", " + format(p.y) + ", " + format(p.z) + ")"; };
-    return point(lo) + " to " + point(hi);
-  }
-
-  // The file's own materials join the scene's, named "FILE:NAME", unless the
-  // statement names a material, which then covers every face. A face the
-  // file gives no material takes the statement's (or the default).
-  void place_file_materials(PendingMesh& pending, const std::string& written) {
-    Mesh& m = pending.mesh;
-    if (m.material_given || pending.file_materials.empty()) {
-      m.triangle_materials.clear();
-      return;
-    }
-    const int first = int(scene_.materials.size());
-    for (const SoupMaterial& f : pending.file_materials) {
-      Material material;
-      material.name = written + ":" + f.name;
-      material.ambient = f.diffuse;  // as a surface reflects diffuse light, so ambient light
-      material.diffuse = f.diffuse;
-      material.specular = f.specular;
-      material.shininess = f.shininess;
-      scene_.materials.push_back(material);
-    }
-    for (int& t : m.triangle_materials) t = t < 0 ? m.material : first + t;
-  }
-
-  // Reads, checks and places one mesh; throws its located InputError.
-  static void load_mesh(PendingMesh& pending) {
-    Mesh& m = pending.mesh;
-    MeshAnalysis analysis;
-    try {
-      CheckOptions topology_only;
-      topology_only.self_intersection_seconds = 0.0;
-      topology_only.triangle_topology = true;
-      topology_only.search_closed_meshes = true;
-      analysis = analyse_mesh(read_polygon_soup(m.path), topology_only);
-    } catch (const InputError& e) {
-      if (e.where().line == 0)  // the file as a whole: say so at the statement that names it
-        throw InputError(pending.path_at, "mesh file " + in_quotes(m.path) + ": " + e.message());
-      throw InputError(e.where(), e.message() + " (in the mesh of " + m.where.str() + ")");
-    }
-    // Fit, then scale, then rotate, then translate (scene-format.md); a
-    // positive scale and a rotation keep the faces' orientation.
-    glm::dvec3 fit_centre(0.0);
-    double fit_scale = 1.0;
-    if (m.fit && !analysis.positions.empty()) {
-      // The box of the faces' corners: a point no face uses is no part of the shape.
-      glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-      for (const auto& t : analysis.triangles)
-        for (const uint32_t v : t) lo = glm::min(lo, analysis.positions[v]), hi = glm::max(hi, analysis.positions[v]);
-      const double longest = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
-      if (analysis.triangles.empty())
-        throw InputError(pending.path_at, "mesh file " + in_quotes(m.path) + " has no faces with area to fit");
-      if (std::isinf(longest))
-        throw InputError(pending.path_at, "mesh file " + in_quotes(m.path) + " is too large to fit: its extent overflows double precision");
-      if (!(longest > 0.0))
-        throw InputError(pending.path_at, "mesh file " + in_quotes(m.path) + " has no extent to fit: its faces' corners coincide");
-      fit_centre = lo / 2.0 + hi / 2.0;  // halves first: lo + hi may overflow where each does not
-      fit_scale = 2.0 / longest;
-    }
-    const glm::dmat3 rotation(glm::rotate(glm::dmat4(1.0), glm::radians(m.rotation_deg), glm::normalize(m.rotation_axis)));
-    m.positions.reserve(analysis.positions.size());
-    for (const glm::dvec3& p : analysis.positions)
-      m.positions.push_back(rotation * (m.scale * fit_scale * (p - fit_centre)) + m.translation);
-    m.triangles = std::move(analysis.triangles);
-    if (!m.triangles.empty()) {  // the faces' box, as fit measures it
-      m.bounds_min = m.bounds_max = m.positions[m.triangles[0][0]];
-      for (const auto& t : m.triangles)
-        for (const uint32_t v : t) m.bounds_min = glm::min(m.bounds_min, m.positions[v]), m.bounds_max = glm::max(m.bounds_max, m.positions[v]);
-    }
-    m.report = std::move(analysis.report);
-    m.culls_back_faces = m.report.back_faces_hidden();
-    m.triangle_materials = std::move(analysis.triangle_materials);
-    pending.file_materials = std::move(analysis.materials);
-    m.edges = std::move(analysis.topology->edges);  // asked for above: always given
-    m.components = std::move(analysis.topology->components);
+    pending_meshes_.push_back({std::move(m), path_at});
   }
 
   void camera(StatementReader& r) {
@@ -423,7 +279,7 @@ class SceneBuilder {
     for (const char* k : {"eye", "target", "up", "fovy"})
       if (!r.seen(k)) r.fail_at_next(std::string("the camera needs \"") + k + "\" (camera eye X Y Z target X Y Z up X Y Z fovy DEG)");
     if (!(c.fovy_deg > 0 && c.fovy_deg < 180))
-      throw InputError(fovy_at, "fovy must be between 0 and 180 degrees, got " + format(c.fovy_deg));
+      throw InputError(fovy_at, "fovy must be between 0 and 180 degrees, got " + number_text(c.fovy_deg));
     const glm::dvec3 view = c.target - c.eye;
     if (glm::length(view) == 0)
       throw InputError(r.statement_loc(), "the camera eye and target are the same point");
@@ -435,15 +291,9 @@ class SceneBuilder {
 
   void warn(const FileLoc& where, const std::string& message) { scene_.warnings.push_back({where, message}); }
 
-  static std::string format(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-  }
-
   Scene scene_;
   std::map<std::string, FileLoc> materials_;
-  std::vector<PendingMesh> pending_meshes_;
+  std::vector<MeshStatement> pending_meshes_;
 };
 
 }  // namespace

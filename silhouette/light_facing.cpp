@@ -1,4 +1,4 @@
-#include "silhouette/classify_faces.hpp"
+#include "silhouette/light_facing.hpp"
 
 #include <cmath>
 
@@ -8,7 +8,7 @@
 
 namespace umbra {
 
-void classify_faces(const MeshAdjacency& mesh, const glm::dvec3& light, std::vector<uint8_t>& facing) {
+void classify_light_facing(const MeshAdjacency& mesh, const glm::dvec3& light, std::vector<uint8_t>& facing) {
   const size_t count = mesh.planes.size();
   facing.resize(count);
   const double light_distance = glm::length(light);

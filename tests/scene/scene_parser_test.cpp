@@ -1,4 +1,4 @@
-#include "mesh/scene/scene_parser.hpp"
+#include "scene/scene_parser.hpp"
 
 #include <gtest/gtest.h>
 

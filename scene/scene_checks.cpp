@@ -1,4 +1,4 @@
-#include "mesh/scene/scene_checks.hpp"
+#include "scene/scene_checks.hpp"
 
 #include <cmath>
 

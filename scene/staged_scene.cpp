@@ -1,4 +1,4 @@
-#include "mesh/scene/staged_scene.hpp"
+#include "scene/staged_scene.hpp"
 
 #include <filesystem>
 

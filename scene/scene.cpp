@@ -1,4 +1,4 @@
-#include "mesh/scene/scene.hpp"
+#include "scene/scene.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,13 +10,6 @@
 #include <tbb/parallel_reduce.h>
 
 namespace umbra {
-
-std::string FileLoc::str() const {
-  std::string s = file;
-  if (line > 0) s += ":" + std::to_string(line);
-  if (line > 0 && column > 0) s += ":" + std::to_string(column);
-  return s;
-}
 
 Camera spec_camera() {
   // tan(45deg / 2) * (3.4 - 1) = 0.994: the face z = 1 spans 99.4% of the height.

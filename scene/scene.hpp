@@ -1,6 +1,8 @@
 #pragma once
-// The validated scene (scene-format.md) as plain values. Nothing above mesh/
-// sees scene text: the parser produces this, the renderer consumes it.
+// The validated scene (scene-format.md) as plain values. Nothing above scene/
+// sees scene text: the parser produces this, the renderer consumes it. A mesh
+// here holds what rendering needs, not the check's report, so nothing that
+// renders depends on mesh/check/.
 
 #include <array>
 #include <cstdint>
@@ -10,10 +12,10 @@
 
 #include <glm/vec3.hpp>
 
+#include "mesh/input_error.hpp"
+#include "mesh/shared_positions.hpp"
 #include "mesh/topology/closed_components.hpp"
 #include "mesh/topology/edge_table.hpp"
-#include "mesh/input_error.hpp"
-#include "mesh/check/mesh_report.hpp"
 
 namespace umbra {
 
@@ -64,13 +66,15 @@ struct Mesh {
   glm::dvec3 translation{0.0};
   FileLoc where;
 
-  std::vector<glm::dvec3> positions;
+  SharedPositions positions;  // the one copy of the points, which the mesh's caster shares
   std::vector<std::array<uint32_t, 3>> triangles;
   glm::dvec3 bounds_min{0.0}, bounds_max{0.0};  // of the triangles' corners, in scene coordinates
   EdgeTable edges;               // of `triangles`
-  ClosedComponents components;   // of `triangles`
-  MeshReport report;  // the file's topology as `umbra check` reports it, searched for self-intersections only if all closed
-  // Every shell hides its back faces (MeshReport::back_faces_hidden): seen
+  ClosedComponents components;   // of `triangles`: which cast from their silhouette
+  // What loading changed, as the check reports it: "2 duplicate faces
+  // dropped, 588 faces flipped to agree"; "" when nothing.
+  std::string loading_changes;
+  // Every shell hides its back faces (the check's back_faces_hidden): seen
   // from outside the mesh's box, they may be culled.
   bool culls_back_faces = false;
 
@@ -82,7 +86,12 @@ struct Camera {
   glm::dvec3 target{0.0};
   glm::dvec3 up{0.0, 1.0, 0.0};
   double fovy_deg = 45.0;
+
+  bool operator==(const Camera& o) const { return eye == o.eye && target == o.target && up == o.up && fovy_deg == o.fovy_deg; }
+  bool operator!=(const Camera& o) const { return !(*this == o); }
 };
+// A member added to Camera must join operator== (plans are kept while the camera compares equal).
+static_assert(sizeof(Camera) == 10 * sizeof(double), "compare the new member of Camera in operator==");
 
 // The default view: looking down -z at the origin, +y up, with the front face
 // of the cube [-1,1]^3 (z = 1) filling 99% of the window's height.

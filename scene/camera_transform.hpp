@@ -4,7 +4,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
-#include "mesh/scene/scene.hpp"
+#include "scene/scene.hpp"
 
 namespace umbra {
 

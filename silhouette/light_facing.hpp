@@ -1,4 +1,6 @@
 #pragma once
+// Which faces of a closed mesh face a light: the first step of finding its
+// silhouette, once per light and frame.
 
 #include <cstdint>
 #include <vector>
@@ -14,6 +16,6 @@ namespace umbra {
 // cannot change the sign; elsewhere the exact orientation predicate does, so
 // a face whose plane passes through the light is always "not facing" and two
 // faces never disagree about a light on their common plane.
-void classify_faces(const MeshAdjacency& mesh, const glm::dvec3& light, std::vector<uint8_t>& facing);
+void classify_light_facing(const MeshAdjacency& mesh, const glm::dvec3& light, std::vector<uint8_t>& facing);
 
 }  // namespace umbra

@@ -1,11 +1,11 @@
-#include "mesh/scene/scene_checks.hpp"
+#include "scene/scene_checks.hpp"
 
 #include <cmath>
 #include <limits>
 
 #include <gtest/gtest.h>
 
-#include "mesh/scene/scene_parser.hpp"
+#include "scene/scene_parser.hpp"
 
 namespace umbra {
 namespace {

@@ -2,7 +2,7 @@
 // Checks that depend on where the lights are now (after --light-angle), so
 // they run on the final scene rather than in the parser.
 
-#include "mesh/scene/scene.hpp"
+#include "scene/scene.hpp"
 
 namespace umbra {
 

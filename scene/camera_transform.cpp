@@ -1,4 +1,4 @@
-#include "mesh/scene/camera_transform.hpp"
+#include "scene/camera_transform.hpp"
 
 #include <algorithm>
 #include <cmath>

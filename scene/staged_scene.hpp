@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "mesh/scene/scene.hpp"
-#include "mesh/scene/scene_parser.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_parser.hpp"
 
 namespace umbra {
 

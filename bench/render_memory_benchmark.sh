@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# Peak memory and wall time of `umbra render` of a mesh file on its own,
+# against umbra's own ray-cast reference of the same file, and against an
+# earlier build when BEFORE names its umbra executable:
+#   bench/render_memory_benchmark.sh [RUNS]           (after ./build.sh; default 5)
+#   BEFORE=/tmp/umbra-old bench/render_memory_benchmark.sh
+# The files: Khronos's two-cylinder engine (110k triangles, open; Debian's
+# assimp-testmodels) and the 1.2M-triangle bunny that check_benchmark.sh
+# makes (closed), at 800x800; and a scene of two spheres, which shows what
+# the GL context alone costs. Rows run alternately, RUNS rounds; medians.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+runs=${1:-5}
+build=build
+data=$build/bench-data
+engine=/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb
+[ -x $build/umbra ] && [ -x $build/bench/make_subdivided_mesh ] || { echo "bench: run ./build.sh first" >&2; exit 2; }
+[ -f "$engine" ] || { echo "bench: $engine is missing (./build.sh installs assimp-testmodels)" >&2; exit 2; }
+mkdir -p "$data"
+if [ ! -f "$data/bunny-1M.glb" ]; then
+  tar xzf /usr/share/doc/libcgal-dev/data.tar.gz -C "$data" data/meshes/bunny00.off
+  $build/bench/make_subdivided_mesh "$data/data/meshes/bunny00.off" "$data/bunny-1M.stl" "$data/bunny-1M.obj" \
+    "$data/bunny-1M.glb" 2
+fi
+
+. bench/timing.sh
+
+builds=("now|$build/umbra")
+[ -n "${BEFORE:-}" ] && builds+=("before|$BEFORE")
+rows=()
+for b in "${builds[@]}"; do
+  exe=${b#*|}
+  rows+=("${b%%|*}: render two_spheres.scene|$exe render scenes/two_spheres.scene -o $data/mem.png --size 800x800")
+  rows+=("${b%%|*}: render 2CylinderEngine.glb|$exe render $engine -o $data/mem.png --size 800x800")
+  rows+=("${b%%|*}: render bunny-1M.glb|$exe render $data/bunny-1M.glb -o $data/mem.png --size 800x800")
+done
+rows+=("raycast: render --method raycast 2CylinderEngine.glb|$build/umbra render --method raycast $engine -o $data/mem.png --size 800x800")
+rows+=("raycast: render --method raycast bunny-1M.glb|$build/umbra render --method raycast $data/bunny-1M.glb -o $data/mem.png --size 800x800")
+
+rm -f "$data"/mem-*.txt
+for ((i = 0; i < runs; i++)); do
+  for k in "${!rows[@]}"; do
+    # shellcheck disable=SC2086 # the command is split into words on purpose (no path holds a blank)
+    time_once "$data/mem-$k.txt" ${rows[$k]#*|}
+  done
+done
+echo "$(nproc) cores; $runs rounds"
+echo
+echo "| build: command | median peak memory (MiB) | median wall time (s) |"
+echo "|---|---|---|"
+for k in "${!rows[@]}"; do
+  printf '| %s | %.0f | %s |\n' "${rows[$k]%%|*}" "$(echo "$(median_of "$data/mem-$k.txt" 2) / 1024" | bc -l)" \
+    "$(median_of "$data/mem-$k.txt" 1)"
+done

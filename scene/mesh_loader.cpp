@@ -1,0 +1,172 @@
+#include "scene/mesh_loader.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <exception>
+#include <filesystem>
+#include <limits>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/vector_relational.hpp>
+#include <tbb/parallel_for.h>
+
+#include "mesh/check/mesh_check.hpp"
+#include "mesh/io/mesh_file.hpp"
+#include "scene/scene_text.hpp"
+
+namespace umbra {
+namespace {
+
+// One statement's mesh as read, with what the scene takes from the file
+// once every mesh has loaded: its warnings and its own materials.
+struct LoadedMesh {
+  Mesh mesh;
+  std::vector<ReadWarning> warnings;
+  std::vector<SoupMaterial> file_materials;  // which mesh.triangle_materials index until placed in the scene
+};
+
+// Fit, then scale, then rotate, then translate (scene-format.md): the
+// transform that takes the file's points into the scene. A positive scale
+// and a rotation keep the faces' orientation.
+std::vector<glm::dvec3> placed_points(const Mesh& m, const FileLoc& path_at, const MeshAnalysis& analysis) {
+  glm::dvec3 fit_centre(0.0);
+  double fit_scale = 1.0;
+  if (m.fit && !analysis.positions.empty()) {
+    // The box of the faces' corners: a point no face uses is no part of the shape.
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    for (const auto& t : analysis.triangles)
+      for (const uint32_t v : t) lo = glm::min(lo, analysis.positions[v]), hi = glm::max(hi, analysis.positions[v]);
+    const double longest = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+    if (analysis.triangles.empty())
+      throw InputError(path_at, "mesh file " + in_quotes(m.path) + " has no faces with area to fit");
+    if (std::isinf(longest))
+      throw InputError(path_at, "mesh file " + in_quotes(m.path) + " is too large to fit: its extent overflows double precision");
+    if (!(longest > 0.0))
+      throw InputError(path_at, "mesh file " + in_quotes(m.path) + " has no extent to fit: its faces' corners coincide");
+    fit_centre = lo / 2.0 + hi / 2.0;  // halves first: lo + hi may overflow where each does not
+    fit_scale = 2.0 / longest;
+  }
+  const glm::dmat3 rotation(glm::rotate(glm::dmat4(1.0), glm::radians(m.rotation_deg), glm::normalize(m.rotation_axis)));
+  std::vector<glm::dvec3> points;
+  points.reserve(analysis.positions.size());
+  for (const glm::dvec3& p : analysis.positions)
+    points.push_back(rotation * (m.scale * fit_scale * (p - fit_centre)) + m.translation);
+  return points;
+}
+
+// Reads, checks and places one mesh; throws its located InputError.
+LoadedMesh load_mesh(MeshStatement statement) {
+  LoadedMesh loaded{std::move(statement.mesh), {}, {}};
+  Mesh& m = loaded.mesh;
+  MeshAnalysis analysis;
+  try {
+    CheckOptions topology_only;
+    topology_only.self_intersection_seconds = 0.0;
+    topology_only.triangle_topology = true;
+    topology_only.search_closed_meshes = true;
+    analysis = analyse_mesh(read_polygon_soup(m.path), topology_only);
+  } catch (const InputError& e) {
+    if (e.where().line == 0)  // the file as a whole: say so at the statement that names it
+      throw InputError(statement.path_at, "mesh file " + in_quotes(m.path) + ": " + e.message());
+    throw InputError(e.where(), e.message() + " (in the mesh of " + m.where.str() + ")");
+  }
+  m.positions = placed_points(m, statement.path_at, analysis);
+  m.triangles = std::move(analysis.triangles);
+  if (!m.triangles.empty()) {  // the faces' box, as fit measures it
+    m.bounds_min = m.bounds_max = m.positions[m.triangles[0][0]];
+    for (const auto& t : m.triangles)
+      for (const uint32_t v : t) m.bounds_min = glm::min(m.bounds_min, m.positions[v]), m.bounds_max = glm::max(m.bounds_max, m.positions[v]);
+  }
+  m.loading_changes = analysis.report.loading_changes();
+  m.culls_back_faces = analysis.report.back_faces_hidden();
+  m.triangle_materials = std::move(analysis.triangle_materials);
+  m.edges = std::move(analysis.topology->edges);  // asked for above: always given
+  m.components = std::move(analysis.topology->components);
+  loaded.warnings = std::move(analysis.report.warnings);
+  loaded.file_materials = std::move(analysis.materials);
+  return loaded;
+}
+
+// Beyond the cube by more than fitting's rounding.
+bool outside_the_cube(const Mesh& m) {
+  constexpr double kRounding = 1e-9;
+  return glm::any(glm::greaterThan(glm::max(glm::abs(m.bounds_min), glm::abs(m.bounds_max)), glm::dvec3(1.0 + kRounding)));
+}
+
+std::string box_text(const glm::dvec3& lo, const glm::dvec3& hi) {
+  const auto point = [](const glm::dvec3& p) {
+    return "(" + number_text(p.x) + ", " + number_text(p.y) + ", " + number_text(p.z) + ")";
+  };
+  return point(lo) + " to " + point(hi);
+}
+
+// The file's own materials join the scene's, named "FILE:NAME", unless the
+// statement names a material, which then covers every face. A face the
+// file gives no material takes the statement's (or the default).
+void place_file_materials(LoadedMesh& loaded, const std::string& written, Scene& scene) {
+  Mesh& m = loaded.mesh;
+  if (m.material_given || loaded.file_materials.empty()) {
+    m.triangle_materials.clear();
+    return;
+  }
+  const int first = int(scene.materials.size());
+  for (const SoupMaterial& f : loaded.file_materials) {
+    Material material;
+    material.name = written + ":" + f.name;
+    material.ambient = f.diffuse;  // as a surface reflects diffuse light, so ambient light
+    material.diffuse = f.diffuse;
+    material.specular = f.specular;
+    material.shininess = f.shininess;
+    scene.materials.push_back(material);
+  }
+  for (int& t : m.triangle_materials) t = t < 0 ? m.material : first + t;
+}
+
+}  // namespace
+
+void load_scene_meshes(std::vector<MeshStatement> statements, Scene& scene, const MeshLoadProgress& progress) {
+  const std::filesystem::path folder = std::filesystem::path(scene.path).parent_path();
+  std::vector<std::string> written(statements.size());
+  for (size_t k = 0; k < statements.size(); ++k) {
+    Mesh& m = statements[k].mesh;
+    written[k] = m.path;
+    m.path = (folder / written[k]).lexically_normal().string();
+  }
+  std::vector<LoadedMesh> loaded(statements.size());
+  std::vector<std::exception_ptr> errors(statements.size());
+  std::atomic<size_t> started{0};
+  tbb::parallel_for(size_t(0), statements.size(), [&](size_t k) {
+    if (progress) progress(started++, statements.size(), statements[k].mesh.path);
+    try {
+      loaded[k] = load_mesh(std::move(statements[k]));
+    } catch (...) {
+      errors[k] = std::current_exception();
+    }
+  });
+  const auto warn = [&](const FileLoc& where, const std::string& message) { scene.warnings.push_back({where, message}); };
+  for (size_t k = 0; k < loaded.size(); ++k) {
+    if (errors[k]) std::rethrow_exception(errors[k]);
+    Mesh& m = loaded[k].mesh;
+    const std::string named = "mesh " + in_quotes(written[k]);
+    for (const ReadWarning& w : loaded[k].warnings) {
+      if (w.line > 0) warn({m.path, w.line, 0}, w.message);
+      else warn(m.where, named + ": " + w.message);
+    }
+    place_file_materials(loaded[k], written[k], scene);
+    if (m.triangles.empty()) {
+      warn(m.where, named + " has no faces: it casts no shadow");
+    } else {
+      if (outside_the_cube(m))
+        warn(m.where, named + " reaches outside the cube [-1,1]^3 that scenes are made for (its box is " +
+                          box_text(m.bounds_min, m.bounds_max) + (m.fit ? ")" : "; \"fit\" scales it into the cube)"));
+      if (!m.components.all_closed()) warn(m.where, named + " is " + m.components.phrase() + ": " + m.components.volume_phrase());
+    }
+    scene.meshes.push_back(std::move(m));
+  }
+}
+
+}  // namespace umbra

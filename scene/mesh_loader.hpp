@@ -1,0 +1,33 @@
+#pragma once
+// Reads the mesh files a scene names, once the whole scene has parsed: each
+// file is read and checked (mesh/check/), then placed, and the scene keeps
+// only what rendering needs of it (Scene::Mesh). The parser reads statements;
+// this builds their meshes.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace umbra {
+
+// Called before each mesh file is read, with how many came before and how
+// many the scene has: large meshes take seconds, and a caller may show that.
+using MeshLoadProgress = std::function<void(size_t loaded, size_t total, const std::string& path)>;
+
+// A mesh statement as parsed: its path as written, its material and
+// placement, where it is, and where its path is.
+struct MeshStatement {
+  Mesh mesh;
+  FileLoc path_at;
+};
+
+// Reads every statement's file, its path taken relative to the folder of the
+// scene file (scene.path), on every core, each file on its own. Appends the
+// meshes, the files' own materials and the warnings to `scene` in statement
+// order; throws the first InputError in statement order, located in the mesh
+// file where it has a line, else at the statement's path.
+void load_scene_meshes(std::vector<MeshStatement> statements, Scene& scene, const MeshLoadProgress& progress);
+
+}  // namespace umbra
