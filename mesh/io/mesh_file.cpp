@@ -22,6 +22,7 @@ PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path) 
   const MeshFormat* reader = mesh_format_by_id(format);
   if (!reader) throw InputError({path, 0, 0}, "not a mesh file (" + mesh_format_names() + "): " + describe_content(bytes));
   PolygonSoup soup = reader->read(bytes, path);
+  if (soup.format.empty()) soup.format = reader->name;  // a reader names a variant ("STL (binary)") or leaves it to its row
   require_corners_in_range(soup);
   if (!soup.polygon_materials.empty() && soup.polygon_materials.size() != soup.polygon_count())
     throw std::logic_error("a reader gave " + std::to_string(soup.polygon_materials.size()) + " face materials for " +

@@ -125,14 +125,14 @@ bool never(std::string_view) { return false; }
 
 const std::vector<MeshFormat>& mesh_formats() {
   static const std::vector<MeshFormat> formats{
-      {"obj", "OBJ", {".obj"}, never, is_obj, [](std::string_view b, const std::string& p) { return read_obj(b, p); }, true},
-      {"off", "OFF", {".off"}, never, is_off, read_off, true},
+      {"obj", "OBJ", {".obj"}, never, is_obj, [](std::string_view b, const std::string& p) { return read_obj(b, p); }, true, "+y"},
+      {"off", "OFF", {".off"}, never, is_off, read_off, true, "+y"},
       {"ply", "PLY", {".ply"}, [](std::string_view b) { return starts_with(b, "ply\n") || starts_with(b, "ply\r"); }, never,
-       read_ply, true},
-      {"stl", "STL", {".stl"}, is_binary_stl, is_ascii_stl, read_stl, true},
+       read_ply, true, "+y"},
+      {"stl", "STL", {".stl"}, is_binary_stl, is_ascii_stl, read_stl, true, "+z"},
       {"gltf", "glTF", {".gltf", ".glb"}, [](std::string_view b) { return starts_with(b, "glTF"); }, is_gltf_json, read_gltf,
-       false},
-      {"3mf", "3MF", {".3mf"}, [](std::string_view b) { return is_zip(b) && has_model_part(b); }, never, read_3mf, false},
+       false, "+y"},
+      {"3mf", "3MF", {".3mf"}, [](std::string_view b) { return is_zip(b) && has_model_part(b); }, never, read_3mf, false, "+z"},
   };
   return formats;
 }

@@ -27,6 +27,11 @@ struct MeshFormat {
   bool (*has_text)(std::string_view head);
   PolygonSoup (*read)(std::string_view bytes, const std::string& path);
   bool repair_writes;  // --repair can write it
+  // The axis that points up by the format's convention, which a model staged
+  // on its own stands on: glTF +Y and 3MF +Z by their specifications, STL +Z
+  // as printing and CAD tools write it, OBJ, PLY and OFF +Y as most
+  // exporters write them.
+  std::string_view up;
 };
 
 // Every format, in the order messages list them and the fuzzers number them.
