@@ -1,53 +1,195 @@
 #include "scene/staged_scene.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include "mesh/input_error.hpp"
 #include "mesh/io/mesh_format.hpp"
+#include "scene/scene_parser.hpp"
 
 namespace umbra {
+namespace {
+
+// The turn that takes each axis of the file to +z, the stage's up (as the
+// viewer's light orbits about z, and scenes are lit from z > 1), as the
+// scene's `rotate` clause writes it (about the axis, counter-clockwise).
+// The front of a +y-up model (+z) turns to -y, where the camera is.
+struct UpTurn {
+  const char* up;
+  glm::dvec3 axis;
+  double degrees;
+};
+constexpr UpTurn kUpTurns[] = {
+    {"+z", {1, 0, 0}, 0}, {"-z", {1, 0, 0}, 180}, {"+y", {1, 0, 0}, 90},
+    {"-y", {1, 0, 0}, -90}, {"+x", {0, 1, 0}, -90}, {"-x", {0, 1, 0}, 90},
+};
+
+const UpTurn& up_turn(const std::string& up) {
+  for (const UpTurn& t : kUpTurns)
+    if (up == t.up) return t;
+  throw std::invalid_argument("not an up axis: " + up);
+}
+
+// The view: from the front (-y) and to the right (35 degrees round toward
+// +x), 30 degrees above the floor, through a 30-degree lens; the light from
+// the front and to the left, high up, so that the shadow falls to the back
+// and right, beside the model rather than behind it.
+constexpr double kAzimuthDeg = 35.0, kElevationDeg = 30.0, kFovyDeg = 30.0;
+const glm::dvec3 kToLight = glm::normalize(glm::dvec3(-0.55, -0.5, 1.0));
+constexpr double kLightDistance = 4.0;  // from the model's centre; the fitted model's longest side is 2
+constexpr double kMargin = 1.12;        // the frame's half-size over the framed points'
+
+// Numbers as the staged text writes them: short, and read back as the same doubles.
+std::string num(double v) {
+  std::ostringstream s;
+  s << std::setprecision(6) << (std::abs(v) < 1e-9 ? 0.0 : v);
+  return s.str();
+}
+std::string vec(const glm::dvec3& v) { return num(v.x) + " " + num(v.y) + " " + num(v.z); }
+// The floor's height, rounded down to a millionth (the fitted model spans 2):
+// as written, the floor never cuts into the model it stands under.
+double floor_height(double lowest) { return std::floor(lowest * 1e6) / 1e6; }
+
+}  // namespace
 
 bool is_mesh_file(const std::string& path) {
   return std::filesystem::path(path).extension() != ".scene" && !detect_mesh_format_of_file(path).empty();
 }
 
-std::string staged_scene_text(const std::string& mesh_path) {
-  const std::string name = std::filesystem::path(mesh_path).filename().string();
-  return "# " + name + " on its own, as umbra stages a mesh file: fitted into the\n"
-         "# cube [-1,1]^3 at 0.8 of its size, over the cube's back face as a floor.\n"
-         "light 0.6 0.8 1.6\n"
-         "material floor diffuse 0.7 0.7 0.72\n"
-         "triangle -1 -1 -1   1 -1 -1   1 1 -1 material floor\n"
-         "triangle -1 -1 -1   1 1 -1   -1 1 -1 material floor\n"
-         "mesh \"" + name + "\" fit scale 0.8\n";
+bool is_up_axis(const std::string& up) {
+  return std::any_of(std::begin(kUpTurns), std::end(kUpTurns), [&](const UpTurn& t) { return up == t.up; });
+}
+
+Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi) {
+  Stage stage;
+  const glm::dvec3 centre = lo / 2.0 + hi / 2.0;
+  stage.floor_z = lo.z;
+  stage.light = centre + kLightDistance * kToLight;
+  // What the frame must hold: the box's corners and their shadows on the floor.
+  std::vector<glm::dvec3> points;
+  for (int k = 0; k < 8; ++k) {
+    const glm::dvec3 p(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+    points.push_back(p);
+    const double drop = (stage.light.z - stage.floor_z) / (stage.light.z - p.z);  // the light is above the box
+    points.push_back(stage.light + (p - stage.light) * drop);
+  }
+  const double azimuth = glm::radians(kAzimuthDeg), elevation = glm::radians(kElevationDeg);
+  const glm::dvec3 back(std::sin(azimuth) * std::cos(elevation), -std::cos(azimuth) * std::cos(elevation), std::sin(elevation));
+  const glm::dvec3 forward = -back;
+  const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 0, 1)));
+  const glm::dvec3 up = glm::cross(right, forward);
+  const double reach = std::tan(glm::radians(kFovyDeg / 2)) / kMargin;  // assumes a frame at least as wide as high
+  glm::dvec3 target(0.0);
+  for (const glm::dvec3& p : points) target += p / double(points.size());
+  double distance = 0.0;
+  // The distance at which every point is in the frame; then the target moves
+  // to the middle of the points as seen from there, until it stays put.
+  for (int pass = 0; pass < 50; ++pass) {
+    distance = 0.0;
+    for (const glm::dvec3& p : points) {
+      const glm::dvec3 q = p - target;
+      distance = std::max(distance, std::max(std::abs(glm::dot(q, right)), std::abs(glm::dot(q, up))) / reach - glm::dot(q, forward));
+    }
+    double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo, y_lo = x_lo, y_hi = -x_lo;
+    for (const glm::dvec3& p : points) {
+      const glm::dvec3 q = p - target;
+      const double depth = distance + glm::dot(q, forward);
+      x_lo = std::min(x_lo, glm::dot(q, right) / depth), x_hi = std::max(x_hi, glm::dot(q, right) / depth);
+      y_lo = std::min(y_lo, glm::dot(q, up) / depth), y_hi = std::max(y_hi, glm::dot(q, up) / depth);
+    }
+    const glm::dvec3 shift = distance * ((x_lo + x_hi) / 2 * right + (y_lo + y_hi) / 2 * up);
+    target += shift;
+    if (glm::length(shift) < 1e-4 * distance) break;
+  }
+  stage.camera = Camera{target + distance * back, target, {0, 0, 1}, kFovyDeg};
+  // Far past every edge of the frame: the floor's horizon is never in view.
+  stage.floor_centre = {centre.x, centre.y, stage.floor_z};
+  stage.floor_half_size = 20.0 * distance;
+  return stage;
 }
 
 std::string staged_scene_name(const std::string& mesh_path) { return mesh_path + " (staged)"; }
 
-Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& progress, std::string* staged) {
+Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& progress, std::string* staged,
+                               const std::string& up) {
   if (!is_mesh_file(path)) {
     if (staged) staged->clear();
     return parse_scene_file(path, progress);
   }
-  if (std::filesystem::path(path).filename().string().find('"') != std::string::npos)
+  const std::string file_name = std::filesystem::path(path).filename().string();
+  if (file_name.find('"') != std::string::npos)
     throw InputError({path}, "a scene cannot name a file whose name holds a double quote: rename it to stage it");
-  const std::string text = staged_scene_text(path);
-  if (staged) *staged = text;
+  const MeshFormat* format = mesh_format_by_id(detect_mesh_format_of_file(path));
+  const std::string axis = !up.empty() ? up : format ? std::string(format->up) : "+y";
+  const UpTurn& turn = up_turn(axis);
+  const std::string name = staged_scene_name(path);
+
+  // The mesh first, loaded once: where the floor, light and camera go
+  // depends on its box.
+  const std::string header = "# " + file_name + " on its own, as umbra stages a mesh file: fitted into the\n"
+                             "# cube [-1,1]^3 with its " + axis + " axis up" + (up.empty() ? " (--up changes it)" : "") +
+                             ", standing on a floor,\n"
+                             "# lit from above and to the left, seen from a raised three-quarter view.\n";
+  const int mesh_line = 4;
+  std::string mesh_statement = "mesh \"" + file_name + "\" fit";
+  if (turn.degrees != 0) mesh_statement += " rotate " + vec(turn.axis) + " " + num(turn.degrees);
+  MeshStatement statement;
+  statement.mesh.path = file_name;
+  statement.mesh.fit = true;
+  statement.mesh.rotation_axis = turn.axis;
+  statement.mesh.rotation_deg = turn.degrees;
+  statement.mesh.where = {name, mesh_line, 1};
+  statement.path_at = {name, mesh_line, 6};
+  Scene loaded;
+  loaded.path = name;
+  loaded.materials.push_back(Material{"default"});
   // What the staged scene's mesh statement says belongs to the file: no
   // line of a scene the user never wrote.
-  const std::string name = staged_scene_name(path);
   const std::string about_the_file = "mesh file \"" + path + "\"";
-  Scene scene;
   try {
-    scene = parse_scene_text(text, name, progress);
+    load_scene_meshes({std::move(statement)}, loaded, progress);
   } catch (const InputError& e) {
     if (e.where().file != name) throw;
     std::string message = e.message();
     if (message.rfind(about_the_file, 0) == 0) message.erase(0, about_the_file.size() + (message[about_the_file.size()] == ':' ? 2 : 1));
     throw InputError({path}, message);
   }
-  for (Warning& w : scene.warnings)
+  Mesh& mesh = loaded.meshes.at(0);
+
+  const Stage stage = stage_for(mesh.bounds_min, mesh.bounds_max);
+  const double s = stage.floor_half_size;
+  const glm::dvec3 f(stage.floor_centre.x, stage.floor_centre.y, floor_height(stage.floor_z));
+  const glm::dvec3 corners[4] = {f + glm::dvec3(-s, -s, 0), f + glm::dvec3(s, -s, 0), f + glm::dvec3(s, s, 0), f + glm::dvec3(-s, s, 0)};
+  const Camera& c = stage.camera;
+  const std::string rest = "light " + vec(stage.light) + " ambient 0.35 0.35 0.35\n" +
+                           "material floor diffuse 0.7 0.7 0.72\n"
+                           "triangle " + vec(corners[0]) + "   " + vec(corners[1]) + "   " + vec(corners[2]) + " material floor\n" +
+                           "triangle " + vec(corners[0]) + "   " + vec(corners[2]) + "   " + vec(corners[3]) + " material floor\n" +
+                           "camera eye " + vec(c.eye) + " target " + vec(c.target) + " up 0 0 1 fovy " + num(c.fovy_deg) + "\n";
+  if (staged) *staged = header + mesh_statement + "\n" + rest;
+  // The rest of the stage from the same text, the mesh's line left blank
+  // (its mesh is the one loaded above), so that lines number alike. Its
+  // warnings (a floor beyond the cube) are about umbra's stage, not the file.
+  Scene scene = parse_scene_text(header + "\n" + rest, name);
+  scene.warnings.clear();
+  // The file's own materials follow the stage's; the mesh's indices move with them.
+  const int moved = int(scene.materials.size()) - 1;
+  scene.materials.insert(scene.materials.end(), loaded.materials.begin() + 1, loaded.materials.end());
+  for (int& m : mesh.triangle_materials)
+    if (m > 0) m += moved;
+  scene.meshes.push_back(std::move(mesh));
+  for (Warning& w : loaded.warnings) {
     if (w.where.file == name) w.where = {path};
+    scene.warnings.push_back(std::move(w));
+  }
   return scene;
 }
 

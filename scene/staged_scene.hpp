@@ -1,12 +1,18 @@
 #pragma once
-// A mesh file shown on its own, without a scene written for it: umbra builds
-// the scene that `umbra render MESH` and `umbra view MESH` draw, as scene
-// text the user can save and edit.
+// A mesh file shown on its own, without a scene written for it: umbra stages
+// it as a product shot (f3d and Blender stage a model much the same way).
+// The model stands on a ground plane in its own up axis, lit by one point
+// light above and to one side, seen from a raised three-quarter view that
+// frames it and its shadow; the ground reaches past the frame's edges. The
+// stage is written as scene text that the user can save and edit, and that
+// reads back as the same scene.
 
 #include <string>
 
+#include <glm/vec3.hpp>
+
+#include "scene/mesh_loader.hpp"
 #include "scene/scene.hpp"
-#include "scene/scene_parser.hpp"
 
 namespace umbra {
 
@@ -15,18 +21,27 @@ namespace umbra {
 // says why.
 bool is_mesh_file(const std::string& path);
 
-// The stage for the mesh at `mesh_path`: the mesh fitted into the cube
-// [-1,1]^3 (and shrunk a little, so that it does not touch the floor), the
-// cube's back face z = -1 as a floor, one light above and in front (z > 1),
-// and the default camera. The mesh is named by its file name alone, relative
-// to the folder that staged_scene_name puts the scene in.
-std::string staged_scene_text(const std::string& mesh_path);
+// "+x", "-x", "+y", "-y", "+z" or "-z": the axis of the file that points up.
+bool is_up_axis(const std::string& up);
+
+// The floor, light and camera for a model whose box, fitted and turned so that
+// its up axis is +z, is [lo, hi].
+struct Stage {
+  glm::dvec3 light{0.0};
+  double floor_z = 0.0;
+  glm::dvec3 floor_centre{0.0};
+  double floor_half_size = 0.0;
+  Camera camera;
+};
+Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi);
 
 // The name the staged scene goes by in messages: "MESH (staged)", in the mesh's folder.
 std::string staged_scene_name(const std::string& mesh_path);
 
-// parse_scene_file for a scene, or the staged scene for a mesh file; `staged`
-// (when given) receives the staged scene's text, or "" for a scene file.
-Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& progress = {}, std::string* staged = nullptr);
+// parse_scene_file for a scene, or the staged scene for a mesh file, stood on
+// its `up` axis ("" for its format's own). `staged` (when given) receives the
+// staged scene's text, or "" for a scene file.
+Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& progress = {}, std::string* staged = nullptr,
+                               const std::string& up = "");
 
 }  // namespace umbra

@@ -9,6 +9,7 @@
 #include "mesh/io/mesh_format.hpp"
 #include "mesh/word_list.hpp"
 #include "render/render_method.hpp"
+#include "scene/staged_scene.hpp"
 
 namespace umbra {
 namespace {
@@ -180,6 +181,13 @@ void add_method_option(CommandOptions& options, RenderMethod& method) {
 
 void add_map_size_option(CommandOptions& options, int& texels) {
   options.value("--map-size", [&](const std::string& o, const std::string& t) { texels = parse_int_in(o, t, 16, 8192); });
+}
+
+void add_up_option(CommandOptions& options, std::string& up) {
+  options.value("--up", [&](const std::string& o, const std::string& t) {
+    if (!is_up_axis(t)) throw UsageError(o + " must be +x, -x, +y, -y, +z or -z, got \"" + t + "\"");
+    up = t;
+  });
 }
 
 void add_output_option(CommandOptions& options, std::string& path) {

@@ -28,9 +28,10 @@ Renders SCENE headless (OSMesa) with exact hard shadows from stencil shadow
 volumes (Crow 1977; Heidmann 1991) and writes OUT.png. The sources cited
 here are listed in docs/references.md.
 
-A mesh file ({mesh formats}, told by its content) is shown
-on its own: fitted into the cube [-1,1]^3 over a floor, lit by one light;
---explain prints that scene as text to save and edit.
+A mesh file ({mesh formats}, told by its content) is staged
+on its own: stood on a floor in its up axis, lit by one light above and to
+the left, seen from a raised three-quarter view that frames it and its
+shadow. --explain prints that scene as text to save and edit.
 
 options:
   -o, --output OUT.png  the image to write (required)
@@ -46,6 +47,9 @@ options:
   --mask MASK.png       also write light 1's shadow mask: 8-bit grey, 128 where
                         no surface is seen, 255 where the visible point faces
                         light 1 and is outside its shadow, 0 elsewhere
+  --up AXIS             for a MESH: its axis that points up, +x, -x, +y, -y, +z
+                        or -z (default: its format's convention, +z for STL
+                        and 3MF, +y for the others)
   --explain             print the render plan (camera, lights, each caster's
                         volume, stencil method) to stdout, after the staged
                         scene's text for a MESH
@@ -60,6 +64,7 @@ namespace {
 struct RenderOptions {
   std::string scene_path;
   std::string output;
+  std::string up;  // for a mesh file: "" for its format's own
   std::optional<std::string> mask;
   RenderSettings settings;
   double light_angle_deg = 0.0;
@@ -82,6 +87,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   add_map_size_option(options, o.settings.shadow_map_size);
   options.flag("--show-volumes", o.show_volumes);
   options.flag("--explain", o.explain);
+  add_up_option(options, o.up);
   options.positionals(scenes);
   options.parse(argv);
   if (scenes.size() > 1) throw UsageError("one scene at a time (got \"" + scenes[0] + "\" and \"" + scenes[1] + "\")");
@@ -90,6 +96,8 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   if (o.scene_path.empty()) throw UsageError("no scene or mesh file given");
   if (o.output.empty()) throw UsageError("no output image given (-o OUT.png)");
   if (o.mask && *o.mask == o.output) throw UsageError("--mask and -o name the same file");
+  if (!o.up.empty() && !is_mesh_file(o.scene_path))
+    throw UsageError("--up stands a mesh file on its own; \"" + o.scene_path + "\" is not one");
   const RenderMethod m = o.settings.method;
   if (o.show_volumes && !counts_volumes(m))
     throw UsageError(std::string("--show-volumes needs shadow volumes; --method ") + method_name(m) + " has none");
@@ -109,7 +117,7 @@ int run_render_command(const std::vector<std::string>& argv) {
     std::string staged;
     Scene scene = parse_scene_or_mesh_file(options.scene_path, [&](size_t loaded, size_t total, const std::string& path) {
       progress->update(0, "loading mesh " + std::to_string(loaded + 1) + " of " + std::to_string(total) + ": " + path);
-    }, &staged);
+    }, &staged, options.up);
     progress->clear();
     if (options.explain && !staged.empty())
       std::cout << "staged scene for " << options.scene_path << " (save it as a .scene file beside the mesh to edit it):\n"

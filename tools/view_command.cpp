@@ -61,6 +61,8 @@ options:
   --speed DEG          degrees per second the light turns (default 30)
   --paused             start with the light paused
   --segments N         sphere segments (default 64)
+  --up AXIS            for a MESH: its axis that points up (see umbra render
+                       --help)
   --frames N           draw N frames, then exit; the light then advances by
                        SPEED/60 degrees per frame, so a run is reproducible
   --screenshot OUT.png with --frames: write the last frame to OUT.png (without
@@ -73,6 +75,7 @@ namespace {
 
 struct ViewOptions {
   std::string scene_path;
+  std::string up;  // for a mesh file: "" for its format's own
   RenderSettings settings;
   double light_angle_deg = 0.0;
   double speed_deg_per_s = 30.0;
@@ -98,6 +101,7 @@ ViewOptions parse_view_options(const std::vector<std::string>& argv) {
   options.value("--frames", [&](const std::string& n, const std::string& t) { o.frames = parse_int_in(n, t, 1, 1 << 30); });
   options.value("--screenshot", [&](const std::string&, const std::string& t) { o.screenshot = t; });
   options.flag("--overlay-in-screenshot", o.overlay_in_screenshot);
+  add_up_option(options, o.up);
   options.positionals(scenes);
   options.parse(argv);
   if (scenes.size() > 1) throw UsageError("one scene at a time (got \"" + scenes[0] + "\" and \"" + scenes[1] + "\")");
@@ -105,6 +109,8 @@ ViewOptions parse_view_options(const std::vector<std::string>& argv) {
   if (o.help) return o;
   if (o.scene_path.empty()) throw UsageError("no scene or mesh file given");
   if (o.screenshot && o.frames == 0) throw UsageError("--screenshot needs --frames N");
+  if (!o.up.empty() && !is_mesh_file(o.scene_path))
+    throw UsageError("--up stands a mesh file on its own; \"" + o.scene_path + "\" is not one");
   if (!is_interactive(o.settings.method))
     throw UsageError(std::string("--method ") + method_name(o.settings.method) + " is not interactive; use umbra render --method " +
                      method_name(o.settings.method));
@@ -188,7 +194,7 @@ int run_view_command(const std::vector<std::string>& argv) {
     std::optional<ProgressBar> progress(std::in_place, 2);  // loading, then preparing the shadows
     Scene parsed = parse_scene_or_mesh_file(options.scene_path, [&](size_t loaded, size_t total, const std::string& path) {
       progress->update(0, "loading mesh " + std::to_string(loaded + 1) + " of " + std::to_string(total) + ": " + path);
-    });
+    }, nullptr, options.up);
     progress->clear();
     for (const Warning& w : parsed.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
     progress->update(1, "preparing shadow volumes");

@@ -1,13 +1,15 @@
-// A mesh file rendered on its own: the scene umbra stages for it (fitted into
-// the cube over a floor, one light), its text saved and read back as the same
-// scene, and its shadow masks against exact shadow rays, for a mesh the tests
-// write and for a real exported model.
+// A mesh file rendered on its own: the scene umbra stages for it (stood on a
+// floor in its up axis, one light above, a raised three-quarter view), its
+// text saved and read back as the same scene, and its shadow masks against
+// exact shadow rays, for meshes the tests write and a real exported model.
 #include <filesystem>
 
 #include <gtest/gtest.h>
 
 #include "hard_case_scenes.hpp"
+#include "image_agreement.hpp"
 #include "mask_comparison.hpp"
+#include "scene/scene_parser.hpp"
 #include "scene/staged_scene.hpp"
 #include "tests/mesh/interchange_writers.hpp"
 #include "tests/mesh/mesh_builders.hpp"
@@ -58,31 +60,92 @@ TEST(StagedMesh, WarningsAndErrorsNameTheMeshFileNotTheStagedScene) {
   }
 }
 
-TEST(StagedMesh, FitsTheMeshIntoTheCubeOverTheFloorUnderOneLight) {
+TEST(StagedMesh, StandsTheMeshOnAFloorUnderALightAboveItAndItsTextIsTheSameScene) {
   const std::string path = write_torus_glb();
   std::string text;
   const Scene scene = parse_scene_or_mesh_file(path, {}, &text);
-  EXPECT_EQ(text, staged_scene_text(path));
   EXPECT_EQ(scene.path, path + " (staged)");
-  ASSERT_EQ(scene.lights.size(), 1u);
-  EXPECT_GT(scene.lights[0].position.z, 1.0);
-  ASSERT_EQ(scene.triangles.size(), 2u);  // the floor: the cube's back face
-  for (const Triangle& t : scene.triangles) EXPECT_EQ(std::max({t.a.z, t.b.z, t.c.z}), -1.0);
   ASSERT_EQ(scene.meshes.size(), 1u);
   const Mesh& m = scene.meshes[0];
-  // Centred, its longest side 0.8 of the cube's.
+  // Fitted: centred, its longest side 2.
   const glm::dvec3 size = m.bounds_max - m.bounds_min;
-  EXPECT_NEAR(std::max({size.x, size.y, size.z}), 1.6, 1e-12);
+  EXPECT_NEAR(std::max({size.x, size.y, size.z}), 2.0, 1e-12);
   EXPECT_NEAR(glm::length(m.bounds_min + m.bounds_max), 0.0, 1e-12);
   EXPECT_TRUE(m.components.all_closed());
   EXPECT_TRUE(scene.warnings.empty());
-  EXPECT_FALSE(scene.camera_from.has_value());  // the default view
+  // On the floor: two triangles level with the model's lowest point (at
+  // most a millionth below it, as the text rounds), reaching far past it.
+  ASSERT_EQ(scene.triangles.size(), 2u);
+  for (const Triangle& t : scene.triangles)
+    for (const glm::dvec3& p : {t.a, t.b, t.c}) {
+      EXPECT_LE(p.z, m.bounds_min.z);
+      EXPECT_GT(p.z, m.bounds_min.z - 1e-6);
+      EXPECT_GT(std::max(std::abs(p.x), std::abs(p.y)), 20.0);
+    }
+  // One light, above the model; the camera from the front, above the floor.
+  ASSERT_EQ(scene.lights.size(), 1u);
+  EXPECT_GT(scene.lights[0].position.z, m.bounds_max.z);
+  ASSERT_TRUE(scene.camera_from.has_value());
+  EXPECT_EQ(scene.camera.up, glm::dvec3(0, 0, 1));
+  EXPECT_LT(scene.camera.eye.y, m.bounds_min.y);
+  EXPECT_GT(scene.camera.eye.z, m.bounds_max.z);
 
   // The text, saved beside the mesh, is the same scene.
   const std::string saved = (std::filesystem::path(path).parent_path() / "torus.scene").string();
   std::ofstream(saved) << text;
   const Scene again = parse_scene_file(saved);
   EXPECT_EQ(again.meshes[0].positions.points(), m.positions.points());
+  EXPECT_EQ(again.camera, scene.camera);
+  EXPECT_EQ(again.lights[0].position, scene.lights[0].position);
+  EXPECT_EQ(again.triangles[1].c, scene.triangles[1].c);
+}
+
+// glTF is +y up by its specification, 3MF +z: the same column written in
+// each stands up the same way, in the same picture.
+TEST(StagedMesh, AYUpGltfColumnAndAZUpThreeMfColumnStageToTheSamePicture) {
+  const PolygonSoup column = test::triangulated(test::prism({{0, 0}, {1, 0}, {1, 0.5}, {0, 0.5}}, 0.0, 4.0));  // +z up
+  PolygonSoup y_up = column;
+  for (glm::dvec3& p : y_up.points) p = {p.x, p.z, -p.y};  // +z to +y, and the front (-y) to +z, glTF's front
+  // Both red, with no specular term: the same material in either format.
+  test::GltfOptions red;
+  red.material = R"({"name": "red", "pbrMetallicRoughness": {"baseColorFactor": [1, 0, 0, 1], "metallicFactor": 0, "roughnessFactor": 1}})";
+  const std::string buffer = test::gltf_buffer(y_up);
+  const std::string gltf = test::write_mesh("column.glb", test::glb(test::gltf_json(y_up, buffer, red, true), buffer));
+  const std::string threemf = test::write_mesh(
+      "column.3mf", test::threemf(R"(<basematerials id="1"><base name="red" displaycolor="#FF0000"/></basematerials>)" +
+                                      test::threemf_object(2, column, 0),
+                                  R"(<item objectid="2"/>)"));
+  std::string text_a, text_b;
+  const Scene a = parse_scene_or_mesh_file(gltf, {}, &text_a), b = parse_scene_or_mesh_file(threemf, {}, &text_b);
+  // The same stage: light, floor and camera, after the mesh's line.
+  EXPECT_EQ(text_a.substr(text_a.find("\nlight")), text_b.substr(text_b.find("\nlight")));
+  // Tall, whichever file it came from.
+  EXPECT_NEAR(a.meshes[0].bounds_max.z - a.meshes[0].bounds_min.z, 2.0, 1e-12);
+  EXPECT_NEAR(b.meshes[0].bounds_max.z - b.meshes[0].bounds_min.z, 2.0, 1e-12);
+  const test::RenderedImages pictures_a = test::render_gl_and_ray_cast(a, 96), pictures_b = test::render_gl_and_ray_cast(b, 96);
+  EXPECT_EQ(pictures_a.gl.pixels, pictures_b.gl.pixels);
+  EXPECT_EQ(pictures_a.cpu.pixels, pictures_b.cpu.pixels);
+}
+
+// A cube fills its fitted box; staged, its shadow still falls on the floor in
+// view, every pixel sees the floor or the cube, and none is black.
+TEST(StagedMesh, ACubesShadowIsInViewAndNoPixelIsBlack) {
+  const Scene scene = parse_scene_or_mesh_file(test::write_mesh("cube.obj", test::obj_text(test::unit_cube())));
+  const int size = 100;
+  int shadowed_floor = 0, background = 0;
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, size, size, x, y));
+      if (!hit) ++background;
+      else if (hit->object < 2 && shadow_ray_blocked(scene, hit->point, hit->object, scene.lights[0].position)) ++shadowed_floor;
+    }
+  EXPECT_EQ(background, 0);
+  EXPECT_GE(shadowed_floor, size * size / 100) << "the cube's shadow covers under 1% of the frame";
+  const test::RenderedImages pictures = test::render_gl_and_ray_cast(scene, size);
+  for (const Image* image : {&pictures.gl, &pictures.cpu})
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x)
+        EXPECT_FALSE(image->at(x, y, 0) == 0 && image->at(x, y, 1) == 0 && image->at(x, y, 2) == 0) << x << ", " << y;
 }
 
 TEST(StagedMesh, MaskMatchesExactShadowRays) {

@@ -44,7 +44,7 @@ TEST_F(RenderCommand, AMeshFileOnItsOwnIsStagedAndExplainPrintsTheSceneToSave) {
   const std::string header = "staged scene for " + mesh + " (save it as a .scene file beside the mesh to edit it):\n";
   ASSERT_EQ(r.out.substr(0, header.size()), header);
   const std::string text = r.out.substr(header.size(), r.out.find("\nrender plan for ") - header.size());
-  EXPECT_NE(text.find("\nmesh \"tet\" fit scale 0.8\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\nmesh \"tet\" fit rotate 1 0 0 90\n"), std::string::npos) << text;  // OBJ: +y up, turned to +z
   EXPECT_NE(r.out.find("render plan for " + mesh + " (staged)\n"), std::string::npos);
   EXPECT_EQ(read_png(path("a.png")).width, 32);
   // Saved beside the mesh, the text renders the same image.
