@@ -12,6 +12,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "mesh/input_error.hpp"
+#include "mesh/io/mapped_file.hpp"
 #include "mesh/io/mesh_format.hpp"
 #include "scene/scene_parser.hpp"
 
@@ -45,7 +46,7 @@ const UpTurn& up_turn(const std::string& up) {
 constexpr double kAzimuthDeg = 35.0, kElevationDeg = 30.0, kFovyDeg = 30.0;
 const glm::dvec3 kToLight = glm::normalize(glm::dvec3(-0.55, -0.5, 1.0));
 constexpr double kLightDistance = 4.0;  // from the model's centre; the fitted model's longest side is 2
-constexpr double kMargin = 1.12;        // the frame's half-size over the framed points'
+constexpr double kMargin = 1.2;         // the frame's half-size over the framed points'
 
 // Numbers as the staged text writes them: short, and read back as the same doubles.
 std::string num(double v) {
@@ -54,14 +55,30 @@ std::string num(double v) {
   return s.str();
 }
 std::string vec(const glm::dvec3& v) { return num(v.x) + " " + num(v.y) + " " + num(v.z); }
-// The floor's height, rounded down to a millionth (the fitted model spans 2):
-// as written, the floor never cuts into the model it stands under.
-double floor_height(double lowest) { return std::floor(lowest * 1e6) / 1e6; }
+// The floor's height: a thousandth below the model's lowest point (the fitted
+// model spans 2), so that a face lying on the floor is never coplanar with
+// it (which would stripe the picture as the two fight over depth), written
+// to a millionth, rounded down.
+constexpr double kFloorGap = 1e-3;
+double floor_height(double lowest) { return std::floor((lowest - kFloorGap) * 1e6) / 1e6; }
 
 }  // namespace
 
 bool is_mesh_file(const std::string& path) {
   return std::filesystem::path(path).extension() != ".scene" && !detect_mesh_format_of_file(path).empty();
+}
+
+std::string neither_scene_nor_mesh(const std::string& path) {
+  if (std::filesystem::path(path).extension() == ".scene" || is_mesh_file(path)) return "";
+  std::string what;
+  try {
+    const MappedFile file(path);
+    what = other_known_format(file.bytes());
+    if (what.empty() && !looks_like_text(file.bytes().substr(0, 1 << 16))) what = "binary data";
+  } catch (const InputError&) {
+    return "";
+  }
+  return what.empty() ? "" : "neither a scene nor a mesh file (" + mesh_format_names() + "): " + what;
 }
 
 bool is_up_axis(const std::string& up) {
@@ -163,6 +180,7 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
     throw InputError({path}, message);
   }
   Mesh& mesh = loaded.meshes.at(0);
+  if (mesh.triangles.empty()) throw InputError({path}, "has no faces: there is nothing to show");
 
   const Stage stage = stage_for(mesh.bounds_min, mesh.bounds_max);
   const double s = stage.floor_half_size;

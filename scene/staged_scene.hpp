@@ -21,6 +21,13 @@ namespace umbra {
 // says why.
 bool is_mesh_file(const std::string& path);
 
+// Why `path` is plainly neither a scene nor a mesh file: "neither a scene
+// nor a mesh file (OBJ, ..., or 3MF): a JPEG image". "" for a .scene file, a
+// mesh file, or other text, which the scene parser reads (and says, line by
+// line, what is wrong with), and for a file that cannot be read (the parser
+// says why).
+std::string neither_scene_nor_mesh(const std::string& path);
+
 // "+x", "-x", "+y", "-y", "+z" or "-z": the axis of the file that points up.
 bool is_up_axis(const std::string& up);
 
@@ -40,7 +47,8 @@ std::string staged_scene_name(const std::string& mesh_path);
 
 // parse_scene_file for a scene, or the staged scene for a mesh file, stood on
 // its `up` axis ("" for its format's own). `staged` (when given) receives the
-// staged scene's text, or "" for a scene file.
+// staged scene's text, or "" for a scene file. A mesh file with no faces is
+// an InputError: there is nothing to show.
 Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& progress = {}, std::string* staged = nullptr,
                                const std::string& up = "");
 

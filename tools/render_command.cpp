@@ -56,7 +56,9 @@ options:
   -h, --help            show this help
 
 Errors in SCENE are printed as FILE:LINE:COL: message; nothing is written
-and the exit status is 1. A usage error exits with 2.
+and the exit status is 1, as for a mesh file that cannot be read or has no
+faces. A usage error, or a file that is plainly neither a scene nor a mesh
+(an image, an archive, binary data), exits with 2.
 )");
 
 namespace {
@@ -110,6 +112,10 @@ int run_render_command(const std::vector<std::string>& argv) {
   RenderOptions options;
   if (const auto exit_status = parse_command_line("render", kRenderUsage, argv, parse_render_options, options))
     return *exit_status;
+  if (const std::string what = neither_scene_nor_mesh(options.scene_path); !what.empty()) {
+    std::cerr << options.scene_path << ": " << what << "\n";
+    return 2;
+  }
   keep_freed_memory_for_reuse();
   try {
     // Loading, planning and drawing: three steps, the first per mesh file.

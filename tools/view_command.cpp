@@ -210,6 +210,10 @@ int run_view_command(const std::vector<std::string>& argv) {
     progress.reset();
   };
 
+  if (const std::string what = neither_scene_nor_mesh(options.scene_path); !what.empty()) {
+    std::cerr << options.scene_path << ": " << what << "\n";
+    return 2;
+  }
   try {
     window = std::make_unique<WindowContext>(options.settings.width, options.settings.height,
                                              "umbra view - " + options.scene_path);

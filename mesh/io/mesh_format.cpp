@@ -40,14 +40,6 @@ bool has_model_part(std::string_view bytes) {
   return has(bytes.substr(0, kSniffBytes)) || has(bytes.substr(bytes.size() - std::min(bytes.size(), kSniffBytes)));
 }
 
-// Text: no NUL and no control bytes but whitespace in the sniffed part.
-bool looks_like_text(std::string_view head) {
-  return std::none_of(head.begin(), head.end(), [](char ch) {
-    const auto c = static_cast<unsigned char>(ch);
-    return c == 0 || (c < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f' && c != '\v');
-  });
-}
-
 // The first field of each line, skipping blank lines, up to `max_lines`.
 template <typename Visit>
 void first_fields(std::string_view head, size_t max_lines, Visit&& visit) {
@@ -190,6 +182,7 @@ std::string other_known_format(std::string_view bytes) {
   if (starts_with(bytes, "\xff\xd8\xff")) return "a JPEG image";
   if (starts_with(bytes, "\x89PNG")) return "a PNG image";
   if (starts_with(bytes, "%PDF")) return "a PDF document";
+  if (starts_with(bytes, "<?xml") || starts_with(bytes, "<COLLADA")) return "an XML document";
   return "";
 }
 
@@ -199,6 +192,13 @@ std::string other_known_format_of_file(const std::string& path) {
   } catch (const InputError&) {
     return "";
   }
+}
+
+bool looks_like_text(std::string_view head) {
+  return std::none_of(head.begin(), head.end(), [](char ch) {
+    const auto c = static_cast<unsigned char>(ch);
+    return c == 0 || (c < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f' && c != '\v');
+  });
 }
 
 std::string describe_content(std::string_view bytes) {

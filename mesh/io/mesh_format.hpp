@@ -56,11 +56,15 @@ std::string detect_mesh_format_of_file(const std::string& path);
 std::string mesh_format_of(const std::string& path);
 
 // What `bytes` are when they are plainly some other format (UTF-16 text, a zip
-// archive with no 3D model part, a JPEG or PNG image, a PDF), or "".
+// archive with no 3D model part, a JPEG or PNG image, a PDF, an XML document
+// such as COLLADA), or "".
 std::string other_known_format(std::string_view bytes);
 
 // The same for the file at `path`; "" too when it cannot be read.
 std::string other_known_format_of_file(const std::string& path);
+
+// Text: no NUL and no control bytes but whitespace in `head`.
+bool looks_like_text(std::string_view head);
 
 // What `bytes` look like, for the message when they are no mesh format:
 // "empty", "binary data", "UTF-16 text", "text starting with \"...\"".

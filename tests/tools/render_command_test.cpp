@@ -51,11 +51,40 @@ TEST_F(RenderCommand, AMeshFileOnItsOwnIsStagedAndExplainPrintsTheSceneToSave) {
   write("tet.scene", text);
   EXPECT_EQ(run("render " + path("tet.scene") + " -o " + path("b.png") + " --size 32x32").status, 0);
   EXPECT_EQ(read_png(path("a.png")).pixels, read_png(path("b.png")).pixels);
-  // A file that is neither a scene nor a mesh is read as a scene, whose parser says why.
+  // Text that is no mesh is read as a scene, whose parser says why.
   const std::string neither = write("notes.txt", "hello\n");
   const CommandResult bad = run("render " + neither + " -o " + path("c.png"));
   EXPECT_EQ(bad.status, 1);
   EXPECT_EQ(bad.err, neither + ":1:1: unknown statement \"hello\" (expected light, material, sphere, triangle, mesh or camera)\n");
+}
+
+TEST_F(RenderCommand, AFileThatIsPlainlyNeitherASceneNorAMeshExitsWithTwo) {
+  const std::string formats = "(OBJ, OFF, PLY, STL, glTF or 3MF)";
+  const std::string jpeg = write("photo.jpg", std::string("\xff\xd8\xff\xe0\0\x10JFIF\0", 11));
+  CommandResult r = run("render " + jpeg + " -o " + path("a.png"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, jpeg + ": neither a scene nor a mesh file " + formats + ": a JPEG image\n");
+  const std::string dae = write("model.dae", "<?xml version=\"1.0\"?>\n<COLLADA></COLLADA>\n");
+  r = run("render " + dae + " -o " + path("a.png"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, dae + ": neither a scene nor a mesh file " + formats + ": an XML document\n");
+  const std::string binary = write("data.bin", std::string("\x01\x02\0\x03", 4));
+  r = run("render " + binary + " -o " + path("a.png"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, binary + ": neither a scene nor a mesh file " + formats + ": binary data\n");
+  EXPECT_FALSE(fs::exists(path("a.png")));
+}
+
+TEST_F(RenderCommand, AMeshFileWithNoFacesExitsWithOneAndWritesNothing) {
+  const std::string points = write("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+  CommandResult r = run("render " + points + " -o " + path("a.png"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, points + ": has no faces with area to fit\n");
+  const std::string lines = write("lines.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2 3\n");
+  r = run("render " + lines + " -o " + path("a.png"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find(lines + ": "), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("a.png")));
 }
 
 TEST_F(RenderCommand, SceneErrorIsLocatedAndWritesNothing) {
