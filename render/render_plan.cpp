@@ -163,16 +163,19 @@ LightCulling cull_for_light(const Scene& scene, const RenderPlan& plan, const gl
   const bool cull = method == RenderMethod::kAuto;
   // Only auto's choice and forced z-pass's warning need the near plane.
   const bool test_near_plane = method == RenderMethod::kAuto || method == RenderMethod::kZPass;
-  const auto visit = [&](const BoundingSphere& ball, const FileLoc& where, std::vector<uint8_t>& out) {
+  // `near_test` decides more closely than the ball where a caster can (a triangle's plane).
+  const auto visit = [&](const BoundingSphere& ball, const FileLoc& where, std::vector<uint8_t>& out, const auto& near_test) {
     const bool left_out = cull && !volume_may_reach_view(plan.camera, near, light, ball);
     out.push_back(left_out);
     c.culled += left_out;
-    if (test_near_plane && !left_out && !c.shadows_near_plane && may_shadow_near_rectangle(near, light, ball))
+    if (test_near_plane && !left_out && !c.shadows_near_plane && may_shadow_near_rectangle(near, light, ball) && near_test())
       c.shadows_near_plane = &where;
   };
-  for (const Sphere& s : scene.spheres) visit(bounding_sphere(s), s.where, c.spheres);
-  for (const Triangle& t : scene.triangles) visit(bounding_sphere(t), t.where, c.triangles);
-  for (const Mesh& m : scene.meshes) visit(bounding_sphere(m), m.where, c.meshes);
+  const auto unsure = [] { return true; };
+  for (const Sphere& s : scene.spheres) visit(bounding_sphere(s), s.where, c.spheres, unsure);
+  for (const Triangle& t : scene.triangles)
+    visit(bounding_sphere(t), t.where, c.triangles, [&] { return triangle_may_shadow_near_rectangle(near, light, t); });
+  for (const Mesh& m : scene.meshes) visit(bounding_sphere(m), m.where, c.meshes, unsure);
   return c;
 }
 

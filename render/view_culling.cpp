@@ -62,6 +62,21 @@ NearRectangle near_rectangle(const Camera& camera, double aspect, double n) {
            centre + half_w * right + half_h * up, centre - half_w * right + half_h * up}};
 }
 
+bool triangle_may_shadow_near_rectangle(const NearRectangle& near, const glm::dvec3& light, const Triangle& triangle) {
+  const glm::dvec3 normal = glm::cross(triangle.b - triangle.a, triangle.c - triangle.a);
+  const double length = glm::length(normal);
+  if (!(length > 0.0)) return true;
+  const glm::dvec3 n = normal / length;
+  const double light_side = glm::dot(n, light - triangle.a);
+  for (const glm::dvec3& corner : near.corners) {
+    const double side = glm::dot(n, corner - triangle.a);
+    // Clear of the plane by far more than the rounding of the corners and of n.
+    const double clearance = 1e-9 * (glm::length(corner - triangle.a) + glm::length(corner));
+    if (!(side * light_side > 0.0) || std::abs(side) <= clearance) return true;
+  }
+  return false;
+}
+
 bool may_shadow_near_rectangle(const NearRectangle& near, const glm::dvec3& light, const BoundingSphere& caster) {
   const glm::dvec3* c = near.corners;
   const glm::dvec3 inside = 0.2 * (light + c[0] + c[1] + c[2] + c[3]);

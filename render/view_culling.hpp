@@ -31,6 +31,13 @@ NearRectangle near_rectangle(const Camera& camera, double aspect, double near);
 // the pyramid they sweep. True when unsure.
 bool may_shadow_near_rectangle(const NearRectangle& near, const glm::dvec3& light, const BoundingSphere& caster);
 
+// The same for one triangle, by its plane: false when every corner of the
+// rectangle lies on the light's side of the plane, clear of it by more than
+// rounding, since the triangle's volume lies wholly on the other side. A
+// floor far larger than the view (a staged model's) is then no reason to
+// count with z-fail, where its bounding ball alone would say it might be.
+bool triangle_may_shadow_near_rectangle(const NearRectangle& near, const glm::dvec3& light, const Triangle& triangle);
+
 // False only when the shadow volume of a caster inside `caster` lies wholly
 // outside the view frustum (its far plane at infinity): the ball and every
 // ray from the light through it stay outside one of the frustum's planes.

@@ -79,13 +79,30 @@ TEST(RenderPlan, AFrameThatChangesNothingForALightKeepsItsPlanAndAnyChangeRemake
   EXPECT_NE(plan.lights[1].count_reason, "kept");
 }
 
+// A floor far larger than the view has a bounding ball round the eye; its
+// plane shows that its volume lies below it, so auto still counts with z-pass.
+// A triangle between the light and the eye puts the eye in its volume: z-fail.
+TEST(RenderPlan, AutoDecidesByATrianglesPlaneWhetherItsVolumeCanReachTheNearPlane) {
+  const std::string light_and_floor = "light 0 0 3\ntriangle -1000 -1000 -1  1000 -1000 -1  1000 1000 -1\n";
+  const RenderPlan floor = make_render_plan(parse_scene_text(light_and_floor, "floor.scene"), RenderSettings{});
+  EXPECT_TRUE(floor.lights[0].z_pass) << floor.lights[0].count_reason;
+  const RenderPlan ceiling =
+      make_render_plan(parse_scene_text(light_and_floor + "triangle -1000 -1000 3.2  1000 -1000 3.2  1000 1000 3.2\n", "ceiling.scene"),
+                       RenderSettings{});
+  EXPECT_FALSE(ceiling.lights[0].z_pass);
+  EXPECT_EQ(ceiling.lights[0].count_reason, "z-fail with caps: the caster at line 3 may shadow the near plane");
+}
+
 TEST(RenderPlan, SplitsMoreThan255VolumesIntoStencilBatches) {
-  // 600 level triangles over one point (8 volume triangles each) and one
-  // degenerate triangle (no volume): batches end after volumes 255 and 510.
+  // 600 level triangles over one point (8 volume triangles each, with z-fail's
+  // caps) and one degenerate triangle (no volume): batches end after volumes
+  // 255 and 510.
   std::string text = "light 0 0 2\ntriangle 0 0 0  1 0 0  2 0 0\n";
   for (int k = 0; k < 600; ++k) text += "triangle -0.1 -0.1 " + std::to_string(k * 0.001) + "  0.1 -0.1 " +
                                         std::to_string(k * 0.001) + "  0 0.1 " + std::to_string(k * 0.001) + "\n";
-  const RenderPlan plan = make_render_plan(parse_scene_text(text, "many.scene"), RenderSettings{});
+  RenderSettings zfail;
+  zfail.method = RenderMethod::kZFail;
+  const RenderPlan plan = make_render_plan(parse_scene_text(text, "many.scene"), zfail);
   const std::vector<StencilBatch>& batches = plan.lights[0].stencil_batches;
   ASSERT_EQ(batches.size(), 3u);
   EXPECT_EQ(batches[0].first_triangle, 0u);
