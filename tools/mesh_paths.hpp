@@ -18,6 +18,9 @@ namespace umbra {
 // be searched.
 struct MeshPaths {
   std::vector<std::string> meshes;
+  // Per mesh, its path relative to the folder argument it was found in, or
+  // its file name when it was an argument itself: where a folder's picture goes.
+  std::vector<std::string> names;
   std::vector<std::pair<std::string, std::string>> passed_over;  // (path, what it is)
 };
 MeshPaths expand_mesh_paths(const std::vector<std::string>& arguments);

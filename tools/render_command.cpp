@@ -1,14 +1,17 @@
 #include "tools/render_command.hpp"
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <optional>
+#include <thread>
 
 #include <tbb/task_group.h>
 
 #include "scene/scene_checks.hpp"
 #include "scene/scene_parser.hpp"
 #include "scene/staged_scene.hpp"
+#include "tools/batch_render.hpp"
 #include "render/headless_context.hpp"
 #include "image/image.hpp"
 #include "reference/ray_cast_render.hpp"
@@ -23,6 +26,7 @@ namespace umbra {
 const std::string kRenderUsage = usage_text(
     R"(usage: umbra render SCENE -o OUT.png [options]
        umbra render MESH -o OUT.png [options]
+       umbra render PATH... -o OUTDIR [--jobs N] [--shard K/N] [options]
 
 Renders SCENE headless (OSMesa) with exact hard shadows from stencil shadow
 volumes (Crow 1977; Heidmann 1991) and writes OUT.png. The sources cited
@@ -33,8 +37,14 @@ on its own: stood on a floor in its up axis, lit by one light above and to
 the left, seen from a raised three-quarter view that frames it and its
 shadow. --explain prints that scene as text to save and edit.
 
+Several files, or a folder (searched for mesh files by their content, as
+umbra check searches it), render to one picture each in OUTDIR: a file found
+in a folder to OUTDIR/its path in that folder.png, a file named on its own
+to OUTDIR/its name.png. A file that fails is reported and the rest go on.
+
 options:
-  -o, --output OUT.png  the image to write (required)
+  -o, --output OUT      the image to write, or with several files the folder
+                        to write their pictures in (required)
   --size WxH            image size in pixels (default 800x800)
   --light-angle DEG     rotate every light about the z axis by DEG degrees
   --segments N          sides of the N-gon that stands for a sphere's tangent
@@ -50,6 +60,11 @@ options:
   --up AXIS             for a MESH: its axis that points up, +x, -x, +y, -y, +z
                         or -z (default: its format's convention, +z for STL
                         and 3MF, +y for the others)
+  --jobs N              with several files: draw N at a time, each in its own
+                        GL context, using at most N threads in all (default:
+                        one per core)
+  --shard K/N           with several files: draw only part K (counting from 0)
+                        of N disjoint parts, as umbra check --shard splits them
   --explain             print the render plan (camera, lights, each caster's
                         volume, stencil method) to stdout, after the staged
                         scene's text for a MESH
@@ -58,13 +73,15 @@ options:
 Errors in SCENE are printed as FILE:LINE:COL: message; nothing is written
 and the exit status is 1, as for a mesh file that cannot be read or has no
 faces. A usage error, or a file that is plainly neither a scene nor a mesh
-(an image, an archive, binary data), exits with 2.
+(an image, an archive, binary data), exits with 2. With several files, the
+exit status is 1 when any failed.
 )");
 
 namespace {
 
 struct RenderOptions {
   std::string scene_path;
+  std::optional<BatchRenderOptions> batch;  // several files or a folder
   std::string output;
   std::string up;  // for a mesh file: "" for its format's own
   std::optional<std::string> mask;
@@ -90,15 +107,28 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   options.flag("--show-volumes", o.show_volumes);
   options.flag("--explain", o.explain);
   add_up_option(options, o.up);
+  std::optional<size_t> jobs;
+  std::optional<Shard> shard;
+  options.value("--jobs", [&](const std::string& n, const std::string& t) { jobs = size_t(parse_int_in(n, t, 1, 4096)); });
+  options.value("--shard", [&](const std::string& n, const std::string& t) { shard = parse_shard(n, t); });
   options.positionals(scenes);
   options.parse(argv);
-  if (scenes.size() > 1) throw UsageError("one scene at a time (got \"" + scenes[0] + "\" and \"" + scenes[1] + "\")");
   if (!scenes.empty()) o.scene_path = scenes[0];
   if (o.help) return o;
   if (o.scene_path.empty()) throw UsageError("no scene or mesh file given");
-  if (o.output.empty()) throw UsageError("no output image given (-o OUT.png)");
+  std::error_code ec;
+  if (scenes.size() > 1 || std::filesystem::is_directory(o.scene_path, ec)) {
+    if (o.output.empty()) throw UsageError("no output folder given (-o OUTDIR)");
+    if (o.mask) throw UsageError("--mask writes one scene's mask; with several files there is none to choose");
+    if (o.explain) throw UsageError("--explain prints one scene's plan; with several files, ask for one of them");
+    o.batch = BatchRenderOptions{scenes, o.output, o.settings, o.light_angle_deg, o.up, o.show_volumes,
+                                 jobs.value_or(std::max(1u, std::thread::hardware_concurrency())), shard};
+  } else {
+    if (shard) throw UsageError("--shard splits several files; \"" + o.scene_path + "\" is one");
+    if (o.output.empty()) throw UsageError("no output image given (-o OUT.png)");
+  }
   if (o.mask && *o.mask == o.output) throw UsageError("--mask and -o name the same file");
-  if (!o.up.empty() && !is_mesh_file(o.scene_path))
+  if (!o.up.empty() && !o.batch && !is_mesh_file(o.scene_path))
     throw UsageError("--up stands a mesh file on its own; \"" + o.scene_path + "\" is not one");
   const RenderMethod m = o.settings.method;
   if (o.show_volumes && !counts_volumes(m))
@@ -112,6 +142,7 @@ int run_render_command(const std::vector<std::string>& argv) {
   RenderOptions options;
   if (const auto exit_status = parse_command_line("render", kRenderUsage, argv, parse_render_options, options))
     return *exit_status;
+  if (options.batch) return run_batch_render(*options.batch);
   if (const std::string what = neither_scene_nor_mesh(options.scene_path); !what.empty()) {
     std::cerr << options.scene_path << ": " << what << "\n";
     return 2;

@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -231,6 +232,55 @@ TEST_F(RenderCommand, UnknownMethodAndVolumesWithoutVolumesAreUsageErrors) {
   EXPECT_EQ(shown.status, 2);
   EXPECT_NE(shown.err.find("--show-volumes needs shadow volumes; --method raycast has none"), std::string::npos) << shown.err;
   EXPECT_FALSE(std::filesystem::exists(path("a.png")));
+}
+
+// A folder of models: one picture each, at its path in the folder, the
+// JPEG named like a mesh passed over, the broken file reported while the
+// rest are drawn.
+TEST_F(RenderCommand, AFolderRendersToOnePicturePerMeshAndShardsWriteTheSameSet) {
+  fs::create_directories(path("models/parts"));
+  const std::string tet = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+  write("models/tet.obj", tet);
+  write("models/parts/tet.obj", tet);
+  write("models/parts/box.off", "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+                                "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n");
+  write("models/parts/photo.obj", std::string("\xff\xd8\xff\xe0", 4));
+  write("models/parts/broken.obj", "v 0 0 0\nf 1 2 3\n");
+  const CommandResult r = run("render " + path("models") + " -o " + path("out") + " --size 24x24 --jobs 2");
+  EXPECT_EQ(r.status, 1) << r.err;  // broken.obj failed
+  const std::vector<std::string> pictures = {"parts/box.off.png", "parts/tet.obj.png", "tet.obj.png"};
+  std::vector<std::string> written;
+  for (const auto& entry : fs::recursive_directory_iterator(path("out")))
+    if (entry.is_regular_file()) written.push_back(entry.path().lexically_relative(path("out")).string());
+  std::sort(written.begin(), written.end());
+  EXPECT_EQ(written, pictures);
+  EXPECT_EQ(read_png(path("out/tet.obj.png")).width, 24);
+  EXPECT_NE(r.err.find("umbra render: passed over " + path("models/parts/photo.obj") + ": a JPEG image, not a mesh\n"),
+            std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(path("models/parts/broken.obj") + ":2:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("umbra render: 4 files in "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(": 3 pictures in " + path("out") + ", 1 failed\n"), std::string::npos) << r.err;
+  // Two shards write the same pictures as the one run, byte for byte.
+  for (const char* shard : {"0/2", "1/2"})
+    run("render " + path("models") + " -o " + path("sharded") + " --size 24x24 --shard " + shard);
+  for (const std::string& picture : pictures)
+    EXPECT_EQ(read(path("sharded/" + picture)), read(path("out/" + picture))) << picture;
+  EXPECT_FALSE(fs::exists(path("sharded/parts/broken.obj.png")));
+}
+
+TEST_F(RenderCommand, SeveralFilesTakeAnOutputFolderAndNoSingleSceneOptions) {
+  const std::string a = write("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const std::string b = write("b.obj", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3\n");
+  CommandResult r = run("render " + a + " " + b + " -o " + path("out") + " --size 16x16");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(path("out/a.obj.png")));
+  EXPECT_TRUE(fs::exists(path("out/b.obj.png")));
+  r = run("render " + a + " " + b + " -o " + path("out") + " --mask " + path("m.png"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--mask writes one scene's mask; with several files there is none to choose"), std::string::npos) << r.err;
+  r = run("render " + a + " -o " + path("one.png") + " --shard 0/2");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--shard splits several files; \"" + a + "\" is one"), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -1,0 +1,113 @@
+#include "tools/batch_render.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <mutex>
+#include <thread>
+
+#include <tbb/global_control.h>
+
+#include "image/image.hpp"
+#include "mesh/input_error.hpp"
+#include "reference/ray_cast_render.hpp"
+#include "render/headless_context.hpp"
+#include "render/shadow_renderer.hpp"
+#include "scene/scene_checks.hpp"
+#include "scene/staged_scene.hpp"
+#include "tools/command_line.hpp"
+#include "tools/progress_bar.hpp"
+
+namespace umbra {
+namespace {
+
+// One file's picture, drawn in the worker's own GL context (made on first
+// use, then kept for every file it draws); its warnings and error, if any.
+struct Outcome {
+  std::string err;
+  bool written = false;
+};
+
+Outcome render_one(const std::string& path, const std::string& out, const BatchRenderOptions& o,
+                   std::optional<HeadlessContext>& context) {
+  Outcome outcome;
+  try {
+    if (const std::string what = neither_scene_nor_mesh(path); !what.empty()) throw InputError({path}, what);
+    Scene scene = parse_scene_or_mesh_file(path, {}, nullptr, o.up);
+    for (const Warning& w : scene.warnings) outcome.err += w.where.str() + ": warning: " + w.message + "\n";
+    rotate_lights_about_z(scene, o.light_angle_deg);
+    require_lights_off_casters(scene);
+    Image image;
+    if (o.settings.method == RenderMethod::kRaycast) {
+      image = ray_cast_frame(scene, o.settings.width, o.settings.height).image;
+    } else {
+      if (!context) context.emplace(o.settings.width, o.settings.height);
+      const RenderPlan plan = make_render_plan(scene, o.settings);
+      ShadowRenderer renderer(scene, plan);
+      image = renderer.render_image(o.show_volumes);
+    }
+    std::filesystem::create_directories(std::filesystem::path(out).parent_path());
+    write_png(image, out);
+    outcome.written = true;
+  } catch (const std::exception& e) {
+    outcome.err += std::string(e.what()) + "\n";
+  }
+  return outcome;
+}
+
+}  // namespace
+
+int run_batch_render(const BatchRenderOptions& o) {
+  MeshPaths found;
+  try {
+    found = expand_mesh_paths(o.paths);
+    if (found.meshes.empty()) throw UsageError("no mesh files in " + o.paths[0] + (o.paths.size() > 1 ? " or the others" : ""));
+  } catch (const UsageError& e) {
+    std::cerr << "umbra render: " << e.what() << "\n";
+    return 2;
+  }
+  // Said once for all the shards: by the first.
+  if (o.shard && o.shard->index > 0) found.passed_over.clear();
+  for (const auto& [path, what] : found.passed_over) std::cerr << "umbra render: passed over " << path << ": " << what << ", not a mesh\n";
+  const std::vector<std::string> files = o.shard ? shard_of(found.meshes, *o.shard) : found.meshes;
+  const std::vector<std::string> names = o.shard ? shard_of(found.names, *o.shard) : found.names;
+  const auto start = std::chrono::steady_clock::now();
+  // --jobs bounds the threads of the whole process, as in umbra check.
+  const tbb::global_control threads(tbb::global_control::max_allowed_parallelism, o.jobs);
+  const size_t count = files.size();
+  std::atomic<size_t> next{0};
+  std::mutex print_mutex;
+  size_t finished = 0, written = 0;
+  ProgressBar progress(count);
+  const auto work = [&] {
+    std::optional<HeadlessContext> context;
+    for (size_t i = next++; i < count; i = next++) {
+      const std::string out = (std::filesystem::path(o.out_dir) / (names[i] + ".png")).string();
+      const Outcome outcome = render_one(files[i], out, o, context);
+      const std::lock_guard<std::mutex> lock(print_mutex);
+      progress.clear();
+      std::cerr << outcome.err << std::flush;
+      written += outcome.written;
+      progress.update(++finished, files[i]);
+    }
+  };
+  std::vector<std::thread> workers;
+  for (size_t j = 1; j < std::min(o.jobs, count); ++j) workers.emplace_back(work);
+  work();
+  for (std::thread& t : workers) t.join();
+  progress.clear();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  char elapsed[32];
+  std::snprintf(elapsed, sizeof elapsed, "%.1f s", seconds);
+  std::cerr << "umbra render: " << count << (count == 1 ? " file" : " files")
+            << (o.shard ? " (shard " + std::to_string(o.shard->index) + "/" + std::to_string(o.shard->count) + " of " +
+                              std::to_string(found.meshes.size()) + ")"
+                        : "")
+            << " in " << elapsed << ": " << written << (written == 1 ? " picture" : " pictures") << " in " << o.out_dir << ", "
+            << count - written << " failed\n";
+  return written == count ? 0 : 1;
+}
+
+}  // namespace umbra

@@ -1,0 +1,33 @@
+#pragma once
+// `umbra render PATH... -o OUTDIR`: one picture per scene or mesh file, for
+// folders (searched for meshes by their content, as `umbra check` searches
+// them) and lists of files, on several cores and in shards.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "render/render_plan.hpp"
+#include "tools/mesh_paths.hpp"
+
+namespace umbra {
+
+struct BatchRenderOptions {
+  std::vector<std::string> paths;  // files and folders, as given
+  std::string out_dir;
+  RenderSettings settings;
+  double light_angle_deg = 0.0;
+  std::string up;  // for mesh files: "" for each format's own
+  bool show_volumes = false;
+  size_t jobs = 1;  // pictures drawn at a time, each in its own GL context
+  std::optional<Shard> shard;
+};
+
+// Writes OUT_DIR/NAME.png for each file, NAME its path relative to the
+// folder it was found in (or its file name), so that a.obj and a.stl do not
+// meet. A file that fails is reported on stderr and the rest go on. Returns
+// 0 when every picture was written, 1 when any file failed, 2 when there is
+// nothing to render.
+int run_batch_render(const BatchRenderOptions& options);
+
+}  // namespace umbra
