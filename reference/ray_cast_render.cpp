@@ -12,17 +12,41 @@
 namespace umbra {
 namespace {
 
-int material_of(const Scene& scene, int object) {
+// What a hit object is made of: its material, and for a mesh triangle, the
+// mesh and the triangle (whose corners may have colours).
+struct Surface {
+  int material = 0;
+  const Mesh* mesh = nullptr;
+  size_t triangle = 0;
+};
+
+Surface surface_of(const Scene& scene, int object) {
   const size_t o = size_t(object);
-  if (o < scene.spheres.size()) return scene.spheres[o].material;
+  if (o < scene.spheres.size()) return {scene.spheres[o].material};
   size_t first = scene.spheres.size();
-  if (o < first + scene.triangles.size()) return scene.triangles[o - first].material;
+  if (o < first + scene.triangles.size()) return {scene.triangles[o - first].material};
   first += scene.triangles.size();
   for (const Mesh& m : scene.meshes) {
-    if (o < first + m.triangles.size()) return m.material_of(o - first);
+    if (o < first + m.triangles.size()) return {m.material_of(o - first), &m, o - first};
     first += m.triangles.size();
   }
-  return 0;
+  return {};
+}
+
+// The colour the surface's material is multiplied by at `p`: its corners'
+// colours blended by p's barycentric weights, as the GL interpolates them
+// across the triangle; white where the file gives no colours.
+glm::dvec3 surface_colour(const Surface& s, const glm::dvec3& p) {
+  if (!s.mesh || s.mesh->triangle_colors.empty()) return glm::dvec3(1.0);
+  const auto& t = s.mesh->triangles[s.triangle];
+  const glm::dvec3 a = s.mesh->positions[t[0]], b = s.mesh->positions[t[1]], c = s.mesh->positions[t[2]];
+  const glm::dvec3 n = glm::cross(b - a, c - a);
+  const double area = glm::dot(n, n);
+  if (!(area > 0.0)) return glm::dvec3(s.mesh->triangle_colors[s.triangle][0]);
+  const double wb = glm::dot(glm::cross(p - a, c - a), n) / area;  // weight of b
+  const double wc = glm::dot(glm::cross(b - a, p - a), n) / area;  // weight of c
+  const auto& rgb = s.mesh->triangle_colors[s.triangle];
+  return (1.0 - wb - wc) * glm::dvec3(rgb[0]) + wb * glm::dvec3(rgb[1]) + wc * glm::dvec3(rgb[2]);
 }
 
 // 8 bits as GL stores a colour in [0, 1]: clamped, then rounded.
@@ -31,11 +55,13 @@ uint8_t to_byte(double c) { return uint8_t(std::lround(std::clamp(c, 0.0, 1.0) *
 // The shader's shade() for one pixel, in double precision (shaders.hpp).
 void shade_pixel(const Scene& scene, const RayCaster& caster, const glm::dvec3& ambient_sum, const RayHit& hit,
                  RayCastFrame& frame, int x, int y) {
-  const Material& m = scene.materials[size_t(material_of(scene, hit.object))];
+  const Surface surface = surface_of(scene, hit.object);
+  const Material& m = scene.materials[size_t(surface.material)];
+  const glm::dvec3 tint = surface_colour(surface, hit.point);
   const glm::dvec3 eye = scene.camera.eye;
   glm::dvec3 n = hit.normal;
   if (glm::dot(n, eye - hit.point) < 0.0) n = -n;
-  glm::dvec3 colour = ambient_sum * m.ambient;
+  glm::dvec3 colour = ambient_sum * m.ambient * tint;
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& light = scene.lights[i];
     const glm::dvec3 l = glm::normalize(light.position - hit.point);
@@ -46,7 +72,7 @@ void shade_pixel(const Scene& scene, const RayCaster& caster, const glm::dvec3& 
     const glm::dvec3 v = glm::normalize(eye - hit.point);
     const glm::dvec3 r = 2.0 * n_dot_l * n - l;  // reflect(-l, n)
     const double s = m.shininess > 0.0 ? std::pow(std::max(glm::dot(r, v), 0.0), m.shininess) : 1.0;
-    colour += light.color * (m.diffuse * n_dot_l + m.specular * s);
+    colour += light.color * (m.diffuse * tint * n_dot_l + m.specular * s);
   }
   for (int c = 0; c < 3; ++c) frame.image.at(x, y, c) = to_byte(colour[c]);
 }

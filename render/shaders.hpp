@@ -34,6 +34,9 @@ uniform float shadow_map_texel;  // a texel's width at distance 1: 2 / size
 uniform vec4 receiver_plane;     // (n, d), n unit
 uniform float receiver_tolerance;
 out vec4 frag_color;
+// What the material's ambient and diffuse terms are multiplied by: a mesh's
+// vertex colours, blended across its triangles; white for everything else.
+vec3 surface_color = vec3(1.0);
 
 bool in_mapped_shadow(vec3 p, float n_dot_l) {
   vec3 to_p = p - light_position;
@@ -57,11 +60,11 @@ void shade(vec3 p, vec3 n) {
   vec3 l = normalize(light_position - p);
   float n_dot_l = dot(n, l);
   if (pass == 0) {
-    frag_color = vec4(ambient_sum * material_ambient, 1.0);
+    frag_color = vec4(ambient_sum * material_ambient * surface_color, 1.0);
   } else if (pass == 1) {
     if (n_dot_l <= 0.0) discard;
     if (shadow_map_on && in_mapped_shadow(p, n_dot_l)) discard;
-    vec3 colour = material_diffuse * n_dot_l;
+    vec3 colour = material_diffuse * surface_color * n_dot_l;
     if (specular_used) {
       vec3 v = normalize(eye - p);
       vec3 r = reflect(-l, n);
@@ -82,13 +85,16 @@ void shade(vec3 p, vec3 n) {
 inline constexpr const char* kTriangleVertex = R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
+layout(location = 2) in vec3 color;  // white (a constant attribute) when no mesh has vertex colours
 uniform mat4 view_projection;
 out vec3 world_position;
 out vec3 world_normal;
+out vec3 vertex_color;
 invariant gl_Position;
 void main() {
   world_position = position;
   world_normal = normal;
+  vertex_color = color;
   gl_Position = view_projection * vec4(position, 1.0);
 }
 )";
@@ -96,7 +102,11 @@ void main() {
 inline constexpr const char* kTriangleFragmentMain = R"(
 in vec3 world_position;
 in vec3 world_normal;
-void main() { shade(world_position, normalize(world_normal)); }
+in vec3 vertex_color;
+void main() {
+  surface_color = vertex_color;
+  shade(world_position, normalize(world_normal));
+}
 )";
 
 // Spheres are exact: a box around the sphere is rasterised (back faces, so it

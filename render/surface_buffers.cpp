@@ -69,6 +69,16 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
       *out++ = float(n.x), *out++ = float(n.y), *out++ = float(n.z);
     }
   };
+  // Vertex colours, when some mesh has them: a second buffer in the same
+  // order, white for every other triangle. Without it, attribute 2 is the
+  // constant white, and no memory is spent.
+  const bool coloured = std::any_of(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return !m.triangle_colors.empty(); });
+  std::vector<float> colours(coloured ? triangle_count * 9 : 0, 1.0f);
+  const auto put_colours = [&colours](size_t at, const Mesh& mesh, size_t t) {
+    if (mesh.triangle_colors.empty()) return;
+    float* out = colours.data() + at * 9;
+    for (const glm::vec3& c : mesh.triangle_colors[t]) *out++ = c.r, *out++ = c.g, *out++ = c.b;
+  };
   size_t placed = 0;  // triangles laid out so far
   for (const Run& run : runs) {
     const bool closed = run.closed_mesh != nullptr;
@@ -92,8 +102,10 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
     tbb::this_task_arena::isolate([&] {
       tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 16384), [&, first = placed](const tbb::blocked_range<size_t>& r) {
         for (size_t i = r.begin(); i < r.end(); ++i) {
-          const auto& t = triangles[run.subset ? (*run.subset)[i] : i];
+          const size_t k = run.subset ? (*run.subset)[i] : i;
+          const auto& t = triangles[k];
           put(first + i, p[t[0]], p[t[1]], p[t[2]]);
+          if (coloured) put_colours(first + i, *run.mesh, k);
         }
       });
     });
@@ -106,6 +118,15 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
   glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), reinterpret_cast<void*>(3 * sizeof(float)));
   glEnableVertexAttribArray(0);
   glEnableVertexAttribArray(1);
+  if (coloured) {
+    glGenBuffers(1, &color_vbo_);
+    glBindBuffer(GL_ARRAY_BUFFER, color_vbo_);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(colours.size() * sizeof(float)), colours.data(), GL_STATIC_DRAW);
+    glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+    glEnableVertexAttribArray(2);
+  } else {
+    glVertexAttrib3f(2, 1.0f, 1.0f, 1.0f);
+  }
 
   const float corners[] = {-1, -1, -1, 1, -1, -1, 1, 1, -1, -1, 1, -1, -1, -1, 1, 1, -1, 1, 1, 1, 1, -1, 1, 1};
   const unsigned faces[] = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
@@ -124,8 +145,8 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
 }
 
 SurfaceBuffers::~SurfaceBuffers() {
-  const GLuint buffers[] = {triangle_vbo_, box_vbo_, box_ibo_};
-  glDeleteBuffers(3, buffers);
+  const GLuint buffers[] = {triangle_vbo_, box_vbo_, box_ibo_, color_vbo_};
+  glDeleteBuffers(4, buffers);
   const GLuint arrays[] = {triangle_vao_, box_vao_};
   glDeleteVertexArrays(2, arrays);
 }

@@ -40,6 +40,7 @@ class SurfaceBuffers {
  private:
   std::vector<TriangleGroup> groups_;
   unsigned triangle_vao_ = 0, triangle_vbo_ = 0;
+  unsigned color_vbo_ = 0;  // per vertex, parallel to triangle_vbo_; only when some mesh has vertex colours
   unsigned box_vao_ = 0, box_vbo_ = 0, box_ibo_ = 0;
 };
 

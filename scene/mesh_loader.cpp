@@ -84,6 +84,7 @@ LoadedMesh load_mesh(MeshStatement statement) {
   m.loading_changes = analysis.report.loading_changes();
   m.culls_back_faces = analysis.report.back_faces_hidden();
   m.triangle_materials = std::move(analysis.triangle_materials);
+  m.triangle_colors = std::move(analysis.triangle_colors);
   m.edges = std::move(analysis.topology->edges);  // asked for above: always given
   m.components = std::move(analysis.topology->components);
   loaded.warnings = std::move(analysis.report.warnings);

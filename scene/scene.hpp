@@ -59,6 +59,10 @@ struct Mesh {
   // Per triangle, an index into Scene::materials, where the file gives its
   // faces materials (OBJ's usemtl, glTF, 3MF); empty when every face takes `material`.
   std::vector<int> triangle_materials;
+  // Per triangle, its corners' colours where the file gives vertex colours
+  // (PLY, OBJ "v x y z r g b", glTF COLOR_0); they multiply the material's
+  // ambient and diffuse terms, blended across the triangle. Empty: none.
+  std::vector<std::array<glm::vec3, 3>> triangle_colors;
   bool fit = false;  // centred and scaled so that its box's longest side spans the cube, before the rest
   double scale = 1.0;
   glm::dvec3 rotation_axis{0.0, 0.0, 1.0};

@@ -125,6 +125,14 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   if (disposable) std::vector<glm::dvec3>().swap(disposable->points);
   const auto vertex_ref = [&](uint32_t v) { return ElementRef{merged.first_point[v], soup.point_line(merged.first_point[v])}; };
   const auto face_ref = [&](uint32_t f) { return ElementRef{f, soup.polygon_line(f)}; };
+  // Colours belong to the file's corners: kept, with each corner's merged
+  // vertex, to find each triangle's once the triangles are final.
+  const bool coloured = !soup.point_colors.empty() && soup.point_colors.size() == report.file_vertices;  // the points may be freed by now
+  std::vector<glm::vec3> corner_colors;
+  if (coloured) {
+    corner_colors.resize(soup.corners.size());
+    for (size_t c = 0; c < soup.corners.size(); ++c) corner_colors[c] = soup.point_colors[soup.corners[c]];
+  }
   std::vector<uint32_t> corners;
   if (disposable) {
     for (uint32_t& corner : disposable->corners) corner = merged.vertex_of_point[corner];
@@ -134,6 +142,7 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
     for (size_t c = 0; c < soup.corners.size(); ++c) corners[c] = merged.vertex_of_point[soup.corners[c]];
   }
   std::vector<uint32_t>().swap(merged.vertex_of_point);
+  const std::vector<uint32_t> merged_corners = coloured ? corners : std::vector<uint32_t>();
 
   // The topological stages; what only they need is freed at the end of the block.
   FaceTriangles triangles;
@@ -270,6 +279,18 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   analysis.positions = std::move(merged.positions);
   analysis.triangles = std::move(triangles.triangles);
   analysis.triangle_face = std::move(triangles.face);
+  if (coloured) {
+    analysis.triangle_colors.resize(analysis.triangles.size());
+    for (size_t t = 0; t < analysis.triangles.size(); ++t) {
+      const uint32_t f = analysis.triangle_face[t];
+      for (int k = 0; k < 3; ++k)
+        for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c)
+          if (merged_corners[c] == analysis.triangles[t][size_t(k)]) {
+            analysis.triangle_colors[t][size_t(k)] = corner_colors[c];
+            break;
+          }
+    }
+  }
   if (!soup.polygon_materials.empty()) {
     analysis.materials = soup.materials;
     analysis.triangle_materials.reserve(analysis.triangle_face.size());

@@ -41,6 +41,9 @@ struct MeshAnalysis {
   // `materials` per triangle, -1 for a face the file gives none.
   std::vector<SoupMaterial> materials;
   std::vector<int> triangle_materials;
+  // Per triangle, its three corners' colours, when the file gives its points
+  // colours (PolygonSoup::point_colors); empty otherwise.
+  std::vector<std::array<glm::vec3, 3>> triangle_colors;
   std::optional<TriangleTopology> topology;  // of `triangles`, with CheckOptions::triangle_topology
 };
 

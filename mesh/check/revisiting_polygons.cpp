@@ -52,6 +52,7 @@ PolygonSoup split_revisiting_polygons(const PolygonSoup& soup) {
   split.format = soup.format;
   split.points = soup.points;
   split.point_lines = soup.point_lines;
+  split.point_colors = soup.point_colors;
   split.warnings = soup.warnings;
   split.materials = soup.materials;
   const bool has_materials = !soup.polygon_materials.empty();

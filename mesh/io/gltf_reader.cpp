@@ -155,6 +155,37 @@ class GltfReader {
     return xyz;
   }
 
+  // The primitive's COLOR_0 (RGB, or RGBA read as RGB), one per point, into
+  // soup_.point_colors from `first` on; floats or normalised unsigned bytes
+  // or shorts, as glTF 2.0 allows. Points of primitives without colours are white.
+  void add_colours(const tinygltf::Primitive& primitive, uint32_t first, size_t count, const std::string& what) {
+    const auto colour = primitive.attributes.find("COLOR_0");
+    if (colour == primitive.attributes.end()) {
+      if (!soup_.point_colors.empty()) soup_.point_colors.resize(soup_.points.size(), glm::vec3(1.0f));
+      return;
+    }
+    if (colour->second < 0 || size_t(colour->second) >= model_.accessors.size()) fail(what + "'s COLOR_0 accessor does not exist");
+    const tinygltf::Accessor& accessor = model_.accessors[size_t(colour->second)];
+    if (accessor.type != TINYGLTF_TYPE_VEC3 && accessor.type != TINYGLTF_TYPE_VEC4) fail(what + "'s COLOR_0 must be VEC3 or VEC4");
+    if (accessor.count != count) fail(what + "'s COLOR_0 has " + std::to_string(accessor.count) + " colours for " +
+                                      std::to_string(count) + " vertices");
+    const Elements rgbs = elements(accessor, what + "'s COLOR_0");
+    soup_.point_colors.resize(first, glm::vec3(1.0f));
+    for (size_t i = 0; i < rgbs.count; ++i) {
+      glm::vec3 rgb;
+      for (int k = 0; k < 3; ++k) {
+        switch (accessor.componentType) {
+          case TINYGLTF_COMPONENT_TYPE_FLOAT: rgb[k] = float(read_as<float>(rgbs.at(i), k)); break;
+          case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: rgb[k] = float(read_as<uint8_t>(rgbs.at(i), k) / 255.0); break;
+          case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: rgb[k] = float(read_as<uint16_t>(rgbs.at(i), k) / 65535.0); break;
+          default: fail(what + "'s COLOR_0 must be floats, or normalised unsigned bytes or shorts");
+        }
+        rgb[k] = std::isfinite(rgb[k]) ? std::clamp(rgb[k], 0.0f, 1.0f) : 0.0f;
+      }
+      soup_.point_colors.push_back(rgb);
+    }
+  }
+
   template <typename T>
   static double read_as(const unsigned char* p, int k) {
     T v;
@@ -216,6 +247,7 @@ class GltfReader {
           fail(what + " vertex " + std::to_string(i) + " has a coordinate that is not a finite number");
         soup_.points.push_back(p3);
       }
+      add_colours(primitive, first, xyzs.count, what);
       std::vector<uint32_t> indices;
       if (primitive.indices >= 0) {
         if (size_t(primitive.indices) >= model_.accessors.size()) fail(what + "'s index accessor does not exist");

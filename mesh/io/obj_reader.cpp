@@ -5,6 +5,7 @@
 // texture maps are skipped. Large files are read in stretches of lines on
 // every core.
 #include <algorithm>
+#include <cstdlib>
 #include <charconv>
 #include <exception>
 #include <filesystem>
@@ -117,6 +118,7 @@ struct ObjStretch {
   };
   std::vector<MaterialStatement> material_statements;
   std::exception_ptr error;  // the first in the stretch; it is read no further
+  bool colours = false;      // some vertex has "v x y z r g b"
 };
 
 // Splits `text` after a newline near every `chunk_bytes` bytes (a file whose
@@ -160,6 +162,18 @@ void read_stretch(ObjStretch& stretch, const std::string& path, PolygonSoup& sou
     const std::string_view keyword = scanner.field();
     if (keyword == "v") {
       soup.points[point] = scanner.vertex();
+      // "v x y z r g b", a colour per vertex as MeshLab and others write it
+      // (one more number alone is the homogeneous w, which is read past).
+      if (!scanner.at_line_end()) {
+        const std::string_view rest = scanner.rest_of_line();
+        TextScanner extra(rest, path, scanner.line_number() - 1);
+        extra.next_line();
+        float rgb[3];
+        int count = 0;
+        for (std::string_view field = extra.field(); !field.empty() && count < 4; field = extra.field(), ++count)
+          if (count < 3) rgb[count] = float(std::clamp(std::strtod(std::string(field).c_str(), nullptr), 0.0, 1.0));
+        if (count == 3) soup.point_colors[point] = glm::vec3(rgb[0], rgb[1], rgb[2]), stretch.colours = true;
+      }
       soup.point_lines[point++] = scanner.line_number();
     } else if (keyword == "f") {
       const size_t first = stretch.corners.size();
@@ -243,6 +257,7 @@ PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chun
   const ObjStretch& last = stretches.back();
   soup.points.resize(last.points_before + last.points);
   soup.point_lines.resize(soup.points.size());
+  soup.point_colors.assign(soup.points.size(), glm::vec3(1.0f));  // kept only if some vertex has a colour
   tbb::parallel_for(size_t(0), stretches.size(), [&](size_t k) {
     try {
       read_stretch(stretches[k], path, soup);
@@ -271,6 +286,8 @@ PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chun
       std::vector<uint32_t>().swap(stretch.corners);
     });
   }
+  if (std::none_of(stretches.begin(), stretches.end(), [](const ObjStretch& s) { return s.colours; }))
+    std::vector<glm::vec3>().swap(soup.point_colors);
   replay_material_statements(stretches, face_count, path, soup);
   if (failed != stretches.end()) std::rethrow_exception(failed->error);
   return soup;

@@ -118,8 +118,27 @@ PlyHeader read_header(TextScanner& scanner, std::vector<ReadWarning>& warnings) 
 // Where the vertex positions and face lists are among the properties.
 struct PlyLayout {
   int x = -1, y = -1, z = -1;  // property indices in the vertex element
+  int colour[3] = {-1, -1, -1};  // red, green and blue, when the vertex element has all three
   int indices = -1;            // property index of the face element's list
+  bool has_colour() const { return colour[0] >= 0 && colour[1] >= 0 && colour[2] >= 0; }
 };
+
+// A colour channel in [0, 1]: integers over their type's largest value
+// (255 for uchar), floats as they are.
+float colour_channel(double v, PlyType type) {
+  double full = 1.0;
+  switch (type) {
+    case PlyType::kInt8: full = 127.0; break;
+    case PlyType::kUint8: full = 255.0; break;
+    case PlyType::kInt16: full = 32767.0; break;
+    case PlyType::kUint16: full = 65535.0; break;
+    case PlyType::kInt32: full = 2147483647.0; break;
+    case PlyType::kUint32: full = 4294967295.0; break;
+    case PlyType::kFloat32: case PlyType::kFloat64: break;
+  }
+  const double c = v / full;
+  return std::isfinite(c) ? float(std::clamp(c, 0.0, 1.0)) : 0.0f;
+}
 
 PlyLayout find_layout(const PlyHeader& header, const std::string& path) {
   PlyLayout layout;
@@ -131,6 +150,9 @@ PlyLayout find_layout(const PlyHeader& header, const std::string& path) {
         if (p.name == "x") layout.x = i;
         if (p.name == "y") layout.y = i;
         if (p.name == "z") layout.z = i;
+        if (p.name == "red" || p.name == "r") layout.colour[0] = i;
+        if (p.name == "green" || p.name == "g") layout.colour[1] = i;
+        if (p.name == "blue" || p.name == "b") layout.colour[2] = i;
       }
       if (e.name == "face" && p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index")) {
         if (!is_integer(p.type)) throw InputError({path, 0, 0}, "the face's vertex indices must have an integer type");
@@ -213,6 +235,7 @@ void read_body(Cursor& cursor, const PlyHeader& header, const PlyLayout& layout,
     if (is_vertex) soup.points.reserve(std::min<size_t>(e.count, byte_budget));
     for (uint64_t n = 0; n < e.count; ++n) {
       glm::dvec3 p(0.0);
+      glm::vec3 colour(1.0f);
       int line = 0;
       for (int i = 0; i < int(e.properties.size()); ++i) {
         const PlyProperty& prop = e.properties[size_t(i)];
@@ -224,6 +247,8 @@ void read_body(Cursor& cursor, const PlyHeader& header, const PlyLayout& layout,
               throw InputError({soup.path, line, 0}, "vertex " + std::to_string(n) + " has a coordinate that is not a finite number");
             (i == layout.x ? p.x : i == layout.y ? p.y : p.z) = v;
           }
+          for (int c = 0; c < 3; ++c)
+            if (is_vertex && i == layout.colour[c]) colour[c] = colour_channel(v, prop.type);
           continue;
         }
         const double count = cursor.value(prop.count_type, "a list's length");
@@ -243,7 +268,10 @@ void read_body(Cursor& cursor, const PlyHeader& header, const PlyLayout& layout,
           soup.corners.push_back(uint32_t(index));
         }
       }
-      if (is_vertex) soup.add_point(p, line);
+      if (is_vertex) {
+        soup.add_point(p, line);
+        if (layout.has_colour()) soup.point_colors.push_back(colour);
+      }
       if (is_face) soup.end_polygon(line);
     }
   }

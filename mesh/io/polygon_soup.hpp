@@ -38,6 +38,11 @@ struct PolygonSoup {
   std::vector<ReadWarning> warnings;  // quirks read past, in file order
   std::vector<SoupMaterial> materials;   // the file's own, if it has any
   std::vector<int> polygon_materials;    // index into `materials` per polygon, -1 for none; empty: none at all
+  // Per point, its colour as the file gives it (PLY red/green/blue, OBJ
+  // "v x y z r g b", glTF COLOR_0), each channel in [0, 1]; empty when the
+  // file gives none. Colours belong to the file's points, not to merged
+  // vertices: two points at one place may differ.
+  std::vector<glm::vec3> point_colors;
 
   size_t polygon_count() const { return polygon_starts.size() - 1; }
   uint32_t corner_count(size_t p) const { return polygon_starts[p + 1] - polygon_starts[p]; }
