@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -63,7 +64,8 @@ options:
   --segments N         sphere segments (default 64)
   --up AXIS            for a MESH: its axis that points up (see umbra render
                        --help)
-  --frames N           draw N frames, then exit; the light then advances by
+  --frames N           draw N frames, then exit, printing the median and the
+                       worst time a frame took; the light then advances by
                        SPEED/60 degrees per frame, so a run is reproducible
   --screenshot OUT.png with --frames: write the last frame to OUT.png (without
                        the overlay, so that it is the headless render's frame)
@@ -266,6 +268,7 @@ int run_view_command(const std::vector<std::string>& argv) {
 
   auto file_time = file_signature(options.scene_path);
   double last_time = window->time_seconds();
+  std::vector<double> frame_times_ms;  // with --frames: each frame's plan, drawing and buffer swap
   for (int frame = 1; !window->should_close(); ++frame) {
     // Reload when the file changed; keep the last good scene on an error.
     if (const auto now = file_signature(options.scene_path); now && now != file_time) {
@@ -298,11 +301,12 @@ int run_view_command(const std::vector<std::string>& argv) {
     int width = 0, height = 0;
     window->framebuffer_size(width, height);
     if (width > 0 && height > 0) {
-      scene.plan->settings.width = width;
-      scene.plan->settings.height = height;
-      scene.plan->settings.sphere_segments = options.settings.sphere_segments;
-      scene.plan->settings.method = options.settings.method;
-      scene.plan->settings.shadow_map_size = options.settings.shadow_map_size;
+      // Every setting as the keys left it, at the window's size: the plan is
+      // remade only when one of them differs from what it was made for.
+      RenderSettings settings = options.settings;
+      settings.width = width;
+      settings.height = height;
+      scene.plan->settings = settings;
       update_render_plan(scene.frame, scene.meshes, *scene.plan);
       scene.renderer->draw(show_volumes);
     }
@@ -332,11 +336,22 @@ int run_view_command(const std::vector<std::string>& argv) {
     }
     draw_overlay();
     window->swap_buffers();
+    if (options.frames > 0) frame_times_ms.push_back(1000.0 * (window->time_seconds() - now));
     window->poll_events();
     // Scripted runs advance by a fixed 1/60 s a frame, interactive ones by the clock.
     const double dt = options.frames > 0 ? 1.0 / 60.0 : now - last_time;
     last_time = now;
     if (!paused) angle += speed * dt;
+  }
+  if (!frame_times_ms.empty()) {
+    std::vector<double> sorted = frame_times_ms;
+    std::sort(sorted.begin(), sorted.end());
+    const size_t n = sorted.size();
+    const double median = n % 2 ? sorted[n / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
+    char line[160];
+    std::snprintf(line, sizeof line, "%zu frames (all but the last): median %.1f ms, worst %.1f ms a frame (plan, drawing and swap)\n",
+                  n, median, sorted.back());
+    std::cout << line;
   }
   return 0;
 }
