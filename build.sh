@@ -18,6 +18,7 @@ packages=(
   libosmesa6-dev                     # headless OpenGL (Mesa llvmpipe)
   libglfw3-dev libgl1-mesa-dri       # umbra view: a window with an OpenGL context
   libimgui-dev                       # umbra view's overlay (Dear ImGui)
+  libstb-dev                         # the contact sheet's label font (stb_easy_font)
   xvfb xauth                         # tests run umbra view in a virtual display
   libcgal-dev libgmp-dev libmpfr-dev # exact predicates, mesh checks and repair
   libopenmesh-dev                    # half-edge meshes for silhouettes

@@ -10,6 +10,7 @@
 
 #include <tbb/global_control.h>
 
+#include "image/contact_sheet.hpp"
 #include "image/image.hpp"
 #include "mesh/input_error.hpp"
 #include "reference/ray_cast_render.hpp"
@@ -22,6 +23,8 @@
 
 namespace umbra {
 namespace {
+
+constexpr int kSheetThumbWidth = 200;  // a contact sheet's tiles, in pixels
 
 // One file's picture, drawn in the worker's own GL context (made on first
 // use, then kept for every file it draws); its warnings and error, if any.
@@ -98,6 +101,29 @@ int run_batch_render(const BatchRenderOptions& o) {
   work();
   for (std::thread& t : workers) t.join();
   progress.clear();
+  bool sheet_failed = false;
+  if (o.sheet) {
+    // The pictures just written, read back in file order: held one at a
+    // time while drawing, so that a folder of large pictures fits in memory.
+    std::vector<SheetPicture> sheet;
+    for (size_t i = 0; i < count; ++i) {
+      const std::string out = (std::filesystem::path(o.out_dir) / (names[i] + ".png")).string();
+      std::error_code ec;
+      if (!std::filesystem::exists(out, ec)) continue;  // it failed
+      try {
+        sheet.push_back({names[i], thumbnail(read_png(out), kSheetThumbWidth)});
+      } catch (const std::exception& e) {
+        std::cerr << e.what() << "\n";
+      }
+    }
+    try {
+      write_png(contact_sheet(sheet, kSheetThumbWidth), *o.sheet);
+      std::cerr << "umbra render: wrote the contact sheet " << *o.sheet << " (" << sheet.size() << " pictures)\n";
+    } catch (const std::exception& e) {
+      std::cerr << e.what() << "\n";
+      sheet_failed = true;
+    }
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   char elapsed[32];
   std::snprintf(elapsed, sizeof elapsed, "%.1f s", seconds);
@@ -107,7 +133,7 @@ int run_batch_render(const BatchRenderOptions& o) {
                         : "")
             << " in " << elapsed << ": " << written << (written == 1 ? " picture" : " pictures") << " in " << o.out_dir << ", "
             << count - written << " failed\n";
-  return written == count ? 0 : 1;
+  return written == count && !sheet_failed ? 0 : 1;
 }
 
 }  // namespace umbra

@@ -21,11 +21,13 @@ struct BatchRenderOptions {
   bool show_volumes = false;
   size_t jobs = 1;  // pictures drawn at a time, each in its own GL context
   std::optional<Shard> shard;
+  std::optional<std::string> sheet;  // also one PNG of every picture, labelled with its file's name
 };
 
 // Writes OUT_DIR/NAME.png for each file, NAME its path relative to the
 // folder it was found in (or its file name), so that a.obj and a.stl do not
-// meet. A file that fails is reported on stderr and the rest go on. Returns
+// meet. With `sheet`, also a contact sheet of the pictures in file order.
+// A file that fails is reported on stderr and the rest go on. Returns
 // 0 when every picture was written, 1 when any file failed, 2 when there is
 // nothing to render.
 int run_batch_render(const BatchRenderOptions& options);

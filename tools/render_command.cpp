@@ -65,6 +65,9 @@ options:
                         one per core)
   --shard K/N           with several files: draw only part K (counting from 0)
                         of N disjoint parts, as umbra check --shard splits them
+  --sheet SHEET.png     with several files: also one picture of them all,
+                        each shrunk to at most 200 pixels wide and labelled
+                        with its file's name
   --explain             print the render plan (camera, lights, each caster's
                         volume, stencil method) to stdout, after the staged
                         scene's text for a MESH
@@ -109,6 +112,8 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   add_up_option(options, o.up);
   std::optional<size_t> jobs;
   std::optional<Shard> shard;
+  std::optional<std::string> sheet;
+  options.value("--sheet", [&](const std::string&, const std::string& t) { sheet = t; });
   options.value("--jobs", [&](const std::string& n, const std::string& t) { jobs = size_t(parse_int_in(n, t, 1, 4096)); });
   options.value("--shard", [&](const std::string& n, const std::string& t) { shard = parse_shard(n, t); });
   options.positionals(scenes);
@@ -122,9 +127,10 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     if (o.mask) throw UsageError("--mask writes one scene's mask; with several files there is none to choose");
     if (o.explain) throw UsageError("--explain prints one scene's plan; with several files, ask for one of them");
     o.batch = BatchRenderOptions{scenes, o.output, o.settings, o.light_angle_deg, o.up, o.show_volumes,
-                                 jobs.value_or(std::max(1u, std::thread::hardware_concurrency())), shard};
+                                 jobs.value_or(std::max(1u, std::thread::hardware_concurrency())), shard, sheet};
   } else {
     if (shard) throw UsageError("--shard splits several files; \"" + o.scene_path + "\" is one");
+    if (sheet) throw UsageError("--sheet shows several files; \"" + o.scene_path + "\" is one");
     if (o.output.empty()) throw UsageError("no output image given (-o OUT.png)");
   }
   if (o.mask && *o.mask == o.output) throw UsageError("--mask and -o name the same file");

@@ -246,7 +246,7 @@ TEST_F(RenderCommand, AFolderRendersToOnePicturePerMeshAndShardsWriteTheSameSet)
                                 "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n");
   write("models/parts/photo.obj", std::string("\xff\xd8\xff\xe0", 4));
   write("models/parts/broken.obj", "v 0 0 0\nf 1 2 3\n");
-  const CommandResult r = run("render " + path("models") + " -o " + path("out") + " --size 24x24 --jobs 2");
+  const CommandResult r = run("render " + path("models") + " -o " + path("out") + " --size 120x90 --jobs 2 --sheet " + path("sheet.png"));
   EXPECT_EQ(r.status, 1) << r.err;  // broken.obj failed
   const std::vector<std::string> pictures = {"parts/box.off.png", "parts/tet.obj.png", "tet.obj.png"};
   std::vector<std::string> written;
@@ -254,15 +254,32 @@ TEST_F(RenderCommand, AFolderRendersToOnePicturePerMeshAndShardsWriteTheSameSet)
     if (entry.is_regular_file()) written.push_back(entry.path().lexically_relative(path("out")).string());
   std::sort(written.begin(), written.end());
   EXPECT_EQ(written, pictures);
-  EXPECT_EQ(read_png(path("out/tet.obj.png")).width, 24);
+  EXPECT_EQ(read_png(path("out/tet.obj.png")).width, 120);
   EXPECT_NE(r.err.find("umbra render: passed over " + path("models/parts/photo.obj") + ": a JPEG image, not a mesh\n"),
             std::string::npos) << r.err;
   EXPECT_NE(r.err.find(path("models/parts/broken.obj") + ":2:"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("umbra render: 4 files in "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(": 3 pictures in " + path("out") + ", 1 failed\n"), std::string::npos) << r.err;
+  // The contact sheet: the three pictures in file order, two to a row, each
+  // tile 6 pixels in from its cell, with a dark label line below it.
+  const Image sheet = read_png(path("sheet.png"));
+  ASSERT_EQ(sheet.width, 2 * (120 + 12));
+  ASSERT_EQ(sheet.height, 2 * (90 + 24 + 12));
+  for (size_t k = 0; k < pictures.size(); ++k) {
+    const Image picture = read_png(path("out/" + pictures[k]));
+    const int x0 = int(k % 2) * 132 + 6, y0 = int(k / 2) * 126 + 6;
+    int differing = 0, ink = 0;
+    for (int y = 0; y < 90; ++y)
+      for (int x = 0; x < 120; ++x)
+        for (int c = 0; c < 3; ++c) differing += sheet.at(x0 + x, y0 + y, c) != picture.at(x, y, c);
+    for (int y = y0 + 90; y < y0 + 90 + 24; ++y)
+      for (int x = x0; x < x0 + 120; ++x) ink += sheet.at(x, y, 0) < 100;
+    EXPECT_EQ(differing, 0) << pictures[k];
+    EXPECT_GT(ink, 10) << pictures[k] << ": no label";
+  }
   // Two shards write the same pictures as the one run, byte for byte.
   for (const char* shard : {"0/2", "1/2"})
-    run("render " + path("models") + " -o " + path("sharded") + " --size 24x24 --shard " + shard);
+    run("render " + path("models") + " -o " + path("sharded") + " --size 120x90 --shard " + shard);
   for (const std::string& picture : pictures)
     EXPECT_EQ(read(path("sharded/" + picture)), read(path("out/" + picture))) << picture;
   EXPECT_FALSE(fs::exists(path("sharded/parts/broken.obj.png")));

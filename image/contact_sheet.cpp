@@ -1,0 +1,91 @@
+#include "image/contact_sheet.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+// Sean Barrett's stb_easy_font (Debian's libstb-dev): an ASCII bitmap font
+// made of quads, no font file or texture, which is all a label needs.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+#include <stb_easy_font.h>
+#pragma GCC diagnostic pop
+
+namespace umbra {
+namespace {
+
+constexpr uint8_t kGround = 235, kInk = 40;
+constexpr int kScale = 2;                     // the font's pixels, doubled: about 14 pixels a line
+constexpr int kPad = 6;                       // around each tile
+constexpr int kLabelHeight = 12 * kScale;    // one line
+
+}  // namespace
+
+Image thumbnail(const Image& picture, int max_width) {
+  const int factor = std::max(1, (picture.width + max_width - 1) / std::max(max_width, 1));
+  if (factor <= 1) return picture;
+  Image out(picture.width / factor, picture.height / factor, 3);
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        int sum = 0;
+        for (int dy = 0; dy < factor; ++dy)
+          for (int dx = 0; dx < factor; ++dx) sum += picture.at(x * factor + dx, y * factor + dy, c);
+        out.at(x, y, c) = uint8_t((sum + factor * factor / 2) / (factor * factor));
+      }
+  return out;
+}
+
+namespace {
+
+int text_width(const std::string& text) { return stb_easy_font_width(const_cast<char*>(text.c_str())) * kScale; }
+
+// `label`, or its end after "..." when it is wider than `width`.
+std::string fitted(const std::string& label, int width) {
+  if (text_width(label) <= width) return label;
+  for (size_t cut = 1; cut < label.size(); ++cut)
+    if (text_width("..." + label.substr(cut)) <= width) return "..." + label.substr(cut);
+  return "";
+}
+
+// Draws `text` with its top left at (x, y), clipped to the sheet.
+void draw_text(Image& sheet, int x, int y, const std::string& text) {
+  std::vector<char> quads(text.size() * 270 + 64);  // the header's advice: about 270 bytes a character
+  const int count = stb_easy_font_print(0, 0, const_cast<char*>(text.c_str()), nullptr, quads.data(), int(quads.size()));
+  for (int q = 0; q < count; ++q) {
+    const float* v = reinterpret_cast<const float*>(quads.data() + q * 4 * 16);  // 4 vertices of 16 bytes: x, y, z, colour
+    const int x0 = x + int(v[0]) * kScale, y0 = y + int(v[1]) * kScale;
+    const int x1 = x + int(v[8]) * kScale, y1 = y + int(v[9]) * kScale;  // the opposite corner, vertex 2
+    for (int py = std::max(y0, 0); py < std::min(y1, sheet.height); ++py)
+      for (int px = std::max(x0, 0); px < std::min(x1, sheet.width); ++px)
+        for (int c = 0; c < 3; ++c) sheet.at(px, py, c) = kInk;
+  }
+}
+
+}  // namespace
+
+Image contact_sheet(const std::vector<SheetPicture>& pictures, int thumb_width, int columns) {
+  std::vector<Image> thumbs;
+  int tile_w = 1, tile_h = 1;
+  for (const SheetPicture& p : pictures) {
+    thumbs.push_back(thumbnail(p.picture, thumb_width));
+    tile_w = std::max(tile_w, thumbs.back().width);
+    tile_h = std::max(tile_h, thumbs.back().height);
+  }
+  const int n = int(pictures.size());
+  if (columns <= 0) columns = std::max(1, int(std::ceil(std::sqrt(double(n)))));
+  const int rows = std::max(1, (n + columns - 1) / columns);
+  const int cell_w = tile_w + 2 * kPad, cell_h = tile_h + kLabelHeight + 2 * kPad;
+  Image sheet(columns * cell_w, rows * cell_h, 3, kGround);
+  for (int k = 0; k < n; ++k) {
+    const int x0 = (k % columns) * cell_w + kPad, y0 = (k / columns) * cell_h + kPad;
+    const Image& t = thumbs[size_t(k)];
+    for (int y = 0; y < t.height; ++y)
+      for (int x = 0; x < t.width; ++x)
+        for (int c = 0; c < 3; ++c) sheet.at(x0 + x, y0 + y, c) = t.at(x, y, c);
+    draw_text(sheet, x0, y0 + tile_h + 4, fitted(pictures[size_t(k)].label, tile_w));
+  }
+  return sheet;
+}
+
+}  // namespace umbra

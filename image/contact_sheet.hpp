@@ -1,0 +1,26 @@
+#pragma once
+// A contact sheet: pictures shrunk to thumbnails and tiled in rows, each
+// labelled underneath with its name (a folder's pictures in one PNG).
+
+#include <string>
+#include <vector>
+
+#include "image/image.hpp"
+
+namespace umbra {
+
+struct SheetPicture {
+  std::string label;  // said as given; cut at the front with "..." when too long for its tile
+  Image picture;      // RGB
+};
+
+// `picture` shrunk by the least whole factor that makes it at most
+// `max_width` pixels wide, each pixel the mean of those it stands for.
+Image thumbnail(const Image& picture, int max_width);
+
+// Thumbnails at most `thumb_width` pixels wide (each picture shrunk by a
+// whole factor, averaging the pixels it merges), in `columns` columns (0: as
+// many as make the sheet about square), on a light grey ground.
+Image contact_sheet(const std::vector<SheetPicture>& pictures, int thumb_width = 200, int columns = 0);
+
+}  // namespace umbra
