@@ -59,6 +59,27 @@ TEST_F(RenderCommand, AMeshFileOnItsOwnIsStagedAndExplainPrintsTheSceneToSave) {
   EXPECT_EQ(bad.err, neither + ":1:1: unknown statement \"hello\" (expected light, material, sphere, triangle, mesh or camera)\n");
 }
 
+// --up names the file's axis that points up; the staged scene turns it to +z.
+TEST_F(RenderCommand, UpPicksTheAxisAMeshStandsOn) {
+  const std::string mesh = write("tet.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 3\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+  const std::vector<std::pair<std::string, std::string>> turns = {
+      {"+z", "mesh \"tet.obj\" fit\n"},
+      {"-z", "mesh \"tet.obj\" fit rotate 1 0 0 180\n"},
+      {"+y", "mesh \"tet.obj\" fit rotate 1 0 0 90\n"},
+      {"+x", "mesh \"tet.obj\" fit rotate 0 1 0 -90\n"}};
+  for (const auto& [axis, statement] : turns) {
+    const CommandResult r = run("render " + mesh + " -o " + path("a.png") + " --size 16x16 --explain --up " + axis);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("\n" + statement), std::string::npos) << axis << "\n" << r.out;
+  }
+  CommandResult r = run("render " + mesh + " -o " + path("a.png") + " --up +w");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--up must be +x, -x, +y, -y, +z or -z, got \"+w\""), std::string::npos) << r.err;
+  r = run("render " + std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene -o " + path("a.png") + " --up +z");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--up stands a mesh file on its own"), std::string::npos) << r.err;
+}
+
 TEST_F(RenderCommand, AFileThatIsPlainlyNeitherASceneNorAMeshExitsWithTwo) {
   const std::string formats = "(OBJ, OFF, PLY, STL, glTF or 3MF)";
   const std::string jpeg = write("photo.jpg", std::string("\xff\xd8\xff\xe0\0\x10JFIF\0", 11));
