@@ -85,31 +85,52 @@ bool is_up_axis(const std::string& up) {
   return std::any_of(std::begin(kUpTurns), std::end(kUpTurns), [&](const UpTurn& t) { return up == t.up; });
 }
 
-Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi) {
+std::vector<glm::dvec3> framing_points(const Mesh& mesh, size_t most) {
+  std::vector<glm::dvec3> points;
+  if (mesh.triangles.empty()) return points;
+  const size_t stride = std::max<size_t>(1, mesh.triangles.size() / most);
+  glm::dvec3 extreme[6];  // lowest and highest x, y and z
+  for (glm::dvec3& e : extreme) e = mesh.positions[mesh.triangles[0][0]];
+  for (size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (const uint32_t v : mesh.triangles[t]) {
+      const glm::dvec3& p = mesh.positions[v];
+      if (t % stride == 0) points.push_back(p);
+      for (int a = 0; a < 3; ++a) {
+        if (p[a] < extreme[2 * a][a]) extreme[2 * a] = p;
+        if (p[a] > extreme[2 * a + 1][a]) extreme[2 * a + 1] = p;
+      }
+    }
+  if (stride > 1) points.insert(points.end(), std::begin(extreme), std::end(extreme));  // else every corner is in
+  return points;
+}
+
+Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<glm::dvec3>& model_points) {
   Stage stage;
   const glm::dvec3 centre = lo / 2.0 + hi / 2.0;
   stage.floor_z = lo.z;
   stage.light = centre + kLightDistance * kToLight;
-  // What the frame must hold: the box's corners and their shadows on the floor.
+  // What the frame must hold: the model's points and their shadows on the
+  // floor (the light is above the box).
   std::vector<glm::dvec3> points;
-  for (int k = 0; k < 8; ++k) {
-    const glm::dvec3 p(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+  for (const glm::dvec3& p : model_points) {
     points.push_back(p);
-    const double drop = (stage.light.z - stage.floor_z) / (stage.light.z - p.z);  // the light is above the box
-    points.push_back(stage.light + (p - stage.light) * drop);
+    points.push_back(stage.light + (p - stage.light) * ((stage.light.z - stage.floor_z) / (stage.light.z - p.z)));
   }
+  if (points.empty()) points = {lo, hi};
   const double azimuth = glm::radians(kAzimuthDeg), elevation = glm::radians(kElevationDeg);
   const glm::dvec3 back(std::sin(azimuth) * std::cos(elevation), -std::cos(azimuth) * std::cos(elevation), std::sin(elevation));
   const glm::dvec3 forward = -back;
   const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 0, 1)));
   const glm::dvec3 up = glm::cross(right, forward);
   const double reach = std::tan(glm::radians(kFovyDeg / 2)) / kMargin;  // assumes a frame at least as wide as high
-  glm::dvec3 target(0.0);
-  for (const glm::dvec3& p : points) target += p / double(points.size());
+  // From the middle of the points' box, which no point's repeats move.
+  glm::dvec3 box_lo = points[0], box_hi = points[0];
+  for (const glm::dvec3& p : points) box_lo = glm::min(box_lo, p), box_hi = glm::max(box_hi, p);
+  glm::dvec3 target = box_lo / 2.0 + box_hi / 2.0;
   double distance = 0.0;
   // The distance at which every point is in the frame; then the target moves
   // to the middle of the points as seen from there, until it stays put.
-  for (int pass = 0; pass < 50; ++pass) {
+  for (int pass = 0; pass < 200; ++pass) {
     distance = 0.0;
     for (const glm::dvec3& p : points) {
       const glm::dvec3 q = p - target;
@@ -124,7 +145,7 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi) {
     }
     const glm::dvec3 shift = distance * ((x_lo + x_hi) / 2 * right + (y_lo + y_hi) / 2 * up);
     target += shift;
-    if (glm::length(shift) < 1e-4 * distance) break;
+    if (glm::length(shift) < 1e-9 * distance) break;
   }
   stage.camera = Camera{target + distance * back, target, {0, 0, 1}, kFovyDeg};
   // Far past every edge of the frame: the floor's horizon is never in view.
@@ -182,7 +203,7 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
   Mesh& mesh = loaded.meshes.at(0);
   if (mesh.triangles.empty()) throw InputError({path}, "has no faces: there is nothing to show");
 
-  const Stage stage = stage_for(mesh.bounds_min, mesh.bounds_max);
+  const Stage stage = stage_for(mesh.bounds_min, mesh.bounds_max, framing_points(mesh));
   const double s = stage.floor_half_size;
   const glm::dvec3 f(stage.floor_centre.x, stage.floor_centre.y, floor_height(stage.floor_z));
   const glm::dvec3 corners[4] = {f + glm::dvec3(-s, -s, 0), f + glm::dvec3(s, -s, 0), f + glm::dvec3(s, s, 0), f + glm::dvec3(-s, s, 0)};

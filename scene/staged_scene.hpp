@@ -8,6 +8,7 @@
 // reads back as the same scene.
 
 #include <string>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -32,7 +33,8 @@ std::string neither_scene_nor_mesh(const std::string& path);
 bool is_up_axis(const std::string& up);
 
 // The floor, light and camera for a model whose box, fitted and turned so that
-// its up axis is +z, is [lo, hi].
+// its up axis is +z, is [lo, hi]; the camera frames `points` (points of the
+// model) and their shadows on the floor.
 struct Stage {
   glm::dvec3 light{0.0};
   double floor_z = 0.0;
@@ -40,7 +42,12 @@ struct Stage {
   double floor_half_size = 0.0;
   Camera camera;
 };
-Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi);
+Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<glm::dvec3>& points);
+
+// Points of `mesh` that show its extent to a camera: the corners of up to
+// `most` of its triangles, spread over them, and the corners that reach
+// furthest along each axis.
+std::vector<glm::dvec3> framing_points(const Mesh& mesh, size_t most = 4096);
 
 // The name the staged scene goes by in messages: "MESH (staged)", in the mesh's folder.
 std::string staged_scene_name(const std::string& mesh_path);
