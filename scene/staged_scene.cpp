@@ -107,7 +107,7 @@ std::vector<glm::dvec3> framing_points(const Mesh& mesh, size_t most) {
 Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<glm::dvec3>& model_points) {
   Stage stage;
   const glm::dvec3 centre = lo / 2.0 + hi / 2.0;
-  stage.floor_z = lo.z;
+  stage.floor_z = floor_height(lo.z);
   stage.light = centre + kLightDistance * kToLight;
   // What the frame must hold: the model's points and their shadows on the
   // floor (the light is above the box).
@@ -205,7 +205,7 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
 
   const Stage stage = stage_for(mesh.bounds_min, mesh.bounds_max, framing_points(mesh));
   const double s = stage.floor_half_size;
-  const glm::dvec3 f(stage.floor_centre.x, stage.floor_centre.y, floor_height(stage.floor_z));
+  const glm::dvec3 f = stage.floor_centre;
   const glm::dvec3 corners[4] = {f + glm::dvec3(-s, -s, 0), f + glm::dvec3(s, -s, 0), f + glm::dvec3(s, s, 0), f + glm::dvec3(-s, s, 0)};
   const Camera& c = stage.camera;
   const std::string rest = "light " + vec(stage.light) + " ambient 0.35 0.35 0.35\n" +

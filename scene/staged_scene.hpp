@@ -37,7 +37,7 @@ bool is_up_axis(const std::string& up);
 // model) and their shadows on the floor.
 struct Stage {
   glm::dvec3 light{0.0};
-  double floor_z = 0.0;
+  double floor_z = 0.0;  // a thousandth below the model, written to a millionth
   glm::dvec3 floor_centre{0.0};
   double floor_half_size = 0.0;
   Camera camera;

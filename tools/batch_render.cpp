@@ -76,6 +76,7 @@ int run_batch_render(const BatchRenderOptions& o) {
   for (const auto& [path, what] : found.passed_over) std::cerr << "umbra render: passed over " << path << ": " << what << ", not a mesh\n";
   const std::vector<std::string> files = o.shard ? shard_of(found.meshes, *o.shard) : found.meshes;
   const std::vector<std::string> names = o.shard ? shard_of(found.names, *o.shard) : found.names;
+  const auto picture_path = [&](size_t i) { return (std::filesystem::path(o.out_dir) / (names[i] + ".png")).string(); };
   const auto start = std::chrono::steady_clock::now();
   // --jobs bounds the threads of the whole process, as in umbra check.
   const tbb::global_control threads(tbb::global_control::max_allowed_parallelism, o.jobs);
@@ -87,8 +88,7 @@ int run_batch_render(const BatchRenderOptions& o) {
   const auto work = [&] {
     std::optional<HeadlessContext> context;
     for (size_t i = next++; i < count; i = next++) {
-      const std::string out = (std::filesystem::path(o.out_dir) / (names[i] + ".png")).string();
-      const Outcome outcome = render_one(files[i], out, o, context);
+      const Outcome outcome = render_one(files[i], picture_path(i), o, context);
       const std::lock_guard<std::mutex> lock(print_mutex);
       progress.clear();
       std::cerr << outcome.err << std::flush;
@@ -107,7 +107,7 @@ int run_batch_render(const BatchRenderOptions& o) {
     // time while drawing, so that a folder of large pictures fits in memory.
     std::vector<SheetPicture> sheet;
     for (size_t i = 0; i < count; ++i) {
-      const std::string out = (std::filesystem::path(o.out_dir) / (names[i] + ".png")).string();
+      const std::string out = picture_path(i);
       std::error_code ec;
       if (!std::filesystem::exists(out, ec)) continue;  // it failed
       try {

@@ -5,7 +5,6 @@
 // texture maps are skipped. Large files are read in stretches of lines on
 // every core.
 #include <algorithm>
-#include <cstdlib>
 #include <charconv>
 #include <exception>
 #include <filesystem>
@@ -165,14 +164,16 @@ void read_stretch(ObjStretch& stretch, const std::string& path, PolygonSoup& sou
       // "v x y z r g b", a colour per vertex as MeshLab and others write it
       // (one more number alone is the homogeneous w, which is read past).
       if (!scanner.at_line_end()) {
-        const std::string_view rest = scanner.rest_of_line();
-        TextScanner extra(rest, path, scanner.line_number() - 1);
+        TextScanner extra(scanner.rest_of_line(), path, scanner.line_number() - 1);
         extra.next_line();
-        float rgb[3];
-        int count = 0;
-        for (std::string_view field = extra.field(); !field.empty() && count < 4; field = extra.field(), ++count)
-          if (count < 3) rgb[count] = float(std::clamp(std::strtod(std::string(field).c_str(), nullptr), 0.0, 1.0));
-        if (count == 3) soup.point_colors[point] = glm::vec3(rgb[0], rgb[1], rgb[2]), stretch.colours = true;
+        int fields = 0;
+        while (fields < 4 && !extra.field().empty()) ++fields;
+        if (fields == 3) {  // read as numbers, with the line's located error when one is not
+          glm::vec3 rgb;
+          for (const int c : {0, 1, 2})
+            rgb[c] = float(std::clamp(scanner.number(c == 0 ? "vertex colour red" : c == 1 ? "vertex colour green" : "vertex colour blue"), 0.0, 1.0));
+          soup.point_colors[point] = rgb, stretch.colours = true;
+        }
       }
       soup.point_lines[point++] = scanner.line_number();
     } else if (keyword == "f") {

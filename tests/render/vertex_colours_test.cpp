@@ -86,6 +86,13 @@ TEST(VertexColours, EachFormatReadsAColourPerPoint) {
   // One more number after x y z is OBJ's w, not a colour; none at all, no colours.
   EXPECT_TRUE(parse_polygon_soup("v 0 0 0 1\nv 1 0 0 1\nv 0 1 0 1\nf 1 2 3\n", "w.obj").point_colors.empty());
   EXPECT_TRUE(parse_polygon_soup(test::obj_text(cube), "plain.obj").point_colors.empty());
+  // Three fields that are not all numbers are an error at their place, not black.
+  try {
+    parse_polygon_soup("v 0 0 0 1 0 x\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "bad.obj");
+    ADD_FAILURE() << "a colour that is no number was read";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "bad.obj:1:13: expected a number for the vertex colour blue, got \"x\"");
+  }
 }
 
 // Two triangles meet at an edge whose two points are written twice, in two
