@@ -1,6 +1,8 @@
 #pragma once
 // Images in memory, row 0 at the top, and writing them as PNG.
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -18,6 +20,10 @@ struct Image {
   uint8_t& at(int x, int y, int c = 0) { return pixels[(size_t(y) * width + x) * channels + c]; }
   uint8_t at(int x, int y, int c = 0) const { return pixels[(size_t(y) * width + x) * channels + c]; }
 };
+
+// A colour channel in [0, 1] (clamped) as a byte, rounded to the nearest
+// level: the one conversion the GL image and the ray-cast one share.
+inline uint8_t channel_byte(double c) { return uint8_t(std::lround(std::clamp(c, 0.0, 1.0) * 255.0)); }
 
 // Shadow mask values (see `umbra render --mask`).
 constexpr uint8_t kMaskNoSurface = 128;

@@ -49,9 +49,6 @@ glm::dvec3 surface_colour(const Surface& s, const glm::dvec3& p) {
   return (1.0 - wb - wc) * glm::dvec3(rgb[0]) + wb * glm::dvec3(rgb[1]) + wc * glm::dvec3(rgb[2]);
 }
 
-// 8 bits as GL stores a colour in [0, 1]: clamped, then rounded.
-uint8_t to_byte(double c) { return uint8_t(std::lround(std::clamp(c, 0.0, 1.0) * 255.0)); }
-
 // The shader's shade() for one pixel, in double precision (shaders.hpp).
 void shade_pixel(const Scene& scene, const RayCaster& caster, const glm::dvec3& ambient_sum, const RayHit& hit,
                  RayCastFrame& frame, int x, int y) {
@@ -74,7 +71,7 @@ void shade_pixel(const Scene& scene, const RayCaster& caster, const glm::dvec3& 
     const double s = m.shininess > 0.0 ? std::pow(std::max(glm::dot(r, v), 0.0), m.shininess) : 1.0;
     colour += light.color * (m.diffuse * tint * n_dot_l + m.specular * s);
   }
-  for (int c = 0; c < 3; ++c) frame.image.at(x, y, c) = to_byte(colour[c]);
+  for (int c = 0; c < 3; ++c) frame.image.at(x, y, c) = channel_byte(colour[c]);
 }
 
 }  // namespace

@@ -65,6 +65,7 @@ void FrameDrawing::apply_view() {
     p->use();
     p->set("view_projection", view_projection);
   }
+  target_.bind(s.width, s.height);
   glViewport(0, 0, s.width, s.height);
 }
 

@@ -11,6 +11,7 @@
 #include <glm/vec4.hpp>
 
 #include "scene/scene.hpp"
+#include "render/frame_target.hpp"
 #include "render/render_plan.hpp"
 
 namespace umbra {
@@ -33,9 +34,11 @@ class FrameDrawing {
   const Scene& scene() const { return scene_; }
   const RenderPlan& plan() const { return plan_; }
 
-  // The plan's camera and image size, read every frame: a viewer moves the
-  // camera and resizes the window.
+  // The plan's camera and image size, read every frame (a viewer moves the
+  // camera and resizes the window), with the frame target bound at that size.
   void apply_view();
+  // Where apply_view draws: the frame, kept in floating point.
+  const FrameTarget& target() const { return target_; }
   // Every surface with the shading pass `pass` (shaders.hpp) for light
   // `light`; `shadow_map_on` makes the shader test the bound shadow map.
   void draw_surfaces(int pass, size_t light, bool shadow_map_on);
@@ -66,6 +69,7 @@ class FrameDrawing {
 
   const Scene& scene_;
   const RenderPlan& plan_;
+  FrameTarget target_;
   std::unique_ptr<ShaderProgram> triangle_program_, sphere_program_, volume_program_, planar_program_;
   std::unique_ptr<SurfaceBuffers> surfaces_;
   std::unique_ptr<VolumeBuffer> volumes_;

@@ -1,5 +1,6 @@
 #include "render/gl_functions.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "render/gl.hpp"
@@ -15,19 +16,14 @@ void load_gl_functions(GlProcLoader loader, const std::string& backend) {
                              std::to_string(GLAD_VERSION_MINOR(version)));
 }
 
-void require_shadow_volume_framebuffer(const std::string& backend) {
-  GLint stencil_bits = 0, depth_bits = 0;
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_STENCIL, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE,
-                                        &stencil_bits);
-  glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_DEPTH, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE,
-                                        &depth_bits);
-  if (stencil_bits < 8)
-    throw std::runtime_error(backend + ": the framebuffer has " + std::to_string(stencil_bits) +
-                             " stencil bits; shadow volumes need 8");
-  if (depth_bits < 24)
-    throw std::runtime_error(backend + ": the framebuffer has " + std::to_string(depth_bits) +
-                             " depth bits; 24 are needed");
+void require_image_size(int width, int height, const std::string& backend) {
+  GLint renderbuffer = 0, viewport[2] = {0, 0};
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbuffer);
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+  const int largest_width = std::min(renderbuffer, viewport[0]), largest_height = std::min(renderbuffer, viewport[1]);
+  if (width > largest_width || height > largest_height)
+    throw std::runtime_error(backend + ": the image may be at most " + std::to_string(largest_width) + "x" +
+                             std::to_string(largest_height));
 }
 
 std::string gl_description() {

@@ -13,9 +13,10 @@ using GlProcLoader = GlProc (*)(const char* name);
 // when the context offers less than GL 3.3.
 void load_gl_functions(GlProcLoader loader, const std::string& backend);
 
-// Throws std::runtime_error unless the bound default framebuffer has at least
-// 8 stencil bits (z-fail counting) and 24 depth bits.
-void require_shadow_volume_framebuffer(const std::string& backend);
+// Throws std::runtime_error ("BACKEND: the image may be at most WxH") unless
+// the current context can draw `width` x `height` pixels into a framebuffer
+// object (FrameTarget).
+void require_image_size(int width, int height, const std::string& backend);
 
 // "Mesa llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 (Core Profile) Mesa 22.3.6"
 std::string gl_description();

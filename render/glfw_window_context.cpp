@@ -52,9 +52,11 @@ WindowContext::WindowContext(int width, int height, const std::string& title) : 
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  glfwWindowHint(GLFW_DEPTH_BITS, 24);
-  glfwWindowHint(GLFW_STENCIL_BITS, 8);
-  glfwWindowHint(GLFW_SAMPLES, 0);  // one sample per pixel, as the headless renderer
+  // Frames are drawn into a framebuffer object of their own (FrameTarget) and
+  // copied here: the window needs neither depth nor stencil.
+  glfwWindowHint(GLFW_DEPTH_BITS, 0);
+  glfwWindowHint(GLFW_STENCIL_BITS, 0);
+  glfwWindowHint(GLFW_SAMPLES, 0);
   glfw_->window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
   if (!glfw_->window) {
     glfwTerminate();
@@ -64,7 +66,6 @@ WindowContext::WindowContext(int width, int height, const std::string& title) : 
   glfwSwapInterval(1);
   try {
     load_gl_functions(glfw_proc, "GLFW");
-    require_shadow_volume_framebuffer("GLFW");
   } catch (...) {
     glfwDestroyWindow(glfw_->window);
     glfwTerminate();

@@ -60,6 +60,8 @@ void ShadowRenderer::draw(bool show_volumes) {
   if (show_volumes) show_volumes_pass();
 }
 
+void ShadowRenderer::show() const { drawing_->target().show(); }
+
 Image ShadowRenderer::render_image(bool show_volumes) {
   draw(show_volumes);
   return read_pixels(3);
@@ -88,9 +90,7 @@ Image ShadowRenderer::render_mask(size_t light) {
 
 Image ShadowRenderer::read_pixels(int channels) const {
   const int w = plan_.settings.width, h = plan_.settings.height;
-  std::vector<uint8_t> rgba(size_t(w) * h * 4);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  const std::vector<uint8_t> rgba = drawing_->target().read_rgba8();
   Image image(w, h, channels);
   for (int y = 0; y < h; ++y)  // GL's row 0 is the bottom
     for (int x = 0; x < w; ++x)

@@ -1,6 +1,6 @@
 #pragma once
-// Draws a scene with exact hard shadows into the current GL context's
-// default framebuffer:
+// Draws a scene with exact hard shadows into a float framebuffer of its own
+// (FrameTarget), which a window then shows:
 //   1. depth + ambient for every surface;
 //   2. per light with colour: its shadow technique casts the light's shadows
 //      (stencil volumes, a cube shadow map, or planar projections; see
@@ -20,17 +20,20 @@ class ShadowTechnique;
 
 class ShadowRenderer {
  public:
-  // Requires a current GL 3.3 core context whose default framebuffer is
-  // plan.settings.width x height with a stencil buffer. Reads `plan` only
+  // Requires a current GL 3.3 core context that can draw
+  // plan.settings.width x height pixels. Reads `plan` only
   // when it draws, so the plan may still be in the making while the renderer
   // is built (umbra render makes both at once).
   ShadowRenderer(const Scene& scene, const RenderPlan& plan);
   ~ShadowRenderer();
 
-  // Draws the frame into the default framebuffer. With show_volumes, every
+  // Draws the frame into its own framebuffer, which stays bound, so that a
+  // viewer's overlay can be drawn over it. With show_volumes, every
   // light's volumes are drawn over it translucently, front faces only (the
   // debugging view). The plan's camera, size and method are read each time.
   void draw(bool show_volumes);
+  // Copies the frame to the default framebuffer (a window), rounded there.
+  void show() const;
   // Waits until the GL has finished every command so far (for timing).
   void finish() const;
   // The shaded image (RGB): draw, then read it back.

@@ -46,7 +46,7 @@ Outcome render_one(const std::string& path, const std::string& out, const BatchR
     if (o.settings.method == RenderMethod::kRaycast) {
       image = ray_cast_frame(scene, o.settings.width, o.settings.height).image;
     } else {
-      if (!context) context.emplace(o.settings.width, o.settings.height);
+      if (!context) context.emplace(o.settings.width, o.settings.height, o.gl);
       const RenderPlan plan = make_render_plan(scene, o.settings);
       ShadowRenderer renderer(scene, plan);
       image = renderer.render_image(o.show_volumes);

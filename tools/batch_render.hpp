@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "render/headless_context.hpp"
 #include "render/render_plan.hpp"
 #include "tools/mesh_paths.hpp"
 
@@ -18,6 +19,7 @@ struct BatchRenderOptions {
   RenderSettings settings;
   double light_angle_deg = 0.0;
   std::string up;  // for mesh files: "" for each format's own
+  HeadlessGl gl = HeadlessGl::kAuto;
   bool show_volumes = false;
   size_t jobs = 1;  // pictures drawn at a time, each in its own GL context
   std::optional<Shard> shard;

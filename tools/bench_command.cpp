@@ -46,6 +46,9 @@ options:
                       (default 8,16,32,64,128,256; each 3 to 4096)
   --map-sizes LIST    the shadow map sizes to try, comma-separated
                       (default 256,512,1024,2048,4096; each 16 to 8192)
+  --gl G              the headless OpenGL to draw with (default auto, or
+                      the UMBRA_GL environment variable's):
+{gl platforms}
   --csv OUT.csv       also write the rows as CSV
   --plot OUT.png      also plot error against frame time, a panel per scene
                       and a curve per method (needs gnuplot); OUT.txt plots
@@ -66,6 +69,7 @@ struct BenchOptions {
   std::vector<int> segments = {8, 16, 32, 64, 128, 256};
   std::vector<int> map_sizes = {256, 512, 1024, 2048, 4096};
   std::optional<std::string> csv, plot;
+  HeadlessGl gl = HeadlessGl::kAuto;
   bool help = false;
 };
 
@@ -92,6 +96,7 @@ BenchOptions parse_bench_options(const std::vector<std::string>& argv) {
   options.value("--frames", [&](const std::string& n, const std::string& t) { o.frames = parse_int_in(n, t, 1, 1000); });
   options.value("--segments", [&](const std::string& n, const std::string& t) { o.segments = parse_int_list(n, t, 3, 4096); });
   options.value("--map-sizes", [&](const std::string& n, const std::string& t) { o.map_sizes = parse_int_list(n, t, 16, 8192); });
+  add_gl_option(options, o.gl);
   options.value("--csv", [&](const std::string&, const std::string& t) { o.csv = t; });
   options.value("--plot", [&](const std::string&, const std::string& t) { o.plot = t; });
   options.positionals(o.scenes);
@@ -179,7 +184,6 @@ std::vector<BenchRow> bench_scene(const Scene& scene, const std::vector<MeshCast
       median_frame_ms(o.frames, [&] { reference = ray_cast_frame(scene, o.width, o.height); });
   for (const Image& mask : reference.masks) ray.surface_pixels += mask_error(mask, mask).surface_pixels;
 
-  HeadlessContext context(o.width, o.height);
   for (const Measurement& m : measurements_for(scene, o)) {
     BenchRow row{name, method_name(m.method), m.segments, m.map_size};
     progress.step(name + " " + row.method + " " + row.parameter());
@@ -225,6 +229,7 @@ int run_bench_command(const std::vector<std::string>& argv) {
       total += 1 + int(measurements_for(scenes.back(), options).size());
     }
     std::vector<BenchRow> rows;
+    const HeadlessContext context(options.width, options.height, options.gl);
     {
       ProgressBar progress{size_t(total)};
       for (const Scene& scene : scenes) {
@@ -232,6 +237,7 @@ int run_bench_command(const std::vector<std::string>& argv) {
         rows.insert(rows.end(), scene_rows.begin(), scene_rows.end());
       }
     }
+    std::cout << "OpenGL: " << context.description() << "\n\n";
     write_markdown_table(std::cout, rows, options.width, options.height);
     if (options.csv) write_csv(rows, options.width, options.height, *options.csv);
     if (options.plot) write_plot(rows, *options.plot);

@@ -8,6 +8,7 @@
 
 #include "mesh/io/mesh_format.hpp"
 #include "mesh/word_list.hpp"
+#include "render/headless_context.hpp"
 #include "render/render_method.hpp"
 #include "scene/staged_scene.hpp"
 
@@ -63,19 +64,28 @@ std::string bench_sweeps() {
   return text;
 }
 
+// One row of an option's list of values: the name, then its help wrapped
+// in a column of its own.
+std::string value_row(std::string name, const std::string& help) {
+  constexpr size_t kNameColumn = 26, kHelpColumn = 37, kWidth = 79;
+  name.resize(kHelpColumn - kNameColumn, ' ');
+  return std::string(kNameColumn, ' ') + name + wrapped(help, kHelpColumn, kHelpColumn, kWidth) + "\n";
+}
+
 }  // namespace
 
 std::string usage_text(std::string text) {
-  constexpr size_t kNameColumn = 26, kHelpColumn = 37, kWidth = 79;
+  constexpr size_t kWidth = 79;
   std::string methods;
   std::vector<std::string> interactive;
   for (const RenderMethod m : all_methods()) {
-    std::string name = method_name(m);
-    if (is_interactive(m)) interactive.push_back(name);
-    name.resize(kHelpColumn - kNameColumn, ' ');
-    methods += std::string(kNameColumn, ' ') + name + wrapped(method_help(m), kHelpColumn, kHelpColumn, kWidth) + "\n";
+    if (is_interactive(m)) interactive.push_back(method_name(m));
+    methods += value_row(method_name(m), method_help(m));
   }
   replace_all(text, "{methods}\n", methods);
+  std::string platforms;
+  for (const HeadlessGlRow& row : kHeadlessGlTable) platforms += value_row(row.name, row.help);
+  replace_all(text, "{gl platforms}\n", platforms);
   replace_all(text, "{bench methods}", wrapped(bench_sweeps(), 0, 0, kWidth));
   replace_all(text, "{interactive methods}", word_list(interactive));
   replace_all(text, "{mesh formats}", mesh_format_names());
@@ -177,6 +187,14 @@ void add_segments_option(CommandOptions& options, int& segments) {
 
 void add_method_option(CommandOptions& options, RenderMethod& method) {
   options.value("--method", [&](const std::string& o, const std::string& t) { method = parse_method(o, t); });
+}
+
+void add_gl_option(CommandOptions& options, HeadlessGl& gl) {
+  options.value("--gl", [&](const std::string& o, const std::string& t) {
+    const auto named = headless_gl_from_name(t);
+    if (!named) throw UsageError(o + " expects " + headless_gl_names() + ", got \"" + t + "\"");
+    gl = *named;
+  });
 }
 
 void add_map_size_option(CommandOptions& options, int& texels) {

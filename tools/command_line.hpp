@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "render/headless_context.hpp"
 #include "render/render_method.hpp"
 
 namespace CLI {
@@ -92,6 +93,7 @@ void add_segments_option(CommandOptions& options, int& segments);               
 void add_method_option(CommandOptions& options, RenderMethod& method);                // --method M
 void add_map_size_option(CommandOptions& options, int& texels);                       // --map-size N
 void add_output_option(CommandOptions& options, std::string& path);                   // -o, --output
+void add_gl_option(CommandOptions& options, HeadlessGl& gl);                         // --gl auto|egl|osmesa
 void add_up_option(CommandOptions& options, std::string& up);                         // --up +x|-x|+y|-y|+z|-z
 
 }  // namespace umbra

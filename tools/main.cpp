@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "render/headless_context.hpp"
 #include "tools/bench_command.hpp"
 #include "tools/check_command.hpp"
 #include "tools/render_command.hpp"
@@ -39,6 +40,13 @@ int main(int argc, char** argv) {
   }
   if (args[0] == "--version") {
     std::cout << "umbra " << UMBRA_VERSION << "\n";
+    // What umbra render would draw with: the platform --gl auto picks.
+    try {
+      const umbra::HeadlessContext context(16, 16);
+      std::cout << "headless OpenGL: " << context.description() << "\n";
+    } catch (const std::exception& e) {
+      std::cout << "headless OpenGL: none (" << e.what() << ")\n";
+    }
     return 0;
   }
   if (args[0] == "render") return umbra::run_render_command({args.begin() + 1, args.end()});

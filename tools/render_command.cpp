@@ -28,7 +28,7 @@ const std::string kRenderUsage = usage_text(
        umbra render MESH -o OUT.png [options]
        umbra render PATH... -o OUTDIR [--jobs N] [--shard K/N] [options]
 
-Renders SCENE headless (OSMesa) with exact hard shadows from stencil shadow
+Renders SCENE headless (EGL or OSMesa) with exact hard shadows from stencil shadow
 volumes (Crow 1977; Heidmann 1991) and writes OUT.png. The sources cited
 here are listed in docs/references.md.
 
@@ -53,6 +53,9 @@ options:
 {methods}
   --map-size N          texels along a side of each shadow map cube face
                         (default 1024, 16 to 8192; for --method shadowmap)
+  --gl G                the headless OpenGL to draw with (default auto, or
+                        the UMBRA_GL environment variable's):
+{gl platforms}
   --show-volumes        draw the shadow volumes translucently over the image
   --mask MASK.png       also write light 1's shadow mask: 8-bit grey, 128 where
                         no surface is seen, 255 where the visible point faces
@@ -90,6 +93,7 @@ struct RenderOptions {
   std::optional<std::string> mask;
   RenderSettings settings;
   double light_angle_deg = 0.0;
+  HeadlessGl gl = HeadlessGl::kAuto;
   bool show_volumes = false;
   bool explain = false;
   bool help = false;
@@ -107,6 +111,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   add_segments_option(options, o.settings.sphere_segments);
   add_method_option(options, o.settings.method);
   add_map_size_option(options, o.settings.shadow_map_size);
+  add_gl_option(options, o.gl);
   options.flag("--show-volumes", o.show_volumes);
   options.flag("--explain", o.explain);
   add_up_option(options, o.up);
@@ -126,7 +131,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     if (o.output.empty()) throw UsageError("no output folder given (-o OUTDIR)");
     if (o.mask) throw UsageError("--mask writes one scene's mask; with several files there is none to choose");
     if (o.explain) throw UsageError("--explain prints one scene's plan; with several files, ask for one of them");
-    o.batch = BatchRenderOptions{scenes, o.output, o.settings, o.light_angle_deg, o.up, o.show_volumes,
+    o.batch = BatchRenderOptions{scenes, o.output, o.settings, o.light_angle_deg, o.up, o.gl, o.show_volumes,
                                  jobs.value_or(std::max(1u, std::thread::hardware_concurrency())), shard, sheet};
   } else {
     if (shard) throw UsageError("--shard splits several files; \"" + o.scene_path + "\" is one");
@@ -186,13 +191,14 @@ int run_render_command(const std::vector<std::string>& argv) {
       RenderPlan plan;
       tbb::task_group planning;
       planning.run([&] { plan = make_render_plan(scene, options.settings); });
-      HeadlessContext context(options.settings.width, options.settings.height);
+      HeadlessContext context(options.settings.width, options.settings.height, options.gl);
       ShadowRenderer renderer(scene, plan);
       planning.wait();
       progress->update(2, "drawing");
       if (options.explain) {
         progress.reset();
         print_render_plan(std::cout, scene, plan);
+        std::cout << "  OpenGL: " << context.description() << "\n";
       }
       image = renderer.render_image(options.show_volumes);
       if (options.mask) mask = renderer.render_mask(0);

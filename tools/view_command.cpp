@@ -334,7 +334,8 @@ int run_view_command(const std::vector<std::string>& argv) {
       }
       break;
     }
-    draw_overlay();
+    draw_overlay();  // into the frame, still bound
+    if (width > 0 && height > 0) scene.renderer->show();
     window->swap_buffers();
     if (options.frames > 0) frame_times_ms.push_back(1000.0 * (window->time_seconds() - now));
     window->poll_events();

@@ -53,6 +53,35 @@ TEST_F(Options, MistakesAreNamedInUmbrasWords) {
   EXPECT_EQ(run("view " + scene + " --segments=2").err,
             "umbra view: --segments expects a whole number from 3 to 4096, got \"2\"\n(see umbra view --help)\n");
   EXPECT_EQ(run("render " + scene + " -o x.png --segments=2").status, 2);
+  EXPECT_EQ(run("render " + scene + " -o x.png --gl=glx").err,
+            "umbra render: --gl expects auto, egl or osmesa, got \"glx\"\n(see umbra render --help)\n");
+}
+
+TEST_F(Options, GlPicksThePlatformThatExplainNames) {
+  const CommandResult egl = run("render " + scene + " -o " + path("egl.png") + " --size 64x48 --gl egl --explain");
+  const CommandResult osmesa = run("render " + scene + " -o " + path("osmesa.png") + " --size 64x48 --gl=osmesa --explain");
+  ASSERT_EQ(egl.status, 0) << egl.err;
+  ASSERT_EQ(osmesa.status, 0) << osmesa.err;
+  EXPECT_NE(egl.out.find("\n  OpenGL: EGL 1."), std::string::npos) << egl.out;
+  EXPECT_NE(osmesa.out.find("\n  OpenGL: OSMesa: "), std::string::npos) << osmesa.out;
+  const CommandResult chosen = run("render " + scene + " -o " + path("env.png") + " --size 64x48 --explain", "UMBRA_GL=osmesa ");
+  EXPECT_NE(chosen.out.find("\n  OpenGL: OSMesa: "), std::string::npos) << chosen.out;
+  EXPECT_EQ(run("render " + scene + " -o " + path("bad.png") + " --size 64x48", "UMBRA_GL=glx ").err,
+            "UMBRA_GL must be auto, egl or osmesa, not \"glx\"\n");
+  EXPECT_FALSE(test::fs::exists(path("bad.png")));
+}
+
+TEST_F(Options, WithoutAnEglDeviceAutoFallsBackToOsMesaAndEglSaysWhy) {
+  // libglvnd with no vendor library to hand EGL to: as on a machine without Mesa's EGL.
+  const std::string no_egl = "__EGL_VENDOR_LIBRARY_FILENAMES=" + path("none.json") + " ";
+  const CommandResult version = run("--version", no_egl);
+  EXPECT_NE(version.out.find("\nheadless OpenGL: OSMesa: "), std::string::npos) << version.out;
+  const CommandResult egl = run("render " + scene + " -o " + path("egl.png") + " --size 32x32 --gl egl", no_egl);
+  EXPECT_EQ(egl.status, 1);
+  EXPECT_EQ(egl.err.rfind("EGL: ", 0), 0u) << egl.err;
+  EXPECT_FALSE(test::fs::exists(path("egl.png")));
+  EXPECT_EQ(run("render " + scene + " -o " + path("auto.png") + " --size 32x32", no_egl).status, 0);
+  EXPECT_TRUE(test::fs::exists(path("auto.png")));
 }
 
 TEST_F(Options, VersionAndHelp) {
@@ -60,6 +89,7 @@ TEST_F(Options, VersionAndHelp) {
   EXPECT_EQ(version.status, 0);
   EXPECT_EQ(version.out.rfind("umbra ", 0), 0u);
   EXPECT_EQ(version.out.back(), '\n');
+  EXPECT_NE(version.out.find("\nheadless OpenGL: "), std::string::npos) << version.out;
   for (const char* command : {"render", "check", "view", "volume", "bench"}) {
     const CommandResult help = run(std::string(command) + " --help");
     EXPECT_EQ(help.status, 0) << command;

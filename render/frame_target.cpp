@@ -1,0 +1,74 @@
+#include "render/frame_target.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "image/image.hpp"
+#include "render/gl.hpp"
+#include "render/gl_functions.hpp"
+
+namespace umbra {
+
+FrameTarget::~FrameTarget() { release(); }
+
+void FrameTarget::release() {
+  if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
+  if (colour_) glDeleteRenderbuffers(1, &colour_);
+  if (depth_stencil_) glDeleteRenderbuffers(1, &depth_stencil_);
+  framebuffer_ = colour_ = depth_stencil_ = 0;
+  width_ = height_ = 0;
+}
+
+void FrameTarget::bind(int width, int height) {
+  if (framebuffer_ && width == width_ && height == height_) {
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    return;
+  }
+  release();
+  require_image_size(width, height, "OpenGL");
+  glGenRenderbuffers(1, &colour_);
+  glBindRenderbuffer(GL_RENDERBUFFER, colour_);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA32F, width, height);
+  glGenRenderbuffers(1, &depth_stencil_);
+  glBindRenderbuffer(GL_RENDERBUFFER, depth_stencil_);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
+  glGenFramebuffers(1, &framebuffer_);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_stencil_);
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    release();
+    throw std::runtime_error("the frame's framebuffer (RGBA32F, 24-bit depth, 8-bit stencil) is incomplete (status " +
+                             std::to_string(status) + ")");
+  }
+  width_ = width;
+  height_ = height;
+}
+
+void FrameTarget::show() const {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+}
+
+std::vector<uint8_t> FrameTarget::read_rgba8() const {
+  // In strips of rows: the floats of a whole 800x800 frame would be 10 MB.
+  constexpr int kStripRows = 32;
+  const size_t row_values = size_t(width_) * 4;
+  std::vector<uint8_t> bytes(row_values * size_t(height_));
+  std::vector<float> strip(row_values * kStripRows);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  for (int y = 0; y < height_; y += kStripRows) {
+    const int rows = std::min(kStripRows, height_ - y);
+    glReadPixels(0, y, width_, rows, GL_RGBA, GL_FLOAT, strip.data());
+    std::transform(strip.begin(), strip.begin() + std::ptrdiff_t(row_values * size_t(rows)),
+                   bytes.begin() + std::ptrdiff_t(row_values * size_t(y)), [](float c) { return channel_byte(c); });
+  }
+  return bytes;
+}
+
+}  // namespace umbra
