@@ -1,0 +1,21 @@
+#!/usr/bin/env python3
+"""Every picture the README and docs/ show is in the source tree.
+
+A picture left out of the repository (a .gitignore rule, a forgotten `git
+add`) shows as a broken image to every reader but the one who made it; on a
+clean clone, as CI makes, it is missing here too.
+Usage: doc_pictures.py SOURCE_DIR
+"""
+import pathlib
+import re
+import sys
+
+source = pathlib.Path(sys.argv[1])
+missing = []
+docs = [source / "README.md", *sorted((source / "docs").glob("*.md"))]
+for doc in docs:
+    for target in re.findall(r"!\[[^\]]*\]\(([^)\s]+\.png)\)", doc.read_text(encoding="utf-8")):
+        if not (doc.parent / target).is_file():
+            missing.append(f"{doc.relative_to(source)} shows {target}, which is not in the source tree")
+print("\n".join(missing) if missing else f"{len(docs)} documents checked: every picture they show is there")
+sys.exit(1 if missing else 0)
