@@ -8,6 +8,7 @@
 
 #include "scene/camera_transform.hpp"
 #include "reference/ray_caster.hpp"
+#include "reference/texture_sampling.hpp"
 
 namespace umbra {
 namespace {
@@ -34,19 +35,30 @@ Surface surface_of(const Scene& scene, int object) {
 }
 
 // The colour the surface's material is multiplied by at `p`: its corners'
-// colours blended by p's barycentric weights, as the GL interpolates them
-// across the triangle; white where the file gives no colours.
-glm::dvec3 surface_colour(const Surface& s, const glm::dvec3& p) {
-  if (!s.mesh || s.mesh->triangle_colors.empty()) return glm::dvec3(1.0);
+// colours, and its texture map at its corners' texture coordinates, blended
+// by p's barycentric weights as the GL interpolates them across the triangle
+// (perspective-correct); white where the file gives neither.
+glm::dvec3 surface_colour(const Scene& scene, const Surface& s, const glm::dvec3& p) {
+  if (!s.mesh) return glm::dvec3(1.0);
+  const TextureImage* texture = s.mesh->triangle_uvs.empty() ? nullptr : scene.materials[size_t(s.material)].texture.get();
+  if (s.mesh->triangle_colors.empty() && !texture) return glm::dvec3(1.0);
   const auto& t = s.mesh->triangles[s.triangle];
   const glm::dvec3 a = s.mesh->positions[t[0]], b = s.mesh->positions[t[1]], c = s.mesh->positions[t[2]];
   const glm::dvec3 n = glm::cross(b - a, c - a);
   const double area = glm::dot(n, n);
-  if (!(area > 0.0)) return glm::dvec3(s.mesh->triangle_colors[s.triangle][0]);
-  const double wb = glm::dot(glm::cross(p - a, c - a), n) / area;  // weight of b
-  const double wc = glm::dot(glm::cross(b - a, p - a), n) / area;  // weight of c
-  const auto& rgb = s.mesh->triangle_colors[s.triangle];
-  return (1.0 - wb - wc) * glm::dvec3(rgb[0]) + wb * glm::dvec3(rgb[1]) + wc * glm::dvec3(rgb[2]);
+  const double wb = area > 0.0 ? glm::dot(glm::cross(p - a, c - a), n) / area : 0.0;  // weight of b
+  const double wc = area > 0.0 ? glm::dot(glm::cross(b - a, p - a), n) / area : 0.0;  // weight of c
+  glm::dvec3 colour(1.0);
+  if (!s.mesh->triangle_colors.empty()) {
+    const auto& rgb = s.mesh->triangle_colors[s.triangle];
+    colour = (1.0 - wb - wc) * glm::dvec3(rgb[0]) + wb * glm::dvec3(rgb[1]) + wc * glm::dvec3(rgb[2]);
+  }
+  if (texture) {
+    const auto& uv = s.mesh->triangle_uvs[s.triangle];
+    const glm::dvec2 at = (1.0 - wb - wc) * glm::dvec2(uv[0]) + wb * glm::dvec2(uv[1]) + wc * glm::dvec2(uv[2]);
+    colour *= sample_bilinear(*texture, at);
+  }
+  return colour;
 }
 
 // The shader's shade() for one pixel, in double precision (shaders.hpp).
@@ -54,7 +66,7 @@ void shade_pixel(const Scene& scene, const RayCaster& caster, const glm::dvec3& 
                  RayCastFrame& frame, int x, int y) {
   const Surface surface = surface_of(scene, hit.object);
   const Material& m = scene.materials[size_t(surface.material)];
-  const glm::dvec3 tint = surface_colour(surface, hit.point);
+  const glm::dvec3 tint = surface_colour(scene, surface, hit.point);
   const glm::dvec3 eye = scene.camera.eye;
   glm::dvec3 n = hit.normal;
   if (glm::dot(n, eye - hit.point) < 0.0) n = -n;

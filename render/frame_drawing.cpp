@@ -48,6 +48,7 @@ FrameDrawing::FrameDrawing(const Scene& scene, const RenderPlan& plan) : scene_(
     p->use();
     p->set("ambient_sum", f(ambient_sum));
     p->set("shadow_map", 1);  // texture unit 1
+    p->set("material_texture", 0);  // texture unit 0 (triangles only)
   }
   const SceneBounds bounds = surface_bounds(scene);
   if (!bounds.empty()) scene_center_ = 0.5 * (bounds.lo + bounds.hi), scene_radius_ = 0.5 * glm::length(bounds.hi - bounds.lo);
@@ -99,6 +100,10 @@ void FrameDrawing::draw_surfaces(int pass, size_t light, bool shadow_map_on) {
   triangle_program_->use();
   for (const SurfaceBuffers::TriangleGroup& group : surfaces_->triangle_groups()) {
     set_material(*triangle_program_, group.material);
+    const unsigned texture = surfaces_->material_texture(group.material);
+    triangle_program_->set("material_textured", int(texture != 0));
+    glActiveTexture(GL_TEXTURE0);  // unit 0; the shadow map has unit 1
+    glBindTexture(GL_TEXTURE_2D, texture);
     surfaces_->draw_triangle_group(group, viewpoint_);
   }
   sphere_program_->use();

@@ -86,15 +86,18 @@ inline constexpr const char* kTriangleVertex = R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec3 color;  // white (a constant attribute) when no mesh has vertex colours
+layout(location = 3) in vec2 uv;     // texture coordinates, v down the image; (0, 0) when none
 uniform mat4 view_projection;
 out vec3 world_position;
 out vec3 world_normal;
 out vec3 vertex_color;
+out vec2 texture_uv;
 invariant gl_Position;
 void main() {
   world_position = position;
   world_normal = normal;
   vertex_color = color;
+  texture_uv = uv;
   gl_Position = view_projection * vec4(position, 1.0);
 }
 )";
@@ -103,8 +106,12 @@ inline constexpr const char* kTriangleFragmentMain = R"(
 in vec3 world_position;
 in vec3 world_normal;
 in vec3 vertex_color;
+in vec2 texture_uv;
+uniform bool material_textured;
+uniform sampler2D material_texture;  // bilinear, no mipmaps: as the ray-cast reference samples it
 void main() {
   surface_color = vertex_color;
+  if (material_textured) surface_color *= texture(material_texture, texture_uv).rgb;
   shade(world_position, normalize(world_normal));
 }
 )";

@@ -79,6 +79,15 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
     float* out = colours.data() + at * 9;
     for (const glm::vec3& c : mesh.triangle_colors[t]) *out++ = c.r, *out++ = c.g, *out++ = c.b;
   };
+  // Texture coordinates likewise, when some mesh has them; (0, 0) elsewhere,
+  // where no texture is sampled.
+  const bool textured = std::any_of(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return !m.triangle_uvs.empty(); });
+  std::vector<float> uvs(textured ? triangle_count * 6 : 0, 0.0f);
+  const auto put_uvs = [&uvs](size_t at, const Mesh& mesh, size_t t) {
+    if (mesh.triangle_uvs.empty()) return;
+    float* out = uvs.data() + at * 6;
+    for (const glm::vec2& uv : mesh.triangle_uvs[t]) *out++ = uv.x, *out++ = uv.y;
+  };
   size_t placed = 0;  // triangles laid out so far
   for (const Run& run : runs) {
     const bool closed = run.closed_mesh != nullptr;
@@ -106,6 +115,7 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
           const auto& t = triangles[k];
           put(first + i, p[t[0]], p[t[1]], p[t[2]]);
           if (coloured) put_colours(first + i, *run.mesh, k);
+          if (textured) put_uvs(first + i, *run.mesh, k);
         }
       });
     });
@@ -127,6 +137,16 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
   } else {
     glVertexAttrib3f(2, 1.0f, 1.0f, 1.0f);
   }
+  if (textured) {
+    glGenBuffers(1, &uv_vbo_);
+    glBindBuffer(GL_ARRAY_BUFFER, uv_vbo_);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(uvs.size() * sizeof(float)), uvs.data(), GL_STATIC_DRAW);
+    glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+    glEnableVertexAttribArray(3);
+  } else {
+    glVertexAttrib2f(3, 0.0f, 0.0f);
+  }
+  upload_textures(scene);
 
   const float corners[] = {-1, -1, -1, 1, -1, -1, 1, 1, -1, -1, 1, -1, -1, -1, 1, 1, -1, 1, 1, 1, 1, -1, 1, 1};
   const unsigned faces[] = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
@@ -145,10 +165,60 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
 }
 
 SurfaceBuffers::~SurfaceBuffers() {
-  const GLuint buffers[] = {triangle_vbo_, box_vbo_, box_ibo_, color_vbo_};
-  glDeleteBuffers(4, buffers);
+  const GLuint buffers[] = {triangle_vbo_, box_vbo_, box_ibo_, color_vbo_, uv_vbo_};
+  glDeleteBuffers(5, buffers);
   const GLuint arrays[] = {triangle_vao_, box_vao_};
   glDeleteVertexArrays(2, arrays);
+  glDeleteTextures(GLsizei(textures_.size()), textures_.data());
+}
+
+namespace {
+
+GLint gl_wrap(TextureImage::Wrap wrap) {
+  switch (wrap) {
+    case TextureImage::Wrap::kClampToEdge: return GL_CLAMP_TO_EDGE;
+    case TextureImage::Wrap::kMirroredRepeat: return GL_MIRRORED_REPEAT;
+    case TextureImage::Wrap::kRepeat: break;
+  }
+  return GL_REPEAT;
+}
+
+}  // namespace
+
+// Each material's texture map, once (materials may share one): bilinear
+// filtering without mipmaps, which the ray-cast reference samples alike.
+void SurfaceBuffers::upload_textures(const Scene& scene) {
+  textures_.assign(scene.materials.size(), 0);
+  std::map<const TextureImage*, GLuint> uploaded;
+  GLint largest = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &largest);
+  for (size_t m = 0; m < scene.materials.size(); ++m) {
+    const TextureImage* image = scene.materials[m].texture.get();
+    if (!image) continue;
+    if (const auto it = uploaded.find(image); it != uploaded.end()) {
+      textures_[m] = it->second;
+      continue;
+    }
+    if (image->width > largest || image->height > largest)
+      throw std::runtime_error("texture map " + image->name + " is " + std::to_string(image->width) + "x" +
+                               std::to_string(image->height) + ", larger than the GL's " + std::to_string(largest) +
+                               "x" + std::to_string(largest));
+    GLuint texture = 0;
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image->width, image->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image->rgba.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, gl_wrap(image->wrap_u));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, gl_wrap(image->wrap_v));
+    textures_[m] = uploaded[image] = texture;
+  }
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+unsigned SurfaceBuffers::material_texture(int material) const {
+  return size_t(material) < textures_.size() ? textures_[size_t(material)] : 0;
 }
 
 void SurfaceBuffers::draw_triangle_group(const TriangleGroup& group, const glm::dvec3& viewpoint) const {

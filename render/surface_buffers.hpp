@@ -36,11 +36,17 @@ class SurfaceBuffers {
   // when a viewer zooms into a mesh, they are drawn.
   void draw_triangle_group(const TriangleGroup& group, const glm::dvec3& viewpoint) const;
   void draw_sphere_box() const;
+  // Material `material`'s texture map as a GL texture, or 0 when it has none.
+  unsigned material_texture(int material) const;
 
  private:
+  void upload_textures(const Scene& scene);
+
   std::vector<TriangleGroup> groups_;
   unsigned triangle_vao_ = 0, triangle_vbo_ = 0;
   unsigned color_vbo_ = 0;  // per vertex, parallel to triangle_vbo_; only when some mesh has vertex colours
+  unsigned uv_vbo_ = 0;     // likewise, texture coordinates; only when some mesh has them
+  std::vector<unsigned> textures_;  // per material: its texture map, or 0
   unsigned box_vao_ = 0, box_vbo_ = 0, box_ibo_ = 0;
 };
 

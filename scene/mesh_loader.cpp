@@ -85,6 +85,7 @@ LoadedMesh load_mesh(MeshStatement statement) {
   m.culls_back_faces = analysis.report.back_faces_hidden();
   m.triangle_materials = std::move(analysis.triangle_materials);
   m.triangle_colors = std::move(analysis.triangle_colors);
+  m.triangle_uvs = std::move(analysis.triangle_uvs);
   m.edges = std::move(analysis.topology->edges);  // asked for above: always given
   m.components = std::move(analysis.topology->components);
   loaded.warnings = std::move(analysis.report.warnings);
@@ -112,6 +113,7 @@ void place_file_materials(LoadedMesh& loaded, const std::string& written, Scene&
   Mesh& m = loaded.mesh;
   if (m.material_given || loaded.file_materials.empty()) {
     m.triangle_materials.clear();
+    std::vector<std::array<glm::vec2, 3>>().swap(m.triangle_uvs);  // no texture maps to look up
     return;
   }
   const int first = int(scene.materials.size());
@@ -122,6 +124,7 @@ void place_file_materials(LoadedMesh& loaded, const std::string& written, Scene&
     material.diffuse = f.diffuse;
     material.specular = f.specular;
     material.shininess = f.shininess;
+    material.texture = f.texture;
     scene.materials.push_back(material);
   }
   for (int& t : m.triangle_materials) t = t < 0 ? m.material : first + t;

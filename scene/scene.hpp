@@ -6,14 +6,17 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "mesh/input_error.hpp"
 #include "mesh/shared_positions.hpp"
+#include "mesh/texture_image.hpp"
 #include "mesh/topology/closed_components.hpp"
 #include "mesh/topology/edge_table.hpp"
 
@@ -32,6 +35,12 @@ struct Material {
   glm::dvec3 diffuse{0.8};
   glm::dvec3 specular{0.0};
   double shininess = 32.0;
+  // A mesh file's diffuse texture map (OBJ's map_Kd, glTF's
+  // baseColorTexture): it multiplies the ambient and diffuse terms of the
+  // faces with texture coordinates (Mesh::triangle_uvs), sampled bilinearly
+  // as the GL samples it, without mipmaps. Colours are used as written, as
+  // every other colour is (no colour management). None for scene materials.
+  std::shared_ptr<const TextureImage> texture;
 };
 
 struct Sphere {
@@ -63,6 +72,9 @@ struct Mesh {
   // (PLY, OBJ "v x y z r g b", glTF COLOR_0); they multiply the material's
   // ambient and diffuse terms, blended across the triangle. Empty: none.
   std::vector<std::array<glm::vec3, 3>> triangle_colors;
+  // Per triangle, its corners' texture coordinates (v down the image), where
+  // some of the file's materials has a texture map. Empty: none.
+  std::vector<std::array<glm::vec2, 3>> triangle_uvs;
   bool fit = false;  // centred and scaled so that its box's longest side spans the cube, before the rest
   double scale = 1.0;
   glm::dvec3 rotation_axis{0.0, 0.0, 1.0};

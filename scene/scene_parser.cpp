@@ -129,7 +129,7 @@ class SceneBuilder {
  public:
   explicit SceneBuilder(const std::string& name) {
     scene_.path = name;
-    scene_.materials.push_back(Material{"default"});
+    scene_.materials.emplace_back().name = "default";
   }
 
   void statement(StatementReader& r) {

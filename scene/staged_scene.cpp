@@ -188,7 +188,7 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
   statement.path_at = {name, mesh_line, 6};
   Scene loaded;
   loaded.path = name;
-  loaded.materials.push_back(Material{"default"});
+  loaded.materials.emplace_back().name = "default";
   // What the staged scene's mesh statement says belongs to the file: no
   // line of a scene the user never wrote.
   const std::string about_the_file = "mesh file \"" + path + "\"";

@@ -128,6 +128,7 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   // Colours belong to the file's corners: kept, with each corner's merged
   // vertex, to find each triangle's once the triangles are final.
   const bool coloured = !soup.point_colors.empty() && soup.point_colors.size() == report.file_vertices;  // the points may be freed by now
+  const bool textured = !soup.corner_uvs.empty() && soup.corner_uvs.size() == soup.corners.size();
   std::vector<glm::vec3> corner_colors;
   if (coloured) {
     corner_colors.resize(soup.corners.size());
@@ -142,7 +143,7 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
     for (size_t c = 0; c < soup.corners.size(); ++c) corners[c] = merged.vertex_of_point[soup.corners[c]];
   }
   std::vector<uint32_t>().swap(merged.vertex_of_point);
-  const std::vector<uint32_t> merged_corners = coloured ? corners : std::vector<uint32_t>();
+  const std::vector<uint32_t> merged_corners = coloured || textured ? corners : std::vector<uint32_t>();
 
   // The topological stages; what only they need is freed at the end of the block.
   FaceTriangles triangles;
@@ -279,14 +280,17 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   analysis.positions = std::move(merged.positions);
   analysis.triangles = std::move(triangles.triangles);
   analysis.triangle_face = std::move(triangles.face);
-  if (coloured) {
-    analysis.triangle_colors.resize(analysis.triangles.size());
+  if (coloured) analysis.triangle_colors.resize(analysis.triangles.size());
+  if (textured) analysis.triangle_uvs.resize(analysis.triangles.size());
+  if (coloured || textured) {
+    // Each triangle corner's file corner: the first of its face's at that vertex.
     for (size_t t = 0; t < analysis.triangles.size(); ++t) {
       const uint32_t f = analysis.triangle_face[t];
-      for (int k = 0; k < 3; ++k)
+      for (size_t k = 0; k < 3; ++k)
         for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c)
-          if (merged_corners[c] == analysis.triangles[t][size_t(k)]) {
-            analysis.triangle_colors[t][size_t(k)] = corner_colors[c];
+          if (merged_corners[c] == analysis.triangles[t][k]) {
+            if (coloured) analysis.triangle_colors[t][k] = corner_colors[c];
+            if (textured) analysis.triangle_uvs[t][k] = soup.corner_uvs[c];
             break;
           }
     }

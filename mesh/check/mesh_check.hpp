@@ -44,6 +44,9 @@ struct MeshAnalysis {
   // Per triangle, its three corners' colours, when the file gives its points
   // colours (PolygonSoup::point_colors); empty otherwise.
   std::vector<std::array<glm::vec3, 3>> triangle_colors;
+  // Per triangle, its corners' texture coordinates (PolygonSoup::corner_uvs),
+  // when some material has a texture map; empty otherwise.
+  std::vector<std::array<glm::vec2, 3>> triangle_uvs;
   std::optional<TriangleTopology> topology;  // of `triangles`, with CheckOptions::triangle_topology
 };
 

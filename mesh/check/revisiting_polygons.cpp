@@ -56,6 +56,7 @@ PolygonSoup split_revisiting_polygons(const PolygonSoup& soup) {
   split.warnings = soup.warnings;
   split.materials = soup.materials;
   const bool has_materials = !soup.polygon_materials.empty();
+  const bool has_uvs = !soup.corner_uvs.empty();
   split.corners.reserve(soup.corners.size());
   std::vector<std::array<uint32_t, 3>> triangles;
   std::vector<uint32_t> same_place;
@@ -65,6 +66,10 @@ PolygonSoup split_revisiting_polygons(const PolygonSoup& soup) {
     const int line = soup.polygon_line(p);
     if (!revisits(soup.points, corners, count)) {
       split.corners.insert(split.corners.end(), corners, corners + count);
+      if (has_uvs) {
+        const auto first = soup.corner_uvs.begin() + std::ptrdiff_t(soup.polygon_starts[p]);
+        split.corner_uvs.insert(split.corner_uvs.end(), first, first + count);
+      }
       split.end_polygon(line);
       if (has_materials) split.polygon_materials.push_back(soup.polygon_materials[p]);
       continue;
@@ -96,6 +101,9 @@ PolygonSoup split_revisiting_polygons(const PolygonSoup& soup) {
         continue;
       }
       split.corners.insert(split.corners.end(), {a, b, c});
+      if (has_uvs)  // each point's texture coordinates at its first corner in the polygon
+        for (const uint32_t point : {a, b, c})
+          split.corner_uvs.push_back(soup.corner_uvs[soup.polygon_starts[p] + uint32_t(std::find(corners, corners + count, point) - corners)]);
       split.end_polygon(line);
       if (has_materials) split.polygon_materials.push_back(soup.polygon_materials[p]);
     }

@@ -2,12 +2,15 @@
 // with tinygltf: every triangle primitive of the default scene's meshes, each
 // placed by its node's transform; triangle strips and fans become triangles,
 // points and lines are skipped with a warning. baseColorFactor and the
-// metallic-roughness factors map onto the Phong terms; textures are ignored.
+// metallic-roughness factors map onto the Phong terms; baseColorTexture, with
+// TEXCOORD_0, multiplies the base colour. Other textures are not drawn.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <set>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -20,15 +23,40 @@
 
 #include "mesh/input_error.hpp"
 #include "mesh/io/mesh_readers.hpp"
+#include "mesh/io/texture_file.hpp"
 
 namespace umbra {
 namespace {
 
 constexpr size_t kMostCorners = size_t(1) << 31;  // as the check takes at most
 
-// Textures are not drawn: their images are not even decoded.
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+// tinygltf's image loader: images are decoded as texture maps are (with
+// stb_image, RGBA). One that cannot be is noted in `failures` (by image) and
+// left empty: its materials keep their base colour, and the mesh still loads.
+bool decode_image(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
+                  const unsigned char* bytes, int size, void* failures) {
+  std::string error;
+  const auto texture = decode_texture(std::string_view(reinterpret_cast<const char*>(bytes), size_t(std::max(size, 0))),
+                                      image->name, error);
+  if (!texture) {
+    (*static_cast<std::map<int, std::string>*>(failures))[index] = error;
+    return true;
+  }
+  image->width = texture->width;
+  image->height = texture->height;
+  image->component = 4;
+  image->bits = 8;
+  image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+  image->image = texture->rgba;
   return true;
+}
+
+TextureImage::Wrap wrap_of(int gl_wrap) {
+  switch (gl_wrap) {
+    case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return TextureImage::Wrap::kClampToEdge;
+    case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return TextureImage::Wrap::kMirroredRepeat;
+    default: return TextureImage::Wrap::kRepeat;
+  }
 }
 
 glm::dmat4 local_transform(const tinygltf::Node& node) {
@@ -66,10 +94,15 @@ SoupMaterial phong_of(const tinygltf::Material& m) {
 
 class GltfReader {
  public:
-  GltfReader(const tinygltf::Model& model, PolygonSoup& soup) : model_(model), soup_(soup) {}
+  GltfReader(const tinygltf::Model& model, PolygonSoup& soup, const std::map<int, std::string>& image_failures)
+      : model_(model), soup_(soup), image_failures_(image_failures) {}
 
   void read() {
-    for (const tinygltf::Material& m : model_.materials) soup_.materials.push_back(phong_of(m));
+    for (const tinygltf::Material& m : model_.materials) {
+      soup_.materials.push_back(phong_of(m));
+      soup_.materials.back().texture = base_colour_texture(m);
+      textured_ = textured_ || soup_.materials.back().texture;
+    }
     if (model_.scenes.empty()) {
       // No scene: every mesh, as it is, once.
       for (size_t m = 0; m < model_.meshes.size(); ++m) add_mesh(int(m), glm::dmat4(1.0));
@@ -82,6 +115,44 @@ class GltfReader {
 
  private:
   [[noreturn]] void fail(const std::string& message) const { throw InputError({soup_.path, 0, 0}, message); }
+
+  // A material's baseColorTexture as a texture map, made once per glTF
+  // texture (an image and its sampler's wrapping); null, with a warning once
+  // per texture, where it cannot be drawn.
+  std::shared_ptr<const TextureImage> base_colour_texture(const tinygltf::Material& material) {
+    const tinygltf::TextureInfo& info = material.pbrMetallicRoughness.baseColorTexture;
+    if (info.index < 0) return nullptr;
+    const std::string what = "material \"" + material.name + "\"'s base colour texture";
+    const auto [cached, first_time] = textures_.try_emplace(info.index);
+    if (!first_time) return cached->second;
+    const auto refuse = [&](const std::string& why) {
+      soup_.warn(0, what + " " + why + ": its faces take the base colour");
+      return nullptr;
+    };
+    if (info.texCoord != 0) return refuse("uses TEXCOORD_" + std::to_string(info.texCoord) + ", and umbra reads TEXCOORD_0 only");
+    if (info.extensions.count("KHR_texture_transform")) return refuse("has KHR_texture_transform, which umbra does not apply");
+    if (size_t(info.index) >= model_.textures.size()) return refuse("does not exist");
+    const tinygltf::Texture& texture = model_.textures[size_t(info.index)];
+    if (texture.source < 0 || size_t(texture.source) >= model_.images.size()) return refuse("has no image");
+    const tinygltf::Image& image = model_.images[size_t(texture.source)];
+    const std::string name = !image.uri.empty() && image.uri.rfind("data:", 0) != 0 ? image.uri
+                             : !image.name.empty()                                 ? image.name
+                                                                                    : "image " + std::to_string(texture.source);
+    if (const auto failed = image_failures_.find(texture.source); failed != image_failures_.end())
+      return refuse("(" + name + ") " + failed->second);
+    if (image.image.empty() || image.component != 4 || image.width <= 0 || image.height <= 0)
+      return refuse("(" + name + ") could not be read");
+    auto map = std::make_shared<TextureImage>();
+    map->name = name;
+    map->width = image.width;
+    map->height = image.height;
+    map->rgba = image.image;
+    if (texture.sampler >= 0 && size_t(texture.sampler) < model_.samplers.size()) {
+      map->wrap_u = wrap_of(model_.samplers[size_t(texture.sampler)].wrapS);
+      map->wrap_v = wrap_of(model_.samplers[size_t(texture.sampler)].wrapT);
+    }
+    return cached->second = std::move(map);
+  }
 
   // glTF's nodes form trees: no node has two parents. A graph would be read
   // once along every path to a node, which a few hundred bytes can make
@@ -186,6 +257,40 @@ class GltfReader {
     }
   }
 
+  // The primitive's TEXCOORD_0, one per point, into point_uvs_ from `first`
+  // on: floats, or (KHR_mesh_quantization) integers, normalised or not.
+  // Points of primitives without it take (0, 0).
+  void add_texture_coordinates(const tinygltf::Primitive& primitive, uint32_t first, size_t count, const std::string& what) {
+    point_uvs_.resize(first, glm::vec2(0.0f));
+    const auto uv = primitive.attributes.find("TEXCOORD_0");
+    if (uv == primitive.attributes.end()) {
+      point_uvs_.resize(first + count, glm::vec2(0.0f));
+      return;
+    }
+    if (uv->second < 0 || size_t(uv->second) >= model_.accessors.size()) fail(what + "'s TEXCOORD_0 accessor does not exist");
+    const tinygltf::Accessor& accessor = model_.accessors[size_t(uv->second)];
+    if (accessor.type != TINYGLTF_TYPE_VEC2) fail(what + "'s TEXCOORD_0 must be VEC2");
+    if (accessor.count != count) fail(what + "'s TEXCOORD_0 has " + std::to_string(accessor.count) + " coordinates for " +
+                                      std::to_string(count) + " vertices");
+    const Elements uvs = elements(accessor, what + "'s TEXCOORD_0");
+    for (size_t i = 0; i < uvs.count; ++i) {
+      glm::vec2 st;
+      for (int k = 0; k < 2; ++k) {
+        double c = 0.0;
+        switch (accessor.componentType) {
+          case TINYGLTF_COMPONENT_TYPE_FLOAT: c = read_as<float>(uvs.at(i), k); break;
+          case TINYGLTF_COMPONENT_TYPE_BYTE: c = normalised(read_as<int8_t>(uvs.at(i), k), 127.0, accessor.normalized); break;
+          case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: c = normalised(read_as<uint8_t>(uvs.at(i), k), 255.0, accessor.normalized); break;
+          case TINYGLTF_COMPONENT_TYPE_SHORT: c = normalised(read_as<int16_t>(uvs.at(i), k), 32767.0, accessor.normalized); break;
+          case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: c = normalised(read_as<uint16_t>(uvs.at(i), k), 65535.0, accessor.normalized); break;
+          default: fail(what + "'s TEXCOORD_0 must be floats, or bytes or shorts (KHR_mesh_quantization)");
+        }
+        st[k] = std::isfinite(c) ? float(c) : 0.0f;
+      }
+      point_uvs_.push_back(st);
+    }
+  }
+
   template <typename T>
   static double read_as(const unsigned char* p, int k) {
     T v;
@@ -248,6 +353,7 @@ class GltfReader {
         soup_.points.push_back(p3);
       }
       add_colours(primitive, first, xyzs.count, what);
+      if (textured_) add_texture_coordinates(primitive, first, xyzs.count, what);
       std::vector<uint32_t> indices;
       if (primitive.indices >= 0) {
         if (size_t(primitive.indices) >= model_.accessors.size()) fail(what + "'s index accessor does not exist");
@@ -272,6 +378,7 @@ class GltfReader {
       const auto triangle = [&](uint32_t a, uint32_t b, uint32_t c) {
         if (mirrored) std::swap(b, c);
         soup_.corners.insert(soup_.corners.end(), {first + a, first + b, first + c});
+        if (textured_) soup_.corner_uvs.insert(soup_.corner_uvs.end(), {point_uvs_[first + a], point_uvs_[first + b], point_uvs_[first + c]});
         soup_.end_polygon(0);
         soup_.polygon_materials.push_back(material);
       };
@@ -289,6 +396,10 @@ class GltfReader {
 
   const tinygltf::Model& model_;
   PolygonSoup& soup_;
+  const std::map<int, std::string>& image_failures_;  // why an image could not be decoded, by image
+  std::map<int, std::shared_ptr<const TextureImage>> textures_;  // by glTF texture
+  bool textured_ = false;              // some material has a texture map: corners get texture coordinates
+  std::vector<glm::vec2> point_uvs_;   // TEXCOORD_0 per point, while textured_
   std::set<int> on_path_;  // the nodes from the scene's root to the one being read
 };
 
@@ -341,7 +452,8 @@ void require_gltf_2(std::string_view bytes, bool binary, const std::string& path
 
 PolygonSoup read_gltf(std::string_view bytes, const std::string& path) {
   tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(skip_image, nullptr);
+  std::map<int, std::string> image_failures;
+  loader.SetImageLoader(decode_image, &image_failures);
   tinygltf::Model model;
   std::string error, warning;
   const std::string folder = std::filesystem::path(path).parent_path().string();
@@ -364,7 +476,7 @@ PolygonSoup read_gltf(std::string_view bytes, const std::string& path) {
   PolygonSoup soup;
   soup.path = path;
   soup.format = binary ? "glTF (binary .glb)" : "glTF";
-  GltfReader(model, soup).read();
+  GltfReader(model, soup, image_failures).read();
   return soup;
 }
 

@@ -1,9 +1,9 @@
 // Wavefront OBJ: `v x y z [w]` points and `f i j k ...` polygons whose corners
 // are `v`, `v/vt`, `v//vn` or `v/vt/vn`, counted from 1, or from the end when
 // negative; `usemtl` gives the faces after it a material of the `mtllib`
-// files beside the OBJ (Kd, Ks, Ns). Texture coordinates, normals, groups and
-// texture maps are skipped. Large files are read in stretches of lines on
-// every core.
+// files beside the OBJ (Kd, Ks, Ns, and map_Kd with the faces' `vt` texture
+// coordinates). Normals, groups and other texture maps are skipped. Large
+// files are read in stretches of lines on every core.
 #include <algorithm>
 #include <charconv>
 #include <exception>
@@ -21,6 +21,7 @@
 #include "mesh/io/mapped_file.hpp"
 #include "mesh/io/mesh_readers.hpp"
 #include "mesh/io/text_scanner.hpp"
+#include "mesh/io/texture_file.hpp"
 
 namespace umbra {
 namespace {
@@ -44,6 +45,39 @@ uint32_t corner_index(TextScanner& scanner, std::string_view corner, size_t poin
   return uint32_t(index);
 }
 
+constexpr uint32_t kNoUv = std::numeric_limits<uint32_t>::max();
+
+// The texture coordinate index (from 0) of a corner such as "7/3/2" or
+// "-1/-1"; kNoUv for "7" and "7//2", and (with `unreadable` set) for an
+// index that is no number or points before the first `vt`. Texture
+// coordinates are no reason to refuse a mesh: the reader says so once.
+uint32_t corner_uv_index(std::string_view corner, size_t uvs_so_far, bool& unreadable) {
+  const size_t slash = corner.find('/');
+  if (slash == std::string_view::npos) return kNoUv;
+  const std::string_view rest = corner.substr(slash + 1);
+  const std::string_view uv = rest.substr(0, rest.find('/'));
+  if (uv.empty()) return kNoUv;
+  int64_t value = 0;
+  const auto [ptr, ec] = std::from_chars(uv.data(), uv.data() + uv.size(), value);
+  const int64_t index = value > 0 ? value - 1 : int64_t(uvs_so_far) + value;
+  unreadable = ec != std::errc() || ptr != uv.data() + uv.size() || value == 0 || index < 0 || index >= int64_t(kNoUv);
+  return unreadable ? kNoUv : uint32_t(index);
+}
+
+// The file a map statement names ("map_Kd -s 1 1 1 wood.png", "map_Kd my
+// wood.png", or Windows' "map_Kd .\wood.png"), beside the library.
+std::string map_path(std::string_view rest, const std::filesystem::path& folder) {
+  const size_t first = rest.find_first_not_of(" \t"), last = rest.find_last_not_of(" \t");
+  if (first == std::string_view::npos) return "";
+  std::string name(rest.substr(first, last - first + 1));
+  if (name[0] == '-') name = name.substr(name.find_last_of(" \t") + 1);  // options first: the name is last
+  std::error_code error;
+  const std::filesystem::path as_written = (folder / name).lexically_normal();
+  if (std::filesystem::is_regular_file(as_written, error)) return as_written.string();
+  std::replace(name.begin(), name.end(), '\\', '/');
+  return (folder / name).lexically_normal().string();
+}
+
 // The rest of the line without the blanks round it: a material's name may hold spaces.
 std::string rest_as_name(const TextScanner& scanner) {
   std::string_view rest = scanner.rest_of_line();
@@ -52,7 +86,7 @@ std::string rest_as_name(const TextScanner& scanner) {
 }
 
 // The materials of one .mtl file (Wavefront's material library) into `soup`,
-// by name into `named`. Kd, Ks and Ns are kept; texture maps are noted once.
+// by name into `named`. Kd, Ks, Ns and map_Kd are kept; other maps are noted once.
 void read_material_library(const std::string& path, int line, PolygonSoup& soup, std::map<std::string, int>& named) {
   std::error_code exists_error;
   if (!std::filesystem::is_regular_file(path, exists_error)) {
@@ -72,7 +106,8 @@ void read_material_library(const std::string& path, int line, PolygonSoup& soup,
       const std::string_view keyword = scanner.field();
       if (keyword == "newmtl") {
         const std::string name = rest_as_name(scanner);
-        soup.materials.push_back({name});
+        soup.materials.push_back({});
+        soup.materials.back().name = name;
         named[name] = int(soup.materials.size() - 1);
         current = &soup.materials.back();
       } else if (current && (keyword == "Kd" || keyword == "Ks")) {
@@ -84,8 +119,15 @@ void read_material_library(const std::string& path, int line, PolygonSoup& soup,
         (keyword == "Kd" ? current->diffuse : current->specular) = glm::clamp(rgb, 0.0, 1.0);
       } else if (current && keyword == "Ns") {
         current->shininess = std::max(0.0, scanner.number("shininess"));
-      } else if (!noted_maps && keyword.substr(0, 4) == "map_") {
-        soup.warn(line, "the materials' texture maps are ignored: faces take each material's Kd colour");
+      } else if (current && keyword == "map_Kd") {
+        const std::string map = map_path(scanner.rest_of_line(), std::filesystem::path(path).parent_path());
+        std::string error;
+        current->texture = read_texture_file(map, error);
+        if (!current->texture)
+          soup.warn(line, "material \"" + current->name + "\"'s texture map \"" + map + "\": " + error +
+                              ": its faces take the material's Kd colour");
+      } else if (!noted_maps && (keyword.substr(0, 4) == "map_" || keyword == "bump" || keyword == "disp" || keyword == "decal")) {
+        soup.warn(line, "the materials' texture maps other than map_Kd (" + std::string(keyword) + " and the like) are not drawn");
         noted_maps = true;
       }
     } catch (const InputError& e) {
@@ -106,7 +148,12 @@ struct ObjStretch {
   int lines = 0, lines_before = 0;
   size_t points = 0, points_before = 0;
   size_t faces = 0, faces_before = 0;
+  size_t uvs = 0, uvs_before = 0;  // `vt` statements
   std::vector<uint32_t> corners, polygon_ends;  // polygon_ends: into `corners`
+  std::vector<uint32_t> corner_uvs;  // each corner's `vt` (kNoUv for none), once some corner has one
+  bool has_uvs = false;
+  size_t unread_uvs = 0;     // `vt` statements and corners' `vt` indices that could not be read
+  std::string first_unread_uv;  // where the first was, and why
   std::vector<int> polygon_lines;
   // The material statements, replayed in order once every stretch is read:
   // what they do depends on the statements before them.
@@ -147,13 +194,14 @@ void count_stretch(ObjStretch& stretch, const std::string& path) {
     const std::string_view keyword = scanner.field();
     stretch.points += keyword == "v";
     stretch.faces += keyword == "f";
+    stretch.uvs += keyword == "vt";
   }
   stretch.lines = scanner.line_number();
 }
 
-void read_stretch(ObjStretch& stretch, const std::string& path, PolygonSoup& soup) {
+void read_stretch(ObjStretch& stretch, const std::string& path, PolygonSoup& soup, std::vector<glm::vec2>& uvs) {
   TextScanner scanner(stretch.text, path, stretch.lines_before);
-  size_t point = stretch.points_before;
+  size_t point = stretch.points_before, uv = stretch.uvs_before;
   stretch.corners.reserve(3 * stretch.faces);
   stretch.polygon_ends.reserve(stretch.faces);
   stretch.polygon_lines.reserve(stretch.faces);
@@ -176,10 +224,30 @@ void read_stretch(ObjStretch& stretch, const std::string& path, PolygonSoup& sou
         }
       }
       soup.point_lines[point++] = scanner.line_number();
+    } else if (keyword == "vt") {
+      try {
+        const double u = scanner.number("texture coordinate u");
+        const double v = scanner.at_line_end() ? 0.0 : scanner.number("texture coordinate v");
+        uvs[uv] = glm::vec2(float(u), float(1.0 - v));  // OBJ's v runs up the image
+      } catch (const InputError& e) {
+        if (stretch.unread_uvs++ == 0) stretch.first_unread_uv = "line " + std::to_string(e.where().line) + ": " + e.message();
+      }
+      ++uv;
     } else if (keyword == "f") {
       const size_t first = stretch.corners.size();
-      for (std::string_view corner = scanner.field(); !corner.empty(); corner = scanner.field())
+      for (std::string_view corner = scanner.field(); !corner.empty(); corner = scanner.field()) {
         stretch.corners.push_back(corner_index(scanner, corner, point));
+        bool unreadable = false;
+        const uint32_t corner_uv = corner_uv_index(corner, uv, unreadable);
+        if (unreadable && stretch.unread_uvs++ == 0)
+          stretch.first_unread_uv = "line " + std::to_string(scanner.line_number()) + ": the corner " + quote_field(corner) +
+                                    " has no texture coordinate index that umbra can read";
+        if (corner_uv != kNoUv && !stretch.has_uvs) {  // the corners before it have none
+          stretch.corner_uvs.assign(stretch.corners.size() - 1, kNoUv);
+          stretch.has_uvs = true;
+        }
+        if (stretch.has_uvs) stretch.corner_uvs.push_back(corner_uv);
+      }
       if (stretch.corners.size() - first < 3)
         scanner.fail_at_line("a face needs at least 3 vertices, this one has " + std::to_string(stretch.corners.size() - first));
       stretch.polygon_ends.push_back(uint32_t(stretch.corners.size()));
@@ -239,6 +307,36 @@ void replay_material_statements(const std::vector<ObjStretch>& stretches, size_t
   if (any) soup.polygon_materials = std::move(face_materials);
 }
 
+// Each corner's texture coordinates, (0, 0) for a corner without a `vt` or
+// with one past the file's last (said once).
+void set_corner_uvs(const std::vector<ObjStretch>& stretches, const std::vector<glm::vec2>& uvs, PolygonSoup& soup) {
+  soup.corner_uvs.assign(soup.corners.size(), glm::vec2(0.0f));
+  size_t corner = 0, past_the_end = 0;
+  uint32_t first_past = 0;
+  for (const ObjStretch& stretch : stretches) {
+    const size_t corners = stretch.polygon_ends.empty() ? 0 : stretch.polygon_ends.back();
+    for (size_t c = 0; c < stretch.corner_uvs.size() && c < corners; ++c) {
+      const uint32_t index = stretch.corner_uvs[c];
+      if (index == kNoUv) continue;
+      if (index < uvs.size()) soup.corner_uvs[corner + c] = uvs[index];
+      else if (past_the_end++ == 0) first_past = index;
+    }
+    corner += corners;
+  }
+  if (past_the_end > 0)
+    soup.warn(0, std::to_string(past_the_end) + " face corners name a texture coordinate past the file's last (vt " +
+                     std::to_string(size_t(first_past) + 1) + " of " + std::to_string(uvs.size()) + ", the first): they take (0, 0)");
+  size_t unread = 0;
+  std::string first;
+  for (const ObjStretch& stretch : stretches) {
+    if (stretch.unread_uvs && first.empty()) first = stretch.first_unread_uv;
+    unread += stretch.unread_uvs;
+  }
+  if (unread > 0)
+    soup.warn(0, std::to_string(unread) + " texture coordinates (vt) or corners' indices of them could not be read, the first at " +
+                     first + ": they take (0, 0)");
+}
+
 }  // namespace
 
 PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chunk_bytes) {
@@ -259,9 +357,11 @@ PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chun
   soup.points.resize(last.points_before + last.points);
   soup.point_lines.resize(soup.points.size());
   soup.point_colors.assign(soup.points.size(), glm::vec3(1.0f));  // kept only if some vertex has a colour
+  for (size_t k = 1; k < stretches.size(); ++k) stretches[k].uvs_before = stretches[k - 1].uvs_before + stretches[k - 1].uvs;
+  std::vector<glm::vec2> uvs(last.uvs_before + last.uvs);
   tbb::parallel_for(size_t(0), stretches.size(), [&](size_t k) {
     try {
-      read_stretch(stretches[k], path, soup);
+      read_stretch(stretches[k], path, soup, uvs);
     } catch (...) {
       stretches[k].error = std::current_exception();
     }
@@ -291,6 +391,9 @@ PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chun
     std::vector<glm::vec3>().swap(soup.point_colors);
   replay_material_statements(stretches, face_count, path, soup);
   if (failed != stretches.end()) std::rethrow_exception(failed->error);
+  const bool textured = std::any_of(soup.materials.begin(), soup.materials.end(), [](const SoupMaterial& m) { return bool(m.texture); });
+  if (textured && std::any_of(stretches.begin(), stretches.end(), [](const ObjStretch& s) { return s.has_uvs; }))
+    set_corner_uvs(stretches, uvs, soup);
   return soup;
 }
 

@@ -4,10 +4,14 @@
 // has (a half-edge structure would refuse some of them on loading).
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+
+#include "mesh/texture_image.hpp"
 
 namespace umbra {
 
@@ -25,6 +29,10 @@ struct SoupMaterial {
   glm::dvec3 diffuse{0.8};
   glm::dvec3 specular{0.0};
   double shininess = 32.0;
+  // Its diffuse texture map, which multiplies `diffuse` where faces have
+  // texture coordinates (PolygonSoup::corner_uvs); none when the file gives
+  // none or it could not be read (a warning says so).
+  std::shared_ptr<const TextureImage> texture;
 };
 
 struct PolygonSoup {
@@ -43,6 +51,10 @@ struct PolygonSoup {
   // file gives none. Colours belong to the file's points, not to merged
   // vertices: two points at one place may differ.
   std::vector<glm::vec3> point_colors;
+  // Per corner (parallel to `corners`), its texture coordinates, with v
+  // running down the image (glTF's convention; OBJ's v is turned over on
+  // reading); empty unless some material has a texture map.
+  std::vector<glm::vec2> corner_uvs;
 
   size_t polygon_count() const { return polygon_starts.size() - 1; }
   uint32_t corner_count(size_t p) const { return polygon_starts[p + 1] - polygon_starts[p]; }

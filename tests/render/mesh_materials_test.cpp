@@ -63,7 +63,9 @@ TEST_F(MeshMaterials, ObjUsemtlColoursEachFaceInBothRenderers) {
   EXPECT_EQ(scene.materials[3].specular, glm::dvec3(0.5));
   EXPECT_EQ(scene.meshes[0].triangle_materials, (std::vector<int>{2, 2, 3, 3}));
   ASSERT_EQ(scene.warnings.size(), 2u);  // and that the floor is open
-  EXPECT_EQ(scene.warnings[0].message, "the materials' texture maps are ignored: faces take each material's Kd colour");
+  // Its texture map is missing: said once, and its faces keep Kd.
+  EXPECT_EQ(scene.warnings[0].message, "material \"blue\"'s texture map \"" + (folder_ / "blue.png").string() +
+                                           "\": cannot open it: its faces take the material's Kd colour");
   const test::RenderedImages r = render_both(scene);
   expect_red_left_blue_right(r.gl);
   expect_red_left_blue_right(r.cpu);
