@@ -61,9 +61,11 @@ glm::dvec3 surface_colour(const Scene& scene, const Surface& s, const glm::dvec3
   return colour;
 }
 
-// The shader's shade() for one pixel, in double precision (shaders.hpp).
-void shade_pixel(const Scene& scene, const RayCaster& caster, const glm::dvec3& ambient_sum, const RayHit& hit,
-                 RayCastFrame& frame, int x, int y) {
+// The shader's shade() for one sample, in double precision (shaders.hpp),
+// unclamped as the GL's float frame keeps it; with `masks`, each light's
+// mask at (x, y) too.
+glm::dvec3 shade(const Scene& scene, const RayCaster& caster, const glm::dvec3& ambient_sum, const RayHit& hit,
+                 std::vector<Image>* masks, int x, int y) {
   const Surface surface = surface_of(scene, hit.object);
   const Material& m = scene.materials[size_t(surface.material)];
   const glm::dvec3 tint = surface_colour(scene, surface, hit.point);
@@ -76,28 +78,43 @@ void shade_pixel(const Scene& scene, const RayCaster& caster, const glm::dvec3& 
     const glm::dvec3 l = glm::normalize(light.position - hit.point);
     const double n_dot_l = glm::dot(n, l);
     const bool lit = n_dot_l > 0.0 && !caster.shadow_ray_blocked(hit.point, hit.object, light.position);
-    frame.masks[i].at(x, y) = lit ? kMaskLit : kMaskUnlit;
+    if (masks) (*masks)[i].at(x, y) = lit ? kMaskLit : kMaskUnlit;
     if (!lit) continue;
     const glm::dvec3 v = glm::normalize(eye - hit.point);
     const glm::dvec3 r = 2.0 * n_dot_l * n - l;  // reflect(-l, n)
     const double s = m.shininess > 0.0 ? std::pow(std::max(glm::dot(r, v), 0.0), m.shininess) : 1.0;
     colour += light.color * (m.diffuse * tint * n_dot_l + m.specular * s);
   }
-  for (int c = 0; c < 3; ++c) frame.image.at(x, y, c) = channel_byte(colour[c]);
+  return colour;
 }
 
 }  // namespace
 
-RayCastFrame ray_cast_frame(const Scene& scene, int width, int height) {
+RayCastFrame ray_cast_frame(const Scene& scene, int width, int height, int samples) {
   RayCastFrame frame{Image(width, height, 3), std::vector<Image>(scene.lights.size(), Image(width, height, 1, kMaskNoSurface))};
   glm::dvec3 ambient_sum(0.0);
   for (const Light& light : scene.lights) ambient_sum += light.ambient;
   const RayCaster caster(scene);
+  // A sample at (px, py) in pixels (the pixel's centre at x + 1/2): its
+  // colour, black where it sees nothing, as the GL clears its frame.
+  const auto sample = [&](double px, double py, std::vector<Image>* masks, int x, int y) {
+    const auto hit = caster.nearest_hit(scene.camera.eye, pixel_ray_direction(scene.camera, width, height, px - 0.5, py - 0.5));
+    return hit ? shade(scene, caster, ambient_sum, *hit, masks, x, y) : glm::dvec3(0.0);
+  };
   const auto rows = [&](int first, int step) {
     for (int y = first; y < height; y += step)
       for (int x = 0; x < width; ++x) {
-        const auto hit = caster.nearest_hit(scene.camera.eye, pixel_ray_direction(scene.camera, width, height, x, y));
-        if (hit) shade_pixel(scene, caster, ambient_sum, *hit, frame, x, y);
+        // The masks from the pixel's centre; the image from samples x
+        // samples points at the centres of its sub-pixels, as the GL's
+        // frame drawn that many times larger puts them, averaged.
+        const glm::dvec3 centre = sample(x + 0.5, y + 0.5, &frame.masks, x, y);
+        glm::dvec3 sum = samples % 2 ? centre : glm::dvec3(0.0);  // an odd grid's middle sample is the centre
+        for (int j = 0; j < samples; ++j)
+          for (int i = 0; i < samples; ++i)
+            if (samples % 2 == 0 || i != samples / 2 || j != samples / 2)
+              sum += sample(x + (i + 0.5) / samples, y + (j + 0.5) / samples, nullptr, x, y);
+        const glm::dvec3 colour = sum / double(samples * samples);
+        for (int c = 0; c < 3; ++c) frame.image.at(x, y, c) = channel_byte(colour[c]);
       }
   };
   const int threads = int(std::max(1u, std::thread::hardware_concurrency()));

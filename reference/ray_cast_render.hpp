@@ -16,7 +16,10 @@ struct RayCastFrame {
   std::vector<Image> masks;  // per light, as ShadowRenderer::render_mask draws it
 };
 
-// Rows are shared among the machine's cores.
-RayCastFrame ray_cast_frame(const Scene& scene, int width, int height);
+// Rows are shared among the machine's cores. With `samples` above 1, the
+// image averages samples x samples eye rays per pixel (supersampling, as
+// RenderSettings::supersampling draws it); the masks stay one ray, at the
+// pixel's centre.
+RayCastFrame ray_cast_frame(const Scene& scene, int width, int height, int samples = 1);
 
 }  // namespace umbra

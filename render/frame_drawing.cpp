@@ -66,8 +66,8 @@ void FrameDrawing::apply_view() {
     p->use();
     p->set("view_projection", view_projection);
   }
-  target_.bind(s.width, s.height);
-  glViewport(0, 0, s.width, s.height);
+  target_.bind(s.width * samples_per_side_, s.height * samples_per_side_);
+  glViewport(0, 0, s.width * samples_per_side_, s.height * samples_per_side_);
 }
 
 void FrameDrawing::view_from(const glm::dvec3& viewpoint, const glm::mat4& view_projection) {

@@ -35,8 +35,13 @@ class FrameDrawing {
   const RenderPlan& plan() const { return plan_; }
 
   // The plan's camera and image size, read every frame (a viewer moves the
-  // camera and resizes the window), with the frame target bound at that size.
+  // camera and resizes the window), with the frame target bound at that size
+  // times the samples per side.
   void apply_view();
+  // Samples per pixel along each side that apply_view draws with: the
+  // settings' supersampling for an image, 1 for a mask.
+  void set_samples_per_side(int samples) { samples_per_side_ = samples; }
+  int samples_per_side() const { return samples_per_side_; }
   // Where apply_view draws: the frame, kept in floating point.
   const FrameTarget& target() const { return target_; }
   // Every surface with the shading pass `pass` (shaders.hpp) for light
@@ -70,6 +75,7 @@ class FrameDrawing {
   const Scene& scene_;
   const RenderPlan& plan_;
   FrameTarget target_;
+  int samples_per_side_ = 1;
   std::unique_ptr<ShaderProgram> triangle_program_, sphere_program_, volume_program_, planar_program_;
   std::unique_ptr<SurfaceBuffers> surfaces_;
   std::unique_ptr<VolumeBuffer> volumes_;

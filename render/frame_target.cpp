@@ -47,26 +47,37 @@ void FrameTarget::bind(int width, int height) {
   height_ = height;
 }
 
-void FrameTarget::show() const {
+void FrameTarget::show(int width, int height) const {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
+                    width == width_ && height == height_ ? GL_NEAREST : GL_LINEAR);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
 }
 
-std::vector<uint8_t> FrameTarget::read_rgba8() const {
-  // In strips of rows: the floats of a whole 800x800 frame would be 10 MB.
+std::vector<uint8_t> FrameTarget::read_rgba8(int samples) const {
+  // In strips of 32 output rows: the floats of a whole 800x800 frame would
+  // be 10 MB, and nine times that supersampled.
   constexpr int kStripRows = 32;
+  const int width = width_ / samples, height = height_ / samples;
   const size_t row_values = size_t(width_) * 4;
-  std::vector<uint8_t> bytes(row_values * size_t(height_));
-  std::vector<float> strip(row_values * kStripRows);
+  std::vector<uint8_t> bytes(size_t(width) * size_t(height) * 4);
+  std::vector<float> strip(row_values * size_t(kStripRows * samples));
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  for (int y = 0; y < height_; y += kStripRows) {
-    const int rows = std::min(kStripRows, height_ - y);
-    glReadPixels(0, y, width_, rows, GL_RGBA, GL_FLOAT, strip.data());
-    std::transform(strip.begin(), strip.begin() + std::ptrdiff_t(row_values * size_t(rows)),
-                   bytes.begin() + std::ptrdiff_t(row_values * size_t(y)), [](float c) { return channel_byte(c); });
+  const double per_sample = 1.0 / (samples * samples);
+  for (int y = 0; y < height; y += kStripRows) {
+    const int rows = std::min(kStripRows, height - y);
+    glReadPixels(0, y * samples, width_, rows * samples, GL_RGBA, GL_FLOAT, strip.data());
+    for (int r = 0; r < rows; ++r)
+      for (int x = 0; x < width; ++x)
+        for (int c = 0; c < 4; ++c) {
+          double sum = 0.0;
+          for (int j = 0; j < samples; ++j)
+            for (int i = 0; i < samples; ++i)
+              sum += strip[size_t(r * samples + j) * row_values + size_t(x * samples + i) * 4 + size_t(c)];
+          bytes[(size_t(y + r) * size_t(width) + size_t(x)) * 4 + size_t(c)] = channel_byte(sum * per_sample);
+        }
   }
   return bytes;
 }

@@ -23,12 +23,14 @@ class FrameTarget {
   // Binds the target for drawing, made (or remade) at width x height.
   // Throws std::runtime_error when the GL cannot make it.
   void bind(int width, int height);
-  // Copies the colour to the default framebuffer (the window), converted to
-  // its format by the GL, and leaves the target bound.
-  void show() const;
-  // The colour as RGBA bytes, each channel rounded once (channel_byte, as the
+  // Copies the colour to the default framebuffer (the window) at width x
+  // height, converted to its format by the GL (and scaled, filtered, when
+  // supersampled), and leaves the target bound.
+  void show(int width, int height) const;
+  // The colour as RGBA bytes, each block of samples x samples pixels
+  // averaged into one, each channel rounded once (channel_byte, as the
   // ray-cast reference rounds), rows from the bottom as the GL keeps them.
-  std::vector<uint8_t> read_rgba8() const;
+  std::vector<uint8_t> read_rgba8(int samples = 1) const;
 
  private:
   void release();

@@ -394,10 +394,18 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
   }
 }
 
+std::string image_phrase(const RenderSettings& settings) {
+  const int n = settings.supersampling;
+  return std::to_string(settings.width) + "x" + std::to_string(settings.height) + ", " +
+         (n == 1 ? std::string("one sample per pixel, at its centre")
+                 : std::to_string(n) + " x " + std::to_string(n) + " samples per pixel, averaged") +
+         " (--antialias)";
+}
+
 void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& plan) {
   const Camera& c = plan.camera;
   out << "render plan for " << scene.path << "\n";
-  out << "  image: " << plan.settings.width << "x" << plan.settings.height << "\n";
+  out << "  image: " << image_phrase(plan.settings) << "\n";
   out << "  camera: eye " << c.eye << " target " << c.target << " up " << c.up << " fovy " << c.fovy_deg
       << " deg" << (plan.camera_is_spec_default ? " (the default view)" : " (from the scene file)") << "\n";
   out << "  projection: perspective, near " << plan.near_plane << " (from the surfaces' bounds as the eye sees them), "

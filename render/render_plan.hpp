@@ -26,14 +26,18 @@ struct RenderSettings {
   int sphere_segments = 64;  // N of the tangent circle's inscribed N-gon (docs/geometry.md)
   RenderMethod method = RenderMethod::kAuto;  // the plan is for every method but kRaycast
   int shadow_map_size = 1024;                 // texels along a cube face's side, for kShadowMap
+  // The image's samples per pixel along each side (supersampling): drawn
+  // at that many times the size and averaged, box-filtered, then rounded.
+  // Masks are always one sample, at the pixel's centre.
+  int supersampling = 1;
 
   bool operator==(const RenderSettings& o) const {
     return width == o.width && height == o.height && sphere_segments == o.sphere_segments && method == o.method &&
-           shadow_map_size == o.shadow_map_size;
+           shadow_map_size == o.shadow_map_size && supersampling == o.supersampling;
   }
 };
 // A setting added here must join operator==, or a plan made for the old value would be kept.
-static_assert(sizeof(RenderSettings) == 5 * sizeof(int), "compare the new member of RenderSettings in operator==");
+static_assert(sizeof(RenderSettings) == 6 * sizeof(int), "compare the new member of RenderSettings in operator==");
 
 // What a light's plan is made from besides the scene's casters: a frame
 // whose inputs compare equal to the plan's (a paused viewer, or a light that
@@ -148,6 +152,9 @@ RenderPlan make_render_plan(const Scene& scene, const RenderSettings& settings);
 // reusing its buffers, so that mesh volumes cost only classification and
 // extraction.
 void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshes, RenderPlan& plan);
+
+// "800x800, 3 x 3 samples per pixel, averaged (--antialias)"
+std::string image_phrase(const RenderSettings& settings);
 
 void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& plan);
 

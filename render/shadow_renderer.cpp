@@ -51,6 +51,7 @@ void ShadowRenderer::show_volumes_pass() {
 }
 
 void ShadowRenderer::draw(bool show_volumes) {
+  drawing_->set_samples_per_side(plan_.settings.supersampling);
   depth_and_ambient_pass();
   for (size_t i = 0; i < plan_.lights.size(); ++i) {
     if (!plan_.light_adds_direct[i]) continue;  // adds nothing but its ambient term, already drawn
@@ -60,7 +61,7 @@ void ShadowRenderer::draw(bool show_volumes) {
   if (show_volumes) show_volumes_pass();
 }
 
-void ShadowRenderer::show() const { drawing_->target().show(); }
+void ShadowRenderer::show() const { drawing_->target().show(plan_.settings.width, plan_.settings.height); }
 
 Image ShadowRenderer::render_image(bool show_volumes) {
   draw(show_volumes);
@@ -72,6 +73,7 @@ Image ShadowRenderer::read_image() const { return read_pixels(3); }
 void ShadowRenderer::finish() const { glFinish(); }
 
 Image ShadowRenderer::render_mask(size_t light) {
+  drawing_->set_samples_per_side(1);  // one sample, at the pixel's centre
   depth_and_ambient_pass();
   technique().cast(light);
   // Every visible surface starts unlit (0), then lit where it faces the light
@@ -90,7 +92,7 @@ Image ShadowRenderer::render_mask(size_t light) {
 
 Image ShadowRenderer::read_pixels(int channels) const {
   const int w = plan_.settings.width, h = plan_.settings.height;
-  const std::vector<uint8_t> rgba = drawing_->target().read_rgba8();
+  const std::vector<uint8_t> rgba = drawing_->target().read_rgba8(drawing_->samples_per_side());
   Image image(w, h, channels);
   for (int y = 0; y < h; ++y)  // GL's row 0 is the bottom
     for (int x = 0; x < w; ++x)

@@ -33,6 +33,12 @@ struct Outcome {
   bool written = false;
 };
 
+}  // namespace
+
+int default_supersampling(const std::string& path) { return is_mesh_file(path) ? 3 : 1; }
+
+namespace {
+
 Outcome render_one(const std::string& path, const std::string& out, const BatchRenderOptions& o,
                    std::optional<HeadlessContext>& context) {
   Outcome outcome;
@@ -42,12 +48,14 @@ Outcome render_one(const std::string& path, const std::string& out, const BatchR
     for (const Warning& w : scene.warnings) outcome.err += w.where.str() + ": warning: " + w.message + "\n";
     rotate_lights_about_z(scene, o.light_angle_deg);
     require_lights_off_casters(scene);
+    RenderSettings settings = o.settings;
+    settings.supersampling = o.antialias.value_or(default_supersampling(path));
     Image image;
-    if (o.settings.method == RenderMethod::kRaycast) {
-      image = ray_cast_frame(scene, o.settings.width, o.settings.height).image;
+    if (settings.method == RenderMethod::kRaycast) {
+      image = ray_cast_frame(scene, settings.width, settings.height, settings.supersampling).image;
     } else {
-      if (!context) context.emplace(o.settings.width, o.settings.height, o.gl);
-      const RenderPlan plan = make_render_plan(scene, o.settings);
+      if (!context) context.emplace(settings.width, settings.height, o.gl);
+      const RenderPlan plan = make_render_plan(scene, settings);
       ShadowRenderer renderer(scene, plan);
       image = renderer.render_image(o.show_volumes);
     }

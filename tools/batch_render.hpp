@@ -20,11 +20,17 @@ struct BatchRenderOptions {
   double light_angle_deg = 0.0;
   std::string up;  // for mesh files: "" for each format's own
   HeadlessGl gl = HeadlessGl::kAuto;
+  std::optional<int> antialias;  // unset: each file's default_supersampling
   bool show_volumes = false;
   size_t jobs = 1;  // pictures drawn at a time, each in its own GL context
   std::optional<Shard> shard;
   std::optional<std::string> sheet;  // also one PNG of every picture, labelled with its file's name
 };
+
+// Samples per pixel along each side that a picture of `path` gets unless
+// --antialias says: 3 for a mesh file staged on its own (a picture to show),
+// 1 for a scene file, whose pictures stay as they always were.
+int default_supersampling(const std::string& path);
 
 // Writes OUT_DIR/NAME.png for each file, NAME its path relative to the
 // folder it was found in (or its file name), so that a.obj and a.stl do not

@@ -56,6 +56,10 @@ options:
   --gl G                the headless OpenGL to draw with (default auto, or
                         the UMBRA_GL environment variable's):
 {gl platforms}
+  --antialias N         N x N samples per pixel, averaged (supersampling;
+                        1 to 4). Default 3 for a MESH on its own, 1 for a
+                        SCENE, whose pictures stay as they were; masks are
+                        one sample at each pixel's centre either way
   --show-volumes        draw the shadow volumes translucently over the image
   --mask MASK.png       also write light 1's shadow mask: 8-bit grey, 128 where
                         no surface is seen, 255 where the visible point faces
@@ -94,6 +98,7 @@ struct RenderOptions {
   RenderSettings settings;
   double light_angle_deg = 0.0;
   HeadlessGl gl = HeadlessGl::kAuto;
+  std::optional<int> antialias;  // unset: by what is rendered (staged_supersampling)
   bool show_volumes = false;
   bool explain = false;
   bool help = false;
@@ -112,6 +117,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   add_method_option(options, o.settings.method);
   add_map_size_option(options, o.settings.shadow_map_size);
   add_gl_option(options, o.gl);
+  options.value("--antialias", [&](const std::string& n, const std::string& t) { o.antialias = parse_int_in(n, t, 1, 4); });
   options.flag("--show-volumes", o.show_volumes);
   options.flag("--explain", o.explain);
   add_up_option(options, o.up);
@@ -131,7 +137,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     if (o.output.empty()) throw UsageError("no output folder given (-o OUTDIR)");
     if (o.mask) throw UsageError("--mask writes one scene's mask; with several files there is none to choose");
     if (o.explain) throw UsageError("--explain prints one scene's plan; with several files, ask for one of them");
-    o.batch = BatchRenderOptions{scenes, o.output, o.settings, o.light_angle_deg, o.up, o.gl, o.show_volumes,
+    o.batch = BatchRenderOptions{scenes, o.output, o.settings, o.light_angle_deg, o.up, o.gl, o.antialias, o.show_volumes,
                                  jobs.value_or(std::max(1u, std::thread::hardware_concurrency())), shard, sheet};
   } else {
     if (shard) throw UsageError("--shard splits several files; \"" + o.scene_path + "\" is one");
@@ -159,6 +165,7 @@ int run_render_command(const std::vector<std::string>& argv) {
     return 2;
   }
   keep_freed_memory_for_reuse();
+  options.settings.supersampling = options.antialias.value_or(default_supersampling(options.scene_path));
   try {
     // Loading, planning and drawing: three steps, the first per mesh file.
     std::optional<ProgressBar> progress(std::in_place, 3);
@@ -179,9 +186,9 @@ int run_render_command(const std::vector<std::string>& argv) {
     std::optional<Image> mask;
     if (options.settings.method == RenderMethod::kRaycast) {
       if (options.explain)
-        progress->clear(), std::cout << "render plan for " << scene.path << "\n  method: raycast, one eye ray per pixel and an exact "
-                  << "shadow ray per light (CPU, double precision)\n";
-      RayCastFrame frame = ray_cast_frame(scene, options.settings.width, options.settings.height);
+        progress->clear(), std::cout << "render plan for " << scene.path << "\n  method: raycast, eye rays and an exact "
+                  << "shadow ray per light (CPU, double precision)\n  image: " << image_phrase(options.settings) << "\n";
+      RayCastFrame frame = ray_cast_frame(scene, options.settings.width, options.settings.height, options.settings.supersampling);
       image = std::move(frame.image);
       if (options.mask) mask = std::move(frame.masks[0]);
     } else {

@@ -23,14 +23,16 @@ struct RenderedImages {
   Image gl, cpu;
 };
 
-inline RenderedImages render_gl_and_ray_cast(const Scene& scene, int size, RenderMethod method = RenderMethod::kAuto) {
+inline RenderedImages render_gl_and_ray_cast(const Scene& scene, int size, RenderMethod method = RenderMethod::kAuto,
+                                             int supersampling = 1) {
   RenderSettings settings;
   settings.method = method;
   settings.width = settings.height = size;
+  settings.supersampling = supersampling;
   const RenderPlan plan = make_render_plan(scene, settings);
   HeadlessContext context(settings.width, settings.height);
   ShadowRenderer renderer(scene, plan);
-  return {renderer.render_image(false), ray_cast_frame(scene, size, size).image};
+  return {renderer.render_image(false), ray_cast_frame(scene, size, size, supersampling).image};
 }
 
 // How many colour channels of pixels that see one object throughout differ

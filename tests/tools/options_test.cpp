@@ -71,6 +71,22 @@ TEST_F(Options, GlPicksThePlatformThatExplainNames) {
   EXPECT_FALSE(test::fs::exists(path("bad.png")));
 }
 
+TEST_F(Options, AntialiasingIsOnForAStagedMeshAndOffForASceneUnlessAsked) {
+  const std::string mesh = std::string(UMBRA_SOURCE_DIR) + "/scenes/meshes/torus.obj";
+  const auto image_line = [&](const std::string& args) {
+    const CommandResult r = run("render " + args + " -o " + path("a.png") + " --size 40x40 --explain");
+    EXPECT_EQ(r.status, 0) << r.err;
+    const size_t at = r.out.find("  image: ");
+    return at == std::string::npos ? r.out : r.out.substr(at, r.out.find('\n', at) - at);
+  };
+  EXPECT_EQ(image_line(mesh), "  image: 40x40, 3 x 3 samples per pixel, averaged (--antialias)");
+  EXPECT_EQ(image_line(scene), "  image: 40x40, one sample per pixel, at its centre (--antialias)");
+  EXPECT_EQ(image_line(scene + " --antialias 2"), "  image: 40x40, 2 x 2 samples per pixel, averaged (--antialias)");
+  EXPECT_EQ(image_line(mesh + " --antialias=1 --method raycast"), "  image: 40x40, one sample per pixel, at its centre (--antialias)");
+  EXPECT_EQ(run("render " + scene + " -o x.png --antialias 5").err,
+            "umbra render: --antialias expects a whole number from 1 to 4, got \"5\"\n(see umbra render --help)\n");
+}
+
 TEST_F(Options, WithoutAnEglDeviceAutoFallsBackToOsMesaAndEglSaysWhy) {
   // libglvnd with no vendor library to hand EGL to: as on a machine without Mesa's EGL.
   const std::string no_egl = "__EGL_VENDOR_LIBRARY_FILENAMES=" + path("none.json") + " ";

@@ -48,9 +48,10 @@ TEST_F(RenderCommand, AMeshFileOnItsOwnIsStagedAndExplainPrintsTheSceneToSave) {
   EXPECT_NE(text.find("\nmesh \"tet\" fit rotate 1 0 0 90\n"), std::string::npos) << text;  // OBJ: +y up, turned to +z
   EXPECT_NE(r.out.find("render plan for " + mesh + " (staged)\n"), std::string::npos);
   EXPECT_EQ(read_png(path("a.png")).width, 32);
-  // Saved beside the mesh, the text renders the same image.
+  // Saved beside the mesh, the text renders the same image, antialiased as
+  // the staged render is by default (a scene file is not, unless asked).
   write("tet.scene", text);
-  EXPECT_EQ(run("render " + path("tet.scene") + " -o " + path("b.png") + " --size 32x32").status, 0);
+  EXPECT_EQ(run("render " + path("tet.scene") + " -o " + path("b.png") + " --size 32x32 --antialias 3").status, 0);
   EXPECT_EQ(read_png(path("a.png")).pixels, read_png(path("b.png")).pixels);
   // Text that is no mesh is read as a scene, whose parser says why.
   const std::string neither = write("notes.txt", "hello\n");
