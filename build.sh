@@ -19,7 +19,8 @@ packages=(
   libegl-dev libegl-mesa0            # headless OpenGL through EGL: a GPU, or Mesa's software device
   libglfw3-dev libgl1-mesa-dri       # umbra view: a window with an OpenGL context
   libimgui-dev                       # umbra view's overlay (Dear ImGui)
-  libstb-dev                         # the contact sheet's label font (stb_easy_font)
+  libstb-dev                         # texture maps (stb_image), the contact sheet's label font (stb_easy_font)
+  libjpeg62-turbo-dev                # bench/texture_decode_benchmark: libjpeg-turbo, against stb_image
   xvfb xauth                         # tests run umbra view in a virtual display
   libcgal-dev libgmp-dev libmpfr-dev # exact predicates, mesh checks and repair
   libopenmesh-dev                    # half-edge meshes for silhouettes
