@@ -126,7 +126,7 @@ CheckOutcome check_one(const std::string& path, const CheckCommandOptions& optio
     outcome.status = 2;
   };
   try {
-    const MeshReport report = check_mesh(read_polygon_soup(path), options.check);
+    const MeshReport report = check_mesh(read_polygon_soup(path, TextureMaps::kSkip), options.check);
     options.json ? report.print_json(out) : report.print_text(out);
     outcome.status = report.is_closed_manifold() ? 0 : 1;
   } catch (const InputError& e) {
@@ -142,9 +142,9 @@ CheckOutcome check_one(const std::string& path, const CheckCommandOptions& optio
 
 int repair_one(const std::string& path, const std::string& output, const CheckCommandOptions& options) {
   try {
-    const PolygonSoup soup = read_polygon_soup(path);
+    const PolygonSoup soup = read_polygon_soup(path, TextureMaps::kSkip);
     const RepairSummary summary = repair_mesh(soup, output);
-    const MeshReport after = check_mesh(read_polygon_soup(output), options.check);
+    const MeshReport after = check_mesh(read_polygon_soup(output, TextureMaps::kSkip), options.check);
     if (options.json) {
       after.print_json(std::cout);
     } else {

@@ -30,6 +30,11 @@ namespace {
 
 constexpr size_t kMostCorners = size_t(1) << 31;  // as the check takes at most
 
+// tinygltf's image loader when texture maps are skipped: nothing is decoded.
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+  return true;
+}
+
 // tinygltf's image loader: images are decoded as texture maps are (with
 // stb_image, RGBA). One that cannot be is noted in `failures` (by image) and
 // left empty: its materials keep their base colour, and the mesh still loads.
@@ -94,13 +99,13 @@ SoupMaterial phong_of(const tinygltf::Material& m) {
 
 class GltfReader {
  public:
-  GltfReader(const tinygltf::Model& model, PolygonSoup& soup, const std::map<int, std::string>& image_failures)
-      : model_(model), soup_(soup), image_failures_(image_failures) {}
+  GltfReader(const tinygltf::Model& model, PolygonSoup& soup, const std::map<int, std::string>& image_failures, TextureMaps maps)
+      : model_(model), soup_(soup), image_failures_(image_failures), maps_(maps) {}
 
   void read() {
     for (const tinygltf::Material& m : model_.materials) {
       soup_.materials.push_back(phong_of(m));
-      soup_.materials.back().texture = base_colour_texture(m);
+      if (maps_ == TextureMaps::kRead) soup_.materials.back().texture = base_colour_texture(m);
       textured_ = textured_ || soup_.materials.back().texture;
     }
     if (model_.scenes.empty()) {
@@ -397,6 +402,7 @@ class GltfReader {
   const tinygltf::Model& model_;
   PolygonSoup& soup_;
   const std::map<int, std::string>& image_failures_;  // why an image could not be decoded, by image
+  const TextureMaps maps_;
   std::map<int, std::shared_ptr<const TextureImage>> textures_;  // by glTF texture
   bool textured_ = false;              // some material has a texture map: corners get texture coordinates
   std::vector<glm::vec2> point_uvs_;   // TEXCOORD_0 per point, while textured_
@@ -450,10 +456,11 @@ void require_gltf_2(std::string_view bytes, bool binary, const std::string& path
 
 }  // namespace
 
-PolygonSoup read_gltf(std::string_view bytes, const std::string& path) {
+PolygonSoup read_gltf(std::string_view bytes, const std::string& path, TextureMaps maps) {
   tinygltf::TinyGLTF loader;
   std::map<int, std::string> image_failures;
-  loader.SetImageLoader(decode_image, &image_failures);
+  if (maps == TextureMaps::kRead) loader.SetImageLoader(decode_image, &image_failures);
+  else loader.SetImageLoader(skip_image, nullptr);
   tinygltf::Model model;
   std::string error, warning;
   const std::string folder = std::filesystem::path(path).parent_path().string();
@@ -476,7 +483,7 @@ PolygonSoup read_gltf(std::string_view bytes, const std::string& path) {
   PolygonSoup soup;
   soup.path = path;
   soup.format = binary ? "glTF (binary .glb)" : "glTF";
-  GltfReader(model, soup, image_failures).read();
+  GltfReader(model, soup, image_failures, maps).read();
   return soup;
 }
 

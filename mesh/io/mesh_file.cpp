@@ -9,7 +9,7 @@
 
 namespace umbra {
 
-PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path) {
+PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path, TextureMaps maps) {
   // A UTF-8 byte-order mark, as some Windows tools write before OBJ, OFF or
   // STL text, is no part of the content (columns are counted after it).
   if (bytes.substr(0, 3) == "\xef\xbb\xbf") bytes.remove_prefix(3);
@@ -21,7 +21,7 @@ PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path) 
   if (format.empty() && mesh_format_of(path) != "obj" && other_known_format(bytes).empty()) format = mesh_format_of(path);
   const MeshFormat* reader = mesh_format_by_id(format);
   if (!reader) throw InputError({path, 0, 0}, "not a mesh file (" + mesh_format_names() + "): " + describe_content(bytes));
-  PolygonSoup soup = reader->read(bytes, path);
+  PolygonSoup soup = reader->read(bytes, path, maps);
   if (soup.format.empty()) soup.format = reader->name;  // a reader names a variant ("STL (binary)") or leaves it to its row
   require_corners_in_range(soup);
   if (!soup.polygon_materials.empty() && soup.polygon_materials.size() != soup.polygon_count())
@@ -30,14 +30,14 @@ PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path) 
   return soup;
 }
 
-PolygonSoup read_polygon_soup(const std::string& path) {
+PolygonSoup read_polygon_soup(const std::string& path, TextureMaps maps) {
   const MappedFile file(path);
   // A file cut short while it was read reads as zeros past its new end:
   // whatever that made of it, say what happened instead.
   const auto changed = [&] { return InputError({path, 0, 0}, "the file was cut short while it was read: read it again once it is written"); };
   PolygonSoup soup;
   try {
-    soup = parse_polygon_soup(file.bytes(), path);
+    soup = parse_polygon_soup(file.bytes(), path, maps);
   } catch (const InputError&) {
     if (file.cut_short()) throw changed();
     throw;

@@ -113,18 +113,26 @@ bool is_obj(std::string_view head) {
 
 bool never(std::string_view) { return false; }
 
+// A reader of a format whose files hold no texture maps that umbra draws.
+template <PolygonSoup (*reader)(std::string_view, const std::string&)>
+PolygonSoup without_maps(std::string_view bytes, const std::string& path, TextureMaps) {
+  return reader(bytes, path);
+}
+
 }  // namespace
 
 const std::vector<MeshFormat>& mesh_formats() {
   static const std::vector<MeshFormat> formats{
-      {"obj", "OBJ", {".obj"}, never, is_obj, [](std::string_view b, const std::string& p) { return read_obj(b, p); }, true, "+y"},
-      {"off", "OFF", {".off"}, never, is_off, read_off, true, "+y"},
+      {"obj", "OBJ", {".obj"}, never, is_obj, [](std::string_view b, const std::string& p, TextureMaps t) { return read_obj(b, p, t); },
+       true, "+y"},
+      {"off", "OFF", {".off"}, never, is_off, without_maps<read_off>, true, "+y"},
       {"ply", "PLY", {".ply"}, [](std::string_view b) { return starts_with(b, "ply\n") || starts_with(b, "ply\r"); }, never,
-       read_ply, true, "+y"},
-      {"stl", "STL", {".stl"}, is_binary_stl, is_ascii_stl, read_stl, true, "+z"},
+       without_maps<read_ply>, true, "+y"},
+      {"stl", "STL", {".stl"}, is_binary_stl, is_ascii_stl, without_maps<read_stl>, true, "+z"},
       {"gltf", "glTF", {".gltf", ".glb"}, [](std::string_view b) { return starts_with(b, "glTF"); }, is_gltf_json, read_gltf,
        false, "+y"},
-      {"3mf", "3MF", {".3mf"}, [](std::string_view b) { return is_zip(b) && has_model_part(b); }, never, read_3mf, false, "+z"},
+      {"3mf", "3MF", {".3mf"}, [](std::string_view b) { return is_zip(b) && has_model_part(b); }, never, without_maps<read_3mf>,
+       false, "+z"},
   };
   return formats;
 }

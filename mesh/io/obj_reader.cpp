@@ -87,7 +87,8 @@ std::string rest_as_name(const TextScanner& scanner) {
 
 // The materials of one .mtl file (Wavefront's material library) into `soup`,
 // by name into `named`. Kd, Ks, Ns and map_Kd are kept; other maps are noted once.
-void read_material_library(const std::string& path, int line, PolygonSoup& soup, std::map<std::string, int>& named) {
+void read_material_library(const std::string& path, int line, PolygonSoup& soup, std::map<std::string, int>& named,
+                           TextureMaps maps) {
   std::error_code exists_error;
   if (!std::filesystem::is_regular_file(path, exists_error)) {
     soup.warn(line, "material library \"" + path + "\" not found: its materials are left out");
@@ -119,6 +120,8 @@ void read_material_library(const std::string& path, int line, PolygonSoup& soup,
         (keyword == "Kd" ? current->diffuse : current->specular) = glm::clamp(rgb, 0.0, 1.0);
       } else if (current && keyword == "Ns") {
         current->shininess = std::max(0.0, scanner.number("shininess"));
+      } else if (keyword == "map_Kd" && maps == TextureMaps::kSkip) {
+        continue;
       } else if (current && keyword == "map_Kd") {
         const std::string map = map_path(scanner.rest_of_line(), std::filesystem::path(path).parent_path());
         std::string error;
@@ -262,7 +265,7 @@ void read_stretch(ObjStretch& stretch, const std::string& path, PolygonSoup& sou
 // The material statements of `stretches`, in order: libraries read as they
 // are named, each face given the material named last before it.
 void replay_material_statements(const std::vector<ObjStretch>& stretches, size_t face_count, const std::string& path,
-                                PolygonSoup& soup) {
+                                PolygonSoup& soup, TextureMaps maps) {
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   std::map<std::string, int> materials;  // by name
   std::set<std::string> missing;         // used but defined nowhere: said once each
@@ -276,13 +279,13 @@ void replay_material_statements(const std::vector<ObjStretch>& stretches, size_t
         const std::string whole = (folder / rest_as_name(rest)).lexically_normal().string();
         std::error_code error;
         if (std::filesystem::is_regular_file(whole, error)) {
-          read_material_library(whole, statement.line, soup, materials);
+          read_material_library(whole, statement.line, soup, materials, maps);
           continue;
         }
         TextScanner names(statement.rest, path, statement.line - 1);
         names.next_line();
         for (std::string_view name = names.field(); !name.empty(); name = names.field())
-          read_material_library((folder / std::string(name)).lexically_normal().string(), statement.line, soup, materials);
+          read_material_library((folder / std::string(name)).lexically_normal().string(), statement.line, soup, materials, maps);
         continue;
       }
       const std::string name = rest_as_name(rest);
@@ -339,7 +342,7 @@ void set_corner_uvs(const std::vector<ObjStretch>& stretches, const std::vector<
 
 }  // namespace
 
-PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chunk_bytes) {
+PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chunk_bytes, TextureMaps maps) {
   PolygonSoup soup;
   soup.path = path;
   soup.format = "OBJ";
@@ -389,7 +392,7 @@ PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chun
   }
   if (std::none_of(stretches.begin(), stretches.end(), [](const ObjStretch& s) { return s.colours; }))
     std::vector<glm::vec3>().swap(soup.point_colors);
-  replay_material_statements(stretches, face_count, path, soup);
+  replay_material_statements(stretches, face_count, path, soup, maps);
   if (failed != stretches.end()) std::rethrow_exception(failed->error);
   const bool textured = std::any_of(soup.materials.begin(), soup.materials.end(), [](const SoupMaterial& m) { return bool(m.texture); });
   if (textured && std::any_of(stretches.begin(), stretches.end(), [](const ObjStretch& s) { return s.has_uvs; }))
@@ -397,6 +400,8 @@ PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chun
   return soup;
 }
 
-PolygonSoup read_obj(std::string_view text, const std::string& path) { return read_obj(text, path, size_t(1) << 20); }
+PolygonSoup read_obj(std::string_view text, const std::string& path, TextureMaps maps) {
+  return read_obj(text, path, size_t(1) << 20, maps);
+}
 
 }  // namespace umbra

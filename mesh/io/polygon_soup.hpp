@@ -35,6 +35,10 @@ struct SoupMaterial {
   std::shared_ptr<const TextureImage> texture;
 };
 
+// Whether a reader reads its materials' texture maps: a picture needs them
+// (decoded, they can take far more memory than the mesh); a check does not.
+enum class TextureMaps { kRead, kSkip };
+
 struct PolygonSoup {
   std::string path;
   std::string format;                 // "OBJ", "OFF", "PLY (binary little endian)", "STL (ascii)", ...

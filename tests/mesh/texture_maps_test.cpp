@@ -11,7 +11,7 @@
 namespace umbra {
 namespace {
 
-class TextureMaps : public test::ScratchFolder {
+class TextureMapReading : public test::ScratchFolder {
  protected:
   // A 2 x 1 PNG: red, then blue.
   std::string write_png_map(const std::string& name) const {
@@ -25,10 +25,10 @@ class TextureMaps : public test::ScratchFolder {
   static const std::string kTriangleWithUvs;
 };
 
-const std::string TextureMaps::kTriangleWithUvs =
+const std::string TextureMapReading::kTriangleWithUvs =
     "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.25 0.75\nvt 1 1\nvt 0 0\nusemtl painted\nf 1/1 2/-2 3/-1/1\n";
 
-TEST_F(TextureMaps, ObjCornersTakeTheirVtWithVTurnedOver) {
+TEST_F(TextureMapReading, ObjCornersTakeTheirVtWithVTurnedOver) {
   write_png_map("red blue.png");
   write("m.mtl", "newmtl painted\nKd 1 1 1\nmap_Kd red blue.png\n");
   const PolygonSoup soup = read_polygon_soup(write("t.obj", kTriangleWithUvs));
@@ -42,7 +42,7 @@ TEST_F(TextureMaps, ObjCornersTakeTheirVtWithVTurnedOver) {
   EXPECT_EQ(soup.corner_uvs, (std::vector<glm::vec2>{{0.25f, 0.25f}, {1.0f, 0.0f}, {0.0f, 1.0f}}));
 }
 
-TEST_F(TextureMaps, MapOptionsAndWindowsSeparatorsStillFindTheFile) {
+TEST_F(TextureMapReading, MapOptionsAndWindowsSeparatorsStillFindTheFile) {
   write_png_map("wood.png");
   write("m.mtl", "newmtl painted\nmap_Kd -s 1 1 1 -o 0 0 0 .\\wood.png\n");
   const PolygonSoup soup = read_polygon_soup(write("t.obj", kTriangleWithUvs));
@@ -50,7 +50,7 @@ TEST_F(TextureMaps, MapOptionsAndWindowsSeparatorsStillFindTheFile) {
   ASSERT_TRUE(soup.materials[0].texture);
 }
 
-TEST_F(TextureMaps, AMapThatCannotBeReadIsSaidOnceAndTheMeshStillLoads) {
+TEST_F(TextureMapReading, AMapThatCannotBeReadIsSaidOnceAndTheMeshStillLoads) {
   write("broken.png", "not an image at all");
   write("m.mtl", "newmtl painted\nKd 0.5 0.5 0.5\nmap_Kd broken.png\nmap_Bump bumps.png\nmap_Ks shine.png\n");
   const PolygonSoup soup = read_polygon_soup(write("t.obj", kTriangleWithUvs));
@@ -63,7 +63,20 @@ TEST_F(TextureMaps, AMapThatCannotBeReadIsSaidOnceAndTheMeshStillLoads) {
   EXPECT_EQ(soup.polygon_count(), 1u);
 }
 
-TEST_F(TextureMaps, AVtPastTheLastIsSaidAndTakesZero) {
+// A check draws nothing: it reads no maps, so a missing one is no warning
+// there and costs no decoding.
+TEST_F(TextureMapReading, ACheckSkipsTheMaps) {
+  write("m.mtl", "newmtl painted\nmap_Kd missing.png\n");
+  const PolygonSoup obj = read_polygon_soup(write("t.obj", kTriangleWithUvs), TextureMaps::kSkip);
+  EXPECT_TRUE(obj.warnings.empty()) << obj.warnings[0].message;
+  EXPECT_FALSE(obj.materials[0].texture);
+  EXPECT_TRUE(obj.corner_uvs.empty());
+  const PolygonSoup gltf = read_polygon_soup("/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb", TextureMaps::kSkip);
+  EXPECT_FALSE(gltf.materials[0].texture);
+  EXPECT_TRUE(gltf.corner_uvs.empty());
+}
+
+TEST_F(TextureMapReading, AVtPastTheLastIsSaidAndTakesZero) {
   write_png_map("red blue.png");
   write("m.mtl", "newmtl painted\nmap_Kd red blue.png\n");
   const PolygonSoup soup = read_polygon_soup(write("t.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.5 0.5\nusemtl painted\nf 1/1 2/9 3\n"));
@@ -74,7 +87,7 @@ TEST_F(TextureMaps, AVtPastTheLastIsSaidAndTakesZero) {
 
 // Texture coordinates are no reason to refuse a mesh that loaded before
 // they were read: what cannot be read is said once and takes (0, 0).
-TEST_F(TextureMaps, UnreadableTextureCoordinatesAreSaidOnceAndTakeZero) {
+TEST_F(TextureMapReading, UnreadableTextureCoordinatesAreSaidOnceAndTakeZero) {
   write_png_map("red blue.png");
   write("m.mtl", "newmtl painted\nmap_Kd red blue.png\n");
   const PolygonSoup soup = read_polygon_soup(
@@ -113,7 +126,7 @@ TEST(TextureMapsInGltf, TheTexturedBoxReadsAlikeInEachPackaging) {
   EXPECT_EQ(soups[0].corners.size(), 36u);
 }
 
-TEST_F(TextureMaps, AGltfWhoseImageIsMissingStillLoadsAndSaysSo) {
+TEST_F(TextureMapReading, AGltfWhoseImageIsMissingStillLoadsAndSaysSo) {
   const std::string box = "/usr/share/assimp/models/glTF2/BoxTextured-glTF/";
   for (const char* file : {"BoxTextured.gltf", "BoxTextured0.bin"})
     std::filesystem::copy_file(box + file, folder_ / file);  // not CesiumLogoFlat.png
