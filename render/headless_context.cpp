@@ -15,12 +15,6 @@ std::optional<HeadlessGl> headless_gl_from_name(std::string_view name) {
   return std::nullopt;
 }
 
-const char* headless_gl_name(HeadlessGl gl) {
-  for (const HeadlessGlRow& row : kHeadlessGlTable)
-    if (row.gl == gl) return row.name;
-  return "?";
-}
-
 std::string headless_gl_names() {
   std::vector<std::string> names;
   for (const HeadlessGlRow& row : kHeadlessGlTable) names.push_back(row.name);

@@ -29,7 +29,6 @@ inline constexpr HeadlessGlRow kHeadlessGlTable[] = {
 };
 
 std::optional<HeadlessGl> headless_gl_from_name(std::string_view name);
-const char* headless_gl_name(HeadlessGl gl);
 std::string headless_gl_names();  // "auto, egl or osmesa"
 
 // What kAuto means in this process: the UMBRA_GL environment variable's

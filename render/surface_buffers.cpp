@@ -1,6 +1,7 @@
 #include "render/surface_buffers.hpp"
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -14,6 +15,36 @@
 #include "render/gl.hpp"
 
 namespace umbra {
+namespace {
+
+// A mesh triangle's three corners' values (colours, texture coordinates),
+// written at its place `at` among the buffer's triangles; nothing for a mesh
+// without them, whose triangles keep the buffer's filling.
+template <typename Corner>
+void put_corners(std::vector<float>& buffer, size_t at, const std::vector<std::array<Corner, 3>>& corners, size_t t) {
+  if (corners.empty()) return;
+  constexpr size_t kFloats = sizeof(Corner) / sizeof(float);
+  float* out = buffer.data() + at * 3 * kFloats;
+  for (const Corner& c : corners[t])
+    for (size_t k = 0; k < kFloats; ++k) *out++ = c[glm::length_t(k)];
+}
+
+// Vertex attribute `index`, `components` floats a vertex: from `values` in a
+// buffer of its own (`vbo`), or where there are none, `constant` in every
+// component for every vertex, with no memory spent.
+void per_vertex_attribute(GLuint index, int components, const std::vector<float>& values, float constant, unsigned& vbo) {
+  if (values.empty()) {
+    glVertexAttrib4f(index, constant, constant, constant, 1.0f);
+    return;
+  }
+  glGenBuffers(1, &vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(values.size() * sizeof(float)), values.data(), GL_STATIC_DRAW);
+  glVertexAttribPointer(index, components, GL_FLOAT, GL_FALSE, GLsizei(components * sizeof(float)), nullptr);
+  glEnableVertexAttribArray(index);
+}
+
+}  // namespace
 
 SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
   // The scene's triangles and every mesh's, grouped by material and by
@@ -74,20 +105,10 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
   // constant white, and no memory is spent.
   const bool coloured = std::any_of(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return !m.triangle_colors.empty(); });
   std::vector<float> colours(coloured ? triangle_count * 9 : 0, 1.0f);
-  const auto put_colours = [&colours](size_t at, const Mesh& mesh, size_t t) {
-    if (mesh.triangle_colors.empty()) return;
-    float* out = colours.data() + at * 9;
-    for (const glm::vec3& c : mesh.triangle_colors[t]) *out++ = c.r, *out++ = c.g, *out++ = c.b;
-  };
   // Texture coordinates likewise, when some mesh has them; (0, 0) elsewhere,
   // where no texture is sampled.
   const bool textured = std::any_of(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return !m.triangle_uvs.empty(); });
   std::vector<float> uvs(textured ? triangle_count * 6 : 0, 0.0f);
-  const auto put_uvs = [&uvs](size_t at, const Mesh& mesh, size_t t) {
-    if (mesh.triangle_uvs.empty()) return;
-    float* out = uvs.data() + at * 6;
-    for (const glm::vec2& uv : mesh.triangle_uvs[t]) *out++ = uv.x, *out++ = uv.y;
-  };
   size_t placed = 0;  // triangles laid out so far
   for (const Run& run : runs) {
     const bool closed = run.closed_mesh != nullptr;
@@ -114,8 +135,8 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
           const size_t k = run.subset ? (*run.subset)[i] : i;
           const auto& t = triangles[k];
           put(first + i, p[t[0]], p[t[1]], p[t[2]]);
-          if (coloured) put_colours(first + i, *run.mesh, k);
-          if (textured) put_uvs(first + i, *run.mesh, k);
+          if (coloured) put_corners(colours, first + i, run.mesh->triangle_colors, k);
+          if (textured) put_corners(uvs, first + i, run.mesh->triangle_uvs, k);
         }
       });
     });
@@ -128,24 +149,8 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
   glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), reinterpret_cast<void*>(3 * sizeof(float)));
   glEnableVertexAttribArray(0);
   glEnableVertexAttribArray(1);
-  if (coloured) {
-    glGenBuffers(1, &color_vbo_);
-    glBindBuffer(GL_ARRAY_BUFFER, color_vbo_);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(colours.size() * sizeof(float)), colours.data(), GL_STATIC_DRAW);
-    glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
-    glEnableVertexAttribArray(2);
-  } else {
-    glVertexAttrib3f(2, 1.0f, 1.0f, 1.0f);
-  }
-  if (textured) {
-    glGenBuffers(1, &uv_vbo_);
-    glBindBuffer(GL_ARRAY_BUFFER, uv_vbo_);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(uvs.size() * sizeof(float)), uvs.data(), GL_STATIC_DRAW);
-    glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
-    glEnableVertexAttribArray(3);
-  } else {
-    glVertexAttrib2f(3, 0.0f, 0.0f);
-  }
+  per_vertex_attribute(2, 3, colours, 1.0f, color_vbo_);
+  per_vertex_attribute(3, 2, uvs, 0.0f, uv_vbo_);
   upload_textures(scene);
 
   const float corners[] = {-1, -1, -1, 1, -1, -1, 1, 1, -1, -1, 1, -1, -1, -1, 1, 1, -1, 1, 1, 1, 1, -1, 1, 1};
