@@ -17,7 +17,6 @@
 #include "render/shadow_renderer.hpp"
 #include "silhouette/light_facing.hpp"
 #include "silhouette/face_plane.hpp"
-#include "silhouette/layer_bound.hpp"
 #include "silhouette/mesh_adjacency.hpp"
 #include "silhouette/mesh_caster.hpp"
 #include "silhouette/mesh_volume.hpp"
@@ -189,36 +188,13 @@ void BM_PerTriangleVolumes(benchmark::State& state) {
 }
 BENCHMARK(BM_PerTriangleVolumes)->Args({250, 200})->Unit(benchmark::kMillisecond);
 
-// The layer bound of the torus for one light (what a frame pays when its
-// light has moved; a frame whose light has not reuses it).
-void BM_LayerBound(benchmark::State& state) {
+// The torus of `rings` x `sides` (over a floor, lit from above) as a scene,
+// with one face removed when `open`.
+Scene torus_over_a_floor(int rings, int sides, bool open) {
   std::vector<glm::dvec3> positions;
   std::vector<std::array<uint32_t, 3>> triangles;
-  torus(int(state.range(0)), int(state.range(1)), positions, triangles);
-  double angle = 0.0;
-  int bound = 0;
-  for (auto _ : state) {
-    angle += 0.01;
-    bound = layer_bound(positions, triangles, {3.0 * std::cos(angle), 3.0 * std::sin(angle), 2.0}, 255);
-    benchmark::DoNotOptimize(bound);
-  }
-  state.counters["bound"] = bound;
-}
-BENCHMARK(BM_LayerBound)->Args({250, 200})->Args({800, 640})->Unit(benchmark::kMillisecond);
-
-// A frame of `umbra view` on the headless GL that auto picks (UMBRA_GL
-// chooses another): 400 x 400, a torus over a floor, its shadow from
-// per-triangle volumes (argument 2 = 0), from the silhouette (1), or, with
-// one face removed, by edge multiplicity (2). With argument 3 = 1 the light
-// orbits, so the plan is updated before each frame is drawn and finished; with
-// 0 it stands still, as in the viewer paused, and only the drawing is timed.
-void BM_RenderFrame(benchmark::State& state) {
-  const bool per_triangle = state.range(2) == 0;
-  const bool light_moves = state.range(3) == 1;
-  std::vector<glm::dvec3> positions;
-  std::vector<std::array<uint32_t, 3>> triangles;
-  torus(int(state.range(0)), int(state.range(1)), positions, triangles);
-  if (state.range(2) == 2) triangles.pop_back();
+  torus(rings, sides, positions, triangles);
+  if (open) triangles.pop_back();
   Scene scene = parse_scene_text("light 0.5 0.9 1.8\ntriangle -1 -1 -1 1 -1 -1 1 1 -1\ntriangle -1 -1 -1 1 1 -1 -1 1 -1\n",
                                  "bench.scene");
   PolygonSoup soup;
@@ -236,6 +212,37 @@ void BM_RenderFrame(benchmark::State& state) {
   mesh.edges = build_edge_table(mesh.triangles, mesh.positions.size());
   mesh.components = find_closed_components(mesh.triangles, mesh.edges, mesh.positions.size());
   scene.meshes.push_back(std::move(mesh));
+  return scene;
+}
+
+// All the CPU work a frame does when its light has moved: the plan's update
+// (culling, the count's choice, classifying the faces and extracting the
+// silhouette volume's indices), without the GL. Argument 3 = 1 opens the mesh.
+void BM_LightMovePlan(benchmark::State& state) {
+  Scene scene = torus_over_a_floor(int(state.range(0)), int(state.range(1)), state.range(2) == 1);
+  const std::vector<MeshCaster> casters = prepare_mesh_casters(scene);
+  RenderSettings settings;
+  settings.width = settings.height = 400;
+  RenderPlan plan = make_render_plan(scene, casters, settings);
+  for (auto _ : state) {
+    rotate_lights_about_z(scene, 1.0);
+    update_render_plan(scene, casters, plan);
+    benchmark::DoNotOptimize(plan.lights[0].side_quads);
+  }
+  state.counters["side_quads"] = plan.lights[0].side_quads;
+}
+BENCHMARK(BM_LightMovePlan)->Args({250, 200, 0})->Args({800, 640, 0})->Args({800, 640, 1})->Unit(benchmark::kMillisecond);
+
+// A frame of `umbra view` on the headless GL that auto picks (UMBRA_GL
+// chooses another): 400 x 400, a torus over a floor, its shadow from
+// per-triangle volumes (argument 2 = 0), from the silhouette (1), or, with
+// one face removed, by edge multiplicity (2). With argument 3 = 1 the light
+// orbits, so the plan is updated before each frame is drawn and finished; with
+// 0 it stands still, as in the viewer paused, and only the drawing is timed.
+void BM_RenderFrame(benchmark::State& state) {
+  const bool per_triangle = state.range(2) == 0;
+  const bool light_moves = state.range(3) == 1;
+  Scene scene = torus_over_a_floor(int(state.range(0)), int(state.range(1)), state.range(2) == 2);
   const std::vector<MeshCaster> casters = prepare_mesh_casters(scene);
   RenderSettings settings;
   settings.width = settings.height = 400;
@@ -256,6 +263,7 @@ void BM_RenderFrame(benchmark::State& state) {
 }
 BENCHMARK(BM_RenderFrame)
     ->Args({250, 200, 1, 1})
+    ->Args({250, 200, 1, 0})
     ->Args({250, 200, 2, 1})
     ->Args({250, 200, 0, 1})
     ->Args({800, 640, 1, 1})  // 1.02M triangles: the light orbiting, and still

@@ -31,12 +31,23 @@ void baseline_state() {
   glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
+void add_light_once_state() {
+  glClearStencil(0);
+  glClear(GL_STENCIL_BUFFER_BIT);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_EQUAL, 0, 0xFF);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+}
+
 FrameDrawing::FrameDrawing(const Scene& scene, const RenderPlan& plan) : scene_(scene), plan_(plan) {
   triangle_program_ = std::make_unique<ShaderProgram>("triangle", shaders::kTriangleVertex,
                                                       fragment_source(shaders::kTriangleFragmentMain));
   sphere_program_ = std::make_unique<ShaderProgram>("sphere", shaders::kSphereVertex,
                                                     fragment_source(shaders::kSphereFragmentMain));
   volume_program_ = std::make_unique<ShaderProgram>("volume", shaders::kVolumeVertex, shaders::kVolumeFragment);
+  count_program_ = std::make_unique<ShaderProgram>("volume count", shaders::kVolumeVertex, shaders::kVolumeCountFragment);
   planar_program_ = std::make_unique<ShaderProgram>("planar", shaders::kPlanarVertex, shaders::kVolumeFragment);
   surfaces_ = std::make_unique<SurfaceBuffers>(scene);
   volumes_ = std::make_unique<VolumeBuffer>();
@@ -49,6 +60,7 @@ FrameDrawing::FrameDrawing(const Scene& scene, const RenderPlan& plan) : scene_(
     p->set("ambient_sum", f(ambient_sum));
     p->set("shadow_map", 1);  // texture unit 1
     p->set("material_texture", 0);  // texture unit 0 (triangles only)
+    p->set("volume_count", 2);  // texture unit 2
   }
   const SceneBounds bounds = surface_bounds(scene);
   if (!bounds.empty()) scene_center_ = 0.5 * (bounds.lo + bounds.hi), scene_radius_ = 0.5 * glm::length(bounds.hi - bounds.lo);
@@ -62,7 +74,7 @@ void FrameDrawing::apply_view() {
                                                        plan_.near_plane) *
                                   view_matrix(plan_.camera));
   view_from(plan_.camera.eye, view_projection);
-  for (ShaderProgram* p : {volume_program_.get(), planar_program_.get()}) {
+  for (ShaderProgram* p : {volume_program_.get(), count_program_.get(), planar_program_.get()}) {
     p->use();
     p->set("view_projection", view_projection);
   }
@@ -79,7 +91,7 @@ void FrameDrawing::view_from(const glm::dvec3& viewpoint, const glm::mat4& view_
   }
 }
 
-void FrameDrawing::draw_surfaces(int pass, size_t light, bool shadow_map_on) {
+void FrameDrawing::draw_surfaces(int pass, size_t light, shaders::ShadowTest test) {
   const Light& l = scene_.lights[light];
   const auto set_material = [&](ShaderProgram& p, int index) {
     const Material& m = scene_.materials[size_t(index)];
@@ -93,7 +105,7 @@ void FrameDrawing::draw_surfaces(int pass, size_t light, bool shadow_map_on) {
     p->set("pass", pass);
     p->set("light_position", f(l.position));
     p->set("light_color", f(l.color));
-    p->set("shadow_map_on", int(shadow_map_on));
+    p->set("shadow_test", int(test));
     p->set("specular_used", int(plan_.specular_used));
     p->set("shadow_map_texel", 2.0f / float(plan_.settings.shadow_map_size));
   }
@@ -116,31 +128,28 @@ void FrameDrawing::draw_surfaces(int pass, size_t light, bool shadow_map_on) {
 }
 
 void FrameDrawing::draw_volumes(size_t light, const glm::vec4* tint) {
-  const LightPlan& lp = plan_.lights[light];
   volume_program_->use();
-  if (tint) volume_program_->set("tint", *tint);
-  volume_program_->set("extrude_from_light", 0);
+  volume_program_->set("tint", *tint);
+  draw_light_volumes(light, *volume_program_);
+}
+
+void FrameDrawing::count_volumes(size_t light, float front_adds) {
+  count_program_->use();
+  count_program_->set("front_adds", front_adds);
+  draw_light_volumes(light, *count_program_);
+}
+
+void FrameDrawing::draw_light_volumes(size_t light, ShaderProgram& program) {
+  const LightPlan& lp = plan_.lights[light];
+  program.set("extrude_from_light", 0);
   volumes_->upload(lp.all_volumes);
   volumes_->draw();
-  volume_program_->set("extrude_from_light", 1);
-  volume_program_->set("light_position", f(scene_.lights[light].position));
+  program.set("extrude_from_light", 1);
+  program.set("light_position", f(scene_.lights[light].position));
   for (const MeshVolumePlan& m : lp.mesh_volumes) draw_mesh_volume(m);
 }
 
-void FrameDrawing::upload_volumes(size_t light) { volumes_->upload(plan_.lights[light].all_volumes); }
-
 void FrameDrawing::upload_projected_casters(size_t light) { volumes_->upload(plan_.lights[light].planar.casters); }
-
-void FrameDrawing::draw_stencil_batch(size_t light, size_t batch) {
-  const LightPlan& lp = plan_.lights[light];
-  const StencilBatch& b = lp.stencil_batches[batch];
-  volume_program_->use();
-  volume_program_->set("extrude_from_light", 0);
-  volumes_->draw_triangles(b.first_triangle, b.end_triangle);
-  volume_program_->set("extrude_from_light", 1);
-  volume_program_->set("light_position", f(scene_.lights[light].position));
-  for (const uint32_t m : b.mesh_volumes) draw_mesh_volume(lp.mesh_volumes[m]);
-}
 
 // A mesh's volume; for z-pass the plan made it without caps.
 void FrameDrawing::draw_mesh_volume(const MeshVolumePlan& m) {

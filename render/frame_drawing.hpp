@@ -13,6 +13,7 @@
 #include "scene/scene.hpp"
 #include "render/frame_target.hpp"
 #include "render/render_plan.hpp"
+#include "render/shaders.hpp"
 
 namespace umbra {
 
@@ -22,6 +23,11 @@ class VolumeBuffer;
 
 // The GL state every pass starts from and returns to.
 void baseline_state();
+// A light's direct pass adds its term by blending, and each pixel gets it
+// once: a lit fragment raises the (cleared) stencil, so that a coplanar face
+// drawn over it later (an export's overlapping faces) adds the light a
+// second time nowhere.
+void add_light_once_state();
 
 class FrameDrawing {
  public:
@@ -45,18 +51,16 @@ class FrameDrawing {
   // Where apply_view draws: the frame, kept in floating point.
   const FrameTarget& target() const { return target_; }
   // Every surface with the shading pass `pass` (shaders.hpp) for light
-  // `light`; `shadow_map_on` makes the shader test the bound shadow map.
-  void draw_surfaces(int pass, size_t light, bool shadow_map_on);
+  // `light`; its lit passes test for shadow as `test` says.
+  void draw_surfaces(int pass, size_t light, shaders::ShadowTest test);
   // The surfaces from another viewpoint: a shadow map's face.
   void view_from(const glm::dvec3& viewpoint, const glm::mat4& view_projection);
   // Light `light`'s volumes with the volume program and the current state;
   // `tint`, when given, colours them (--show-volumes).
-  void draw_volumes(size_t light, const glm::vec4* tint = nullptr);
-  // Sends light `light`'s sphere and triangle volumes to the GL, for
-  // draw_stencil_batch to draw ranges of.
-  void upload_volumes(size_t light);
-  // One stencil batch of light `light`: a range of its uploaded volumes and its mesh volumes.
-  void draw_stencil_batch(size_t light, size_t batch);
+  void draw_volumes(size_t light, const glm::vec4* tint);
+  // Light `light`'s volumes into the target's count, each front face adding
+  // `front_adds` and each back face its opposite, with the current state.
+  void count_volumes(size_t light, float front_adds);
   // The visible pixels of the triangles in `plane`, with the current stencil operation.
   void mark_receiver(const glm::dvec4& plane);
   // Sends light `light`'s casters for the planar method to the GL, for
@@ -70,13 +74,15 @@ class FrameDrawing {
   double scene_radius() const { return scene_radius_; }
 
  private:
+  void draw_light_volumes(size_t light, ShaderProgram& program);
   void draw_mesh_volume(const MeshVolumePlan& m);
 
   const Scene& scene_;
   const RenderPlan& plan_;
   FrameTarget target_;
   int samples_per_side_ = 1;
-  std::unique_ptr<ShaderProgram> triangle_program_, sphere_program_, volume_program_, planar_program_;
+  std::unique_ptr<ShaderProgram> triangle_program_, sphere_program_, volume_program_, count_program_,
+      planar_program_;
   std::unique_ptr<SurfaceBuffers> surfaces_;
   std::unique_ptr<VolumeBuffer> volumes_;
   std::vector<std::unique_ptr<VolumeBuffer>> mesh_volumes_;  // per scene mesh; made when first drawn

@@ -16,7 +16,9 @@ void FrameTarget::release() {
   if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
   if (colour_) glDeleteRenderbuffers(1, &colour_);
   if (depth_stencil_) glDeleteRenderbuffers(1, &depth_stencil_);
-  framebuffer_ = colour_ = depth_stencil_ = 0;
+  if (count_framebuffer_) glDeleteFramebuffers(1, &count_framebuffer_);
+  if (count_) glDeleteTextures(1, &count_);
+  framebuffer_ = colour_ = depth_stencil_ = count_framebuffer_ = count_ = 0;
   width_ = height_ = 0;
 }
 
@@ -37,15 +39,33 @@ void FrameTarget::bind(int width, int height) {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_stencil_);
-  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE) {
-    release();
-    throw std::runtime_error("the frame's framebuffer (RGBA32F, 24-bit depth, 8-bit stencil) is incomplete (status " +
-                             std::to_string(status) + ")");
-  }
+  require_complete("the frame's framebuffer (RGBA32F, 24-bit depth, 8-bit stencil)");
+  glGenTextures(1, &count_);
+  glBindTexture(GL_TEXTURE_2D, count_);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, width, height, 0, GL_RED, GL_FLOAT, nullptr);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glGenFramebuffers(1, &count_framebuffer_);
+  glBindFramebuffer(GL_FRAMEBUFFER, count_framebuffer_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, count_, 0);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_stencil_);
+  require_complete("the shadow volumes' count framebuffer (R32F, 24-bit depth, 8-bit stencil)");
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   width_ = width;
   height_ = height;
 }
+
+void FrameTarget::require_complete(const char* what) {
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  if (status == GL_FRAMEBUFFER_COMPLETE) return;
+  release();
+  throw std::runtime_error(std::string(what) + " is incomplete (status " + std::to_string(status) + ")");
+}
+
+void FrameTarget::bind_count() const { glBindFramebuffer(GL_FRAMEBUFFER, count_framebuffer_); }
+
+void FrameTarget::bind_colour() const { glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_); }
 
 void FrameTarget::show(int width, int height) const {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);

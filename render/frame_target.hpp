@@ -7,6 +7,14 @@
 // llvmpipe's image of a bundled scene then equals the ray-cast reference's
 // byte for byte away from edges, but for a few channels one level off.
 // (RGBA16F still left a level on 2% of channels.)
+//
+// Beside it, a second framebuffer for the shadow volumes' count: one 32-bit
+// float channel (R32F) over the same depth and stencil, summed by additive
+// blending. A float holds every whole number to 2^24 exactly, where the
+// 8-bit stencil counts modulo 256 (Everitt and Kilgard 2002), so no count
+// wraps and no bound on a mesh's layers is needed; Assarsson and
+// Akenine-Moeller (2003) sum their shadow volumes' light in a 16-bit colour
+// buffer for the same reason.
 
 #include <cstdint>
 #include <vector>
@@ -23,6 +31,11 @@ class FrameTarget {
   // Binds the target for drawing, made (or remade) at width x height.
   // Throws std::runtime_error when the GL cannot make it.
   void bind(int width, int height);
+  // After bind: draws into the count instead of the colour, or back again.
+  void bind_count() const;
+  void bind_colour() const;
+  // The count as a texture, for the lit passes to read (texelFetch).
+  unsigned count_texture() const { return count_; }
   // Copies the colour to the default framebuffer (the window) at width x
   // height, converted to its format by the GL (and scaled, filtered, when
   // supersampled), and leaves the target bound.
@@ -34,8 +47,11 @@ class FrameTarget {
 
  private:
   void release();
+  // Throws, naming `what`, unless the bound framebuffer is complete.
+  void require_complete(const char* what);
   int width_ = 0, height_ = 0;
   unsigned framebuffer_ = 0, colour_ = 0, depth_stencil_ = 0;
+  unsigned count_framebuffer_ = 0, count_ = 0;
 };
 
 }  // namespace umbra

@@ -17,20 +17,20 @@ struct MethodRow {
   const char* help;
 };
 constexpr MethodRow kMethods[] = {
-    {RenderMethod::kAuto, "auto", "two-sided stencil with wrapping, z-pass or z-fail per light", ShadowPass::kStencilVolumes, true,
+    {RenderMethod::kAuto, "auto", "shadow volumes counted in a float buffer, z-pass or z-fail per light", ShadowPass::kCountedVolumes, true,
      BenchSweep::kSphereSegments,
      "shadow volumes; per light z-pass without caps where the near plane is outside every volume, capped z-fail "
      "elsewhere; casters whose volumes cannot reach the view are left out"},
-    {RenderMethod::kZFail, "zfail", "two-sided stencil with wrapping, capped z-fail for every light", ShadowPass::kStencilVolumes, true,
+    {RenderMethod::kZFail, "zfail", "shadow volumes counted in a float buffer, capped z-fail for every light", ShadowPass::kCountedVolumes, true,
      BenchSweep::kSphereSegments, "capped z-fail for every light (Everitt and Kilgard 2002)"},
-    {RenderMethod::kZPass, "zpass", "two-sided stencil with wrapping, uncapped z-pass for every light", ShadowPass::kStencilVolumes, true,
+    {RenderMethod::kZPass, "zpass", "shadow volumes counted in a float buffer, uncapped z-pass for every light", ShadowPass::kCountedVolumes, true,
      BenchSweep::kSphereSegments, "uncapped z-pass for every light (Heidmann 1991); wrong where the near plane is in a volume"},
-    {RenderMethod::kTriangles, "triangles", "two-sided stencil with wrapping, capped z-fail, a volume per mesh triangle", ShadowPass::kStencilVolumes,
+    {RenderMethod::kTriangles, "triangles", "shadow volumes counted in a float buffer, capped z-fail, a volume per mesh triangle", ShadowPass::kCountedVolumes,
      true, BenchSweep::kSegmentsWithMeshes,
      "z-fail, every mesh cast per triangle (the slow reference) rather than from its silhouette or by edge multiplicity"},
-    {RenderMethod::kShadowMap, "shadowmap", "no stencil: a cube map of distances from each light", ShadowPass::kShadowMap, true,
+    {RenderMethod::kShadowMap, "shadowmap", "no volumes: a cube map of distances from each light", ShadowPass::kShadowMap, true,
      BenchSweep::kMapSizes, "a cube shadow map per light (Williams 1978), --map-size texels a side; no volumes"},
-    {RenderMethod::kPlanar, "planar", "no stencil: casters projected onto the triangles' planes", ShadowPass::kPlanar, true,
+    {RenderMethod::kPlanar, "planar", "no volumes: casters projected onto the triangles' planes", ShadowPass::kPlanar, true,
      BenchSweep::kSphereSegments,
      "every caster projected onto the planes of the scene's triangles (Blinn 1988); spheres and meshes receive no "
      "shadow, which --explain says"},
@@ -54,7 +54,7 @@ ShadowPass method_pass(RenderMethod method) { return row_of(method).pass; }
 
 BenchSweep method_bench_sweep(RenderMethod method) { return row_of(method).bench; }
 
-bool counts_volumes(RenderMethod method) { return method_pass(method) == ShadowPass::kStencilVolumes; }
+bool counts_volumes(RenderMethod method) { return method_pass(method) == ShadowPass::kCountedVolumes; }
 
 bool is_interactive(RenderMethod method) { return row_of(method).interactive; }
 

@@ -21,7 +21,7 @@ enum class RenderMethod {
 // The pass that draws a method's shadows: one ShadowTechnique each
 // (shadow_technique.hpp), but for the CPU reference, which draws no GL frame.
 enum class ShadowPass {
-  kStencilVolumes,  // auto, zfail, zpass, triangles: the plan says how each light counts
+  kCountedVolumes,  // auto, zfail, zpass, triangles: the plan says how each light counts
   kShadowMap,
   kPlanar,
   kRayCast,
@@ -35,9 +35,9 @@ enum class BenchSweep { kSphereSegments, kSegmentsWithMeshes, kMapSizes, kRefere
 const char* method_name(RenderMethod method);
 BenchSweep method_bench_sweep(RenderMethod method);
 ShadowPass method_pass(RenderMethod method);
-// How it shadows, in a phrase: "no stencil: a cube map of distances from each light".
+// How it shadows, in a phrase: "no volumes: a cube map of distances from each light".
 const char* method_technique(RenderMethod method);
-// It counts shadow volumes in the stencil (z-pass or z-fail): its pass is kStencilVolumes.
+// It counts shadow volumes (z-pass or z-fail): its pass is kCountedVolumes.
 bool counts_volumes(RenderMethod method);
 // umbra view draws it; the next such method in the table's order, after the last the first.
 bool is_interactive(RenderMethod method);

@@ -5,13 +5,10 @@
 #include <cstdint>
 #include <utility>
 
-#include <tbb/parallel_invoke.h>
-
 #include "mesh/predicates/orientation.hpp"
 #include "scene/camera_transform.hpp"
 #include "render/planar_receivers.hpp"
 #include "render/view_culling.hpp"
-#include "silhouette/layer_bound.hpp"
 #include "silhouette/sphere_volume.hpp"
 #include "silhouette/triangle_volume.hpp"
 
@@ -41,31 +38,11 @@ CasterEntry triangle_entry(const Triangle& t, const Light& light) {
   return e;
 }
 
-// What of a mesh's plan depends on the light's position alone: how many of
-// its layers may lie over a point, and when more than a stencil count's 255,
-// runs of its faces whose layers fit, each with its own volume's adjacency.
-RenderPlan::LayerBounds layer_bounds_of(const Mesh& mesh, const glm::dvec3& light) {
-  RenderPlan::LayerBounds bounds{light, 0, {}, {}};
-  if (!mesh.triangles.empty()) bounds.bound = layer_bound(mesh.positions, mesh.triangles, light, kMaxStencilCount);
-  if (bounds.bound > kMaxStencilCount) {
-    bounds.runs = layer_bounded_runs(mesh.positions, mesh.triangles, light, kMaxStencilCount);
-    for (const FaceRun& run : bounds.runs) {
-      std::vector<uint8_t> in_run(mesh.triangles.size(), 0);
-      std::fill(in_run.begin() + run.first, in_run.begin() + run.end, uint8_t(1));
-      bounds.run_volumes.push_back(build_multiplicity_adjacency(mesh.positions, mesh.triangles, mesh.edges, in_run));
-    }
-  }
-  return bounds;
-}
-
 // A mesh's entry. Its volume goes to light_plan.mesh_volumes[slot], whose
-// index buffer is kept from the previous frame when there is one; when more
-// than a stencil count's 255 of its layers may lie over a point, one
-// edge-multiplicity volume per run of its faces whose layers fit (each then
-// counted on its own); with --method triangles, every triangle's own volume.
-// `cached` holds what depends on the light's position alone.
+// index buffer is kept from the previous frame when there is one; with
+// --method triangles, every triangle's own volume instead.
 CasterEntry mesh_entry(const Scene& scene, size_t index, const MeshCaster& caster, const Light& light, LightPlan& light_plan,
-                       size_t& slot, MeshCasterScratch& scratch, bool per_triangle_asked, RenderPlan::LayerBounds& cached) {
+                       size_t& slot, MeshCasterScratch& scratch, bool per_triangle_asked) {
   const Mesh& mesh = scene.meshes[index];
   CasterEntry e{"mesh", mesh.where, "", {}};
   const std::string triangles = std::to_string(mesh.triangles.size()) + " triangles";
@@ -74,74 +51,20 @@ CasterEntry mesh_entry(const Scene& scene, size_t index, const MeshCaster& caste
     e.volume_phrase = "per-triangle volumes, the slow reference (--method triangles; " + triangles + ")";
     return e;
   }
-  if (cached.light != light.position) cached = layer_bounds_of(mesh, light.position);
-  const auto next_volume = [&]() -> MeshVolumePlan& {
-    if (slot == light_plan.mesh_volumes.size()) light_plan.mesh_volumes.emplace_back();
-    MeshVolumePlan& volume = light_plan.mesh_volumes[slot++];
-    volume.mesh = index;
-    return volume;
-  };
-  e.mesh_volume = int(slot);
-  if (cached.runs.empty()) {
-    MeshVolumePlan& volume = next_volume();
-    volume.max_count = cached.bound;
-    mesh_caster_volume_indices(caster, light.position, scratch, volume.volume, !light_plan.z_pass);
-    e.volume_phrase = caster.phrase() + " (" + triangles + ")";
-  } else {
-    const uint32_t far = uint32_t(mesh.positions.size());
-    for (size_t k = 0; k < cached.runs.size(); ++k) {
-      MeshVolumePlan& volume = next_volume();
-      volume.max_count = cached.runs[k].bound;
-      volume.volume.clear();
-      classify_light_sides(mesh.positions, cached.run_volumes[k], light.position, scratch.side);
-      if (!light_plan.z_pass) append_multiplicity_caps(cached.run_volumes[k], scratch.side, far, volume.volume);
-      append_multiplicity_quads(cached.run_volumes[k], scratch.side, far, volume.volume);
-    }
-    e.volume_phrase = caster.shape + ", but more than " + std::to_string(kMaxStencilCount) + " of its layers may lie over a point: " +
-               std::to_string(cached.runs.size()) + " runs of its faces, each an edge-multiplicity volume counted on its own (" +
-               triangles + ")";
-  }
-  e.mesh_volume_count = int(slot) - e.mesh_volume;
+  if (slot == light_plan.mesh_volumes.size()) light_plan.mesh_volumes.emplace_back();
+  MeshVolumePlan& volume = light_plan.mesh_volumes[slot];
+  volume.mesh = index;
+  e.mesh_volume = int(slot++);
+  mesh_caster_volume_indices(caster, light.position, scratch, volume.volume, !light_plan.z_pass);
+  e.volume_phrase = caster.phrase() + " (" + triangles + ")";
   return e;
 }
 
-// Appends each caster's volume to lp.all_volumes, in file order, and splits
-// what is counted into batches whose counts cannot sum past 255: a sphere's
-// or triangle's volume (each part of all_volumes) adds at most 1, a mesh
-// volume at most its layer bound.
-void batch_volumes(LightPlan& lp) {
-  lp.stencil_batches.assign(1, StencilBatch{});
-  const auto room_for = [&lp](int count) {
-    StencilBatch& current = lp.stencil_batches.back();
-    if (current.max_count + count <= kMaxStencilCount || current.max_count == 0) return;
-    const uint32_t end = uint32_t(lp.all_volumes.part_ends.empty() ? 0 : lp.all_volumes.part_ends.back());
-    current.end_triangle = end;
-    lp.stencil_batches.push_back({end, end, {}, 0});
-  };
-  for (const CasterEntry& e : lp.casters) {
-    if (e.mesh_volume >= 0) {
-      for (int v = e.mesh_volume; v < e.mesh_volume + e.mesh_volume_count; ++v) {
-        const int count = lp.mesh_volumes[size_t(v)].max_count;
-        room_for(count);
-        lp.stencil_batches.back().mesh_volumes.push_back(uint32_t(v));
-        lp.stencil_batches.back().max_count += count;
-      }
-      continue;
-    }
-    ShadowVolume& all = lp.all_volumes;
-    const size_t first_part = all.part_ends.size();
-    append_volume(all, e.volume, !lp.z_pass);
-    // Each new part adds at most 1; a part that does not fit moves, with the
-    // rest, to a new batch that starts where the last part that fits ends.
-    const std::vector<uint32_t> ends(all.part_ends.begin() + std::ptrdiff_t(first_part), all.part_ends.end());
-    all.part_ends.resize(first_part);
-    for (const uint32_t end : ends) {
-      room_for(1);
-      all.part_ends.push_back(end);
-      lp.stencil_batches.back().max_count += 1;
-    }
-  }
-  lp.stencil_batches.back().end_triangle = uint32_t(lp.all_volumes.triangles.size());
+// Every sphere's and triangle's volume in lp.all_volumes, in file order: one
+// draw call (the meshes' volumes are drawn from their own buffers).
+void gather_volumes(LightPlan& lp) {
+  for (const CasterEntry& e : lp.casters)
+    if (e.mesh_volume < 0) append_volume(lp.all_volumes, e.volume, !lp.z_pass);
 }
 
 CasterEntry culled_entry(const char* kind, const FileLoc& where) {
@@ -204,9 +127,7 @@ void choose_count(RenderMethod method, const LightCulling& c, LightPlan& lp) {
 void clear_volumes(LightPlan& lp) {
   lp.all_volumes.vertices.clear();
   lp.all_volumes.triangles.clear();
-  lp.all_volumes.part_ends.clear();
   lp.all_volumes.side_quads = lp.all_volumes.light_cap_triangles = lp.all_volumes.dark_cap_triangles = 0;
-  lp.stencil_batches.assign(1, StencilBatch{});
   lp.side_quads = lp.light_cap_triangles = lp.dark_cap_triangles = 0;
 }
 
@@ -215,7 +136,6 @@ void plan_planar_light(const Scene& scene, const std::vector<ReceiverPlane>& rec
                        LightPlan& lp) {
   clear_volumes(lp);
   lp.mesh_volumes.clear();
-  lp.stencil_batches.clear();
   lp.z_pass = false;
   lp.culled_casters = 0;
   std::string lines;
@@ -228,7 +148,7 @@ void plan_planar_light(const Scene& scene, const std::vector<ReceiverPlane>& rec
     ++planes;
     for (const int line : r.lines) lines += (lines.empty() ? "" : ", ") + std::to_string(line);
   }
-  lp.count_reason = "no stencil count: every caster projected onto " + std::to_string(planes) +
+  lp.count_reason = "no volume count: every caster projected onto " + std::to_string(planes) +
                     " receiver plane(s) (triangles at lines " + (lines.empty() ? std::string("none") : lines) +
                     "); spheres and meshes receive no shadow";
   const auto add = [&](const char* kind, const FileLoc& where, const std::string& method, const ShadowVolume& v) {
@@ -240,7 +160,6 @@ void plan_planar_light(const Scene& scene, const std::vector<ReceiverPlane>& rec
     for (const auto& t : v.triangles)
       if (index[t[0]] != UINT32_MAX && index[t[1]] != UINT32_MAX && index[t[2]] != UINT32_MAX)
         finite.triangles.push_back({index[t[0]], index[t[1]], index[t[2]]});
-    finite.part_ends = {uint32_t(finite.triangles.size())};
     append_volume(lp.planar.casters, finite);
   };
   for (const Sphere& s : scene.spheres)
@@ -288,28 +207,9 @@ std::vector<MeshCaster> prepare_mesh_casters(const Scene& scene) {
 }
 
 RenderPlan make_render_plan(const Scene& scene, const RenderSettings& settings) {
-  // The meshes' casters and, for the methods that count volumes, the layer
-  // bounds of every mesh each light's plan will cast need only the scene and
-  // the view, not each other: both are made at once, on separate cores.
   RenderPlan plan;
   plan.settings = settings;
-  place_camera(scene, plan);
-  std::vector<MeshCaster> casters;
-  const RenderMethod m = settings.method;
-  // Triangles casts each mesh triangle's own volume: no mesh's layers to bound.
-  const bool bounds_mesh_layers = counts_volumes(m) && m != RenderMethod::kTriangles;
-  tbb::parallel_invoke([&] { casters = prepare_mesh_casters(scene); },
-                       [&] {
-                         if (!bounds_mesh_layers) return;
-                         plan.layer_bounds.assign(scene.lights.size(), std::vector<RenderPlan::LayerBounds>(scene.meshes.size()));
-                         for (size_t i = 0; i < scene.lights.size(); ++i) {
-                           const LightCulling culling = cull_for_light(scene, plan, scene.lights[i].position);
-                           for (size_t k = 0; k < scene.meshes.size(); ++k)
-                             if (!culling.meshes[k])  // a culled mesh casts nothing: its bound is never read
-                               plan.layer_bounds[i][k] = layer_bounds_of(scene.meshes[k], scene.lights[i].position);
-                         }
-                       });
-  update_render_plan(scene, casters, plan);
+  update_render_plan(scene, prepare_mesh_casters(scene), plan);
   return plan;
 }
 
@@ -349,7 +249,7 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
       lp.mesh_volumes.clear();
       lp.z_pass = false;
       lp.culled_casters = 0;
-      lp.count_reason = "no stencil: a cube shadow map of 6 x " + std::to_string(plan.settings.shadow_map_size) + "^2 " +
+      lp.count_reason = "no volume count: a cube shadow map of 6 x " + std::to_string(plan.settings.shadow_map_size) + "^2 " +
                         "distances (Williams 1978), biased by two texels";
       continue;
     }
@@ -371,17 +271,14 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
       const Triangle& t = scene.triangles[k];
       lp.casters.push_back(culling.triangles[k] ? culled_entry("triangle", t.where) : triangle_entry(t, light));
     }
-    plan.layer_bounds.resize(scene.lights.size());
-    plan.layer_bounds[i].resize(scene.meshes.size());
     for (size_t m = 0; m < scene.meshes.size(); ++m)
       lp.casters.push_back(culling.meshes[m] ? culled_entry("mesh", scene.meshes[m].where)
-                                             : mesh_entry(scene, m, meshes[m], light, lp, slot, scratch, per_triangle,
-                                                          plan.layer_bounds[i][m]));
+                                             : mesh_entry(scene, m, meshes[m], light, lp, slot, scratch, per_triangle));
     lp.mesh_volumes.resize(slot);
     std::stable_sort(lp.casters.begin(), lp.casters.end(),  // file order, for --explain
                      [](const CasterEntry& a, const CasterEntry& b) { return a.where.line < b.where.line; });
     clear_volumes(lp);
-    batch_volumes(lp);
+    gather_volumes(lp);
     lp.side_quads = lp.all_volumes.side_quads;
     lp.light_cap_triangles = lp.all_volumes.light_cap_triangles;
     lp.dark_cap_triangles = lp.all_volumes.dark_cap_triangles;
@@ -422,25 +319,12 @@ void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& 
     else out << "    shadows: " << lp.count_reason << "\n";
     if (lp.culled_casters > 0)
       out << "    " << lp.culled_casters << " of " << lp.casters.size() << " casters left out: their volumes cannot reach the view\n";
-    if (lp.stencil_batches.size() > 1) {
-      out << "    counted in " << lp.stencil_batches.size() << " stencil batches, so that no count reaches 256 (a sphere or "
-          << "triangle adds at most 1 layer over a point";
-      for (const MeshVolumePlan& m : lp.mesh_volumes)
-        out << ", a volume of the mesh at line " << scene.meshes[m.mesh].where.line << " at most " << m.max_count;
-      out << "):";
-      for (const StencilBatch& b : lp.stencil_batches) out << " " << b.max_count;
-      out << " layers\n";
-    }
     for (const CasterEntry& e : lp.casters) {
       out << "    " << e.kind << " (line " << e.where.line << "): " << e.volume_phrase;
       if (e.mesh_volume >= 0) {
-        int quads = 0, caps = 0;
-        for (int k = e.mesh_volume; k < e.mesh_volume + e.mesh_volume_count; ++k) {
-          const MeshVolumeIndices& v = lp.mesh_volumes[size_t(k)].volume;
-          quads += v.side_quads, caps += v.light_cap_triangles + v.dark_cap_triangles;
-        }
-        out << ", " << quads << " quads";
-        if (!lp.z_pass) out << " + " << caps << " cap triangles";
+        const MeshVolumeIndices& v = lp.mesh_volumes[size_t(e.mesh_volume)].volume;
+        out << ", " << v.side_quads << " quads";
+        if (!lp.z_pass) out << " + " << v.light_cap_triangles + v.dark_cap_triangles << " cap triangles";
         out << " (static vertices, indices per frame)";
       } else if (!e.volume.triangles.empty()) {
         out << ", " << e.volume.side_quads << " quads";

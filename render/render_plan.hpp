@@ -13,7 +13,6 @@
 #include "render/render_method.hpp"
 #include "scene/scene.hpp"
 
-#include "silhouette/layer_bound.hpp"
 #include "silhouette/mesh_caster.hpp"
 #include "silhouette/mesh_volume.hpp"
 #include "silhouette/shadow_volume.hpp"
@@ -58,32 +57,15 @@ struct CasterEntry {
   FileLoc where;
   std::string volume_phrase;  // how its volume was made, or why it has none
   ShadowVolume volume;  // empty when it casts no shadow from this light, or when it is a mesh_volume
-  // For a mesh (but with --method triangles): its volumes are
-  // LightPlan::mesh_volumes[mesh_volume, mesh_volume + mesh_volume_count),
-  // one, or one per run of faces when more than 255 layers may lie over a point.
+  // For a mesh (but with --method triangles): its volume is
+  // LightPlan::mesh_volumes[mesh_volume].
   int mesh_volume = -1;
-  int mesh_volume_count = 0;
 };
 
 // A mesh's volume as indices over its static vertex buffer.
 struct MeshVolumePlan {
   size_t mesh = 0;  // index into Scene::meshes
   MeshVolumeIndices volume;
-  int max_count = 0;  // layer_bound: the most it adds to a count at any point
-};
-
-// The 8-bit stencil counts modulo 256, so a point whose count reaches 256
-// would read as lit. A sphere's or triangle's volume adds at most 1 at any
-// point, a mesh's at most its layer bound; volumes are counted together only
-// while those sum to at most 255.
-constexpr int kMaxStencilCount = 255;
-
-// Volumes counted together: a range of LightPlan::all_volumes and some mesh
-// volumes, whose counts at any point sum to at most max_count.
-struct StencilBatch {
-  uint32_t first_triangle = 0, end_triangle = 0;
-  std::vector<uint32_t> mesh_volumes;  // indices into LightPlan::mesh_volumes
-  int max_count = 0;
 };
 
 // What the planar method (Blinn 1988) projects, for one light: the
@@ -99,8 +81,6 @@ struct LightPlan {
   std::vector<CasterEntry> casters;
   ShadowVolume all_volumes;                  // every other caster's volume, one draw call
   std::vector<MeshVolumePlan> mesh_volumes;  // one draw call each
-  // In file order; with one batch, everything is counted at once.
-  std::vector<StencilBatch> stencil_batches;
   // z-pass counts where the depth test passes and needs no caps, but only
   // where the near-plane rectangle is outside every volume; z-fail is right
   // everywhere. The volumes above have caps only for z-fail.
@@ -127,15 +107,6 @@ struct RenderPlan {
   std::vector<uint8_t> light_adds_direct;  // per light
   std::vector<LightPlan> lights;  // one per scene light, same order
   MeshCasterScratch mesh_scratch;  // the face classification, kept so that a frame need not allocate it
-  // Per light and mesh, what depends on the light's position alone: a frame
-  // whose light has not moved reuses it.
-  struct LayerBounds {
-    glm::dvec3 light{std::nan("")};
-    int bound = 0;                                   // layer_bound of the whole mesh
-    std::vector<FaceRun> runs;                       // when that exceeds 255: runs whose bounds fit
-    std::vector<MultiplicityAdjacency> run_volumes;  // and each run's faces
-  };
-  std::vector<std::vector<LayerBounds>> layer_bounds;
 };
 
 // One caster per scene.meshes entry, in order, each sharing its mesh's

@@ -11,6 +11,11 @@ namespace umbra::shaders {
 // writing nothing but the stencil (planar shadows).
 enum SurfacePass { kAmbient = 0, kDirect = 1, kMaskSurface = 2, kMaskLit = 3, kDistance = 4, kMarkReceiver = 5 };
 
+// How the lit passes (kDirect, kMaskLit) test a point for shadow (uniform
+// `shadow_test`): not at all (the stencil or nothing decides), against the
+// bound cube shadow map, or by the volumes' count at the fragment's pixel.
+enum ShadowTest { kNoShadowTest = 0, kShadowMapTest = 1, kVolumeCountTest = 2 };
+
 // Phong shading shared by triangles and spheres; `n` is the unit normal on the
 // side facing the camera, so a triangle's visible side is lit only when the
 // light is on the camera's side of its plane.
@@ -25,14 +30,17 @@ uniform vec3 material_diffuse;
 uniform vec3 material_specular;
 uniform float material_shininess;
 uniform bool specular_used;  // false when no material and light have a specular term
-// Shadow mapping (Williams 1978) instead of the stencil: a point is in shadow when
-// it lies further from the light than the map's nearest surface in its
-// direction, by more than a bias of two texels (slope-scaled).
-uniform bool shadow_map_on;
+uniform int shadow_test;  // ShadowTest
+// Shadow mapping (Williams 1978): a point is in shadow when it lies further
+// from the light than the map's nearest surface in its direction, by more
+// than a bias of two texels (slope-scaled).
 uniform samplerCube shadow_map;
 uniform float shadow_map_texel;  // a texel's width at distance 1: 2 / size
 uniform vec4 receiver_plane;     // (n, d), n unit
 uniform float receiver_tolerance;
+// Shadow volumes: how many volumes hold the surface point seen at each
+// pixel, counted by the volume pass; not zero is in shadow.
+uniform sampler2D volume_count;
 out vec4 frag_color;
 // What the material's ambient and diffuse terms are multiplied by: a mesh's
 // vertex colours, blended across its triangles; white for everything else.
@@ -43,6 +51,12 @@ bool in_mapped_shadow(vec3 p, float n_dot_l) {
   float d = length(to_p);
   float bias = 2.0 * shadow_map_texel * d / max(n_dot_l, 0.1);
   return d - bias > texture(shadow_map, to_p).r;
+}
+
+bool in_shadow(vec3 p, float n_dot_l) {
+  if (shadow_test == 1) return in_mapped_shadow(p, n_dot_l);
+  if (shadow_test == 2) return texelFetch(volume_count, ivec2(gl_FragCoord.xy), 0).r != 0.0;
+  return false;
 }
 
 void shade(vec3 p, vec3 n) {
@@ -63,7 +77,7 @@ void shade(vec3 p, vec3 n) {
     frag_color = vec4(ambient_sum * material_ambient * surface_color, 1.0);
   } else if (pass == 1) {
     if (n_dot_l <= 0.0) discard;
-    if (shadow_map_on && in_mapped_shadow(p, n_dot_l)) discard;
+    if (in_shadow(p, n_dot_l)) discard;
     vec3 colour = material_diffuse * surface_color * n_dot_l;
     if (specular_used) {
       vec3 v = normalize(eye - p);
@@ -76,7 +90,7 @@ void shade(vec3 p, vec3 n) {
     frag_color = vec4(0.0, 0.0, 0.0, 1.0);
   } else {
     if (n_dot_l <= 0.0) discard;
-    if (shadow_map_on && in_mapped_shadow(p, n_dot_l)) discard;
+    if (in_shadow(p, n_dot_l)) discard;
     frag_color = vec4(1.0);
   }
 }
@@ -193,6 +207,15 @@ inline constexpr const char* kVolumeFragment = R"(#version 330 core
 uniform vec4 tint;
 out vec4 frag_color;
 void main() { frag_color = tint; }
+)";
+
+// The volume pass: each volume face adds +1 or -1 to the count at its pixel
+// by additive blending, into a 32-bit float target, where whole numbers stay
+// exact far past any count a frame can reach.
+inline constexpr const char* kVolumeCountFragment = R"(#version 330 core
+uniform float front_adds;  // what a front face adds; a back face adds the opposite
+out vec4 count;
+void main() { count = vec4(gl_FrontFacing ? front_adds : -front_adds); }
 )";
 
 }  // namespace umbra::shaders

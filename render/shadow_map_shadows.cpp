@@ -28,24 +28,14 @@ void ShadowMapShadows::cast(size_t light) {
   for (int face = 0; face < 6; ++face) {
     map_->begin_face(face);
     drawing_.view_from(position, glm::mat4(cube_face_view_projection(position, face, near)));
-    drawing_.draw_surfaces(shaders::kDistance, light, true);
+    drawing_.draw_surfaces(shaders::kDistance, light, shaders::kNoShadowTest);
   }
   map_->end();
   drawing_.apply_view();
   map_->bind(1);
 }
 
-// Anywhere: the shader compares each point's distance with the map's. The
-// stencil only marks pixels already lit, so that a coplanar face over one
-// (an export's overlapping faces) adds no second light.
-void ShadowMapShadows::limit_to_lit() const {
-  glClearStencil(0);
-  glClear(GL_STENCIL_BUFFER_BIT);
-  glEnable(GL_STENCIL_TEST);
-  glStencilFunc(GL_EQUAL, 0, 0xFF);
-  glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE);
-}
+// Anywhere: the shader compares each point's distance with the map's.
+void ShadowMapShadows::limit_to_lit() const { add_light_once_state(); }
 
 }  // namespace umbra

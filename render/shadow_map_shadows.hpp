@@ -17,7 +17,7 @@ class ShadowMapShadows : public ShadowTechnique {
   ~ShadowMapShadows() override;
   void cast(size_t light) override;
   void limit_to_lit() const override;
-  bool tests_shadow_map() const override { return true; }
+  shaders::ShadowTest shadow_test() const override { return shaders::kShadowMapTest; }
 
  private:
   FrameDrawing& drawing_;

@@ -27,14 +27,14 @@ void ShadowRenderer::depth_and_ambient_pass() {
   glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-  drawing_->draw_surfaces(shaders::kAmbient, 0, technique().tests_shadow_map());
+  drawing_->draw_surfaces(shaders::kAmbient, 0, technique().shadow_test());
 }
 
 void ShadowRenderer::direct_light_pass(size_t light) {
   technique().limit_to_lit();
   glDepthFunc(GL_EQUAL);
   glDepthMask(GL_FALSE);
-  drawing_->draw_surfaces(shaders::kDirect, light, technique().tests_shadow_map());
+  drawing_->draw_surfaces(shaders::kDirect, light, technique().shadow_test());
   baseline_state();
 }
 
@@ -77,15 +77,14 @@ Image ShadowRenderer::render_mask(size_t light) {
   depth_and_ambient_pass();
   technique().cast(light);
   // Every visible surface starts unlit (0), then lit where it faces the light
-  // and its technique says it is lit; alpha keeps any batches' marks.
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+  // and its technique says it is lit.
   glClearColor(kMaskNoSurface / 255.0f, kMaskNoSurface / 255.0f, kMaskNoSurface / 255.0f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
   glDepthFunc(GL_EQUAL);
   glDepthMask(GL_FALSE);
-  drawing_->draw_surfaces(shaders::kMaskSurface, light, technique().tests_shadow_map());
-  technique().limit_to_lit();  // 1 * 0 + lit, or nothing where marked
-  drawing_->draw_surfaces(shaders::kMaskLit, light, technique().tests_shadow_map());
+  drawing_->draw_surfaces(shaders::kMaskSurface, light, technique().shadow_test());
+  technique().limit_to_lit();  // 0 + lit
+  drawing_->draw_surfaces(shaders::kMaskLit, light, technique().shadow_test());
   baseline_state();
   return read_pixels(1);
 }

@@ -4,14 +4,14 @@
 
 #include "render/planar_shadows.hpp"
 #include "render/shadow_map_shadows.hpp"
-#include "render/stencil_volume_shadows.hpp"
+#include "render/volume_count_shadows.hpp"
 
 namespace umbra {
 
 std::unique_ptr<ShadowTechnique> make_shadow_technique(RenderMethod method, FrameDrawing& drawing) {
   switch (method_pass(method)) {
-    case ShadowPass::kStencilVolumes:
-      return std::make_unique<StencilVolumeShadows>(drawing);
+    case ShadowPass::kCountedVolumes:
+      return std::make_unique<VolumeCountShadows>(drawing);
     case ShadowPass::kShadowMap:
       return std::make_unique<ShadowMapShadows>(drawing);
     case ShadowPass::kPlanar:

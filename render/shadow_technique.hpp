@@ -4,7 +4,7 @@
 // pass, then for each light asks its technique to cast the light's shadows
 // and to limit the direct pass to the pixels they leave lit.
 //
-//   StencilVolumeShadows  (stencil_volume_shadows.hpp)  auto, zfail, zpass, triangles
+//   VolumeCountShadows  (volume_count_shadows.hpp)  auto, zfail, zpass, triangles
 //   ShadowMapShadows      (shadow_map_shadows.hpp)      shadowmap
 //   PlanarShadows         (planar_shadows.hpp)          planar
 
@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "render/render_method.hpp"
+#include "render/shaders.hpp"
 
 namespace umbra {
 
@@ -26,8 +27,8 @@ class ShadowTechnique {
   // The GL state under which the direct pass adds light only where the last
   // cast() left the surface lit; baseline_state() undoes it.
   virtual void limit_to_lit() const = 0;
-  // Whether the surface shader must test the shadow map.
-  virtual bool tests_shadow_map() const { return false; }
+  // How the surface shader's lit passes test for shadow.
+  virtual shaders::ShadowTest shadow_test() const { return shaders::kNoShadowTest; }
   // Whether there are shadow volumes to show (--show-volumes).
   virtual bool draws_volumes() const { return false; }
 };

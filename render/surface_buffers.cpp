@@ -308,11 +308,4 @@ void VolumeBuffer::draw() const {
   glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
 }
 
-void VolumeBuffer::draw_triangles(uint32_t first, uint32_t end) const {
-  if (end <= first) return;
-  glBindVertexArray(vao_);
-  glDrawElements(GL_TRIANGLES, GLsizei(3 * (end - first)), GL_UNSIGNED_INT,
-                 reinterpret_cast<const void*>(size_t(first) * 3 * sizeof(uint32_t)));
-}
-
 }  // namespace umbra

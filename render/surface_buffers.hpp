@@ -65,8 +65,6 @@ class VolumeBuffer {
   void upload_mesh_vertices(const std::vector<glm::dvec3>& positions);
   void upload_indices(const uint32_t* indices, size_t count);
   void draw() const;
-  // Triangles [first, end) of what was uploaded.
-  void draw_triangles(uint32_t first, uint32_t end) const;
 
  private:
   void upload_vertices(const std::vector<float>& xyzw, unsigned usage);

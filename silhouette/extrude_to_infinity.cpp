@@ -33,7 +33,6 @@ ShadowVolume extrude_to_infinity(const std::vector<glm::dvec3>& loop, const glm:
   volume.light_cap_triangles = cap_triangles;
   volume.dark_cap_triangles = cap_triangles;
   volume.side_quads = int(n);
-  volume.part_ends = {uint32_t(volume.triangles.size())};
   return volume;
 }
 

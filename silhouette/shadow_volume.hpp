@@ -17,11 +17,6 @@ struct ShadowVolume {
   int side_quads = 0;           // each is two of the triangles
   int light_cap_triangles = 0;  // the finite cap, facing the light
   int dark_cap_triangles = 0;   // the cap at infinity
-  // One past the last triangle of each part: a volume of several casters is
-  // their volumes one after another, and each part on its own puts a point
-  // inside it at most once (a stencil count of 0 or 1), which is what lets a
-  // renderer count any number of them in batches of 255.
-  std::vector<uint32_t> part_ends;
 };
 
 }  // namespace umbra

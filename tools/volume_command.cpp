@@ -121,9 +121,9 @@ int run_volume_command(const std::vector<std::string>& argv) {
     size_t written = 0, groups = 0;
     for (const CasterEntry& e : lp.casters) {
       ShadowVolume volume = e.volume;
-      for (int k = e.mesh_volume; k >= 0 && k < e.mesh_volume + e.mesh_volume_count; ++k) {
+      if (e.mesh_volume >= 0) {
         // A mesh volume: indices over the mesh's points, then the same points at infinity.
-        const MeshVolumePlan& m = lp.mesh_volumes[size_t(k)];
+        const MeshVolumePlan& m = lp.mesh_volumes[size_t(e.mesh_volume)];
         const std::vector<glm::dvec3>& positions = scene.meshes[m.mesh].positions;
         const uint32_t base = uint32_t(volume.vertices.size());
         for (const glm::dvec3& p : positions) volume.vertices.emplace_back(p, 1.0);

@@ -348,9 +348,10 @@ Scene triangles_along_a_light_ray(int count) {
   return parse_scene_text(text.str(), "stack.scene");
 }
 
-TEST(HardStencil, CountsOf255And256And300) {
-  // 256 is the case wrapping alone gets wrong (256 mod 256 = 0 reads as lit).
-  for (const int count : {255, 256, 300}) {
+TEST(HardCount, CountsOf255And256And300And1000) {
+  // 256 is the case an 8-bit stencil's wrapping gets wrong (256 mod 256 = 0
+  // reads as lit); the float count holds every one.
+  for (const int count : {255, 256, 300, 1000}) {
     SCOPED_TRACE(count);
     const Scene scene = triangles_along_a_light_ray(count);
     ASSERT_TRUE(shadow_ray_blocked(scene, {-0.5, 0.0, -1.0}, 0, scene.lights[0].position));
@@ -358,19 +359,14 @@ TEST(HardStencil, CountsOf255And256And300) {
   }
 }
 
-TEST(HardStencil, BatchesWithAMeshAmongThem) {
-  // Two batches of triangle volumes and the mesh's own: the box shadows part
-  // of the floor while 256 triangles shadow the floor round F.
+TEST(HardCount, TrianglesAndAMeshCountedTogether) {
+  // 256 triangles' volumes and the box's, counted in one pass: the box
+  // shadows part of the floor while the 256 triangles shadow the floor round F.
   Scene scene = triangles_along_a_light_ray(256);
   const Scene with_mesh = parse_scene_text(
       "light 1.5 0 1\n" + floor_text() + "mesh \"" + write_mesh("batch_box.obj", box_obj(0.2, 0.6, -0.9, -0.5)) + "\"\n",
       "box.scene");
   scene.meshes = with_mesh.meshes;
-  // The floor's 2 and the 256 triangles, then the box's volume (12
-  // triangles, so at most 12 layers): 255 in the first batch, then 3 + 12.
-  const RenderPlan plan = plan_for(scene);
-  ASSERT_EQ(plan.lights[0].stencil_batches.size(), 2u);
-  EXPECT_EQ(plan.lights[0].stencil_batches[1].max_count, 15);
   test::expect_masks_match_reference(scene, 100, 100, 64);
 }
 
@@ -417,7 +413,7 @@ int mesh_layers_over(const Scene& scene, const glm::dvec3& point) {
   return layers;
 }
 
-TEST(HardStencil, OneOpenMeshOf256And300LayersOverVisiblePixels) {
+TEST(HardCount, OneOpenMeshOf256And300LayersOverVisiblePixels) {
   for (const int count : {256, 300}) {
     SCOPED_TRACE(count);
     const Scene scene = parse_scene_text(
@@ -425,20 +421,20 @@ TEST(HardStencil, OneOpenMeshOf256And300LayersOverVisiblePixels) {
         "squares.scene");
     ASSERT_FALSE(scene.meshes[0].components.all_closed());
     ASSERT_GE(mesh_layers_over(scene, {-0.5, 0.0, -1.0}), count);
-    // Never per-triangle volumes: runs of its faces, each an edge-multiplicity
-    // volume whose layers fit a count, each counted on its own.
+    // Never per-triangle volumes, nor the mesh cut into parts: one
+    // edge-multiplicity volume, all its layers in one count.
     const RenderPlan plan = plan_for(scene);
     const CasterEntry& mesh = plan.lights[0].casters.back();
     ASSERT_EQ(mesh.kind, "mesh");
-    EXPECT_GE(mesh.mesh_volume_count, 2);
+    EXPECT_EQ(mesh.mesh_volume, 0);
+    EXPECT_EQ(plan.lights[0].mesh_volumes.size(), 1u);
     EXPECT_TRUE(mesh.volume.triangles.empty());
-    EXPECT_NE(mesh.volume_phrase.find("runs of its faces, each an edge-multiplicity volume"), std::string::npos) << mesh.volume_phrase;
-    for (const StencilBatch& b : plan.lights[0].stencil_batches) EXPECT_LE(b.max_count, 255);
+    EXPECT_NE(mesh.volume_phrase.find("edge-multiplicity volume"), std::string::npos) << mesh.volume_phrase;
     test::expect_masks_match_reference(scene, 100, 100, 64);
   }
 }
 
-TEST(HardStencil, OneClosedMeshOf256LayersOverVisiblePixels) {
+TEST(HardCount, OneClosedMeshOf256LayersOverVisiblePixels) {
   const Scene scene = parse_scene_text(
       "light 1.5 0 1\n" + floor_text() + "mesh \"" + write_mesh("boxes.obj", boxes_along_a_light_ray(256)) + "\"\n",
       "boxes.scene");
@@ -448,7 +444,7 @@ TEST(HardStencil, OneClosedMeshOf256LayersOverVisiblePixels) {
   test::expect_masks_match_reference(scene, 100, 100, 64);
 }
 
-TEST(HardStencil, AMeshOf255LayersAndATriangleShareNoCountThatReaches256) {
+TEST(HardCount, AMeshOf255LayersAndATriangleShareNoCountThatReaches256) {
   // The reviewer's case: 255 closed plates in one mesh and one triangle on
   // the same light rays, 256 layers in all.
   Scene scene = triangles_along_a_light_ray(1);
@@ -461,7 +457,7 @@ TEST(HardStencil, AMeshOf255LayersAndATriangleShareNoCountThatReaches256) {
     test::expect_masks_match_reference(scene, 100, 100, 64, 0.0, method);
 }
 
-TEST(HardStencil, AMeshVolumeOverlappingItself300Times) {
+TEST(HardCount, AMeshVolumeOverlappingItself300Times) {
   std::ostringstream obj;
   for (int k = 0; k < 300; ++k) obj << box_obj(-0.3, 0.3, -0.6 + 0.002 * k, -0.6 + 0.002 * k + 0.001, 8 * k);
   const Scene scene = mesh_scene("light 0.05 0.1 1.8\n", "plates.obj", obj.str());

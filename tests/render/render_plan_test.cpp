@@ -93,33 +93,25 @@ TEST(RenderPlan, AutoDecidesByATrianglesPlaneWhetherItsVolumeCanReachTheNearPlan
   EXPECT_EQ(ceiling.lights[0].count_reason, "z-fail with caps: the caster at line 3 may shadow the near plane");
 }
 
-TEST(RenderPlan, SplitsMoreThan255VolumesIntoStencilBatches) {
+TEST(RenderPlan, CountsEveryVolumeTogetherHowEverManyOverlap) {
   // 600 level triangles over one point (8 volume triangles each, with z-fail's
-  // caps) and one degenerate triangle (no volume): batches end after volumes
-  // 255 and 510.
+  // caps) and one degenerate triangle (no volume): all 600 volumes in one
+  // buffer, in file order, counted in one pass; no bound on their layers.
   std::string text = "light 0 0 2\ntriangle 0 0 0  1 0 0  2 0 0\n";
   for (int k = 0; k < 600; ++k) text += "triangle -0.1 -0.1 " + std::to_string(k * 0.001) + "  0.1 -0.1 " +
                                         std::to_string(k * 0.001) + "  0 0.1 " + std::to_string(k * 0.001) + "\n";
   RenderSettings zfail;
   zfail.method = RenderMethod::kZFail;
-  const RenderPlan plan = make_render_plan(parse_scene_text(text, "many.scene"), zfail);
-  const std::vector<StencilBatch>& batches = plan.lights[0].stencil_batches;
-  ASSERT_EQ(batches.size(), 3u);
-  EXPECT_EQ(batches[0].first_triangle, 0u);
-  EXPECT_EQ(batches[0].end_triangle, 255u * 8);
-  EXPECT_EQ(batches[1].end_triangle, 510u * 8);
-  EXPECT_EQ(batches[2].end_triangle, 600u * 8);
-  EXPECT_EQ(batches[2].max_count, 90);
-  std::ostringstream out;
-  print_render_plan(out, parse_scene_text(text, "many.scene"), plan);
-  EXPECT_NE(out.str().find("counted in 3 stencil batches, so that no count reaches 256 (a sphere or triangle adds at "
-                           "most 1 layer over a point): 255 255 90 layers\n"),
-            std::string::npos)
-      << out.str();
-
-  const RenderPlan small = make_render_plan(parse_scene_text("light 0 0 2\nsphere 0 0 0 0.5\n", "one.scene"), RenderSettings{});
-  ASSERT_EQ(small.lights[0].stencil_batches.size(), 1u);
-  EXPECT_EQ(small.lights[0].stencil_batches[0].end_triangle, small.lights[0].all_volumes.triangles.size());
+  const Scene scene = parse_scene_text(text, "many.scene");
+  const RenderPlan plan = make_render_plan(scene, zfail);
+  const LightPlan& lp = plan.lights[0];
+  EXPECT_EQ(lp.all_volumes.triangles.size(), 600u * 8);
+  EXPECT_EQ(lp.side_quads, 600 * 3);
+  EXPECT_EQ(lp.light_cap_triangles, 600);
+  EXPECT_EQ(lp.dark_cap_triangles, 600);
+  // The first volume is the second triangle's (line 3): its light cap is the triangle itself.
+  EXPECT_EQ(glm::dvec3(lp.all_volumes.vertices[lp.all_volumes.triangles[0][0]]), glm::dvec3(-0.1, -0.1, 0.0));
+  EXPECT_EQ(lp.casters[0].volume_phrase, "none: degenerate (collinear vertices)");
 }
 
 TEST(PlanarReceivers, CoplanarTrianglesAreOnePlaneAndDegenerateOnesNone) {
@@ -163,13 +155,12 @@ TEST(RenderPlan, PlanarListsTheReceiversSeenFromTheLightsSide) {
   ASSERT_EQ(lp.planar.receiver_planes.size(), 1u);
   EXPECT_EQ(lp.planar.receiver_planes[0], glm::dvec4(0, 0, 1, 1));  // the light on its positive side
   EXPECT_EQ(lp.count_reason,
-            "no stencil count: every caster projected onto 1 receiver plane(s) (triangles at lines 2); spheres and meshes "
+            "no volume count: every caster projected onto 1 receiver plane(s) (triangles at lines 2); spheres and meshes "
             "receive no shadow");
   // Projected: the floor, the wall, and the sphere's 8-gon disc as a fan of 8.
   EXPECT_EQ(lp.planar.casters.triangles.size(), 1u + 1u + 8u);
   for (const glm::dvec4& v : lp.planar.casters.vertices) EXPECT_EQ(v.w, 1.0);
   EXPECT_TRUE(lp.all_volumes.triangles.empty());  // it counts no volumes
-  EXPECT_TRUE(lp.stencil_batches.empty());
 }
 
 TEST(RenderMethods, TheViewersKeyCyclesThroughEveryInteractiveMethod) {
@@ -187,18 +178,18 @@ TEST(RenderMethods, TheViewersKeyCyclesThroughEveryInteractiveMethod) {
 }
 
 TEST(RenderPlan, ExplainSaysHowEachMethodShadows) {
-  // Only the volume methods count in a stencil; the others say what they do instead.
+  // Only the volume methods count volumes; the others say what they do instead.
   const Scene scene = parse_scene_file(std::string(UMBRA_SOURCE_DIR) + "/scenes/two_spheres.scene");
   for (const auto& [method, phrase] :
-       std::vector<std::pair<RenderMethod, std::string>>{{RenderMethod::kAuto, "method: auto; two-sided stencil with wrapping, z-pass or z-fail per light"},
-                                                         {RenderMethod::kShadowMap, "method: shadowmap; no stencil: a cube map of distances from each light"},
-                                                         {RenderMethod::kPlanar, "method: planar; no stencil: casters projected onto the triangles' planes"}}) {
+       std::vector<std::pair<RenderMethod, std::string>>{{RenderMethod::kAuto, "method: auto; shadow volumes counted in a float buffer, z-pass or z-fail per light"},
+                                                         {RenderMethod::kShadowMap, "method: shadowmap; no volumes: a cube map of distances from each light"},
+                                                         {RenderMethod::kPlanar, "method: planar; no volumes: casters projected onto the triangles' planes"}}) {
     RenderSettings settings;
     settings.method = method;
     std::ostringstream explain;
     print_render_plan(explain, scene, make_render_plan(scene, settings));
     EXPECT_NE(explain.str().find(phrase + "\n"), std::string::npos) << explain.str();
-    EXPECT_EQ(explain.str().find("stencil with wrapping") == std::string::npos,
+    EXPECT_EQ(explain.str().find("counted in a float buffer") == std::string::npos,
               method == RenderMethod::kShadowMap || method == RenderMethod::kPlanar);
   }
 }
