@@ -25,14 +25,9 @@ for tool in /usr/bin/time admesh; do
 done
 [ -x $build/umbra ] && [ -x $build/bench/make_subdivided_mesh ] || { echo "bench: run ./build.sh first" >&2; exit 2; }
 
-if [ ! -f "$data/bunny-4M.glb" ]; then
-  tar xzf /usr/share/doc/libcgal-dev/data.tar.gz -C "$data" data/meshes
-  for level in 2 3; do
-    size=$([ $level = 2 ] && echo 1M || echo 4M)
-    $build/bench/make_subdivided_mesh "$data/data/meshes/bunny00.off" "$data/bunny-$size.stl" "$data/bunny-$size.obj" \
-      "$data/bunny-$size.glb" $level
-  done
-fi
+. bench/timing.sh
+subdivided_bunny "$data" 1M
+subdivided_bunny "$data" 4M
 # The bunny just above a floor under one light, as in the bundled mesh scenes,
 # inside the cube [-1,1]^3 that scenes are made for.
 for size in 1M 4M; do
@@ -44,8 +39,6 @@ triangle -1 -1 -1   1 1 -1   -1 1 -1 material floor
 mesh bunny-$size.obj scale 1.5 rotate 1 0 0 90 translate 0 0 -0.25
 SCENE
 done
-
-. bench/timing.sh
 
 # The rows, each "NAME|COMMAND". Every round runs each row once, in this
 # order, so that a shared machine's drift from fast to slow spreads over all

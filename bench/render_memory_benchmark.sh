@@ -16,14 +16,8 @@ data=$build/bench-data
 engine=/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb
 [ -x $build/umbra ] && [ -x $build/bench/make_subdivided_mesh ] || { echo "bench: run ./build.sh first" >&2; exit 2; }
 [ -f "$engine" ] || { echo "bench: $engine is missing (./build.sh installs assimp-testmodels)" >&2; exit 2; }
-mkdir -p "$data"
-if [ ! -f "$data/bunny-1M.glb" ]; then
-  tar xzf /usr/share/doc/libcgal-dev/data.tar.gz -C "$data" data/meshes/bunny00.off
-  $build/bench/make_subdivided_mesh "$data/data/meshes/bunny00.off" "$data/bunny-1M.stl" "$data/bunny-1M.obj" \
-    "$data/bunny-1M.glb" 2
-fi
-
 . bench/timing.sh
+subdivided_bunny "$data" 1M
 
 builds=("now|$build/umbra")
 [ -n "${BEFORE:-}" ] && builds+=("before|$BEFORE")

@@ -14,3 +14,15 @@ time_once() {
 
 # column N of FILE's lines, as a median
 median_of() { awk -v c="$2" '{print $c}' "$1" | median; }
+
+# subdivided_bunny DATA SIZE: makes DATA/bunny-SIZE.{stl,obj,glb} unless there,
+# CGAL's bunny subdivided to SIZE 1M (1.2M triangles) or 4M (4.8M)
+subdivided_bunny() {
+  local data=$1 size=$2 level
+  [ -f "$data/bunny-$size.glb" ] && return
+  level=$([ "$size" = 1M ] && echo 2 || echo 3)
+  mkdir -p "$data"
+  tar xzf /usr/share/doc/libcgal-dev/data.tar.gz -C "$data" data/meshes/bunny00.off
+  build/bench/make_subdivided_mesh "$data/data/meshes/bunny00.off" "$data/bunny-$size.stl" "$data/bunny-$size.obj" \
+    "$data/bunny-$size.glb" "$level"
+}
