@@ -4,6 +4,9 @@
 
 namespace umbra {
 
-void keep_freed_memory_for_reuse() { mallopt(M_MMAP_THRESHOLD, 256 << 20); }
+void keep_freed_memory_for_reuse() {
+  mallopt(M_MMAP_THRESHOLD, 256 << 20);
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);
+}
 
 }  // namespace umbra

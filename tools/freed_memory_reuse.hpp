@@ -12,7 +12,12 @@ namespace umbra {
 // 1.2M-triangle render (90 MB at most) is then reused (measured when this
 // was added: 1.53-1.68 s down to 1.30-1.38 s, peak 500 MB up to 577 MB).
 // Larger blocks still go to mmap: keeping them too gained
-// nothing at 4.8M triangles (bench/check_benchmark.sh measures both). For
+// nothing at 4.8M triangles (bench/check_benchmark.sh measures both). Freed
+// memory at the top of the heap is kept too (M_TRIM_THRESHOLD, which
+// otherwise stays at 128 KiB once the mmap threshold is set): llvmpipe frees
+// and takes again buffers of that size during every draw, and each trim
+// faults them in afresh (umbra view of the 1.2M-triangle bunny spent 6-10 s
+// of system time in 40 frames that way, 1.2 s without). For
 // the commands that render; umbra check keeps glibc's default, to hold its
 // memory low.
 void keep_freed_memory_for_reuse();
