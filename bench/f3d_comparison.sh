@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# umbra against f3d, the viewer a user would reach for instead: whole
+# processes (reading, drawing and writing the PNG), wall time and peak memory
+# (GNU time), rows alternating, medians of RUNS rounds:
+#   bench/f3d_comparison.sh [RUNS]   (after ./build.sh; default 3; needs f3d and Xvfb)
+# The models: Khronos's two-cylinder engine (110k triangles; Debian's
+# assimp-testmodels) and CGAL's bunny subdivided to 1.2M and 4.8M triangles,
+# each as GLB, at 800x800. umbra stages each (floor, light, camera) and draws
+# its exact shadow, by default with 3 x 3 samples a pixel, and once with one
+# (--antialias 1); f3d 1.3 draws the model alone, unshadowed, one sample a
+# pixel, into an Xvfb display started once for the whole run (so its start is
+# not counted).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+runs=${1:-3}
+build=build
+data=$build/bench-data
+engine=/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb
+for tool in f3d Xvfb /usr/bin/time; do
+  command -v "$tool" >/dev/null || { echo "bench: $tool is missing (apt-get install f3d xvfb time)" >&2; exit 2; }
+done
+[ -x $build/umbra ] && [ -x $build/bench/make_subdivided_mesh ] || { echo "bench: run ./build.sh first" >&2; exit 2; }
+[ -f "$engine" ] || { echo "bench: $engine is missing (./build.sh installs assimp-testmodels)" >&2; exit 2; }
+
+. bench/timing.sh
+subdivided_bunny "$data" 1M
+subdivided_bunny "$data" 4M
+
+display=:$((90 + RANDOM % 100))
+Xvfb "$display" -screen 0 1024x1024x24 >/dev/null 2>&1 &
+xvfb=$!
+trap 'kill $xvfb 2>/dev/null || true' EXIT
+sleep 1
+
+models=("engine|$engine" "bunny 1.2M|$data/bunny-1M.glb" "bunny 4.8M|$data/bunny-4M.glb")
+rows=()
+for m in "${models[@]}"; do
+  name=${m%%|*} file=${m#*|}
+  rows+=("$name: umbra render|$build/umbra render $file -o $data/f3d-cmp.png --size 800x800")
+  rows+=("$name: umbra render --antialias 1|$build/umbra render $file -o $data/f3d-cmp.png --size 800x800 --antialias 1")
+  rows+=("$name: f3d, no shadow|env DISPLAY=$display f3d --output=$data/f3d-cmp.png --resolution=800,800 $file")
+done
+rm -f "$data"/f3d-*.txt
+for ((i = 0; i < runs; i++)); do
+  for k in "${!rows[@]}"; do
+    # shellcheck disable=SC2086 # the command is split into words on purpose (no path holds a blank)
+    time_once "$data/f3d-$k.txt" ${rows[$k]#*|}
+  done
+done
+echo "$(nproc) cores; $runs rounds"
+echo
+echo "| model: program | median wall time (s) | median peak memory (MiB) |"
+echo "|---|---|---|"
+for k in "${!rows[@]}"; do
+  printf '| %s | %s | %.0f |\n' "${rows[$k]%%|*}" "$(median_of "$data/f3d-$k.txt" 1)" \
+    "$(echo "$(median_of "$data/f3d-$k.txt" 2) / 1024" | bc -l)"
+done
