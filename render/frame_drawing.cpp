@@ -127,9 +127,9 @@ void FrameDrawing::draw_surfaces(int pass, size_t light, shaders::ShadowTest tes
   }
 }
 
-void FrameDrawing::draw_volumes(size_t light, const glm::vec4* tint) {
+void FrameDrawing::draw_volumes(size_t light, const glm::vec4& tint) {
   volume_program_->use();
-  volume_program_->set("tint", *tint);
+  volume_program_->set("tint", tint);
   draw_light_volumes(light, *volume_program_);
 }
 

@@ -55,9 +55,9 @@ class FrameDrawing {
   void draw_surfaces(int pass, size_t light, shaders::ShadowTest test);
   // The surfaces from another viewpoint: a shadow map's face.
   void view_from(const glm::dvec3& viewpoint, const glm::mat4& view_projection);
-  // Light `light`'s volumes with the volume program and the current state;
-  // `tint`, when given, colours them (--show-volumes).
-  void draw_volumes(size_t light, const glm::vec4* tint);
+  // Light `light`'s volumes in the colour `tint` (--show-volumes), with the
+  // current state.
+  void draw_volumes(size_t light, const glm::vec4& tint);
   // Light `light`'s volumes into the target's count, each front face adding
   // `front_adds` and each back face its opposite, with the current state.
   void count_volumes(size_t light, float front_adds);

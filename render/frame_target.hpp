@@ -12,9 +12,9 @@
 // float channel (R32F) over the same depth and stencil, summed by additive
 // blending. A float holds every whole number to 2^24 exactly, where the
 // 8-bit stencil counts modulo 256 (Everitt and Kilgard 2002), so no count
-// wraps and no bound on a mesh's layers is needed; Assarsson and
-// Akenine-Moeller (2003) sum their shadow volumes' light in a 16-bit colour
-// buffer for the same reason.
+// wraps and no bound on a mesh's layers is needed. Assarsson and
+// Akenine-Moeller (2003) likewise sum their soft shadow volumes by additive
+// blending in a colour buffer (their V-buffer) rather than the stencil.
 
 #include <cstdint>
 #include <vector>

@@ -46,7 +46,7 @@ void ShadowRenderer::show_volumes_pass() {
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glEnable(GL_CULL_FACE);  // front faces only: a wrongly oriented quad shows as missing
   glCullFace(GL_BACK);
-  for (size_t i = 0; i < plan_.lights.size(); ++i) drawing_->draw_volumes(i, &tints[i % 3]);
+  for (size_t i = 0; i < plan_.lights.size(); ++i) drawing_->draw_volumes(i, tints[i % 3]);
   baseline_state();
 }
 
