@@ -58,9 +58,9 @@ FrameDrawing::FrameDrawing(const Scene& scene, const RenderPlan& plan) : scene_(
   for (ShaderProgram* p : {triangle_program_.get(), sphere_program_.get()}) {
     p->use();
     p->set("ambient_sum", f(ambient_sum));
-    p->set("shadow_map", 1);  // texture unit 1
-    p->set("material_texture", 0);  // texture unit 0 (triangles only)
-    p->set("volume_count", 2);  // texture unit 2
+    p->set("shadow_map", int(shaders::kShadowMapUnit));
+    p->set("material_texture", int(shaders::kMaterialTextureUnit));  // triangles only
+    p->set("volume_count", int(shaders::kVolumeCountUnit));
   }
   const SceneBounds bounds = surface_bounds(scene);
   if (!bounds.empty()) scene_center_ = 0.5 * (bounds.lo + bounds.hi), scene_radius_ = 0.5 * glm::length(bounds.hi - bounds.lo);
@@ -114,7 +114,7 @@ void FrameDrawing::draw_surfaces(int pass, size_t light, shaders::ShadowTest tes
     set_material(*triangle_program_, group.material);
     const unsigned texture = surfaces_->material_texture(group.material);
     triangle_program_->set("material_textured", int(texture != 0));
-    glActiveTexture(GL_TEXTURE0);  // unit 0; the shadow map has unit 1
+    glActiveTexture(GL_TEXTURE0 + shaders::kMaterialTextureUnit);
     glBindTexture(GL_TEXTURE_2D, texture);
     surfaces_->draw_triangle_group(group, viewpoint_);
   }

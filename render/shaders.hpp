@@ -16,6 +16,10 @@ enum SurfacePass { kAmbient = 0, kDirect = 1, kMaskSurface = 2, kMaskLit = 3, kD
 // bound cube shadow map, or by the volumes' count at the fragment's pixel.
 enum ShadowTest { kNoShadowTest = 0, kShadowMapTest = 1, kVolumeCountTest = 2 };
 
+// The texture units the surface shader samples: a triangle's material map,
+// the cube shadow map, the volumes' count. Unit 0 is the one left active.
+enum TextureUnit { kMaterialTextureUnit = 0, kShadowMapUnit = 1, kVolumeCountUnit = 2 };
+
 // Phong shading shared by triangles and spheres; `n` is the unit normal on the
 // side facing the camera, so a triangle's visible side is lit only when the
 // light is on the camera's side of its plane.

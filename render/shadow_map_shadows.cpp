@@ -32,7 +32,7 @@ void ShadowMapShadows::cast(size_t light) {
   }
   map_->end();
   drawing_.apply_view();
-  map_->bind(1);
+  map_->bind(shaders::kShadowMapUnit);
 }
 
 // Anywhere: the shader compares each point's distance with the map's.

@@ -5,8 +5,8 @@
 // and to limit the direct pass to the pixels they leave lit.
 //
 //   VolumeCountShadows  (volume_count_shadows.hpp)  auto, zfail, zpass, triangles
-//   ShadowMapShadows      (shadow_map_shadows.hpp)      shadowmap
-//   PlanarShadows         (planar_shadows.hpp)          planar
+//   ShadowMapShadows    (shadow_map_shadows.hpp)    shadowmap
+//   PlanarShadows       (planar_shadows.hpp)        planar
 
 #include <cstddef>
 #include <memory>

@@ -5,12 +5,19 @@
 #include "render/shaders.hpp"
 
 namespace umbra {
+namespace {
+
+void bind_count_texture(unsigned texture) {
+  glActiveTexture(GL_TEXTURE0 + shaders::kVolumeCountUnit);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glActiveTexture(GL_TEXTURE0 + shaders::kMaterialTextureUnit);
+}
+
+}  // namespace
 
 void VolumeCountShadows::cast(size_t light) {
   const LightPlan& lp = drawing_.plan().lights[light];
-  glActiveTexture(GL_TEXTURE2);  // the lit passes' count is not read while drawn into
-  glBindTexture(GL_TEXTURE_2D, 0);
-  glActiveTexture(GL_TEXTURE0);
+  bind_count_texture(0);  // not read while it is drawn into
   drawing_.target().bind_count();
   glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
   glClear(GL_COLOR_BUFFER_BIT);
@@ -43,9 +50,7 @@ void VolumeCountShadows::cast(size_t light) {
 // Where the count is zero: the shader reads it.
 void VolumeCountShadows::limit_to_lit() const {
   add_light_once_state();
-  glActiveTexture(GL_TEXTURE2);
-  glBindTexture(GL_TEXTURE_2D, drawing_.target().count_texture());
-  glActiveTexture(GL_TEXTURE0);
+  bind_count_texture(drawing_.target().count_texture());
 }
 
 }  // namespace umbra
