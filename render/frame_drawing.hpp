@@ -50,6 +50,7 @@ class FrameDrawing {
   int samples_per_side() const { return samples_per_side_; }
   // Where apply_view draws: the frame, kept in floating point.
   const FrameTarget& target() const { return target_; }
+  FrameTarget& target() { return target_; }
   // Every surface with the shading pass `pass` (shaders.hpp) for light
   // `light`; its lit passes test for shadow as `test` says.
   void draw_surfaces(int pass, size_t light, shaders::ShadowTest test);

@@ -40,18 +40,6 @@ void FrameTarget::bind(int width, int height) {
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_stencil_);
   require_complete("the frame's framebuffer (RGBA32F, 24-bit depth, 8-bit stencil)");
-  glGenTextures(1, &count_);
-  glBindTexture(GL_TEXTURE_2D, count_);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, width, height, 0, GL_RED, GL_FLOAT, nullptr);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  glGenFramebuffers(1, &count_framebuffer_);
-  glBindFramebuffer(GL_FRAMEBUFFER, count_framebuffer_);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, count_, 0);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_stencil_);
-  require_complete("the shadow volumes' count framebuffer (R32F, 24-bit depth, 8-bit stencil)");
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   width_ = width;
   height_ = height;
 }
@@ -63,7 +51,23 @@ void FrameTarget::require_complete(const char* what) {
   throw std::runtime_error(std::string(what) + " is incomplete (status " + std::to_string(status) + ")");
 }
 
-void FrameTarget::bind_count() const { glBindFramebuffer(GL_FRAMEBUFFER, count_framebuffer_); }
+void FrameTarget::bind_count() {
+  if (count_framebuffer_) {
+    glBindFramebuffer(GL_FRAMEBUFFER, count_framebuffer_);
+    return;
+  }
+  glGenTextures(1, &count_);
+  glBindTexture(GL_TEXTURE_2D, count_);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, width_, height_, 0, GL_RED, GL_FLOAT, nullptr);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glGenFramebuffers(1, &count_framebuffer_);
+  glBindFramebuffer(GL_FRAMEBUFFER, count_framebuffer_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, count_, 0);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_stencil_);
+  require_complete("the shadow volumes' count framebuffer (R32F, 24-bit depth, 8-bit stencil)");
+}
 
 void FrameTarget::bind_colour() const { glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_); }
 

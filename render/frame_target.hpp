@@ -31,8 +31,9 @@ class FrameTarget {
   // Binds the target for drawing, made (or remade) at width x height.
   // Throws std::runtime_error when the GL cannot make it.
   void bind(int width, int height);
-  // After bind: draws into the count instead of the colour, or back again.
-  void bind_count() const;
+  // After bind: draws into the count instead of the colour (made on first
+  // use, at the frame's size: only the volume methods count), or back again.
+  void bind_count();
   void bind_colour() const;
   // The count as a texture, for the lit passes to read (texelFetch).
   unsigned count_texture() const { return count_; }
