@@ -71,10 +71,7 @@ echo "$(nproc) cores; $runs rounds; bunny-1M.stl is $(stat -c %s "$data/bunny-1M
 echo
 echo "| command | median wall time (s) | median peak memory (MiB) |"
 echo "|---|---|---|"
-for k in "${!rows[@]}"; do
-  printf '| %s | %s | %.0f |\n' "${rows[$k]%%|*}" "$(median_of "$data/time-$k.txt" 1)" \
-    "$(echo "$(median_of "$data/time-$k.txt" 2) / 1024" | bc -l)"
-done
+rows_table "$data/time"
 # ratio A B [COLUMN]: the median over the rounds of row A's figure over row
 # B's in the same round (wall time, or COLUMN 2 for memory): a slow spell of
 # the machine then weighs on both sides of each ratio alike.

@@ -40,18 +40,9 @@ for m in "${models[@]}"; do
   rows+=("$name: umbra render --antialias 1|$build/umbra render $file -o $data/f3d-cmp.png --size 800x800 --antialias 1")
   rows+=("$name: f3d, no shadow|env DISPLAY=$display f3d --output=$data/f3d-cmp.png --resolution=800,800 $file")
 done
-rm -f "$data"/f3d-*.txt
-for ((i = 0; i < runs; i++)); do
-  for k in "${!rows[@]}"; do
-    # shellcheck disable=SC2086 # the command is split into words on purpose (no path holds a blank)
-    time_once "$data/f3d-$k.txt" ${rows[$k]#*|}
-  done
-done
+time_rows "$data/f3d" "$runs"
 echo "$(nproc) cores; $runs rounds"
 echo
 echo "| model: program | median wall time (s) | median peak memory (MiB) |"
 echo "|---|---|---|"
-for k in "${!rows[@]}"; do
-  printf '| %s | %s | %.0f |\n' "${rows[$k]%%|*}" "$(median_of "$data/f3d-$k.txt" 1)" \
-    "$(echo "$(median_of "$data/f3d-$k.txt" 2) / 1024" | bc -l)"
-done
+rows_table "$data/f3d"

@@ -31,13 +31,7 @@ done
 rows+=("raycast: render --method raycast 2CylinderEngine.glb|$build/umbra render --method raycast $engine -o $data/mem.png --size 800x800")
 rows+=("raycast: render --method raycast bunny-1M.glb|$build/umbra render --method raycast $data/bunny-1M.glb -o $data/mem.png --size 800x800")
 
-rm -f "$data"/mem-*.txt
-for ((i = 0; i < runs; i++)); do
-  for k in "${!rows[@]}"; do
-    # shellcheck disable=SC2086 # the command is split into words on purpose (no path holds a blank)
-    time_once "$data/mem-$k.txt" ${rows[$k]#*|}
-  done
-done
+time_rows "$data/mem" "$runs"
 echo "$(nproc) cores; $runs rounds"
 echo
 echo "| build: command | median peak memory (MiB) | median wall time (s) |"

@@ -15,6 +15,29 @@ time_once() {
 # column N of FILE's lines, as a median
 median_of() { awk -v c="$2" '{print $c}' "$1" | median; }
 
+# time_rows PREFIX RUNS: runs every "NAME|COMMAND" of the array `rows` once a
+# round, rows alternating, RUNS rounds; row k's figures go to PREFIX-k.txt
+time_rows() {
+  local prefix=$1 runs=$2 i k
+  rm -f "$prefix"-*.txt
+  for ((i = 0; i < runs; i++)); do
+    for k in "${!rows[@]}"; do
+      # shellcheck disable=SC2086 # the command is split into words on purpose (no path holds a blank)
+      time_once "$prefix-$k.txt" ${rows[$k]#*|}
+    done
+  done
+}
+
+# rows_table PREFIX: a markdown row per row of `rows`, its name, median wall
+# time (s) and median peak memory (MiB) from PREFIX-k.txt
+rows_table() {
+  local k
+  for k in "${!rows[@]}"; do
+    printf '| %s | %s | %.0f |\n' "${rows[$k]%%|*}" "$(median_of "$1-$k.txt" 1)" \
+      "$(echo "$(median_of "$1-$k.txt" 2) / 1024" | bc -l)"
+  done
+}
+
 # subdivided_bunny DATA SIZE: makes DATA/bunny-SIZE.{stl,obj,glb} unless there,
 # CGAL's bunny subdivided to SIZE 1M (1.2M triangles) or 4M (4.8M)
 subdivided_bunny() {
