@@ -1,5 +1,6 @@
 #include "render/frame_drawing.hpp"
 
+#include <cmath>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -141,11 +142,12 @@ void FrameDrawing::count_volumes(size_t light, float front_adds) {
 
 void FrameDrawing::draw_light_volumes(size_t light, ShaderProgram& program) {
   const LightPlan& lp = plan_.lights[light];
+  program.set("light_position", f(scene_.lights[light].position));
+  program.set("extruded_w", std::isinf(lp.volume_reach) ? 0.0f : float(1.0 / lp.volume_reach));
   program.set("extrude_from_light", 0);
   volumes_->upload(lp.all_volumes);
   volumes_->draw();
   program.set("extrude_from_light", 1);
-  program.set("light_position", f(scene_.lights[light].position));
   for (const MeshVolumePlan& m : lp.mesh_volumes) draw_mesh_volume(m);
 }
 

@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <iomanip>
+#include <sstream>
 #include <utility>
 
 #include "mesh/predicates/orientation.hpp"
 #include "scene/camera_transform.hpp"
 #include "render/planar_receivers.hpp"
 #include "render/view_culling.hpp"
+#include "render/volume_reach.hpp"
 #include "silhouette/sphere_volume.hpp"
 #include "silhouette/triangle_volume.hpp"
 
@@ -17,6 +20,14 @@ namespace {
 
 std::ostream& operator<<(std::ostream& out, const glm::dvec3& v) {
   return out << "(" << v.x << ", " << v.y << ", " << v.z << ")";
+}
+
+// "1.58 times ..." for --explain: how far a light's volumes are extruded.
+std::string reach_phrase(double reach) {
+  if (std::isinf(reach)) return "to infinity: along every axis the light lies within the casters' box";
+  std::ostringstream out;
+  out << std::setprecision(3) << reach << " times their casters' distance from the light, past every surface and the near plane";
+  return out.str();
 }
 
 CasterEntry sphere_entry(const Sphere& s, const Light& light, int segments) {
@@ -100,6 +111,18 @@ LightCulling cull_for_light(const Scene& scene, const RenderPlan& plan, const gl
     visit(bounding_sphere(t), t.where, c.triangles, [&] { return triangle_may_shadow_near_rectangle(near, light, t); });
   for (const Mesh& m : scene.meshes) visit(bounding_sphere(m), m.where, c.meshes, unsure);
   return c;
+}
+
+// The box round the casters a light's volumes are made from: those not left out.
+SceneBounds kept_casters_box(const Scene& scene, const LightCulling& c) {
+  SceneBounds box;
+  for (size_t k = 0; k < scene.spheres.size(); ++k)
+    if (!c.spheres[k]) box.grow(surface_bounds(scene.spheres[k]));
+  for (size_t k = 0; k < scene.triangles.size(); ++k)
+    if (!c.triangles[k]) box.grow(surface_bounds(scene.triangles[k]));
+  for (size_t k = 0; k < scene.meshes.size(); ++k)
+    if (!c.meshes[k]) box.grow(surface_bounds(scene.meshes[k]));
+  return box;
 }
 
 // Decides z-pass or z-fail for a light and says why.
@@ -236,6 +259,11 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
   // The same for every light.
   const std::vector<ReceiverPlane> receivers =
       plan.settings.method == RenderMethod::kPlanar ? receiver_planes(scene) : std::vector<ReceiverPlane>{};
+  // What the volumes must be exact in: every surface and the near plane.
+  SceneBounds region = surface_bounds(scene);
+  for (const glm::dvec3& corner : near_rectangle(plan.camera, double(plan.settings.width) / plan.settings.height,
+                                                 plan.near_plane).corners)
+    region.grow({corner, corner});
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& light = scene.lights[i];
     LightPlan& lp = plan.lights[i];
@@ -260,6 +288,7 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
     const LightCulling culling = cull_for_light(scene, plan, light.position);
     lp.culled_casters = culling.culled;
     choose_count(plan.settings.method, culling, lp);
+    lp.volume_reach = volume_reach(light.position, kept_casters_box(scene, culling), region);
     const bool per_triangle = plan.settings.method == RenderMethod::kTriangles;
     size_t slot = 0;
     for (size_t k = 0; k < scene.spheres.size(); ++k) {
@@ -317,6 +346,8 @@ void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& 
         << " side quads, " << lp.light_cap_triangles << " light-cap and " << lp.dark_cap_triangles << " dark-cap triangles\n";
     if (!plan.light_adds_direct[i]) out << "    no colour: ambient only, so a frame draws neither its shadows nor its direct light\n";
     else out << "    shadows: " << lp.count_reason << "\n";
+    if (!lp.casters.empty() && plan.settings.method != RenderMethod::kShadowMap && plan.settings.method != RenderMethod::kPlanar)
+      out << "    volumes reach " << reach_phrase(lp.volume_reach) << "\n";
     if (lp.culled_casters > 0)
       out << "    " << lp.culled_casters << " of " << lp.casters.size() << " casters left out: their volumes cannot reach the view\n";
     for (const CasterEntry& e : lp.casters) {

@@ -86,6 +86,10 @@ struct LightPlan {
   // everywhere. The volumes above have caps only for z-fail.
   bool z_pass = false;
   std::string count_reason;  // why this light is counted as it is
+  // The volumes run from each caster point P to L + volume_reach (P - L),
+  // past every surface they can shadow (volume_reach.hpp); infinity: to
+  // infinity, w = 0.
+  double volume_reach = 0.0;
   int culled_casters = 0;    // casters whose volumes cannot reach the view (auto only)
   PlanarProjection planar;  // kPlanar's plan, which counts no volumes; empty for every other method
   int side_quads = 0, light_cap_triangles = 0, dark_cap_triangles = 0;  // of all of them

@@ -175,16 +175,22 @@ void main() {
 )";
 
 inline constexpr const char* kVolumeVertex = R"(#version 330 core
-layout(location = 0) in vec4 position;  // w = 0: at infinity
+layout(location = 0) in vec4 position;  // w = 0: extruded, its xyz the direction P - L
 uniform mat4 view_projection;
-// Mesh volumes keep one static buffer whose vertices at infinity hold the
-// mesh point P itself; the light moves them to (P - L, 0) here.
+// Mesh volumes keep one static buffer whose extruded vertices hold the mesh
+// point P itself; the light gives them the direction P - L here.
 uniform bool extrude_from_light;
 uniform vec3 light_position;
+// 1 / s: an extruded vertex goes to L + s (P - L), (P - L + L / s, 1 / s)
+// in homogeneous form; 0 puts it at infinity (volume_reach.hpp).
+uniform float extruded_w;
 invariant gl_Position;
 void main() {
   vec4 p = position;
-  if (extrude_from_light && position.w == 0.0) p = vec4(position.xyz - light_position, 0.0);
+  if (position.w == 0.0) {
+    vec3 direction = extrude_from_light ? position.xyz - light_position : position.xyz;
+    p = vec4(direction + extruded_w * light_position, extruded_w);
+  }
   gl_Position = view_projection * p;
 }
 )";

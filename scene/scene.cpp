@@ -18,16 +18,19 @@ Camera spec_camera() {
 
 SceneBounds surface_bounds(const Scene& scene) {
   SceneBounds b;
-  const auto grow = [&b](const glm::dvec3& lo, const glm::dvec3& hi) {
-    if (b.empty()) b.lo = lo, b.hi = hi;
-    else b.lo = glm::min(b.lo, lo), b.hi = glm::max(b.hi, hi);
-  };
-  for (const Sphere& s : scene.spheres) grow(s.center - s.radius, s.center + s.radius);
-  for (const Triangle& t : scene.triangles) grow(glm::min(t.a, glm::min(t.b, t.c)), glm::max(t.a, glm::max(t.b, t.c)));
-  for (const Mesh& m : scene.meshes)
-    if (!m.triangles.empty()) grow(m.bounds_min, m.bounds_max);
+  for (const Sphere& s : scene.spheres) b.grow(surface_bounds(s));
+  for (const Triangle& t : scene.triangles) b.grow(surface_bounds(t));
+  for (const Mesh& m : scene.meshes) b.grow(surface_bounds(m));
   return b;
 }
+
+SceneBounds surface_bounds(const Sphere& s) { return {s.center - s.radius, s.center + s.radius}; }
+
+SceneBounds surface_bounds(const Triangle& t) {
+  return {glm::min(t.a, glm::min(t.b, t.c)), glm::max(t.a, glm::max(t.b, t.c))};
+}
+
+SceneBounds surface_bounds(const Mesh& m) { return m.triangles.empty() ? SceneBounds{} : SceneBounds{m.bounds_min, m.bounds_max}; }
 
 namespace {
 

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -135,8 +136,18 @@ struct Scene {
 struct SceneBounds {
   glm::dvec3 lo{1.0}, hi{-1.0};
   bool empty() const { return lo.x > hi.x; }
+  // Grows the box to hold `box` too.
+  void grow(const SceneBounds& box) {
+    if (box.empty()) return;
+    if (empty()) *this = box;
+    else lo = glm::min(lo, box.lo), hi = glm::max(hi, box.hi);
+  }
 };
 SceneBounds surface_bounds(const Scene& scene);
+// One surface's box: what surface_bounds grows by.
+SceneBounds surface_bounds(const Sphere& sphere);
+SceneBounds surface_bounds(const Triangle& triangle);
+SceneBounds surface_bounds(const Mesh& mesh);  // empty for a mesh with no triangles
 
 // A lower bound on the distance from `point` to every surface: exact for
 // spheres and triangles; for a mesh, the distance to its box when the point

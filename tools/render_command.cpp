@@ -76,8 +76,9 @@ options:
                         each shrunk to at most 200 pixels wide and labelled
                         with its file's name
   --explain             print the render plan (camera, lights, each caster's
-                        volume, stencil method) to stdout, after the staged
-                        scene's text for a MESH
+                        volume, how each light's volumes are counted and how
+                        far they reach) to stdout, after the staged scene's
+                        text for a MESH
   -h, --help            show this help
 
 Errors in SCENE are printed as FILE:LINE:COL: message; nothing is written

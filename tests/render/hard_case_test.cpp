@@ -17,6 +17,7 @@
 #include "scene/scene_checks.hpp"
 #include "scene/scene_parser.hpp"
 #include "render/render_plan.hpp"
+#include "render/volume_reach.hpp"
 #include "silhouette/mesh_caster.hpp"
 #include "silhouette/mesh_volume.hpp"
 #include "silhouette/volume_topology.hpp"
@@ -217,6 +218,32 @@ TEST(HardScale, SceneScaledBy1eMinus6) { expect_hard_case_holds(scaled_demo(1e-6
 TEST(HardScale, LightAMillionAway) {
   Scene scene = parse_scene_file(std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene");
   scene.lights[0].position = glm::normalize(glm::dvec3(0.3, 0.4, 1.0)) * 1e6;
+  expect_hard_case_holds(scene);
+}
+
+// --- how far the volumes reach (volume_reach.hpp) ----------------------------
+
+// A light just above a level triangle throws its shadow nine times the
+// triangle's distance from it, (-0.55 + 1) / (-0.55 + 0.6), onto the floor:
+// the volume must reach that far, and a reach short of it loses the shadow.
+TEST(HardReach, ALightJustAboveItsCasterThrowsTheShadowNineTimesAsFar) {
+  const Scene scene = parse_scene_text(
+      "light 0 0 -0.55\n" + floor_text() + "triangle -0.06 -0.05 -0.6  0.06 -0.05 -0.6  0 0.07 -0.6\n", "long.scene");
+  EXPECT_NEAR(plan_for(scene).lights[0].volume_reach, 9.0 * kVolumeReachMargin, 1e-12);
+  expect_hard_case_holds(scene);
+  // z-pass enters the volume above the floor seen from overhead; z-fail
+  // counts it behind the floor, where a short volume would not be.
+  test::expect_masks_match_reference(scene, 120, 120, 64, 0.0, RenderMethod::kZFail);
+}
+
+// Spheres round the light on every side over the floor: within their box
+// along every axis, so the volumes go to infinity, vertices with w = 0.
+TEST(HardReach, ALightAmongItsCastersExtrudesToInfinity) {
+  const Scene scene = parse_scene_text("light 0 0 -0.5\n" + floor_text() +
+                                           "sphere 0.5 0 -0.5 0.15\nsphere -0.5 0 -0.5 0.15\n"
+                                           "sphere 0 0.5 -0.5 0.15\nsphere 0 -0.5 -0.5 0.15\n",
+                                       "among.scene");
+  EXPECT_TRUE(std::isinf(plan_for(scene).lights[0].volume_reach));
   expect_hard_case_holds(scene);
 }
 

@@ -1,0 +1,34 @@
+#pragma once
+// How far a light's shadow volumes must reach. Extruded to infinity, a
+// volume's side quads run from the caster to the light's vanishing point,
+// across much of the frame, where a rasteriser walks them pixel by pixel
+// however little they count. Stopping them past the last surface they can
+// shadow gives every count the same value and draws far fewer pixels.
+
+#include <glm/vec3.hpp>
+
+#include "scene/scene.hpp"
+
+namespace umbra {
+
+// The scale s to extrude a light's volumes by: each caster point P goes to
+// L + s (P - L) instead of to infinity, the far cap with it; infinity when no
+// finite s is sure to do. `casters` is the box round every caster the light's
+// volumes are made from, `region` a box round every surface and the
+// near-plane rectangle.
+//
+// Why it is exact: a point X of `region` inside the infinite volume is
+// L + t (P - L) for a caster point P and some t >= 1, and lies inside the
+// finite volume when t < s. Along an axis where the light lies beyond every
+// caster (above them, say), X being no lower than `region`'s floor bounds t
+// by (L.z - region.lo.z) / (L.z - casters.hi.z); s is the least such bound
+// over the six faces, times a margin. Both volumes then hold the same points
+// of `region`, which is convex, so every count along a segment inside it
+// agrees: z-pass from the near plane to the surface seen, z-fail behind it.
+double volume_reach(const glm::dvec3& light, const SceneBounds& casters, const SceneBounds& region);
+
+// The margin: the far cap lies beyond `region`'s face by at least a quarter of
+// the light's distance from that face, far past depth-buffer rounding.
+inline constexpr double kVolumeReachMargin = 1.25;
+
+}  // namespace umbra
