@@ -4,6 +4,7 @@
 // render --explain` prints it.
 
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -89,7 +90,7 @@ struct LightPlan {
   // The volumes run from each caster point P to L + volume_reach (P - L),
   // past every surface they can shadow (volume_reach.hpp); infinity: to
   // infinity, w = 0.
-  double volume_reach = 0.0;
+  double volume_reach = std::numeric_limits<double>::infinity();
   int culled_casters = 0;    // casters whose volumes cannot reach the view (auto only)
   PlanarProjection planar;  // kPlanar's plan, which counts no volumes; empty for every other method
   int side_quads = 0, light_cap_triangles = 0, dark_cap_triangles = 0;  // of all of them

@@ -23,8 +23,11 @@ namespace umbra {
 // caster (above them, say), X being no lower than `region`'s floor bounds t
 // by (L.z - region.lo.z) / (L.z - casters.hi.z); s is the least such bound
 // over the six faces, times a margin. Both volumes then hold the same points
-// of `region`, which is convex, so every count along a segment inside it
-// agrees: z-pass from the near plane to the surface seen, z-fail behind it.
+// of `region`, and the same side faces there. z-fail, counting a closed
+// volume's faces beyond the surface seen, tells whether the volume holds
+// it, and the finite volume is as closed as the infinite one; z-pass counts
+// the side faces between the near plane and the surface, a segment that
+// stays inside `region`, which is convex.
 double volume_reach(const glm::dvec3& light, const SceneBounds& casters, const SceneBounds& region);
 
 // The margin: the far cap lies beyond `region`'s face by at least a quarter of
