@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <random>
+#include <sstream>
 
 #include "render/render_plan.hpp"
 #include "render/volume_reach.hpp"
@@ -69,16 +70,16 @@ TEST(VolumeReach, NoPointOfTheRegionInAVolumeLiesBeyondTheReach) {
 }
 
 TEST(VolumeReach, ExplainSaysHowFarEachLightsVolumesReach) {
-  const std::string floor = "triangle -10 -10 0  10 -10 0  10 10 0\nsphere 0 0 1 0.5\n";
+  const std::string floor_and_sphere = "triangle -10 -10 0  10 -10 0  10 10 0\nsphere 0 0 1 0.5\n";
   std::ostringstream above, among;
-  const Scene lit_from_above = parse_scene_text("light 0 0 4\n" + floor, "above.scene");
+  const Scene lit_from_above = parse_scene_text("light 0 0 4\n" + floor_and_sphere, "above.scene");
   print_render_plan(above, lit_from_above, make_render_plan(lit_from_above, RenderSettings{}));
   // From (0, 0, 4) past the sphere's top (z = 1.5) to the floor's z = 0:
   // 4 / 2.5 = 1.6, times the margin.
   EXPECT_NE(above.str().find("volumes reach 2 times their casters' distance from the light"), std::string::npos)
       << above.str();
   // Level with the sphere and over the floor: within their box on every axis.
-  const Scene lit_from_among = parse_scene_text("light 2 0 1\n" + floor, "among.scene");
+  const Scene lit_from_among = parse_scene_text("light 2 0 1\n" + floor_and_sphere, "among.scene");
   print_render_plan(among, lit_from_among, make_render_plan(lit_from_among, RenderSettings{}));
   EXPECT_NE(among.str().find("volumes reach to infinity: along every axis the light lies within the casters' box"),
             std::string::npos)
