@@ -23,9 +23,9 @@ mkdir -p "$data"
 for tool in /usr/bin/time admesh; do
   command -v "$tool" >/dev/null || { echo "bench: $tool is missing (./build.sh installs it)" >&2; exit 2; }
 done
-[ -x $build/umbra ] && [ -x $build/bench/make_subdivided_mesh ] || { echo "bench: run ./build.sh first" >&2; exit 2; }
 
 . bench/timing.sh
+require_built $build make_subdivided_mesh
 subdivided_bunny "$data" 1M
 subdivided_bunny "$data" 4M
 # The bunny just above a floor under one light, as in the bundled mesh scenes,

@@ -19,10 +19,10 @@ engine=/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngin
 for tool in f3d Xvfb /usr/bin/time; do
   command -v "$tool" >/dev/null || { echo "bench: $tool is missing (apt-get install f3d xvfb time)" >&2; exit 2; }
 done
-[ -x $build/umbra ] && [ -x $build/bench/make_subdivided_mesh ] || { echo "bench: run ./build.sh first" >&2; exit 2; }
 [ -f "$engine" ] || { echo "bench: $engine is missing (./build.sh installs assimp-testmodels)" >&2; exit 2; }
 
 . bench/timing.sh
+require_built $build make_subdivided_mesh
 subdivided_bunny "$data" 1M
 subdivided_bunny "$data" 4M
 

@@ -17,11 +17,11 @@ runs=${1:-5}
 build=build
 data=$build/bench-data/variants
 . bench/timing.sh
+require_built $build make_mesh_variants
 
 for tool in /usr/bin/time bc; do
   command -v "$tool" >/dev/null || { echo "bench: $tool is missing (./build.sh installs it)" >&2; exit 2; }
 done
-[ -x $build/umbra ] && [ -x $build/bench/make_mesh_variants ] || { echo "bench: run ./build.sh first" >&2; exit 2; }
 mkdir -p "$data"
 [ -f "$data/parts.obj" ] || $build/bench/make_mesh_variants "$data" >/dev/null
 variants=(closed holes reversed fin two duplicates parts)

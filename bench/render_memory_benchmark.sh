@@ -14,13 +14,12 @@ runs=${1:-5}
 build=build
 data=$build/bench-data
 engine=/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb
-[ -x $build/umbra ] && [ -x $build/bench/make_subdivided_mesh ] || { echo "bench: run ./build.sh first" >&2; exit 2; }
 [ -f "$engine" ] || { echo "bench: $engine is missing (./build.sh installs assimp-testmodels)" >&2; exit 2; }
 . bench/timing.sh
+require_built $build make_subdivided_mesh
 subdivided_bunny "$data" 1M
 
-builds=("now|$build/umbra")
-[ -n "${BEFORE:-}" ] && builds+=("before|$BEFORE")
+compared_builds $build
 rows=()
 for b in "${builds[@]}"; do
   exe=${b#*|}

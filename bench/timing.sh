@@ -1,5 +1,23 @@
-# Shell helpers the benchmark scripts source: GNU time's wall time and peak
-# memory of one command, and medians.
+# Shell helpers the benchmark scripts source: the check that the build is
+# there, the builds to compare, GNU time's wall time and peak memory of one
+# command, and medians.
+
+# require_built BUILD TOOL...: exits unless ./build.sh has made BUILD/umbra
+# and each BUILD/bench/TOOL
+require_built() {
+  local build=$1 tool; shift
+  for tool in umbra "${@/#/bench/}"; do
+    [ -x "$build/$tool" ] || { echo "bench: run ./build.sh first ($build/$tool is missing)" >&2; exit 2; }
+  done
+}
+
+# compared_builds BUILD: sets the array `builds` to "now|BUILD/umbra" and,
+# when BEFORE names an earlier build's umbra, "before|$BEFORE"
+compared_builds() {
+  builds=("now|$1/umbra")
+  [ -n "${BEFORE:-}" ] && builds+=("before|$BEFORE")
+  return 0
+}
 
 # median of the numbers on stdin
 median() { sort -n | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }

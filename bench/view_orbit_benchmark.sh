@@ -13,13 +13,12 @@ runs=${1:-5}
 frames=${2:-30}
 build=build
 data=$build/bench-data
-[ -x $build/umbra ] && [ -x $build/bench/make_subdivided_mesh ] || { echo "bench: run ./build.sh first" >&2; exit 2; }
 command -v xvfb-run >/dev/null || { echo "bench: xvfb-run is missing (apt-get install xvfb)" >&2; exit 2; }
 . bench/timing.sh
+require_built $build make_subdivided_mesh
 subdivided_bunny "$data" 1M
 
-builds=("now|$build/umbra")
-[ -n "${BEFORE:-}" ] && builds+=("before|$BEFORE")
+compared_builds $build
 rows=()
 for b in "${builds[@]}"; do
   rows+=("${b%%|*}, orbiting|${b#*|}|")
