@@ -90,9 +90,8 @@ struct LightCulling {
   const FileLoc* shadows_near_plane = nullptr;  // the first caster that may
 };
 
-LightCulling cull_for_light(const Scene& scene, const RenderPlan& plan, const glm::dvec3& light) {
+LightCulling cull_for_light(const Scene& scene, const RenderPlan& plan, const NearRectangle& near, const glm::dvec3& light) {
   LightCulling c;
-  const NearRectangle near = near_rectangle(plan.camera, double(plan.settings.width) / plan.settings.height, plan.near_plane);
   const RenderMethod method = plan.settings.method;
   const bool cull = method == RenderMethod::kAuto;
   // Only auto's choice and forced z-pass's warning need the near plane.
@@ -259,11 +258,10 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
   // The same for every light.
   const std::vector<ReceiverPlane> receivers =
       plan.settings.method == RenderMethod::kPlanar ? receiver_planes(scene) : std::vector<ReceiverPlane>{};
+  const NearRectangle near = near_rectangle(plan.camera, double(plan.settings.width) / plan.settings.height, plan.near_plane);
   // What the volumes must be exact in: every surface and the near plane.
   SceneBounds region = surface_bounds(scene);
-  for (const glm::dvec3& corner : near_rectangle(plan.camera, double(plan.settings.width) / plan.settings.height,
-                                                 plan.near_plane).corners)
-    region.grow({corner, corner});
+  for (const glm::dvec3& corner : near.corners) region.grow({corner, corner});
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& light = scene.lights[i];
     LightPlan& lp = plan.lights[i];
@@ -285,7 +283,7 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
       plan_planar_light(scene, receivers, plan.settings.sphere_segments, light, lp);
       continue;
     }
-    const LightCulling culling = cull_for_light(scene, plan, light.position);
+    const LightCulling culling = cull_for_light(scene, plan, near, light.position);
     lp.culled_casters = culling.culled;
     choose_count(plan.settings.method, culling, lp);
     lp.volume_reach = volume_reach(light.position, kept_casters_box(scene, culling), region);
