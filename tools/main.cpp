@@ -6,6 +6,7 @@
 #include "render/headless_context.hpp"
 #include "tools/bench_command.hpp"
 #include "tools/check_command.hpp"
+#include "tools/huge_page_malloc.hpp"
 #include "tools/render_command.hpp"
 #include "tools/view_command.hpp"
 #include "tools/volume_command.hpp"
@@ -38,6 +39,7 @@ int main(int argc, char** argv) {
     std::cout << kUsage;
     return args.empty() ? 2 : 0;
   }
+  umbra::restart_with_huge_page_malloc(argv);  // before any allocation worth the name
   if (args[0] == "--version") {
     std::cout << "umbra " << UMBRA_VERSION << "\n";
     // What umbra render would draw with: the platform --gl auto picks.
@@ -47,6 +49,7 @@ int main(int argc, char** argv) {
     } catch (const std::exception& e) {
       std::cout << "headless OpenGL: none (" << e.what() << ")\n";
     }
+    std::cout << "memory: " << umbra::malloc_pages_description(umbra::current_malloc_environment()) << "\n";
     return 0;
   }
   if (args[0] == "render") return umbra::run_render_command({args.begin() + 1, args.end()});

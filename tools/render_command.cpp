@@ -19,6 +19,7 @@
 #include "render/shadow_renderer.hpp"
 #include "tools/command_line.hpp"
 #include "tools/freed_memory_reuse.hpp"
+#include "tools/huge_page_malloc.hpp"
 #include "tools/progress_bar.hpp"
 
 namespace umbra {
@@ -188,7 +189,8 @@ int run_render_command(const std::vector<std::string>& argv) {
     if (options.settings.method == RenderMethod::kRaycast) {
       if (options.explain)
         progress->clear(), std::cout << "render plan for " << scene.path << "\n  method: raycast, eye rays and an exact "
-                  << "shadow ray per light (CPU, double precision)\n  image: " << image_phrase(options.settings) << "\n";
+                  << "shadow ray per light (CPU, double precision)\n  image: " << image_phrase(options.settings)
+                  << "\n  memory: " << malloc_pages_description(current_malloc_environment()) << "\n";
       RayCastFrame frame = ray_cast_frame(scene, options.settings.width, options.settings.height, options.settings.supersampling);
       image = std::move(frame.image);
       if (options.mask) mask = std::move(frame.masks[0]);
@@ -208,6 +210,7 @@ int run_render_command(const std::vector<std::string>& argv) {
         progress.reset();
         print_render_plan(std::cout, scene, plan);
         std::cout << "  OpenGL: " << context.description() << "\n";
+        std::cout << "  memory: " << malloc_pages_description(current_malloc_environment()) << "\n";
       }
       image = renderer.render_image(options.show_volumes);
       if (options.mask) mask = renderer.render_mask(0);
