@@ -17,9 +17,14 @@ namespace umbra {
 // otherwise stays at 128 KiB once the mmap threshold is set): llvmpipe frees
 // and takes again buffers of that size during every draw, and each trim
 // faults them in afresh (umbra view of the 1.2M-triangle bunny spent 6-10 s
-// of system time in 40 frames that way, 1.2 s without). For
-// the commands that render; umbra check keeps glibc's default, to hold its
-// memory low.
+// of system time in 40 frames that way, 1.2 s without). Every thread
+// allocates from the one heap (M_ARENA_MAX 1): a worker thread's arena is a
+// string of 64 MiB heaps, which serves any larger block with its own mmap
+// and unmaps heaps as they empty, so the loading threads' transients were
+// faulted in afresh too (a 4.8M-triangle render: 33,000 faults and 1.49 GB
+// down to 7,100 and 1.18 GB, 6.7 s down to 5.3; bench/huge_page_malloc.sh).
+// For the commands that render; umbra check keeps glibc's default, to hold
+// its memory low and its --jobs threads apart.
 void keep_freed_memory_for_reuse();
 
 }  // namespace umbra
