@@ -17,6 +17,8 @@ class ShadowMapShadows : public ShadowTechnique {
   ~ShadowMapShadows() override;
   void cast(size_t light) override;
   void limit_to_lit() const override;
+  // The map: the direct pass only reads it.
+  bool cast_outlives_direct_pass() const override { return true; }
   shaders::ShadowTest shadow_test() const override { return shaders::kShadowMapTest; }
 
  private:

@@ -27,6 +27,7 @@ void ShadowRenderer::depth_and_ambient_pass() {
   glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  last_cast_light_.reset();
   drawing_->draw_surfaces(shaders::kAmbient, 0, technique().shadow_test());
 }
 
@@ -56,6 +57,7 @@ void ShadowRenderer::draw(bool show_volumes) {
   for (size_t i = 0; i < plan_.lights.size(); ++i) {
     if (!plan_.light_adds_direct[i]) continue;  // adds nothing but its ambient term, already drawn
     technique().cast(i);
+    last_cast_light_ = i;
     direct_light_pass(i);
   }
   if (show_volumes) show_volumes_pass();
@@ -76,6 +78,19 @@ Image ShadowRenderer::render_mask(size_t light) {
   drawing_->set_samples_per_side(1);  // one sample, at the pixel's centre
   depth_and_ambient_pass();
   technique().cast(light);
+  mask_passes(light);
+  return read_pixels(1);
+}
+
+std::pair<Image, Image> ShadowRenderer::render_image_and_mask(bool show_volumes, size_t light) {
+  Image image = render_image(show_volumes);
+  if (drawing_->samples_per_side() != 1 || last_cast_light_ != light || !technique().cast_outlives_direct_pass())
+    return {std::move(image), render_mask(light)};
+  mask_passes(light);
+  return {std::move(image), read_pixels(1)};
+}
+
+void ShadowRenderer::mask_passes(size_t light) {
   // Every visible surface starts unlit (0), then lit where it faces the light
   // and its technique says it is lit.
   glClearColor(kMaskNoSurface / 255.0f, kMaskNoSurface / 255.0f, kMaskNoSurface / 255.0f, 1.0f);
@@ -86,7 +101,6 @@ Image ShadowRenderer::render_mask(size_t light) {
   technique().limit_to_lit();  // 0 + lit
   drawing_->draw_surfaces(shaders::kMaskLit, light, technique().shadow_test());
   baseline_state();
-  return read_pixels(1);
 }
 
 Image ShadowRenderer::read_pixels(int channels) const {

@@ -8,6 +8,8 @@
 //      added where the technique says the surface is lit.
 
 #include <memory>
+#include <optional>
+#include <utility>
 
 #include "image/image.hpp"
 #include "scene/scene.hpp"
@@ -45,18 +47,25 @@ class ShadowRenderer {
   // seen, kMaskLit where the visible point faces the light and is outside its
   // shadow, kMaskUnlit elsewhere.
   Image render_mask(size_t light);
+  // The shaded image and light `light`'s mask, as render_image and then
+  // render_mask make them. At one sample a pixel, where that light was the
+  // last the image cast and its technique's cast outlives the direct pass,
+  // the mask is drawn over the image's depth and cast rather than anew.
+  std::pair<Image, Image> render_image_and_mask(bool show_volumes, size_t light);
 
  private:
   ShadowTechnique& technique();  // the plan's method's, made anew when the method changes
   void depth_and_ambient_pass();
   void direct_light_pass(size_t light);
   void show_volumes_pass();
+  void mask_passes(size_t light);
   Image read_pixels(int channels) const;
 
   const RenderPlan& plan_;
   std::unique_ptr<FrameDrawing> drawing_;
   std::unique_ptr<ShadowTechnique> technique_;
   RenderMethod technique_method_ = RenderMethod::kAuto;
+  std::optional<size_t> last_cast_light_;  // over the depth now in the framebuffer
 };
 
 }  // namespace umbra

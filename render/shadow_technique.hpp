@@ -31,6 +31,10 @@ class ShadowTechnique {
   virtual shaders::ShadowTest shadow_test() const { return shaders::kNoShadowTest; }
   // Whether there are shadow volumes to show (--show-volumes).
   virtual bool draws_volumes() const { return false; }
+  // Whether what cast() left stays as it was through the direct pass and a
+  // colour clear, so that a mask of the same light, drawn at the same samples
+  // over the same depth, need not cast it again.
+  virtual bool cast_outlives_direct_pass() const { return false; }
 };
 
 // The technique for `method` (not kRaycast, which is the CPU reference).

@@ -16,6 +16,8 @@ class VolumeCountShadows : public ShadowTechnique {
   explicit VolumeCountShadows(FrameDrawing& drawing) : drawing_(drawing) {}
   void cast(size_t light) override;
   void limit_to_lit() const override;
+  // The count texture: the direct pass only reads it.
+  bool cast_outlives_direct_pass() const override { return true; }
   bool draws_volumes() const override { return true; }
   shaders::ShadowTest shadow_test() const override { return shaders::kVolumeCountTest; }
 

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <optional>
 #include <thread>
+#include <tuple>
 
 #include <tbb/task_group.h>
 
@@ -212,8 +213,10 @@ int run_render_command(const std::vector<std::string>& argv) {
         std::cout << "  OpenGL: " << context.description() << "\n";
         std::cout << "  memory: " << malloc_pages_description(current_malloc_environment()) << "\n";
       }
-      image = renderer.render_image(options.show_volumes);
-      if (options.mask) mask = renderer.render_mask(0);
+      if (options.mask)
+        std::tie(image, mask) = renderer.render_image_and_mask(options.show_volumes, 0);
+      else
+        image = renderer.render_image(options.show_volumes);
     }
 
     progress.reset();

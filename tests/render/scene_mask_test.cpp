@@ -89,6 +89,33 @@ TEST_P(BundledScene, ZPassAndZFailAgreeWhereverAutoChoosesZPass) {
   }
 }
 
+// umbra render --mask draws the image first; at one sample a pixel the mask
+// of the light cast last is drawn over that image's depth and cast. For
+// every GL method, every light (the last cast and the others) and both
+// sample counts, that mask is the one a renderer draws from nothing.
+TEST_P(BundledScene, MaskAfterTheImageIsTheMaskDrawnAlone) {
+  const Scene scene = parse_scene_file(scene_path(GetParam()));
+  for (const RenderMethod method : all_methods()) {
+    if (method == RenderMethod::kRaycast) continue;
+    for (const int samples : {1, 3}) {
+      RenderSettings settings;
+      settings.width = 96;
+      settings.height = 72;
+      settings.method = method;
+      settings.supersampling = samples;
+      const RenderPlan plan = make_render_plan(scene, settings);
+      HeadlessContext context(settings.width, settings.height);
+      ShadowRenderer after_image(scene, plan), alone(scene, plan);
+      for (size_t light = 0; light < scene.lights.size(); ++light) {
+        const auto [image, mask] = after_image.render_image_and_mask(false, light);
+        EXPECT_TRUE(image.pixels == after_image.render_image(false).pixels);
+        EXPECT_TRUE(mask.pixels == alone.render_mask(light).pixels)
+            << method_name(method) << ", " << samples << " x " << samples << " samples, light " << light + 1;
+      }
+    }
+  }
+}
+
 std::vector<std::string> bundled_scenes() {
   std::vector<std::string> names;
   for (const auto& entry : std::filesystem::directory_iterator(std::string(UMBRA_SOURCE_DIR) + "/scenes"))
