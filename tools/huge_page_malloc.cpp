@@ -41,8 +41,15 @@ MallocEnvironment current_malloc_environment() {
   return env;
 }
 
+// glibc 2.35 brought the tunable; other C libraries have none.
+#if defined(__GLIBC__)
+#if __GLIBC_PREREQ(2, 35)
+#define UMBRA_HAS_HUGETLB_TUNABLE 1
+#endif
+#endif
+
 std::optional<std::string> reason_not_to_restart(const MallocEnvironment& env) {
-#if !defined(__GLIBC__) || !__GLIBC_PREREQ(2, 35)
+#if !defined(UMBRA_HAS_HUGETLB_TUNABLE)
   return "this C library has no glibc.malloc.hugetlb tunable";
 #endif
   if (env.sanitizer_allocator) return "AddressSanitizer's allocator is in charge of memory";

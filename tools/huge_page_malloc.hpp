@@ -4,10 +4,11 @@
 // apiece, a fifth to a third of a large render or check (Mesa's software
 // rasteriser allocates as freely as umbra does). With the tunable
 // glibc.malloc.hugetlb=1 (glibc 2.35 and later) malloc asks the kernel for
-// transparent huge pages of 2 MiB instead, and the faults drop by 4 to 14
-// times (docs/performance.md, "Huge pages for malloc"). glibc reads tunables
-// only from the environment when a process starts, so umbra sets
-// GLIBC_TUNABLES and starts itself again, once, before it does any work.
+// transparent huge pages of 2 MiB instead, and a large render's faults drop
+// several times over (docs/performance.md, "Huge pages for malloc, and one
+// heap"). glibc reads tunables only from the environment when a process
+// starts, so umbra sets GLIBC_TUNABLES and starts itself again, once, before
+// it does any work.
 #include <optional>
 #include <string>
 

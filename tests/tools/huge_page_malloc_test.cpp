@@ -2,22 +2,20 @@
 // about it: the decision for each environment, and the restart itself.
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <iterator>
-
 #include "tests/tools/command_fixture.hpp"
 #include "tools/huge_page_malloc.hpp"
 
 namespace umbra {
 namespace {
 
+#if defined(__GLIBC__)
+#if __GLIBC_PREREQ(2, 35)
+
 MallocEnvironment plain_environment(const std::string& modes = "always [madvise] never\n") {
   MallocEnvironment env;
   env.transparent_huge_pages = modes;
   return env;
 }
-
-#if defined(__GLIBC__) && __GLIBC_PREREQ(2, 35)
 
 TEST(HugePageMalloc, RestartsWhereTheKernelGivesHugePagesOnRequestAndNobodyElseHasASay) {
   EXPECT_EQ(reason_not_to_restart(plain_environment()), std::nullopt);
@@ -58,6 +56,7 @@ TEST(HugePageMalloc, SaysSoWhenTheTunableIsInTheEnvironment) {
             "malloc takes transparent huge pages (GLIBC_TUNABLES=glibc.malloc.check=0:glibc.malloc.hugetlb=1)");
 }
 
+#endif
 #endif
 
 class HugePageRestart : public test::CommandTest {};
