@@ -45,6 +45,10 @@ class FrameTarget {
   // averaged into one, each channel rounded once (channel_byte, as the
   // ray-cast reference rounds), rows from the bottom as the GL keeps them.
   std::vector<uint8_t> read_rgba8(int samples = 1) const;
+  // Per pixel, 1 where a surface was drawn (its depth is under the cleared
+  // 1.0, which no fragment can equal and pass GL_LESS), 0 elsewhere; rows
+  // from the bottom. For one sample a pixel.
+  std::vector<uint8_t> read_covered() const;
 
  private:
   void release();

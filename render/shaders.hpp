@@ -9,7 +9,7 @@ namespace umbra::shaders {
 // face: with `eye` at the light, the distance from it.
 // kMarkReceiver keeps only the fragments of triangles in `receiver_plane`,
 // writing nothing but the stencil (planar shadows).
-enum SurfacePass { kAmbient = 0, kDirect = 1, kMaskSurface = 2, kMaskLit = 3, kDistance = 4, kMarkReceiver = 5 };
+enum SurfacePass { kAmbient = 0, kDirect = 1, kMaskLit = 3, kDistance = 4, kMarkReceiver = 5 };
 
 // How the lit passes (kDirect, kMaskLit) test a point for shadow (uniform
 // `shadow_test`): not at all (the stencil or nothing decides), against the
@@ -90,8 +90,6 @@ void shade(vec3 p, vec3 n) {
       colour += material_specular * s;
     }
     frag_color = vec4(light_color * colour, 1.0);
-  } else if (pass == 2) {
-    frag_color = vec4(0.0, 0.0, 0.0, 1.0);
   } else {
     if (n_dot_l <= 0.0) discard;
     if (in_shadow(p, n_dot_l)) discard;

@@ -79,7 +79,7 @@ Image ShadowRenderer::render_mask(size_t light) {
   depth_and_ambient_pass();
   technique().cast(light);
   mask_passes(light);
-  return read_pixels(1);
+  return read_mask();
 }
 
 std::pair<Image, Image> ShadowRenderer::render_image_and_mask(bool show_volumes, size_t light) {
@@ -87,20 +87,33 @@ std::pair<Image, Image> ShadowRenderer::render_image_and_mask(bool show_volumes,
   if (drawing_->samples_per_side() != 1 || last_cast_light_ != light || !technique().cast_outlives_direct_pass())
     return {std::move(image), render_mask(light)};
   mask_passes(light);
-  return {std::move(image), read_pixels(1)};
+  return {std::move(image), read_mask()};
 }
 
 void ShadowRenderer::mask_passes(size_t light) {
-  // Every visible surface starts unlit (0), then lit where it faces the light
-  // and its technique says it is lit.
-  glClearColor(kMaskNoSurface / 255.0f, kMaskNoSurface / 255.0f, kMaskNoSurface / 255.0f, 1.0f);
+  // Every pixel starts unlit, then a visible surface turns lit where it faces
+  // the light and its technique says it is lit; read_mask marks the pixels
+  // no surface was drawn into.
+  glClearColor(kMaskUnlit / 255.0f, kMaskUnlit / 255.0f, kMaskUnlit / 255.0f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
   glDepthFunc(GL_EQUAL);
   glDepthMask(GL_FALSE);
-  drawing_->draw_surfaces(shaders::kMaskSurface, light, technique().shadow_test());
-  technique().limit_to_lit();  // 0 + lit
+  technique().limit_to_lit();  // unlit + lit
   drawing_->draw_surfaces(shaders::kMaskLit, light, technique().shadow_test());
   baseline_state();
+}
+
+// The pixels without a surface come from the depth buffer, not from a pass
+// over every surface: on llvmpipe that pass cost a sixth of the engine's
+// one-sample render (docs/performance.md).
+Image ShadowRenderer::read_mask() const {
+  Image mask = read_pixels(1);
+  const std::vector<uint8_t> covered = drawing_->target().read_covered();
+  const int w = mask.width, h = mask.height;
+  for (int y = 0; y < h; ++y)  // GL's row 0 is the bottom
+    for (int x = 0; x < w; ++x)
+      if (!covered[size_t(h - 1 - y) * size_t(w) + size_t(x)]) mask.at(x, y) = kMaskNoSurface;
+  return mask;
 }
 
 Image ShadowRenderer::read_pixels(int channels) const {

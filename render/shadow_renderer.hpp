@@ -60,6 +60,7 @@ class ShadowRenderer {
   void show_volumes_pass();
   void mask_passes(size_t light);
   Image read_pixels(int channels) const;
+  Image read_mask() const;  // after mask_passes
 
   const RenderPlan& plan_;
   std::unique_ptr<FrameDrawing> drawing_;
