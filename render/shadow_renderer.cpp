@@ -104,8 +104,8 @@ void ShadowRenderer::mask_passes(size_t light) {
 }
 
 // The pixels without a surface come from the depth buffer, not from a pass
-// over every surface: on llvmpipe that pass cost a sixth of the engine's
-// one-sample render (docs/performance.md).
+// over every surface: on llvmpipe that pass cost 0.1 s of the engine's 0.8 s
+// with --mask at one sample (docs/performance.md).
 Image ShadowRenderer::read_mask() const {
   Image mask = read_pixels(1);
   const std::vector<uint8_t> covered = drawing_->target().read_covered();
