@@ -79,8 +79,8 @@ options:
                         with its file's name
   --explain             print the render plan (camera, lights, each caster's
                         volume, how each light's volumes are counted and how
-                        far they reach) to stdout, after the staged scene's
-                        text for a MESH
+                        far they reach, the GL, the pages malloc takes) to
+                        stdout, after the staged scene's text for a MESH
   -h, --help            show this help
 
 Errors in SCENE are printed as FILE:LINE:COL: message; nothing is written
