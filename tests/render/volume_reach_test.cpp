@@ -75,9 +75,10 @@ TEST(VolumeReach, ExplainSaysHowFarEachLightsVolumesReach) {
   const Scene lit_from_above = parse_scene_text("light 0 0 4\n" + floor_and_sphere, "above.scene");
   print_render_plan(above, lit_from_above, make_render_plan(lit_from_above, RenderSettings{}));
   // From (0, 0, 4) past the sphere's top (z = 1.5) to the floor's z = 0:
-  // 4 / 2.5 = 1.6, times the margin.
-  EXPECT_NE(above.str().find("volumes reach 2 times their casters' distance from the light"), std::string::npos)
-      << above.str();
+  // 4 / 2.5 = 1.6, times the margin (1.76).
+  std::ostringstream expected;
+  expected << "volumes reach " << 1.6 * kVolumeReachMargin << " times their casters' distance from the light";
+  EXPECT_NE(above.str().find(expected.str()), std::string::npos) << expected.str() << "\n" << above.str();
   // Level with the sphere and over the floor: within their box on every axis.
   const Scene lit_from_among = parse_scene_text("light 2 0 1\n" + floor_and_sphere, "among.scene");
   print_render_plan(among, lit_from_among, make_render_plan(lit_from_among, RenderSettings{}));
