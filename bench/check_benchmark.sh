@@ -77,7 +77,7 @@ rows_table "$data/time"
 # the machine then weighs on both sides of each ratio alike.
 ratio() {
   paste -d' ' "$data/time-$1.txt" "$data/time-$2.txt" |
-    awk -v c="${3:-1}" '{printf "%.4f\n", $c / $(c + 2)}' | median | awk '{printf "%.2f", $1}'
+    awk -v c="${3:-1}" '{printf "%.4f\n", $c / $(c + NF / 2)}' | median | awk '{printf "%.2f", $1}'
 }
 echo
 echo "| ratio (median of the rounds' ratios) | measured |"

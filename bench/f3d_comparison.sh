@@ -15,13 +15,12 @@ cd "$(dirname "$0")/.."
 runs=${1:-3}
 build=build
 data=$build/bench-data
-engine=/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb
 for tool in f3d Xvfb /usr/bin/time; do
   command -v "$tool" >/dev/null || { echo "bench: $tool is missing (apt-get install f3d xvfb time)" >&2; exit 2; }
 done
-[ -f "$engine" ] || { echo "bench: $engine is missing (./build.sh installs assimp-testmodels)" >&2; exit 2; }
 
 . bench/timing.sh
+require_engine
 require_built $build make_subdivided_mesh
 subdivided_bunny "$data" 1M
 subdivided_bunny "$data" 4M

@@ -12,9 +12,8 @@ cd "$(dirname "$0")/.."
 runs=${1:-3}
 build=build
 data=$build/bench-data
-engine=/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb
-[ -f "$engine" ] || { echo "bench: $engine is missing (./build.sh installs assimp-testmodels)" >&2; exit 2; }
 . bench/timing.sh
+require_engine
 require_built $build make_subdivided_mesh
 subdivided_bunny "$data" 1M
 subdivided_bunny "$data" 4M
@@ -35,15 +34,7 @@ for c in "${commands[@]}"; do
   rows+=("${c%%|*}: 4 KiB pages|env GLIBC_TUNABLES= $build/umbra ${c#*|}")
 done
 
-# time_rows with the minor faults as a third column
-rm -f "$data"/huge-*.txt
-for ((i = 0; i < runs; i++)); do
-  for k in "${!rows[@]}"; do
-    # shellcheck disable=SC2086 # the command is split into words on purpose (no path holds a blank)
-    /usr/bin/time -f "%e %M %R" -o "$data/huge.last" ${rows[$k]#*|} >/dev/null 2>&1 || true
-    tail -n 1 "$data/huge.last" >> "$data/huge-$k.txt"
-  done
-done
+time_rows "$data/huge" "$runs"
 echo "$(nproc) cores; $runs rounds"
 echo
 echo "| command: malloc's pages | median wall time (s) | median peak memory (MiB) | median minor faults |"

@@ -15,9 +15,8 @@ cd "$(dirname "$0")/.."
 runs=${1:-5}
 build=build
 data=$build/bench-data
-engine=/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb
-[ -f "$engine" ] || { echo "bench: $engine is missing (./build.sh installs assimp-testmodels)" >&2; exit 2; }
 . bench/timing.sh
+require_engine
 require_built $build make_subdivided_mesh
 subdivided_bunny "$data" 1M
 

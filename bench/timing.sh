@@ -22,10 +22,11 @@ compared_builds() {
 # median of the numbers on stdin
 median() { sort -n | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }
 
-# time_once OUT COMMAND...: runs it once, appends "SECONDS KILOBYTES" to OUT
+# time_once OUT COMMAND...: runs it once, appends "SECONDS KILOBYTES FAULTS"
+# (wall time, peak memory, minor page faults) to OUT
 time_once() {
   local out=$1; shift
-  /usr/bin/time -f "%e %M" -o "$out.last" "$@" >/dev/null 2>&1 || true
+  /usr/bin/time -f "%e %M %R" -o "$out.last" "$@" >/dev/null 2>&1 || true
   # the last line: GNU time puts "Command exited with non-zero status" before it
   tail -n 1 "$out.last" >> "$out"
 }
@@ -54,6 +55,13 @@ rows_table() {
     printf '| %s | %s | %.0f |\n' "${rows[$k]%%|*}" "$(median_of "$1-$k.txt" 1)" \
       "$(echo "$(median_of "$1-$k.txt" 2) / 1024" | bc -l)"
   done
+}
+
+# require_engine: sets `engine` to Khronos's two-cylinder engine (110k
+# triangles, open) from Debian's assimp-testmodels, or exits
+require_engine() {
+  engine=/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb
+  [ -f "$engine" ] || { echo "bench: $engine is missing (./build.sh installs assimp-testmodels)" >&2; exit 2; }
 }
 
 # subdivided_bunny DATA SIZE: makes DATA/bunny-SIZE.{stl,obj,glb} unless there,
