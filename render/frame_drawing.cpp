@@ -42,7 +42,8 @@ void add_light_once_state() {
   glBlendFunc(GL_ONE, GL_ONE);
 }
 
-FrameDrawing::FrameDrawing(const Scene& scene, const RenderPlan& plan) : scene_(scene), plan_(plan) {
+FrameDrawing::FrameDrawing(const Scene& scene, const RenderPlan& plan, DrawSending sending)
+    : scene_(scene), plan_(plan), pacing_(sending == DrawSending::kPaced ? draw_piece_limit_for_current_gl() : 0) {
   triangle_program_ = std::make_unique<ShaderProgram>("triangle", shaders::kTriangleVertex,
                                                       fragment_source(shaders::kTriangleFragmentMain));
   sphere_program_ = std::make_unique<ShaderProgram>("sphere", shaders::kSphereVertex,
@@ -117,7 +118,7 @@ void FrameDrawing::draw_surfaces(int pass, size_t light, shaders::ShadowTest tes
     triangle_program_->set("material_textured", int(texture != 0));
     glActiveTexture(GL_TEXTURE0 + shaders::kMaterialTextureUnit);
     glBindTexture(GL_TEXTURE_2D, texture);
-    surfaces_->draw_triangle_group(group, viewpoint_);
+    surfaces_->draw_triangle_group(group, viewpoint_, pacing_);
   }
   sphere_program_->use();
   for (const Sphere& sphere : scene_.spheres) {
@@ -146,7 +147,7 @@ void FrameDrawing::draw_light_volumes(size_t light, ShaderProgram& program) {
   program.set("extruded_w", std::isinf(lp.volume_reach) ? 0.0f : float(1.0 / lp.volume_reach));
   program.set("extrude_from_light", 0);
   volumes_->upload(lp.all_volumes);
-  volumes_->draw();
+  volumes_->draw(pacing_);
   program.set("extrude_from_light", 1);
   for (const MeshVolumePlan& m : lp.mesh_volumes) draw_mesh_volume(m);
 }
@@ -160,7 +161,7 @@ void FrameDrawing::draw_mesh_volume(const MeshVolumePlan& m) {
     mesh_volumes_[m.mesh]->upload_mesh_vertices(scene_.meshes[m.mesh].positions);
   }
   mesh_volumes_[m.mesh]->upload_indices(m.volume.buffer.data(), m.volume.count);
-  mesh_volumes_[m.mesh]->draw();
+  mesh_volumes_[m.mesh]->draw(pacing_);
 }
 
 void FrameDrawing::mark_receiver(const glm::dvec4& plane) {
@@ -170,7 +171,7 @@ void FrameDrawing::mark_receiver(const glm::dvec4& plane) {
   triangle_program_->set("receiver_plane", glm::vec4(plane));
   triangle_program_->set("receiver_tolerance", float(1e-5 * (glm::length(scene_center_) + scene_radius_)));
   for (const SurfaceBuffers::TriangleGroup& group : surfaces_->triangle_groups())
-    surfaces_->draw_triangle_group(group, viewpoint_);
+    surfaces_->draw_triangle_group(group, viewpoint_, pacing_);
 }
 
 void FrameDrawing::draw_projected_casters(size_t light, const glm::dvec4& plane) {
@@ -181,7 +182,7 @@ void FrameDrawing::draw_projected_casters(size_t light, const glm::dvec4& plane)
   planar_program_->set("plane", glm::vec4(plane));
   planar_program_->set("light_height", float(glm::dot(plane, glm::dvec4(position, 1.0))));
   planar_program_->set("plane_offset", float(1e-6 * scale));
-  volumes_->draw();
+  volumes_->draw(pacing_);
 }
 
 }  // namespace umbra

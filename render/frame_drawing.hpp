@@ -11,6 +11,7 @@
 #include <glm/vec4.hpp>
 
 #include "scene/scene.hpp"
+#include "render/draw_pacing.hpp"
 #include "render/frame_target.hpp"
 #include "render/render_plan.hpp"
 #include "render/shaders.hpp"
@@ -31,8 +32,8 @@ void add_light_once_state();
 
 class FrameDrawing {
  public:
-  // Requires a current GL 3.3 core context.
-  FrameDrawing(const Scene& scene, const RenderPlan& plan);
+  // Requires a current GL 3.3 core context. Draws as `sending` says.
+  FrameDrawing(const Scene& scene, const RenderPlan& plan, DrawSending sending);
   ~FrameDrawing();
   FrameDrawing(const FrameDrawing&) = delete;
   FrameDrawing& operator=(const FrameDrawing&) = delete;
@@ -81,6 +82,7 @@ class FrameDrawing {
   const Scene& scene_;
   const RenderPlan& plan_;
   FrameTarget target_;
+  DrawPacing pacing_;  // every draw of surfaces and volumes goes through it
   int samples_per_side_ = 1;
   std::unique_ptr<ShaderProgram> triangle_program_, sphere_program_, volume_program_, count_program_,
       planar_program_;

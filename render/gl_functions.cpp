@@ -26,12 +26,17 @@ void require_image_size(int width, int height, const std::string& backend) {
                              std::to_string(largest_height));
 }
 
-std::string gl_description() {
-  const auto text = [](GLenum name) {
-    const GLubyte* s = glGetString(name);
-    return s ? std::string(reinterpret_cast<const char*>(s)) : std::string("?");
-  };
-  return text(GL_RENDERER) + ", OpenGL " + text(GL_VERSION);
+namespace {
+
+std::string gl_string(GLenum name) {
+  const GLubyte* s = glGetString(name);
+  return s ? std::string(reinterpret_cast<const char*>(s)) : std::string("?");
 }
+
+}  // namespace
+
+std::string gl_description() { return gl_renderer() + ", OpenGL " + gl_string(GL_VERSION); }
+
+std::string gl_renderer() { return gl_string(GL_RENDERER); }
 
 }  // namespace umbra

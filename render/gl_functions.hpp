@@ -18,7 +18,9 @@ void load_gl_functions(GlProcLoader loader, const std::string& backend);
 // object (FrameTarget).
 void require_image_size(int width, int height, const std::string& backend);
 
-// "Mesa llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 (Core Profile) Mesa 22.3.6"
+// "llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 (Core Profile) Mesa 22.3.6"
 std::string gl_description();
+// The first part of that: "llvmpipe (LLVM 15.0.6, 256 bits)"
+std::string gl_renderer();
 
 }  // namespace umbra

@@ -9,8 +9,8 @@
 
 namespace umbra {
 
-ShadowRenderer::ShadowRenderer(const Scene& scene, const RenderPlan& plan)
-    : plan_(plan), drawing_(std::make_unique<FrameDrawing>(scene, plan)) {}
+ShadowRenderer::ShadowRenderer(const Scene& scene, const RenderPlan& plan, DrawSending sending)
+    : plan_(plan), drawing_(std::make_unique<FrameDrawing>(scene, plan, sending)) {}
 
 ShadowRenderer::~ShadowRenderer() = default;
 

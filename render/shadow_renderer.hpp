@@ -13,6 +13,7 @@
 
 #include "image/image.hpp"
 #include "scene/scene.hpp"
+#include "render/draw_pacing.hpp"
 #include "render/render_plan.hpp"
 
 namespace umbra {
@@ -23,10 +24,10 @@ class ShadowTechnique;
 class ShadowRenderer {
  public:
   // Requires a current GL 3.3 core context that can draw
-  // plan.settings.width x height pixels. Reads `plan` only
-  // when it draws, so the plan may still be in the making while the renderer
-  // is built (umbra render makes both at once).
-  ShadowRenderer(const Scene& scene, const RenderPlan& plan);
+  // plan.settings.width x height pixels. Reads `plan` when it draws, so a
+  // viewer may change it between frames. `sending`: kPaced for a picture,
+  // kWhole for a run of frames (draw_pacing.hpp).
+  ShadowRenderer(const Scene& scene, const RenderPlan& plan, DrawSending sending = DrawSending::kPaced);
   ~ShadowRenderer();
 
   // Draws the frame into its own framebuffer, which stays bound, so that a

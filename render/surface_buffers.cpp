@@ -226,24 +226,27 @@ unsigned SurfaceBuffers::material_texture(int material) const {
   return size_t(material) < textures_.size() ? textures_[size_t(material)] : 0;
 }
 
-void SurfaceBuffers::draw_triangle_group(const TriangleGroup& group, const glm::dvec3& viewpoint) const {
+void SurfaceBuffers::draw_triangle_group(const TriangleGroup& group, const glm::dvec3& viewpoint, DrawPacing& pacing) const {
   const bool outside = glm::any(glm::lessThan(viewpoint, group.closed_lo)) || glm::any(glm::greaterThan(viewpoint, group.closed_hi));
   if (group.closed && outside) {
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
   }
   glBindVertexArray(triangle_vao_);
-  // Mesa's llvmpipe (lp_setup_analyse_triangles, a fast path for one
-  // Windows compositor) treats a draw of exactly 9 vertices whose last
-  // triangle is level on screen (all three at one window y, as a triangle
-  // whose plane holds the eye is) as a rectangle, and draws nothing when the
-  // first two do not make one. So 3 triangles are drawn as 2 + 1.
-  if (group.vertex_count == 9) {
-    glDrawArrays(GL_TRIANGLES, group.first_vertex, 6);
-    glDrawArrays(GL_TRIANGLES, group.first_vertex + 6, 3);
-  } else {
-    glDrawArrays(GL_TRIANGLES, group.first_vertex, group.vertex_count);
-  }
+  pacing.draw(size_t(group.vertex_count / 3), [&](size_t first, size_t count) {
+    const GLint first_vertex = group.first_vertex + GLint(3 * first);
+    // Mesa's llvmpipe (lp_setup_analyse_triangles, a fast path for one
+    // Windows compositor) treats a draw of exactly 9 vertices whose last
+    // triangle is level on screen (all three at one window y, as a triangle
+    // whose plane holds the eye is) as a rectangle, and draws nothing when
+    // the first two do not make one. So 3 triangles are drawn as 2 + 1.
+    if (count == 3) {
+      glDrawArrays(GL_TRIANGLES, first_vertex, 6);
+      glDrawArrays(GL_TRIANGLES, first_vertex + 6, 3);
+    } else {
+      glDrawArrays(GL_TRIANGLES, first_vertex, GLsizei(3 * count));
+    }
+  });
   glDisable(GL_CULL_FACE);
 }
 
@@ -302,10 +305,13 @@ void VolumeBuffer::upload_mesh_vertices(const std::vector<glm::dvec3>& positions
   upload_vertices(vertices, GL_STATIC_DRAW);
 }
 
-void VolumeBuffer::draw() const {
+void VolumeBuffer::draw(DrawPacing& pacing) const {
   if (index_count_ == 0) return;
   glBindVertexArray(vao_);
-  glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
+  pacing.draw(size_t(index_count_ / 3), [](size_t first, size_t count) {
+    glDrawElements(GL_TRIANGLES, GLsizei(3 * count), GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(3 * first * sizeof(uint32_t)));
+  });
 }
 
 }  // namespace umbra

@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "render/draw_pacing.hpp"
 #include "scene/scene.hpp"
 #include "silhouette/shadow_volume.hpp"
 
@@ -34,7 +35,8 @@ class SurfaceBuffers {
   // they are never visible (and where rasterisation lets one show at an
   // outline pixel, two-sided shading would paint it unlit); from inside, as
   // when a viewer zooms into a mesh, they are drawn.
-  void draw_triangle_group(const TriangleGroup& group, const glm::dvec3& viewpoint) const;
+  // They are sent through `pacing`.
+  void draw_triangle_group(const TriangleGroup& group, const glm::dvec3& viewpoint, DrawPacing& pacing) const;
   void draw_sphere_box() const;
   // Material `material`'s texture map as a GL texture, or 0 when it has none.
   unsigned material_texture(int material) const;
@@ -64,7 +66,7 @@ class VolumeBuffer {
   // the light. Each frame then sends only upload_indices.
   void upload_mesh_vertices(const std::vector<glm::dvec3>& positions);
   void upload_indices(const uint32_t* indices, size_t count);
-  void draw() const;
+  void draw(DrawPacing& pacing) const;
 
  private:
   void upload_vertices(const std::vector<float>& xyzw, unsigned usage);

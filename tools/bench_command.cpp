@@ -194,7 +194,7 @@ std::vector<BenchRow> bench_scene(const Scene& scene, const std::vector<MeshCast
     if (m.segments) settings.sphere_segments = m.segments;
     if (m.map_size) settings.shadow_map_size = m.map_size;
     RenderPlan plan = make_render_plan(scene, meshes, settings);
-    ShadowRenderer renderer(scene, plan);
+    ShadowRenderer renderer(scene, plan, DrawSending::kWhole);
     std::tie(row.median_ms, row.frames) = median_frame_ms(o.frames, [&] {
       update_render_plan(scene, meshes, plan);
       renderer.draw(false);

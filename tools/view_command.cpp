@@ -208,7 +208,7 @@ int run_view_command(const std::vector<std::string>& argv) {
     if (orbited) scene.frame.camera = *orbited;  // a reload keeps the user's view
     scene.meshes = prepare_mesh_casters(scene.frame);
     scene.plan = std::make_unique<RenderPlan>(make_render_plan(scene.frame, scene.meshes, options.settings));
-    scene.renderer = std::make_unique<ShadowRenderer>(scene.frame, *scene.plan);
+    scene.renderer = std::make_unique<ShadowRenderer>(scene.frame, *scene.plan, DrawSending::kWhole);
     progress.reset();
   };
 
