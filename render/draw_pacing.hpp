@@ -3,7 +3,7 @@
 // it is sent into the lists of the 64x64-pixel tiles it covers, and its
 // threads rasterise such a scene of lists only once it is flushed or full
 // (36 MB); meanwhile the draws go on filling the next scenes. A render of
-// Khronos's engine at 800x800 held about 95 MB of bins in its 206 MB. Sent
+// Khronos's engine at 800x800 held 95 MB of bins at its 120 MB heap peak. Sent
 // in fenced pieces, no more than two of them unfinished (one rasterised
 // while the next is binned), the bins stay a few megabytes, and the picture
 // is the same bit for bit (docs/performance.md).
