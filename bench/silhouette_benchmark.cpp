@@ -249,7 +249,7 @@ void BM_RenderFrame(benchmark::State& state) {
   if (per_triangle) settings.method = RenderMethod::kTriangles;
   HeadlessContext context(400, 400);
   RenderPlan plan = make_render_plan(scene, casters, settings);
-  ShadowRenderer renderer(scene, plan);
+  ShadowRenderer renderer(scene, plan, DrawSending::kWhole);  // as the viewer sends them
   for (auto _ : state) {
     if (light_moves) {
       rotate_lights_about_z(scene, 1.0);
