@@ -5,7 +5,10 @@
 // ray-cast reference.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <numeric>
+#include <string>
+#include <vector>
 
 #include "render/draw_pacing.hpp"
 #include "render/headless_context.hpp"
