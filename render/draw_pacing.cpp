@@ -8,16 +8,22 @@
 
 namespace umbra {
 
-std::vector<size_t> draw_pieces(size_t count, size_t limit) {
-  if (limit == 0 || count <= limit) return {count};
+namespace {
+
+// The next piece of a draw with `left` triangles still to send.
+size_t next_piece(size_t left, size_t limit) {
+  if (limit == 0 || left <= limit) return left;
   limit = std::max<size_t>(limit, 5);  // so that one less is still four or more
+  const size_t piece = std::min(left, limit);
+  return left - piece == 3 ? piece - 1 : piece;  // leaves four, not three
+}
+
+}  // namespace
+
+std::vector<size_t> draw_pieces(size_t count, size_t limit) {
   std::vector<size_t> pieces;
-  for (size_t left = count; left > 0;) {
-    size_t piece = std::min(left, limit);
-    if (left - piece == 3) --piece;  // leaves four, not three
-    pieces.push_back(piece);
-    left -= piece;
-  }
+  for (size_t left = count; left > 0; left -= pieces.back()) pieces.push_back(next_piece(left, limit));
+  if (pieces.empty()) pieces.push_back(0);
   return pieces;
 }
 
@@ -26,11 +32,15 @@ DrawPacing::~DrawPacing() {
 }
 
 void DrawPacing::draw(size_t count, const std::function<void(size_t first, size_t count)>& send) {
-  size_t first = 0;
-  for (const size_t piece : draw_pieces(count, limit_)) {
+  if (limit_ == 0) {  // a GPU, or a run of frames: no pieces to cut, nothing to allocate per draw
+    send(0, count);
+    return;
+  }
+  for (size_t first = 0; first < count;) {
+    const size_t piece = next_piece(count - first, limit_);
     send(first, piece);
     first += piece;
-    if (limit_ == 0 || (unfenced_ += piece) < limit_) continue;
+    if ((unfenced_ += piece) < limit_) continue;
     GLsync fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
     glFlush();  // the piece goes to the rasteriser now
     if (fence_) {
