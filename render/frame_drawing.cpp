@@ -72,25 +72,28 @@ FrameDrawing::~FrameDrawing() = default;
 
 void FrameDrawing::apply_view() {
   const RenderSettings& s = plan_.settings;
-  const glm::mat4 view_projection(infinite_perspective(plan_.camera.fovy_deg, double(s.width) / s.height,
-                                                       plan_.near_plane) *
-                                  view_matrix(plan_.camera));
-  view_from(plan_.camera.eye, view_projection);
+  const glm::dmat4 view_projection =
+      infinite_perspective(plan_.camera.fovy_deg, double(s.width) / s.height, plan_.near_plane) *
+      view_matrix(plan_.camera);
+  const int width = s.width * samples_per_side_, height = s.height * samples_per_side_;
+  view_from(plan_.camera.eye, view_projection, width, height);
   for (ShaderProgram* p : {volume_program_.get(), count_program_.get(), planar_program_.get()}) {
     p->use();
-    p->set("view_projection", view_projection);
+    p->set("view_projection", glm::mat4(view_projection));
   }
-  target_.bind(s.width * samples_per_side_, s.height * samples_per_side_);
-  glViewport(0, 0, s.width * samples_per_side_, s.height * samples_per_side_);
+  target_.bind(width, height);
+  glViewport(0, 0, width, height);
 }
 
-void FrameDrawing::view_from(const glm::dvec3& viewpoint, const glm::mat4& view_projection) {
+void FrameDrawing::view_from(const glm::dvec3& viewpoint, const glm::dmat4& view_projection, int width, int height) {
   viewpoint_ = viewpoint;
   for (ShaderProgram* p : {triangle_program_.get(), sphere_program_.get()}) {
     p->use();
-    p->set("view_projection", view_projection);
+    p->set("view_projection", glm::mat4(view_projection));
     p->set("eye", f(viewpoint));
   }
+  sphere_program_->use();
+  sphere_program_->set("window_rays", glm::mat3(window_ray_directions(view_projection, viewpoint, width, height)));
 }
 
 void FrameDrawing::draw_surfaces(int pass, size_t light, shaders::ShadowTest test) {

@@ -55,8 +55,9 @@ class FrameDrawing {
   // Every surface with the shading pass `pass` (shaders.hpp) for light
   // `light`; its lit passes test for shadow as `test` says.
   void draw_surfaces(int pass, size_t light, shaders::ShadowTest test);
-  // The surfaces from another viewpoint: a shadow map's face.
-  void view_from(const glm::dvec3& viewpoint, const glm::mat4& view_projection);
+  // The surfaces from another viewpoint: a shadow map's face, drawn into a
+  // viewport of width x height.
+  void view_from(const glm::dvec3& viewpoint, const glm::dmat4& view_projection, int width, int height);
   // Light `light`'s volumes in the colour `tint` (--show-volumes), with the
   // current state.
   void draw_volumes(size_t light, const glm::vec4& tint);

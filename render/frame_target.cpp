@@ -106,11 +106,16 @@ std::vector<uint8_t> FrameTarget::read_rgba8(int samples) const {
   return bytes;
 }
 
-std::vector<uint8_t> FrameTarget::read_covered() const {
+std::vector<float> FrameTarget::read_depth() const {
   std::vector<float> depth(size_t(width_) * size_t(height_));
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
   glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  return depth;
+}
+
+std::vector<uint8_t> FrameTarget::read_covered() const {
+  const std::vector<float> depth = read_depth();
   std::vector<uint8_t> covered(depth.size());
   for (size_t i = 0; i < depth.size(); ++i) covered[i] = depth[i] < 1.0f;
   return covered;

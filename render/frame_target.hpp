@@ -49,6 +49,9 @@ class FrameTarget {
   // 1.0, which no fragment can equal and pass GL_LESS), 0 elsewhere; rows
   // from the bottom. For one sample a pixel.
   std::vector<uint8_t> read_covered() const;
+  // The window depth in [0, 1] per pixel, rows from the bottom; 1 where
+  // nothing was drawn. For one sample a pixel.
+  std::vector<float> read_depth() const;
 
  private:
   void release();

@@ -85,6 +85,9 @@ void ShaderProgram::set(const char* uniform, const glm::vec3& value) {
 void ShaderProgram::set(const char* uniform, const glm::vec4& value) {
   glUniform4fv(location(uniform), 1, glm::value_ptr(value));
 }
+void ShaderProgram::set(const char* uniform, const glm::mat3& value) {
+  glUniformMatrix3fv(location(uniform), 1, GL_FALSE, glm::value_ptr(value));
+}
 void ShaderProgram::set(const char* uniform, const glm::mat4& value) {
   glUniformMatrix4fv(location(uniform), 1, GL_FALSE, glm::value_ptr(value));
 }

@@ -5,6 +5,7 @@
 #include <string>
 #include <unordered_map>
 
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -23,6 +24,7 @@ class ShaderProgram {
   void set(const char* uniform, float value);
   void set(const char* uniform, const glm::vec3& value);
   void set(const char* uniform, const glm::vec4& value);
+  void set(const char* uniform, const glm::mat3& value);
   void set(const char* uniform, const glm::mat4& value);
 
  private:

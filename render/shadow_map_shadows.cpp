@@ -27,7 +27,7 @@ void ShadowMapShadows::cast(size_t light) {
   baseline_state();
   for (int face = 0; face < 6; ++face) {
     map_->begin_face(face);
-    drawing_.view_from(position, glm::mat4(cube_face_view_projection(position, face, near)));
+    drawing_.view_from(position, cube_face_view_projection(position, face, near), size, size);
     drawing_.draw_surfaces(shaders::kDistance, light, shaders::kNoShadowTest);
   }
   map_->end();

@@ -72,6 +72,8 @@ Image ShadowRenderer::render_image(bool show_volumes) {
 
 Image ShadowRenderer::read_image() const { return read_pixels(3); }
 
+std::vector<float> ShadowRenderer::read_depth() const { return drawing_->target().read_depth(); }
+
 void ShadowRenderer::finish() const { glFinish(); }
 
 Image ShadowRenderer::render_mask(size_t light) {

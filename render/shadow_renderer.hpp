@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "image/image.hpp"
 #include "scene/scene.hpp"
@@ -43,6 +44,9 @@ class ShadowRenderer {
   Image render_image(bool show_volumes);
   // What the last draw left in the framebuffer (RGB).
   Image read_image() const;
+  // The window depth the last draw left, per pixel, rows from the bottom; 1
+  // where no surface was drawn. For one sample a pixel (--antialias 1).
+  std::vector<float> read_depth() const;
 
   // Light `light`'s shadow mask (grey): kMaskNoSurface where no surface is
   // seen, kMaskLit where the visible point faces the light and is outside its

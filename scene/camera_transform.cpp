@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
 
 namespace umbra {
 
@@ -46,6 +47,19 @@ glm::dvec3 pixel_ray_direction(const Camera& camera, int width, int height, doub
   const glm::dvec3 up{view[0][1], view[1][1], view[2][1]};
   const glm::dvec3 back{view[0][2], view[1][2], view[2][2]};
   return glm::normalize(x * right + y * up - back);
+}
+
+glm::dmat3 window_ray_directions(const glm::dmat4& view_projection, const glm::dvec3& eye, int width, int height) {
+  // Under a perspective projection every point of a plane of constant NDC
+  // depth has the same homogeneous w after unprojecting, so its offset from
+  // the eye is affine in (x, y): three points fix it.
+  const glm::dmat4 unproject = glm::inverse(view_projection);
+  const auto offset = [&](double x, double y) {
+    const glm::dvec4 p = unproject * glm::dvec4(2.0 * x / width - 1.0, 2.0 * y / height - 1.0, 0.0, 1.0);
+    return glm::dvec3(p) / p.w - eye;
+  };
+  const glm::dvec3 origin = offset(0.0, 0.0);
+  return glm::dmat3(offset(1.0, 0.0) - origin, offset(0.0, 1.0) - origin, origin);
 }
 
 }  // namespace umbra

@@ -1,6 +1,7 @@
 #pragma once
 // The camera's matrices and pixel rays, in double precision (no GL here).
 
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
@@ -43,5 +44,15 @@ glm::dmat4 infinite_perspective(double fovy_deg, double aspect, double near);
 // The world-space ray through the centre of pixel (px, py) of a width x height
 // image whose row 0 is the top row. Returns the unit direction; it starts at the eye.
 glm::dvec3 pixel_ray_direction(const Camera& camera, int width, int height, double px, double py);
+
+// The matrix M for which M (x, y, 1) is the direction (not unit) of the ray
+// from `eye` through the point (x, y) of a width x height viewport, in GL
+// window coordinates (pixel centres at half-integers, row 0 at the bottom),
+// for a perspective `view_projection` whose centre of projection is `eye`.
+// A fragment shader that traces its pixel's ray from gl_FragCoord by it
+// aims within about 1e-7 of the ray's angle; one that interpolates a
+// position across a triangle aims only as well as the rasteriser's
+// attribute interpolation, which the GL leaves to the implementation.
+glm::dmat3 window_ray_directions(const glm::dmat4& view_projection, const glm::dvec3& eye, int width, int height);
 
 }  // namespace umbra

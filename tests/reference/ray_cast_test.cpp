@@ -1,5 +1,7 @@
 #include "reference/ray_cast.hpp"
 
+#include <utility>
+
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
@@ -65,6 +67,34 @@ TEST(RayCast, PixelRaysOfTheSpecCamera) {
   // The top edge of the image is fovy / 2 = 22.5 degrees above the axis.
   const glm::dvec3 top = pixel_ray_direction(camera, 101, 100, 50, -0.5);
   EXPECT_NEAR(std::atan2(top.y, -top.z), M_PI / 8, 1e-12);
+}
+
+// What the GL's sphere shader traces from gl_FragCoord: the same rays as
+// the reference's, from the matrices the GL draws with.
+TEST(RayCast, WindowRaysAreThePixelRays) {
+  Camera tilted = spec_camera();
+  tilted.eye = glm::dvec3(2.5, -1.5, 3.0);
+  tilted.target = glm::dvec3(0.2, 0.1, -0.4);
+  tilted.up = glm::dvec3(0.3, 1.0, 0.1);
+  for (const Camera& camera : {spec_camera(), tilted}) {
+    const int width = 160, height = 120;
+    const glm::dmat3 rays = window_ray_directions(
+        infinite_perspective(camera.fovy_deg, double(width) / height, 0.05) * view_matrix(camera), camera.eye, width, height);
+    for (const auto& [px, py] : {std::pair{0, 0}, {159, 0}, {0, 119}, {82, 84}, {159, 119}, {80, 60}}) {
+      const glm::dvec3 window = glm::normalize(rays * glm::dvec3(px + 0.5, height - py - 0.5, 1.0));
+      const glm::dvec3 pixel = pixel_ray_direction(camera, width, height, px, py);
+      EXPECT_LT(glm::length(window - pixel), 1e-12) << "pixel (" << px << ", " << py << ")";
+    }
+  }
+  // The spec camera looks down -z with y up: the window's centre is the axis,
+  // its right edge tan(fovy / 2) * aspect to the side.
+  const glm::dmat3 spec = window_ray_directions(
+      infinite_perspective(45.0, 4.0 / 3.0, 0.05) * view_matrix(spec_camera()), spec_camera().eye, 160, 120);
+  const glm::dvec3 axis = spec * glm::dvec3(80.0, 60.0, 1.0), edge = spec * glm::dvec3(160.0, 60.0, 1.0);
+  EXPECT_NEAR(axis.x / -axis.z, 0.0, 1e-14);  // the inverse matrix, rounded
+  EXPECT_NEAR(axis.y / -axis.z, 0.0, 1e-14);
+  EXPECT_NEAR(edge.x / -edge.z, std::tan(M_PI / 8) * 4.0 / 3.0, 1e-14);
+  EXPECT_NEAR(edge.y / -edge.z, 0.0, 1e-14);
 }
 
 TEST(RayCast, MaskValuesForHandPickedPixels) {

@@ -1,0 +1,75 @@
+// A sphere's depth is the exact ray-sphere hit of the ray through each
+// pixel's centre, as the ray-cast reference traces it. Near a sphere's
+// outline the hit moves fast with the ray (the depth goes as the square
+// root of the distance to the outline), so a ray a few hundredths of a pixel
+// off puts the surface behind a shadow volume's face that lies just behind it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "reference/ray_cast.hpp"
+#include "render/headless_context.hpp"
+#include "render/render_plan.hpp"
+#include "render/shadow_renderer.hpp"
+#include "scene/camera_transform.hpp"
+#include "scene/scene_parser.hpp"
+
+namespace umbra {
+namespace {
+
+// gl_FragDepth is computed in float, whose steps near depth 1 are the 24-bit
+// buffer's own: a few steps of rounding, where a ray aimed a hundredth of a
+// pixel off near an outline moves the depth by hundreds.
+constexpr double kDepthStepsOfRounding = 4.0;
+
+struct DepthAgreement {
+  int sphere_pixels = 0;
+  int beyond_rounding = 0;
+  double worst_steps = 0.0;  // in steps of the 24-bit depth buffer
+  std::string worst_pixel;
+};
+
+DepthAgreement compare_sphere_depths(const Scene& scene, int width, int height) {
+  RenderSettings settings;
+  settings.width = width;
+  settings.height = height;
+  const RenderPlan plan = make_render_plan(scene, settings);
+  HeadlessContext context(width, height);
+  ShadowRenderer renderer(scene, plan);
+  renderer.render_image(false);
+  const std::vector<float> depth = renderer.read_depth();
+  const glm::dmat4 view_projection =
+      infinite_perspective(plan.camera.fovy_deg, double(width) / height, plan.near_plane) * view_matrix(plan.camera);
+  DepthAgreement r;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const auto hit = nearest_hit(scene, plan.camera.eye, pixel_ray_direction(plan.camera, width, height, x, y));
+      if (!hit || hit->object >= int(scene.spheres.size())) continue;
+      const float gl = depth[size_t(height - 1 - y) * size_t(width) + size_t(x)];
+      if (gl >= 1.0f) continue;
+      ++r.sphere_pixels;
+      const glm::dvec4 clip = view_projection * glm::dvec4(hit->point, 1.0);
+      const double exact = 0.5 * clip.z / clip.w + 0.5;
+      const double steps = std::abs(double(gl) - exact) * double(1 << 24);
+      r.beyond_rounding += steps > kDepthStepsOfRounding;
+      if (steps > r.worst_steps) {
+        std::ostringstream s;
+        s << "pixel (" << x << ", " << y << ")";
+        r.worst_steps = steps, r.worst_pixel = s.str();
+      }
+    }
+  return r;
+}
+
+TEST(SphereDepth, IsTheExactHitOfThePixelCentresRay) {
+  const Scene scene = parse_scene_file(std::string(UMBRA_SOURCE_DIR) + "/scenes/many_spheres.scene");
+  const DepthAgreement r = compare_sphere_depths(scene, 160, 120);
+  EXPECT_GT(r.sphere_pixels, 1000);
+  EXPECT_EQ(r.beyond_rounding, 0) << "of " << r.sphere_pixels << " sphere pixels; the worst, " << r.worst_pixel
+                                  << ", by " << r.worst_steps << " steps of the depth buffer";
+}
+
+}  // namespace
+}  // namespace umbra
