@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "mesh/texture_image.hpp"
 #include "scene/camera_transform.hpp"
 #include "render/gl.hpp"
 #include "render/planar_receivers.hpp"
@@ -18,6 +19,12 @@ namespace {
 glm::vec3 f(const glm::dvec3& v) { return glm::vec3(v); }
 
 std::string fragment_source(const char* main) { return std::string("#version 330 core\n") + shaders::kShading + main; }
+
+// The shader's name for a map's wrap mode is the mode's own value.
+static_assert(int(TextureImage::Wrap::kRepeat) == shaders::kWrapRepeat &&
+              int(TextureImage::Wrap::kClampToEdge) == shaders::kWrapClampToEdge &&
+              int(TextureImage::Wrap::kMirroredRepeat) == shaders::kWrapMirroredRepeat);
+int texture_wrap(TextureImage::Wrap wrap) { return int(wrap); }
 
 }  // namespace
 
@@ -119,6 +126,8 @@ void FrameDrawing::draw_surfaces(int pass, size_t light, shaders::ShadowTest tes
     set_material(*triangle_program_, group.material);
     const unsigned texture = surfaces_->material_texture(group.material);
     triangle_program_->set("material_textured", int(texture != 0));
+    if (const TextureImage* image = scene_.materials[size_t(group.material)].texture.get())
+      triangle_program_->set("material_wrap", glm::ivec2(texture_wrap(image->wrap_u), texture_wrap(image->wrap_v)));
     glActiveTexture(GL_TEXTURE0 + shaders::kMaterialTextureUnit);
     glBindTexture(GL_TEXTURE_2D, texture);
     surfaces_->draw_triangle_group(group, viewpoint_, pacing_);

@@ -79,6 +79,9 @@ int ShaderProgram::location(const char* uniform) {
 
 void ShaderProgram::set(const char* uniform, int value) { glUniform1i(location(uniform), value); }
 void ShaderProgram::set(const char* uniform, float value) { glUniform1f(location(uniform), value); }
+void ShaderProgram::set(const char* uniform, const glm::ivec2& value) {
+  glUniform2iv(location(uniform), 1, glm::value_ptr(value));
+}
 void ShaderProgram::set(const char* uniform, const glm::vec3& value) {
   glUniform3fv(location(uniform), 1, glm::value_ptr(value));
 }

@@ -7,6 +7,7 @@
 
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -22,6 +23,7 @@ class ShaderProgram {
   void use() const;
   void set(const char* uniform, int value);
   void set(const char* uniform, float value);
+  void set(const char* uniform, const glm::ivec2& value);
   void set(const char* uniform, const glm::vec3& value);
   void set(const char* uniform, const glm::vec4& value);
   void set(const char* uniform, const glm::mat3& value);

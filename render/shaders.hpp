@@ -118,16 +118,54 @@ void main() {
 }
 )";
 
+// How a texture map's texel indices wrap along each axis (uniform
+// `material_wrap`): the values of TextureImage::Wrap.
+enum TextureWrap { kWrapRepeat = 0, kWrapClampToEdge = 1, kWrapMirroredRepeat = 2 };
+
+// A triangle's texture map is filtered here, bilinearly without mipmaps, from
+// four texelFetch reads weighted in float, as the ray-cast reference weighs
+// them in double (sample_bilinear). The GL's own GL_LINEAR may weigh texels
+// with a few bits of sub-texel precision, as the GL allows: llvmpipe's put
+// channels two levels from the reference where neighbouring texels differ by
+// most of the range (15 channels of a map of alternating extremes,
+// texture_maps_test).
 inline constexpr const char* kTriangleFragmentMain = R"(
 in vec3 world_position;
 in vec3 world_normal;
 in vec3 vertex_color;
 in vec2 texture_uv;
 uniform bool material_textured;
-uniform sampler2D material_texture;  // bilinear, no mipmaps: as the ray-cast reference samples it
+uniform sampler2D material_texture;
+uniform ivec2 material_wrap;  // TextureWrap, along u and along v
+
+// Texel index i of a row or column of n, wrapped: floor division, as GLSL's
+// % is undefined for negative operands (exact while |i| < 2^23).
+int wrapped(int i, int n, int wrap) {
+  if (wrap == 1) return clamp(i, 0, n - 1);
+  int period = wrap == 2 ? 2 * n : n;
+  int m = i - period * int(floor(float(i) / float(period)));
+  m = clamp(m, 0, period - 1);
+  return m < n ? m : period - 1 - m;
+}
+
+vec3 texel(ivec2 size, int i, int j) {
+  return texelFetch(material_texture, ivec2(wrapped(i, size.x, material_wrap.x), wrapped(j, size.y, material_wrap.y)), 0).rgb;
+}
+
+vec3 bilinear(vec2 uv) {
+  ivec2 size = textureSize(material_texture, 0);
+  // Texel centres sit at (i + 1/2) / size: the point's place among them.
+  vec2 p = clamp(uv * vec2(size) - 0.5, -4194304.0, 4194304.0);
+  vec2 f = floor(p);
+  vec2 a = p - f;
+  int i = int(f.x), j = int(f.y);
+  return mix(mix(texel(size, i, j), texel(size, i + 1, j), a.x),
+             mix(texel(size, i, j + 1), texel(size, i + 1, j + 1), a.x), a.y);
+}
+
 void main() {
   surface_color = vertex_color;
-  if (material_textured) surface_color *= texture(material_texture, texture_uv).rgb;
+  if (material_textured) surface_color *= bilinear(texture_uv);
   shade(world_position, normalize(world_normal));
 }
 )";

@@ -177,21 +177,8 @@ SurfaceBuffers::~SurfaceBuffers() {
   glDeleteTextures(GLsizei(textures_.size()), textures_.data());
 }
 
-namespace {
-
-GLint gl_wrap(TextureImage::Wrap wrap) {
-  switch (wrap) {
-    case TextureImage::Wrap::kClampToEdge: return GL_CLAMP_TO_EDGE;
-    case TextureImage::Wrap::kMirroredRepeat: return GL_MIRRORED_REPEAT;
-    case TextureImage::Wrap::kRepeat: break;
-  }
-  return GL_REPEAT;
-}
-
-}  // namespace
-
-// Each material's texture map, once (materials may share one): bilinear
-// filtering without mipmaps, which the ray-cast reference samples alike.
+// Each material's texture map, once (materials may share one), for the
+// triangle shader to filter (shaders.hpp).
 void SurfaceBuffers::upload_textures(const Scene& scene) {
   textures_.assign(scene.materials.size(), 0);
   std::map<const TextureImage*, GLuint> uploaded;
@@ -213,10 +200,10 @@ void SurfaceBuffers::upload_textures(const Scene& scene) {
     glBindTexture(GL_TEXTURE_2D, texture);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image->width, image->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image->rgba.data());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, gl_wrap(image->wrap_u));
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, gl_wrap(image->wrap_v));
+    // The shader filters and wraps (texelFetch); a single level needs a
+    // filter without mipmaps to be complete.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     textures_[m] = uploaded[image] = texture;
   }
   glBindTexture(GL_TEXTURE_2D, 0);
