@@ -137,12 +137,13 @@ in vec2 texture_uv;
 uniform bool material_textured;
 uniform sampler2D material_texture;
 uniform ivec2 material_wrap;  // TextureWrap, along u and along v
+const int kWrapClampToEdge = 1, kWrapMirroredRepeat = 2;  // as in TextureWrap
 
 // Texel index i of a row or column of n, wrapped: floor division, as GLSL's
 // % is undefined for negative operands (exact while |i| < 2^23).
 int wrapped(int i, int n, int wrap) {
-  if (wrap == 1) return clamp(i, 0, n - 1);
-  int period = wrap == 2 ? 2 * n : n;
+  if (wrap == kWrapClampToEdge) return clamp(i, 0, n - 1);
+  int period = wrap == kWrapMirroredRepeat ? 2 * n : n;
   int m = i - period * int(floor(float(i) / float(period)));
   m = clamp(m, 0, period - 1);
   return m < n ? m : period - 1 - m;
@@ -185,12 +186,10 @@ layout(location = 0) in vec3 corner;   // of the cube [-1,1]^3
 uniform mat4 view_projection;
 uniform vec3 sphere_center;
 uniform float sphere_radius;
-out vec3 world_position;
 invariant gl_Position;
 void main() {
   // 1% margin so the box's own rasterisation never trims the silhouette.
-  world_position = sphere_center + corner * sphere_radius * 1.01;
-  gl_Position = view_projection * vec4(world_position, 1.0);
+  gl_Position = view_projection * vec4(sphere_center + corner * sphere_radius * 1.01, 1.0);
 }
 )";
 
