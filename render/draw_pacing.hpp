@@ -5,7 +5,7 @@
 // (36 MB); meanwhile the draws go on filling the next scenes. A render of
 // Khronos's engine at 800x800 held 95 MB of bins at its 120 MB heap peak. Sent
 // in fenced pieces, no more than two of them unfinished (one rasterised
-// while the next is binned), its heap peaked at 58 MB, and the picture is
+// while the next is binned), its heap peaked at 68 MB, and the picture is
 // the same bit for bit (docs/performance.md).
 
 #include <cstddef>
