@@ -59,7 +59,7 @@ std::vector<glm::dvec3> placed_points(const Mesh& m, const FileLoc& path_at, con
 }
 
 // Reads, checks and places one mesh; throws its located InputError.
-LoadedMesh load_mesh(MeshStatement statement) {
+LoadedMesh load_mesh(MeshStatement statement, const TextureMaps& maps) {
   LoadedMesh loaded{std::move(statement.mesh), {}, {}};
   Mesh& m = loaded.mesh;
   MeshAnalysis analysis;
@@ -68,7 +68,7 @@ LoadedMesh load_mesh(MeshStatement statement) {
     topology_only.self_intersection_seconds = 0.0;
     topology_only.triangle_topology = true;
     topology_only.search_closed_meshes = true;
-    analysis = analyse_mesh(read_polygon_soup(m.path), topology_only);
+    analysis = analyse_mesh(read_polygon_soup(m.path, maps), topology_only);
   } catch (const InputError& e) {
     if (e.where().line == 0)  // the file as a whole: say so at the statement that names it
       throw InputError(statement.path_at, "mesh file " + in_quotes(m.path) + ": " + e.message());
@@ -132,7 +132,8 @@ void place_file_materials(LoadedMesh& loaded, const std::string& written, Scene&
 
 }  // namespace
 
-void load_scene_meshes(std::vector<MeshStatement> statements, Scene& scene, const MeshLoadProgress& progress) {
+void load_scene_meshes(std::vector<MeshStatement> statements, Scene& scene, const MeshLoadProgress& progress,
+                       const TextureMaps& maps) {
   const std::filesystem::path folder = std::filesystem::path(scene.path).parent_path();
   std::vector<std::string> written(statements.size());
   for (size_t k = 0; k < statements.size(); ++k) {
@@ -146,7 +147,7 @@ void load_scene_meshes(std::vector<MeshStatement> statements, Scene& scene, cons
   tbb::parallel_for(size_t(0), statements.size(), [&](size_t k) {
     if (progress) progress(started++, statements.size(), statements[k].mesh.path);
     try {
-      loaded[k] = load_mesh(std::move(statements[k]));
+      loaded[k] = load_mesh(std::move(statements[k]), maps);
     } catch (...) {
       errors[k] = std::current_exception();
     }

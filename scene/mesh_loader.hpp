@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/io/polygon_soup.hpp"
 #include "scene/scene.hpp"
 
 namespace umbra {
@@ -27,7 +28,9 @@ struct MeshStatement {
 // scene file (scene.path), on every core, each file on its own. Appends the
 // meshes, the files' own materials and the warnings to `scene` in statement
 // order; throws the first InputError in statement order, located in the mesh
-// file where it has a line, else at the statement's path.
-void load_scene_meshes(std::vector<MeshStatement> statements, Scene& scene, const MeshLoadProgress& progress);
+// file where it has a line, else at the statement's path. `maps` says where
+// the files' texture maps may be read from.
+void load_scene_meshes(std::vector<MeshStatement> statements, Scene& scene, const MeshLoadProgress& progress,
+                       const TextureMaps& maps = {});
 
 }  // namespace umbra

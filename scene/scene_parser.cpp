@@ -145,10 +145,10 @@ class SceneBuilder {
                                               " (expected light, material, sphere, triangle, mesh or camera)");
   }
 
-  Scene finish(const MeshLoadProgress& progress) {
+  Scene finish(const MeshLoadProgress& progress, const TextureMaps& maps) {
     // Every mesh file is read once the whole scene has parsed, so that a
     // typo later in the scene is reported before a large file is read.
-    load_scene_meshes(std::move(pending_meshes_), scene_, progress);
+    load_scene_meshes(std::move(pending_meshes_), scene_, progress, maps);
     if (scene_.lights.empty())
       throw InputError({scene_.path}, "the scene has no light: add a line such as \"light 0.6 0.8 1.6\"");
     return std::move(scene_);
@@ -298,7 +298,8 @@ class SceneBuilder {
 
 }  // namespace
 
-Scene parse_scene_text(const std::string& text, const std::string& name, const MeshLoadProgress& progress) {
+Scene parse_scene_text(const std::string& text, const std::string& name, const MeshLoadProgress& progress,
+                       const TextureMaps& maps) {
   SceneBuilder builder(name);
   std::istringstream in(text);
   std::string line;
@@ -313,16 +314,16 @@ Scene parse_scene_text(const std::string& text, const std::string& name, const M
     if (!reader.done())
       reader.fail_at_next("unexpected " + reader.got() + " after the end of the " + reader.keyword() + " statement");
   }
-  return builder.finish(progress);
+  return builder.finish(progress, maps);
 }
 
-Scene parse_scene_file(const std::string& path, const MeshLoadProgress& progress) {
+Scene parse_scene_file(const std::string& path, const MeshLoadProgress& progress, const TextureMaps& maps) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError({path}, "cannot open the scene file");
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError({path}, "cannot read the scene file");
-  return parse_scene_text(text.str(), path, progress);
+  return parse_scene_text(text.str(), path, progress, maps);
 }
 
 }  // namespace umbra

@@ -157,10 +157,10 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
 std::string staged_scene_name(const std::string& mesh_path) { return mesh_path + " (staged)"; }
 
 Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& progress, std::string* staged,
-                               const std::string& up) {
+                               const std::string& up, const TextureMaps& maps) {
   if (!is_mesh_file(path)) {
     if (staged) staged->clear();
-    return parse_scene_file(path, progress);
+    return parse_scene_file(path, progress, maps);
   }
   const std::string file_name = std::filesystem::path(path).filename().string();
   if (file_name.find('"') != std::string::npos)
@@ -193,7 +193,7 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
   // line of a scene the user never wrote.
   const std::string about_the_file = "mesh file \"" + path + "\"";
   try {
-    load_scene_meshes({std::move(statement)}, loaded, progress);
+    load_scene_meshes({std::move(statement)}, loaded, progress, maps);
   } catch (const InputError& e) {
     if (e.where().file != name) throw;
     std::string message = e.message();

@@ -55,8 +55,9 @@ std::string staged_scene_name(const std::string& mesh_path);
 // parse_scene_file for a scene, or the staged scene for a mesh file, stood on
 // its `up` axis ("" for its format's own). `staged` (when given) receives the
 // staged scene's text, or "" for a scene file. A mesh file with no faces is
-// an InputError: there is nothing to show.
+// an InputError: there is nothing to show. `maps` says where texture maps
+// may be read from.
 Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& progress = {}, std::string* staged = nullptr,
-                               const std::string& up = "");
+                               const std::string& up = "", const TextureMaps& maps = {});
 
 }  // namespace umbra

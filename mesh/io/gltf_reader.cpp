@@ -5,6 +5,7 @@
 // metallic-roughness factors map onto the Phong terms; baseColorTexture, with
 // TEXCOORD_0, multiplies the base colour. Other textures are not drawn.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -12,6 +13,7 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <tuple>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -35,25 +37,71 @@ bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, in
   return true;
 }
 
-// tinygltf's image loader: images are decoded as texture maps are (with
-// stb_image, RGBA). One that cannot be is noted in `failures` (by image) and
-// left empty: its materials keep their base colour, and the mesh still loads.
-bool decode_image(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
-                  const unsigned char* bytes, int size, void* failures) {
-  std::string error;
-  const auto texture = decode_texture(std::string_view(reinterpret_cast<const char*>(bytes), size_t(std::max(size, 0))),
-                                      image->name, error);
-  if (!texture) {
-    (*static_cast<std::map<int, std::string>*>(failures))[index] = error;
-    return true;
-  }
-  image->width = texture->width;
-  image->height = texture->height;
-  image->component = 4;
-  image->bits = 8;
-  image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
-  image->image = texture->rgba;
+// tinygltf's image loader when maps are read: each image's bytes are kept
+// as they are, by image, and decoded only if a material's texture uses them
+// (GltfReader::base_colour_texture), once.
+using EncodedImages = std::map<int, std::vector<unsigned char>>;
+bool keep_encoded(tinygltf::Image*, const int index, std::string*, std::string*, int, int, const unsigned char* bytes, int size,
+                  void* encoded) {
+  (*static_cast<EncodedImages*>(encoded))[index].assign(bytes, bytes + std::max(size, 0));
   return true;
+}
+
+// The files a glTF names by uri (buffers, images), as tinygltf asks for them:
+// found beside the model (or by an absolute path), and read only where
+// ModelFiles allows and as regular files of bounded size. Why one was not
+// read is kept by path, for the warning that names its image.
+struct GltfFiles {
+  ModelFiles files;
+  std::filesystem::path folder;  // the model's
+  std::map<std::string, std::string> refused;
+
+  // tinygltf tries the folder it is given, then "."; given "", it asks for
+  // the uri itself and "./" and the uri, both of which mean the model's folder.
+  std::string path_of(const std::string& uri) const {
+    std::string path = std::filesystem::path(uri).is_absolute() ? uri : (folder / uri).lexically_normal().string();
+    std::error_code ec;
+    // glTF's uris take '/', but some exporters write Windows' '\'.
+    if (path.find('\\') != std::string::npos && !std::filesystem::exists(path, ec)) std::replace(path.begin(), path.end(), '\\', '/');
+    return path;
+  }
+};
+
+constexpr size_t kMostGltfFileBytes = size_t(1) << 32;  // as the reader takes at most
+
+bool gltf_file_exists(const std::string& path, void*) {
+  std::error_code ec;
+  return std::filesystem::exists(path, ec);  // a stat: nothing is opened
+}
+
+std::string gltf_file_path(const std::string& uri, void* files) { return static_cast<const GltfFiles*>(files)->path_of(uri); }
+
+bool read_gltf_file(std::vector<unsigned char>* out, std::string* error, const std::string& path, void* user) {
+  GltfFiles& files = *static_cast<GltfFiles*>(user);
+  std::string why = files.files.refusal(path);
+  if (why.empty() && read_regular_file(path, kMostGltfFileBytes, *out, why)) return true;
+  if (error) *error = why;
+  files.refused[path] = why;
+  return false;
+}
+
+bool refuse_gltf_write(std::string* error, const std::string&, const std::vector<unsigned char>&, void*) {
+  if (error) *error = "umbra writes no glTF files";
+  return false;
+}
+
+// A uri's %XX escapes decoded, as tinygltf decodes them before it looks for the file.
+std::string percent_decoded(const std::string& uri) {
+  std::string out;
+  for (size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit((unsigned char)uri[i + 1]) && std::isxdigit((unsigned char)uri[i + 2])) {
+      out += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      out += uri[i];
+    }
+  }
+  return out;
 }
 
 TextureImage::Wrap wrap_of(int gl_wrap) {
@@ -99,13 +147,15 @@ SoupMaterial phong_of(const tinygltf::Material& m) {
 
 class GltfReader {
  public:
-  GltfReader(const tinygltf::Model& model, PolygonSoup& soup, const std::map<int, std::string>& image_failures, TextureMaps maps)
-      : model_(model), soup_(soup), image_failures_(image_failures), maps_(maps) {}
+  // `files` and `encoded`: where the images' files were looked for, and
+  // their bytes; null when maps are skipped.
+  GltfReader(const tinygltf::Model& model, PolygonSoup& soup, const GltfFiles* files, const EncodedImages* encoded)
+      : model_(model), soup_(soup), files_(files), encoded_(encoded) {}
 
   void read() {
     for (const tinygltf::Material& m : model_.materials) {
       soup_.materials.push_back(phong_of(m));
-      if (maps_ == TextureMaps::kRead) soup_.materials.back().texture = base_colour_texture(m);
+      if (encoded_) soup_.materials.back().texture = base_colour_texture(m);
       textured_ = textured_ || soup_.materials.back().texture;
     }
     if (model_.scenes.empty()) {
@@ -113,17 +163,17 @@ class GltfReader {
       for (size_t m = 0; m < model_.meshes.size(); ++m) add_mesh(int(m), glm::dmat4(1.0));
       return;
     }
-    require_trees();
-    const int scene = model_.defaultScene >= 0 && size_t(model_.defaultScene) < model_.scenes.size() ? model_.defaultScene : 0;
-    for (int node : model_.scenes[size_t(scene)].nodes) add_node(node, glm::dmat4(1.0));
+    const size_t scene = model_.defaultScene >= 0 && size_t(model_.defaultScene) < model_.scenes.size() ? size_t(model_.defaultScene) : 0;
+    require_trees(model_.scenes[scene], scene);
+    for (int node : model_.scenes[scene].nodes) add_node(node, glm::dmat4(1.0));
   }
 
  private:
   [[noreturn]] void fail(const std::string& message) const { throw InputError({soup_.path, 0, 0}, message); }
 
   // A material's baseColorTexture as a texture map, made once per glTF
-  // texture (an image and its sampler's wrapping); null, with a warning once
-  // per texture, where it cannot be drawn.
+  // texture and decoded once per image and wrapping; null, with a warning
+  // once per texture, where it cannot be drawn.
   std::shared_ptr<const TextureImage> base_colour_texture(const tinygltf::Material& material) {
     const tinygltf::TextureInfo& info = material.pbrMetallicRoughness.baseColorTexture;
     if (info.index < 0) return nullptr;
@@ -140,38 +190,61 @@ class GltfReader {
     const tinygltf::Texture& texture = model_.textures[size_t(info.index)];
     if (texture.source < 0 || size_t(texture.source) >= model_.images.size()) return refuse("has no image");
     const tinygltf::Image& image = model_.images[size_t(texture.source)];
-    const std::string name = !image.uri.empty() && image.uri.rfind("data:", 0) != 0 ? image.uri
-                             : !image.name.empty()                                 ? image.name
-                                                                                    : "image " + std::to_string(texture.source);
-    if (const auto failed = image_failures_.find(texture.source); failed != image_failures_.end())
-      return refuse("(" + name + ") " + failed->second);
-    if (image.image.empty() || image.component != 4 || image.width <= 0 || image.height <= 0)
-      return refuse("(" + name + ") could not be read");
-    auto map = std::make_shared<TextureImage>();
-    map->name = name;
-    map->width = image.width;
-    map->height = image.height;
-    map->rgba = image.image;
+    const bool external = !image.uri.empty() && image.uri.rfind("data:", 0) != 0;
+    const std::string name = external ? image.uri : !image.name.empty() ? image.name : "image " + std::to_string(texture.source);
+    const auto encoded = encoded_->find(texture.source);
+    if (encoded == encoded_->end()) return refuse("(" + name + ") " + (external ? unread_file(image.uri) : "could not be read"));
+    TextureImage::Wrap wrap_u = TextureImage::Wrap::kRepeat, wrap_v = TextureImage::Wrap::kRepeat;
     if (texture.sampler >= 0 && size_t(texture.sampler) < model_.samplers.size()) {
-      map->wrap_u = wrap_of(model_.samplers[size_t(texture.sampler)].wrapS);
-      map->wrap_v = wrap_of(model_.samplers[size_t(texture.sampler)].wrapT);
+      wrap_u = wrap_of(model_.samplers[size_t(texture.sampler)].wrapS);
+      wrap_v = wrap_of(model_.samplers[size_t(texture.sampler)].wrapT);
     }
-    return cached->second = std::move(map);
+    auto& decoded = decoded_[{texture.source, wrap_u, wrap_v}];
+    if (!decoded.image && decoded.error.empty()) {
+      const std::vector<unsigned char>& bytes = encoded->second;
+      if (auto map = decode_texture(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), name, decoded.error)) {
+        map->wrap_u = wrap_u;
+        map->wrap_v = wrap_v;
+        decoded.image = std::move(map);
+      }
+    }
+    if (!decoded.image) return refuse("(" + name + ") " + decoded.error);
+    return cached->second = decoded.image;
   }
 
-  // glTF's nodes form trees: no node has two parents. A graph would be read
-  // once along every path to a node, which a few hundred bytes can make
-  // exponential; refused, the work is bounded by the file.
-  void require_trees() const {
+  // Why the image file `uri` names was not read.
+  std::string unread_file(const std::string& uri) const {
+    const std::string decoded = percent_decoded(uri);
+    if (decoded.rfind("file:", 0) == 0)
+      return "is a file: URI, which umbra does not follow: name the image by a path relative to the model";
+    const std::string path = files_->path_of(decoded);
+    if (const auto refused = files_->refused.find(path); refused != files_->refused.end()) return refused->second;
+    const std::string why = files_->files.refusal(path);
+    return why.empty() ? "could not be read" : why;
+  }
+
+  // glTF's nodes form trees: no node has two parents, lists a child twice
+  // or is a scene's root twice (the schema's uniqueItems). A graph would be
+  // read once along every path to a node, which a few hundred bytes can
+  // make exponential; refused, each node is placed at most once per root.
+  void require_trees(const tinygltf::Scene& scene, size_t scene_index) const {
+    const auto refuse = [&](const std::string& why) { fail("not a valid glTF 2.0 file: " + why + "; glTF's nodes form trees"); };
     std::vector<int> parent(model_.nodes.size(), -1);
     for (size_t n = 0; n < model_.nodes.size(); ++n)
       for (const int child : model_.nodes[n].children) {
         if (child < 0 || size_t(child) >= model_.nodes.size()) continue;  // said where it is read
-        if (parent[size_t(child)] >= 0 && parent[size_t(child)] != int(n))
-          fail("not a valid glTF 2.0 file: node " + std::to_string(child) + " has two parents (nodes " +
-               std::to_string(parent[size_t(child)]) + " and " + std::to_string(n) + "); glTF's nodes form trees");
+        if (parent[size_t(child)] == int(n))
+          refuse("node " + std::to_string(n) + " lists node " + std::to_string(child) + " as its child twice");
+        if (parent[size_t(child)] >= 0)
+          refuse("node " + std::to_string(child) + " has two parents (nodes " + std::to_string(parent[size_t(child)]) + " and " +
+                 std::to_string(n) + ")");
         parent[size_t(child)] = int(n);
       }
+    std::set<int> roots;
+    for (const int root : scene.nodes) {
+      if (!roots.insert(root).second)
+        refuse("scene " + std::to_string(scene_index) + " lists node " + std::to_string(root) + " as a root twice");
+    }
   }
 
   void add_node(int index, const glm::dmat4& parent) {
@@ -349,6 +422,8 @@ class GltfReader {
       if (points.type != TINYGLTF_TYPE_VEC3) fail(what + "'s POSITION must be VEC3");
       const uint32_t first = uint32_t(soup_.points.size());
       const Elements xyzs = elements(points, what + "'s POSITION");
+      if (soup_.points.size() + xyzs.count >= kMostCorners)
+        fail("its nodes place more than 2^31 points (" + what + " among them), more than umbra reads");
       soup_.points.reserve(soup_.points.size() + xyzs.count);
       for (size_t i = 0; i < xyzs.count; ++i) {
         const glm::dvec3 xyz = position_at(points, xyzs.at(i), what);
@@ -401,9 +476,14 @@ class GltfReader {
 
   const tinygltf::Model& model_;
   PolygonSoup& soup_;
-  const std::map<int, std::string>& image_failures_;  // why an image could not be decoded, by image
-  const TextureMaps maps_;
+  const GltfFiles* files_;
+  const EncodedImages* encoded_;  // null: maps are skipped
   std::map<int, std::shared_ptr<const TextureImage>> textures_;  // by glTF texture
+  struct Decoded {
+    std::shared_ptr<const TextureImage> image;
+    std::string error;
+  };
+  std::map<std::tuple<int, TextureImage::Wrap, TextureImage::Wrap>, Decoded> decoded_;  // by image and wrapping
   bool textured_ = false;              // some material has a texture map: corners get texture coordinates
   std::vector<glm::vec2> point_uvs_;   // TEXCOORD_0 per point, while textured_
   std::set<int> on_path_;  // the nodes from the scene's root to the one being read
@@ -456,14 +536,20 @@ void require_gltf_2(std::string_view bytes, bool binary, const std::string& path
 
 }  // namespace
 
-PolygonSoup read_gltf(std::string_view bytes, const std::string& path, TextureMaps maps) {
+PolygonSoup read_gltf(std::string_view bytes, const std::string& path, const TextureMaps& maps) {
   tinygltf::TinyGLTF loader;
-  std::map<int, std::string> image_failures;
-  if (maps == TextureMaps::kRead) loader.SetImageLoader(decode_image, &image_failures);
+  EncodedImages encoded;
+  if (maps.read) loader.SetImageLoader(keep_encoded, &encoded);
   else loader.SetImageLoader(skip_image, nullptr);
+  // A check decodes no image into a picture: any folder will do there.
+  TextureMaps rule = maps;
+  rule.anywhere = maps.anywhere || !maps.read;
+  std::error_code ec;
+  GltfFiles files{ModelFiles(rule, path), std::filesystem::absolute(path, ec).parent_path(), {}};
+  loader.SetFsCallbacks({gltf_file_exists, gltf_file_path, read_gltf_file, refuse_gltf_write, &files});
   tinygltf::Model model;
   std::string error, warning;
-  const std::string folder = std::filesystem::path(path).parent_path().string();
+  const std::string folder;  // GltfFiles::path_of finds a uri beside the model
   const bool binary = bytes.substr(0, 4) == "glTF";
   if (bytes.size() > std::numeric_limits<unsigned>::max()) throw InputError({path, 0, 0}, "too large for the glTF reader (4 GiB or more)");
   require_gltf_2(bytes, binary, path);
@@ -483,7 +569,7 @@ PolygonSoup read_gltf(std::string_view bytes, const std::string& path, TextureMa
   PolygonSoup soup;
   soup.path = path;
   soup.format = binary ? "glTF (binary .glb)" : "glTF";
-  GltfReader(model, soup, image_failures, maps).read();
+  GltfReader(model, soup, &files, maps.read ? &encoded : nullptr).read();
   return soup;
 }
 

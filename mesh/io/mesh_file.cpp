@@ -9,7 +9,7 @@
 
 namespace umbra {
 
-PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path, TextureMaps maps) {
+PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path, const TextureMaps& maps) {
   // A UTF-8 byte-order mark, as some Windows tools write before OBJ, OFF or
   // STL text, is no part of the content (columns are counted after it).
   if (bytes.substr(0, 3) == "\xef\xbb\xbf") bytes.remove_prefix(3);
@@ -30,7 +30,7 @@ PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path, 
   return soup;
 }
 
-PolygonSoup read_polygon_soup(const std::string& path, TextureMaps maps) {
+PolygonSoup read_polygon_soup(const std::string& path, const TextureMaps& maps) {
   const MappedFile file(path);
   // A file cut short while it was read reads as zeros past its new end:
   // whatever that made of it, say what happened instead.

@@ -12,10 +12,10 @@ namespace umbra {
 
 // Throws InputError ("FILE: reason" or "FILE:LINE:COL: reason") when the file
 // cannot be opened or is not a valid mesh of its format.
-PolygonSoup read_polygon_soup(const std::string& path, TextureMaps maps = TextureMaps::kRead);
+PolygonSoup read_polygon_soup(const std::string& path, const TextureMaps& maps = {});
 
 // The same from bytes already in memory; `path` names them in errors, and
 // its extension chooses the reader when the content is too broken to tell.
-PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path, TextureMaps maps = TextureMaps::kRead);
+PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path, const TextureMaps& maps = {});
 
 }  // namespace umbra

@@ -115,7 +115,7 @@ bool never(std::string_view) { return false; }
 
 // A reader of a format whose files hold no texture maps that umbra draws.
 template <PolygonSoup (*reader)(std::string_view, const std::string&)>
-PolygonSoup without_maps(std::string_view bytes, const std::string& path, TextureMaps) {
+PolygonSoup without_maps(std::string_view bytes, const std::string& path, const TextureMaps&) {
   return reader(bytes, path);
 }
 
@@ -123,7 +123,7 @@ PolygonSoup without_maps(std::string_view bytes, const std::string& path, Textur
 
 const std::vector<MeshFormat>& mesh_formats() {
   static const std::vector<MeshFormat> formats{
-      {"obj", "OBJ", {".obj"}, never, is_obj, [](std::string_view b, const std::string& p, TextureMaps t) { return read_obj(b, p, t); },
+      {"obj", "OBJ", {".obj"}, never, is_obj, [](std::string_view b, const std::string& p, const TextureMaps& t) { return read_obj(b, p, t); },
        true, "+y"},
       {"off", "OFF", {".off"}, never, is_off, without_maps<read_off>, true, "+y"},
       {"ply", "PLY", {".ply"}, [](std::string_view b) { return starts_with(b, "ply\n") || starts_with(b, "ply\r"); }, never,

@@ -10,16 +10,16 @@
 
 namespace umbra {
 
-PolygonSoup read_obj(std::string_view text, const std::string& path, TextureMaps maps = TextureMaps::kRead);
+PolygonSoup read_obj(std::string_view text, const std::string& path, const TextureMaps& maps = {});
 // The same, read on every core in stretches of about `chunk_bytes` bytes or
 // more (read_obj takes 1 MiB): the soup, and the first error, are the same
 // however the file is split.
-PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chunk_bytes, TextureMaps maps = TextureMaps::kRead);
+PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chunk_bytes, const TextureMaps& maps = {});
 PolygonSoup read_off(std::string_view text, const std::string& path);
 PolygonSoup read_stl(std::string_view bytes, const std::string& path);  // ascii or binary
 PolygonSoup read_ply(std::string_view bytes, const std::string& path);  // ascii or binary
 // .gltf or .glb; external buffers (and images) beside `path`
-PolygonSoup read_gltf(std::string_view bytes, const std::string& path, TextureMaps maps = TextureMaps::kRead);
+PolygonSoup read_gltf(std::string_view bytes, const std::string& path, const TextureMaps& maps = {});
 PolygonSoup read_3mf(std::string_view bytes, const std::string& path);
 
 // How many bytes (1 to 1023) follow the last triangle of `bytes` read as a

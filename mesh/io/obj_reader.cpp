@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <utility>
 
@@ -88,7 +89,7 @@ std::string rest_as_name(const TextScanner& scanner) {
 // The materials of one .mtl file (Wavefront's material library) into `soup`,
 // by name into `named`. Kd, Ks, Ns and map_Kd are kept; other maps are noted once.
 void read_material_library(const std::string& path, int line, PolygonSoup& soup, std::map<std::string, int>& named,
-                           TextureMaps maps) {
+                           ModelFiles* maps) {
   std::error_code exists_error;
   if (!std::filesystem::is_regular_file(path, exists_error)) {
     soup.warn(line, "material library \"" + path + "\" not found: its materials are left out");
@@ -120,12 +121,12 @@ void read_material_library(const std::string& path, int line, PolygonSoup& soup,
         (keyword == "Kd" ? current->diffuse : current->specular) = glm::clamp(rgb, 0.0, 1.0);
       } else if (current && keyword == "Ns") {
         current->shininess = std::max(0.0, scanner.number("shininess"));
-      } else if (keyword == "map_Kd" && maps == TextureMaps::kSkip) {
+      } else if (keyword == "map_Kd" && !maps) {
         continue;
       } else if (current && keyword == "map_Kd") {
         const std::string map = map_path(scanner.rest_of_line(), std::filesystem::path(path).parent_path());
         std::string error;
-        current->texture = read_texture_file(map, error);
+        current->texture = maps->texture(map, error);
         if (!current->texture)
           soup.warn(line, "material \"" + current->name + "\"'s texture map \"" + map + "\": " + error +
                               ": its faces take the material's Kd colour");
@@ -265,8 +266,11 @@ void read_stretch(ObjStretch& stretch, const std::string& path, PolygonSoup& sou
 // The material statements of `stretches`, in order: libraries read as they
 // are named, each face given the material named last before it.
 void replay_material_statements(const std::vector<ObjStretch>& stretches, size_t face_count, const std::string& path,
-                                PolygonSoup& soup, TextureMaps maps) {
+                                PolygonSoup& soup, const TextureMaps& maps) {
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  std::optional<ModelFiles> files;  // each map decoded once, however many materials name it
+  if (maps.read) files.emplace(maps, path);
+  ModelFiles* const map_files = files ? &*files : nullptr;
   std::map<std::string, int> materials;  // by name
   std::set<std::string> missing;         // used but defined nowhere: said once each
   std::vector<std::pair<size_t, int>> switches;  // (first face, its material), in order
@@ -279,13 +283,13 @@ void replay_material_statements(const std::vector<ObjStretch>& stretches, size_t
         const std::string whole = (folder / rest_as_name(rest)).lexically_normal().string();
         std::error_code error;
         if (std::filesystem::is_regular_file(whole, error)) {
-          read_material_library(whole, statement.line, soup, materials, maps);
+          read_material_library(whole, statement.line, soup, materials, map_files);
           continue;
         }
         TextScanner names(statement.rest, path, statement.line - 1);
         names.next_line();
         for (std::string_view name = names.field(); !name.empty(); name = names.field())
-          read_material_library((folder / std::string(name)).lexically_normal().string(), statement.line, soup, materials, maps);
+          read_material_library((folder / std::string(name)).lexically_normal().string(), statement.line, soup, materials, map_files);
         continue;
       }
       const std::string name = rest_as_name(rest);
@@ -342,7 +346,7 @@ void set_corner_uvs(const std::vector<ObjStretch>& stretches, const std::vector<
 
 }  // namespace
 
-PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chunk_bytes, TextureMaps maps) {
+PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chunk_bytes, const TextureMaps& maps) {
   PolygonSoup soup;
   soup.path = path;
   soup.format = "OBJ";
@@ -400,7 +404,7 @@ PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chun
   return soup;
 }
 
-PolygonSoup read_obj(std::string_view text, const std::string& path, TextureMaps maps) {
+PolygonSoup read_obj(std::string_view text, const std::string& path, const TextureMaps& maps) {
   return read_obj(text, path, size_t(1) << 20, maps);
 }
 

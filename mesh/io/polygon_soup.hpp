@@ -35,9 +35,17 @@ struct SoupMaterial {
   std::shared_ptr<const TextureImage> texture;
 };
 
-// Whether a reader reads its materials' texture maps: a picture needs them
-// (decoded, they can take far more memory than the mesh); a check does not.
-enum class TextureMaps { kRead, kSkip };
+// Whether a reader reads its materials' texture maps, and from where. A
+// picture needs them (decoded, they can take far more memory than the mesh);
+// a check does not. A model from anywhere names its maps by any path it
+// likes, and a map is decoded into the picture: so a map is read only from
+// inside `root`, whatever path names it, unless `anywhere`.
+struct TextureMaps {
+  bool read = true;
+  std::string root;       // the folder the user named; "" for the model file's own folder
+  bool anywhere = false;  // --any-texture-path: maps from any folder the user can read
+  static TextureMaps skip() { return {false, "", false}; }
+};
 
 struct PolygonSoup {
   std::string path;

@@ -1,24 +1,71 @@
 #include "mesh/io/texture_file.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <climits>
-#include <fstream>
-#include <iterator>
+#include <cstring>
 
 #include <stb_image.h>  // Debian's libstb: its implementation is in libstb.so
 
 namespace umbra {
+namespace {
 
-std::shared_ptr<const TextureImage> decode_texture(std::string_view bytes, const std::string& name, std::string& error) {
+// stb_image's reasons are short codes ("outofdata"), and a truncated PNG
+// may give none at all: say what they mean for the file.
+std::string decoding_failure(std::string_view bytes) {
+  const char* code = stbi_failure_reason();
+  const std::string said = code ? code : "";
+  const bool png = bytes.substr(0, 8) == "\x89PNG\r\n\x1a\n", jpeg = bytes.substr(0, 2) == "\xff\xd8";
+  if (said == "outofdata" || said.empty() || ((png || jpeg) && said == "unknown image type"))
+    return std::string("cannot decode the image: ") + (png ? "a PNG" : jpeg ? "a JPEG" : "the file") + " cut short or corrupt" +
+           (said.empty() ? "" : " (stb_image: " + said + ")");
+  return "cannot decode the image (" + said + ")";
+}
+
+// What a file that is not a regular file is, for a message.
+std::string not_regular(mode_t mode) {
+  const char* what = S_ISDIR(mode) ? "a folder" : S_ISFIFO(mode) ? "a FIFO" : S_ISCHR(mode) ? "a character device"
+                     : S_ISBLK(mode) ? "a block device" : S_ISSOCK(mode) ? "a socket" : "not a plain file";
+  return std::string("is not a regular file (") + what + "), which umbra does not read as an image";
+}
+
+std::string size_in_mib(size_t bytes) { return std::to_string((bytes + (size_t(1) << 20) - 1) >> 20) + " MiB"; }
+
+// Whether `path` lies in `folder` or below it (both absolute and normal).
+bool lies_in(const std::filesystem::path& path, const std::filesystem::path& folder) {
+  auto p = path.begin();
+  for (auto f = folder.begin(); f != folder.end(); ++f, ++p) {
+    if (f->empty()) continue;  // the trailing "" of "a/b/"
+    if (p == path.end() || *p != *f) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::shared_ptr<TextureImage> decode_texture(std::string_view bytes, const std::string& name, std::string& error) {
   if (bytes.size() > size_t(INT_MAX)) {
     error = "the image is over 2 GB";
     return nullptr;
   }
+  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   int width = 0, height = 0, channels = 0;
-  stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &width,
-                                          &height, &channels, 4);
+  // The header first: a small file can claim a huge image.
+  if (!stbi_info_from_memory(data, int(bytes.size()), &width, &height, &channels)) {
+    error = decoding_failure(bytes);
+    return nullptr;
+  }
+  if (width > kMostTextureSide || height > kMostTextureSide || (long long)width * height > kMostTexturePixels) {
+    error = "the image is " + std::to_string(width) + "x" + std::to_string(height) + " pixels, more than umbra decodes (" +
+            std::to_string(kMostTextureSide) + " along a side, " + std::to_string(kMostTexturePixels) + " pixels in all)";
+    return nullptr;
+  }
+  stbi_uc* pixels = stbi_load_from_memory(data, int(bytes.size()), &width, &height, &channels, 4);
   if (!pixels) {
-    const char* reason = stbi_failure_reason();
-    error = std::string("cannot decode the image (") + (reason ? reason : "unknown format") + ")";
+    error = decoding_failure(bytes);
     return nullptr;
   }
   auto texture = std::make_shared<TextureImage>();
@@ -30,14 +77,65 @@ std::shared_ptr<const TextureImage> decode_texture(std::string_view bytes, const
   return texture;
 }
 
-std::shared_ptr<const TextureImage> read_texture_file(const std::string& path, std::string& error) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    error = "cannot open it";
-    return nullptr;
+bool read_regular_file(const std::string& path, size_t most, std::vector<unsigned char>& bytes, std::string& error) {
+  // Without O_NONBLOCK, opening a FIFO waits for a writer that may never come.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) {
+    error = std::string("cannot be opened: ") + std::strerror(errno);
+    return false;
   }
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return decode_texture(bytes, path, error);
+  struct stat st {};
+  bool ok = ::fstat(fd, &st) == 0;
+  if (!ok) error = std::string("cannot be read: ") + std::strerror(errno);
+  else if (!S_ISREG(st.st_mode)) ok = false, error = not_regular(st.st_mode);
+  else if (size_t(st.st_size) > most)
+    ok = false, error = "is " + size_in_mib(size_t(st.st_size)) + ", more than the " + size_in_mib(most) + " umbra reads of such a file";
+  if (ok) {
+    bytes.resize(size_t(st.st_size));
+    size_t done = 0;
+    while (done < bytes.size()) {
+      const ssize_t n = ::read(fd, bytes.data() + done, bytes.size() - done);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;  // cut short while read: what there is
+      done += size_t(n);
+    }
+    bytes.resize(done);
+  }
+  ::close(fd);
+  return ok;
+}
+
+ModelFiles::ModelFiles(const TextureMaps& maps, const std::string& model_path) : anywhere_(maps.anywhere) {
+  std::error_code ec;
+  const std::filesystem::path root =
+      maps.root.empty() ? std::filesystem::absolute(model_path, ec).parent_path() : std::filesystem::path(maps.root);
+  root_ = std::filesystem::weakly_canonical(std::filesystem::absolute(root, ec), ec);
+}
+
+std::string ModelFiles::refusal(const std::string& path) const {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return errno == ENOENT ? "does not exist" : std::string("cannot be read: ") + std::strerror(errno);
+  std::error_code ec;
+  // Links resolved: a link inside the folder to a file outside it reads
+  // the file outside.
+  const std::filesystem::path real = std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec);
+  if (!anywhere_ && !lies_in(real, root_))
+    return "lies outside " + root_.string() + ", the folder umbra reads this model's files from (--any-texture-path reads it)";
+  if (!S_ISREG(st.st_mode)) return not_regular(st.st_mode);
+  return "";
+}
+
+std::shared_ptr<const TextureImage> ModelFiles::texture(const std::string& path, std::string& error) {
+  const auto [cached, first_time] = textures_.try_emplace(path);
+  Decoded& d = cached->second;
+  if (first_time) {
+    std::vector<unsigned char> bytes;
+    d.error = refusal(path);
+    if (d.error.empty() && read_regular_file(path, kMostTextureFileBytes, bytes, d.error))
+      d.image = decode_texture(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path, d.error);
+  }
+  error = d.error;
+  return d.image;
 }
 
 }  // namespace umbra

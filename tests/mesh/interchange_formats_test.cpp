@@ -220,6 +220,25 @@ TEST(InterchangeFormats, GltfOnlyVersionTwoAsItsSchemaHasIt) {
   EXPECT_EQ(test::read_error_of(gltf_of(cube, shared), "m.gltf"),
             "m.gltf: not a valid glTF 2.0 file: node 2 has two parents (nodes 0 and 1); glTF's nodes form trees");
 
+  // A child listed twice: 20 such nodes in a chain are 2^20 paths, a file
+  // under 1 KB that would never finish. The schema makes children unique.
+  GltfOptions twice;
+  twice.node = R"("children": [1, 1])";
+  twice.extra_nodes = R"(, {"mesh": 0})";
+  EXPECT_EQ(test::read_error_of(gltf_of(cube, twice), "m.gltf"),
+            "m.gltf: not a valid glTF 2.0 file: node 0 lists node 1 as its child twice; glTF's nodes form trees");
+  GltfOptions chain;
+  chain.node = R"("children": [1, 1])";
+  for (int n = 1; n < 20; ++n) chain.extra_nodes += ", {\"children\": [" + std::to_string(n + 1) + ", " + std::to_string(n + 1) + "]}";
+  chain.extra_nodes += R"(, {"mesh": 0})";
+  EXPECT_EQ(test::read_error_of(gltf_of(cube, chain), "m.gltf"),
+            "m.gltf: not a valid glTF 2.0 file: node 0 lists node 1 as its child twice; glTF's nodes form trees");
+  // A scene that lists a root twice, or a node with a parent as a root.
+  GltfOptions root_twice;
+  root_twice.scene_nodes = "[0, 0]";
+  EXPECT_EQ(test::read_error_of(gltf_of(cube, root_twice), "m.gltf"),
+            "m.gltf: not a valid glTF 2.0 file: scene 0 lists node 0 as a root twice; glTF's nodes form trees");
+
   std::string meshopt = gltf_of(cube, {});
   meshopt.replace(meshopt.find(R"("asset")"), 7, R"("extensionsRequired": ["EXT_meshopt_compression"], "extensionsUsed": ["EXT_meshopt_compression"], "asset")");
   EXPECT_EQ(test::read_error_of(meshopt, "m.gltf"),

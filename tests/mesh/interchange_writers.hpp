@@ -46,6 +46,8 @@ inline std::string gltf_buffer(const PolygonSoup& soup) {
 struct GltfOptions {
   std::string node = R"("mesh": 0)";  // the JSON members of node 0, the scene's root
   std::string extra_nodes;            // more nodes, each as ",{...}"
+  std::string scene_nodes = "[0]";    // the scene's roots
+  std::string more;                   // more top-level members, each as `, "name": ...` (textures, images, samplers)
   std::string material = R"({"name": "red", "pbrMetallicRoughness": {"baseColorFactor": [1, 0, 0, 1], "metallicFactor": 0}})";
   std::string buffer_uri;             // "" embeds the buffer as base64
   int mode = 4;                       // TRIANGLES
@@ -57,7 +59,7 @@ inline std::string gltf_json(const PolygonSoup& soup, const std::string& buffer,
   const size_t point_bytes = soup.points.size() * 12;
   std::string uri;
   if (!in_glb) uri = R"(, "uri": ")" + (o.buffer_uri.empty() ? "data:application/octet-stream;base64," + base64(buffer) : o.buffer_uri) + "\"";
-  return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{)" + o.node + "}" + o.extra_nodes +
+  return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": )" + o.scene_nodes + R"(}], "nodes": [{)" + o.node + "}" + o.extra_nodes +
          R"(], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 0, "mode": )" +
          std::to_string(o.mode) + R"(}]}], "materials": [)" + o.material + R"(], "buffers": [{"byteLength": )" +
          std::to_string(buffer.size()) + uri + R"(}], "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": )" +
@@ -65,7 +67,7 @@ inline std::string gltf_json(const PolygonSoup& soup, const std::string& buffer,
          R"(, "byteLength": )" + std::to_string(buffer.size() - point_bytes) +
          R"(}], "accessors": [{"bufferView": 0, "componentType": 5126, "count": )" + std::to_string(soup.points.size()) +
          R"(, "type": "VEC3"}, {"bufferView": 1, "componentType": 5125, "count": )" + std::to_string(soup.corners.size()) +
-         R"(, "type": "SCALAR"}]})";
+         R"(, "type": "SCALAR"}])" + o.more + "}";
 }
 
 inline std::string glb(const std::string& json, const std::string& buffer) {

@@ -3,9 +3,16 @@
 // and every way a map can fail to load said once, the mesh still read.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
+#include <filesystem>
+
 #include "image/image.hpp"
 #include "mesh/input_error.hpp"
 #include "mesh/io/mesh_file.hpp"
+#include "mesh/io/texture_file.hpp"
+#include "tests/mesh/interchange_writers.hpp"
+#include "tests/mesh/mesh_builders.hpp"
 #include "tests/scratch_folder.hpp"
 
 namespace umbra {
@@ -67,11 +74,11 @@ TEST_F(TextureMapReading, AMapThatCannotBeReadIsSaidOnceAndTheMeshStillLoads) {
 // there and costs no decoding.
 TEST_F(TextureMapReading, ACheckSkipsTheMaps) {
   write("m.mtl", "newmtl painted\nmap_Kd missing.png\n");
-  const PolygonSoup obj = read_polygon_soup(write("t.obj", kTriangleWithUvs), TextureMaps::kSkip);
+  const PolygonSoup obj = read_polygon_soup(write("t.obj", kTriangleWithUvs), TextureMaps::skip());
   EXPECT_TRUE(obj.warnings.empty()) << obj.warnings[0].message;
   EXPECT_FALSE(obj.materials[0].texture);
   EXPECT_TRUE(obj.corner_uvs.empty());
-  const PolygonSoup gltf = read_polygon_soup("/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb", TextureMaps::kSkip);
+  const PolygonSoup gltf = read_polygon_soup("/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb", TextureMaps::skip());
   EXPECT_FALSE(gltf.materials[0].texture);
   EXPECT_TRUE(gltf.corner_uvs.empty());
 }
@@ -133,10 +140,164 @@ TEST_F(TextureMapReading, AGltfWhoseImageIsMissingStillLoadsAndSaysSo) {
   const PolygonSoup soup = read_polygon_soup((folder_ / "BoxTextured.gltf").string());
   ASSERT_EQ(soup.warnings.size(), 1u);
   EXPECT_EQ(soup.warnings[0].message,
-            "material \"Texture\"'s base colour texture (CesiumLogoFlat.png) could not be read: its faces take the base colour");
+            "material \"Texture\"'s base colour texture (CesiumLogoFlat.png) does not exist: its faces take the base colour");
   EXPECT_FALSE(soup.materials[0].texture);
   EXPECT_TRUE(soup.corner_uvs.empty());
   EXPECT_EQ(soup.polygon_count(), 12u);
+}
+
+
+// The safety of reading maps that a downloaded model names: only regular
+// files (a FIFO would never answer, /dev/zero never end), only inside the
+// folder the user named (else any image the user can read could be put into
+// the picture), each file decoded once, and no image decoded past the budget.
+class UntrustedMaps : public TextureMapReading {
+ protected:
+  // An OBJ triangle whose one material's map_Kd is `map`; its one warning, or "".
+  std::string obj_map_warning(const std::string& map, const TextureMaps& maps = {}) const {
+    write("m.mtl", "newmtl painted\nKd 0.5 0.5 0.5\nmap_Kd " + map + "\n");
+    const PolygonSoup soup = read_polygon_soup(write("t.obj", kTriangleWithUvs), maps);
+    EXPECT_LE(soup.warnings.size(), 1u);
+    return soup.warnings.empty() ? "" : soup.warnings[0].message;
+  }
+  std::string refused(const std::string& map, const std::string& why) const {
+    return "material \"painted\"'s texture map \"" + map + "\": " + why + ": its faces take the material's Kd colour";
+  }
+  // A PNG's signature and header chunk alone, claiming `width` x `height`
+  // grey pixels: what stb_image reads before it decodes anything.
+  static std::string png_header(uint32_t width, uint32_t height) {
+    const auto be = [](std::string& out, uint32_t v) {
+      for (int shift = 24; shift >= 0; shift -= 8) out += char((v >> shift) & 0xff);
+    };
+    std::string chunk = "IHDR";
+    be(chunk, width), be(chunk, height);
+    chunk += std::string("\x08\x00\x00\x00\x00", 5);  // 8-bit grey, deflate, no interlace
+    std::string out = "\x89PNG\r\n\x1a\n";
+    be(out, 13);
+    out += chunk;
+    be(out, test::crc32(chunk));
+    return out;
+  }
+};
+
+TEST_F(UntrustedMaps, AFifoOrADeviceIsNoMapAndNothingWaits) {
+  const std::string fifo = (folder_ / "fifo.png").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_EQ(obj_map_warning("fifo.png"), refused(fifo, "is not a regular file (a FIFO), which umbra does not read as an image"));
+  TextureMaps anywhere;
+  anywhere.anywhere = true;
+  EXPECT_EQ(obj_map_warning("/dev/zero", anywhere),
+            refused("/dev/zero", "is not a regular file (a character device), which umbra does not read as an image"));
+}
+
+TEST_F(UntrustedMaps, AMapOutsideTheNamedFolderIsRefusedUnlessAnyPathIsAllowed) {
+  std::filesystem::create_directories(folder_ / "pack" / "models");
+  std::filesystem::create_directories(folder_ / "pack" / "textures");
+  write_png_map("pack/textures/wood.png");
+  write_png_map("secret.png");
+  write("pack/models/m.mtl", "newmtl painted\nmap_Kd ../textures/wood.png\nnewmtl leak\nmap_Kd ../../secret.png\n"
+                             "newmtl absolute\nmap_Kd " + (folder_ / "secret.png").string() + "\n");
+  const std::string obj = write("pack/models/t.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl painted\nf 1/1 2/1 3/1\n");
+  const std::string pack = canonical(folder_ / "pack").string();
+  const std::string outside = "lies outside " + pack + ", the folder umbra reads this model's files from (--any-texture-path reads it)";
+  // The folder the user named: the pack. A sibling folder in it is read;
+  // what climbs out of it, by ../ or by an absolute path, is not.
+  TextureMaps maps;
+  maps.root = (folder_ / "pack").string();
+  const PolygonSoup soup = read_polygon_soup(obj, maps);
+  ASSERT_EQ(soup.warnings.size(), 2u);
+  EXPECT_TRUE(soup.materials[0].texture);
+  EXPECT_EQ(soup.warnings[0].message, "material \"leak\"'s texture map \"" + (folder_ / "secret.png").string() + "\": " + outside +
+                                          ": its faces take the material's Kd colour");
+  EXPECT_EQ(soup.warnings[1].message, "material \"absolute\"'s texture map \"" + (folder_ / "secret.png").string() + "\": " +
+                                          outside + ": its faces take the material's Kd colour");
+  // The mesh named on its own: its own folder.
+  EXPECT_FALSE(read_polygon_soup(obj).materials[0].texture);
+  maps.anywhere = true;
+  const PolygonSoup anywhere = read_polygon_soup(obj, maps);
+  EXPECT_TRUE(anywhere.warnings.empty());
+  EXPECT_TRUE(anywhere.materials[1].texture && anywhere.materials[2].texture);
+  // A link in the folder to a file outside it reads the file outside.
+  std::filesystem::create_symlink(folder_ / "secret.png", folder_ / "pack" / "models" / "link.png");
+  maps.anywhere = false;
+  write("pack/models/m.mtl", "newmtl painted\nmap_Kd link.png\n");
+  EXPECT_FALSE(read_polygon_soup(obj, maps).materials[0].texture);
+}
+
+TEST_F(UntrustedMaps, OneFileNamedByManyMaterialsIsDecodedOnce) {
+  write_png_map("shared.png");
+  std::string library, faces = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\n";
+  for (int m = 0; m < 200; ++m)
+    library += "newmtl m" + std::to_string(m) + "\nmap_Kd shared.png\n", faces += "usemtl m" + std::to_string(m) + "\nf 1/1 2/1 3/1\n";
+  write("m.mtl", library);
+  const PolygonSoup soup = read_polygon_soup(write("t.obj", faces));
+  ASSERT_EQ(soup.materials.size(), 200u);
+  for (const SoupMaterial& m : soup.materials) EXPECT_EQ(m.texture.get(), soup.materials[0].texture.get());
+  ASSERT_TRUE(soup.materials[0].texture);
+}
+
+TEST_F(UntrustedMaps, AnImageLargerThanTheBudgetIsRefusedFromItsHeader) {
+  write("wide.png", png_header(16385, 1));
+  EXPECT_EQ(obj_map_warning("wide.png"), refused((folder_ / "wide.png").string(),
+                                                 "the image is 16385x1 pixels, more than umbra decodes (16384 along a side, "
+                                                 "67108864 pixels in all)"));
+  write("huge.png", png_header(16384, 16384));  // 300 KB as a real PNG: 1 GiB decoded
+  EXPECT_EQ(obj_map_warning("huge.png"), refused((folder_ / "huge.png").string(),
+                                                 "the image is 16384x16384 pixels, more than umbra decodes (16384 along a side, "
+                                                 "67108864 pixels in all)"));
+}
+
+TEST_F(UntrustedMaps, ATruncatedImageSaysSo) {
+  const std::string whole = write_png_map("whole.png");
+  std::ifstream in(whole, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  write("cut.png", bytes.substr(0, bytes.size() - 20));
+  const std::string warning = obj_map_warning("cut.png");
+  EXPECT_EQ(warning.find("material \"painted\"'s texture map \"" + (folder_ / "cut.png").string() +
+                         "\": cannot decode the image: a PNG cut short or corrupt (stb_image: "),
+            0u)
+      << warning;
+}
+
+// glTF: the same rules for a uri, images decoded only when a material uses
+// them, and once for every texture that names one image.
+TEST_F(UntrustedMaps, GltfImagesFollowTheSameRules) {
+  const PolygonSoup cube = test::unit_cube();
+  const auto gltf_warnings = [&](const std::string& images, const std::string& textures, int materials) {
+    test::GltfOptions o;
+    o.material.clear();
+    for (int m = 0; m < materials; ++m)
+      o.material += std::string(m ? ", " : "") + R"({"name": "m)" + std::to_string(m) + R"(", "pbrMetallicRoughness": {"baseColorTexture": {"index": )" +
+                    std::to_string(m) + "}}}";
+    o.more = R"(, "images": [)" + images + R"(], "textures": [)" + textures + "]";
+    const PolygonSoup soup = read_polygon_soup(write("m.gltf", test::gltf_json(cube, test::gltf_buffer(cube), o)));
+    std::vector<std::string> said;
+    for (const ReadWarning& w : soup.warnings) said.push_back(w.message);
+    return std::make_pair(soup, said);
+  };
+  write_png_map("wood.png");
+  const std::string fifo = (folder_ / "fifo.png").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  write("huge.png", png_header(16384, 16384));
+  // Image 0 is used by all three textures; image 1, the huge one, by none;
+  // 2 is a FIFO, 3 absolute, 4 a file: URI, 5 Windows' separators.
+  std::filesystem::create_directories(folder_ / "sub");
+  write_png_map("sub/a.png");
+  const auto [soup, said] = gltf_warnings(
+      R"({"uri": "wood.png"}, {"uri": "huge.png"}, {"uri": "fifo.png"}, {"uri": "/etc/hostname"}, {"uri": "file:///etc/x.png"}, {"uri": "sub\\a.png"})",
+      R"({"source": 0}, {"source": 0}, {"source": 0}, {"source": 2}, {"source": 3}, {"source": 4}, {"source": 5})", 7);
+  const std::string root = canonical(folder_).string();
+  EXPECT_EQ(said, (std::vector<std::string>{
+                      "material \"m3\"'s base colour texture (fifo.png) is not a regular file (a FIFO), which umbra does not read as "
+                      "an image: its faces take the base colour",
+                      "material \"m4\"'s base colour texture (/etc/hostname) lies outside " + root +
+                          ", the folder umbra reads this model's files from (--any-texture-path reads it): its faces take the base colour",
+                      "material \"m5\"'s base colour texture (file:///etc/x.png) is a file: URI, which umbra does not follow: name the "
+                      "image by a path relative to the model: its faces take the base colour"}));
+  ASSERT_TRUE(soup.materials[0].texture);
+  EXPECT_EQ(soup.materials[1].texture.get(), soup.materials[0].texture.get());
+  EXPECT_EQ(soup.materials[2].texture.get(), soup.materials[0].texture.get());
+  EXPECT_TRUE(soup.materials[6].texture);  // sub\a.png
 }
 
 }  // namespace
