@@ -19,6 +19,7 @@
 #include "scene/scene_checks.hpp"
 #include "scene/staged_scene.hpp"
 #include "tools/command_line.hpp"
+#include "tools/picture_names.hpp"
 #include "tools/progress_bar.hpp"
 
 namespace umbra {
@@ -39,12 +40,12 @@ int default_supersampling(const std::string& path) { return is_mesh_file(path) ?
 
 namespace {
 
-Outcome render_one(const std::string& path, const std::string& out, const BatchRenderOptions& o,
+Outcome render_one(const std::string& path, const std::string& root, const std::string& out, const BatchRenderOptions& o,
                    std::optional<HeadlessContext>& context) {
   Outcome outcome;
   try {
     if (const std::string what = neither_scene_nor_mesh(path); !what.empty()) throw InputError({path}, what);
-    Scene scene = parse_scene_or_mesh_file(path, {}, nullptr, o.up);
+    Scene scene = parse_scene_or_mesh_file(path, {}, nullptr, o.up, TextureMaps{true, root, o.any_texture_path});
     for (const Warning& w : scene.warnings) outcome.err += w.where.str() + ": warning: " + w.message + "\n";
     rotate_lights_about_z(scene, o.light_angle_deg);
     require_lights_off_casters(scene);
@@ -82,8 +83,11 @@ int run_batch_render(const BatchRenderOptions& o) {
   // Said once for all the shards: by the first.
   if (o.shard && o.shard->index > 0) found.passed_over.clear();
   for (const auto& [path, what] : found.passed_over) std::cerr << "umbra render: passed over " << path << ": " << what << ", not a mesh\n";
+  // Named for all the files, before the shards part: every shard names alike.
+  const std::vector<std::string> all_names = distinct_picture_names(found.meshes, found.names, found.roots);
   const std::vector<std::string> files = o.shard ? shard_of(found.meshes, *o.shard) : found.meshes;
-  const std::vector<std::string> names = o.shard ? shard_of(found.names, *o.shard) : found.names;
+  const std::vector<std::string> names = o.shard ? shard_of(all_names, *o.shard) : all_names;
+  const std::vector<std::string> roots = o.shard ? shard_of(found.roots, *o.shard) : found.roots;
   const auto picture_path = [&](size_t i) { return (std::filesystem::path(o.out_dir) / (names[i] + ".png")).string(); };
   const auto start = std::chrono::steady_clock::now();
   // --jobs bounds the threads of the whole process, as in umbra check.
@@ -92,15 +96,17 @@ int run_batch_render(const BatchRenderOptions& o) {
   std::atomic<size_t> next{0};
   std::mutex print_mutex;
   size_t finished = 0, written = 0;
+  std::vector<char> drawn(count, 0);  // this run's pictures: the sheet shows no other
   ProgressBar progress(count);
   const auto work = [&] {
     std::optional<HeadlessContext> context;
     for (size_t i = next++; i < count; i = next++) {
-      const Outcome outcome = render_one(files[i], picture_path(i), o, context);
+      const Outcome outcome = render_one(files[i], roots[i], picture_path(i), o, context);
       const std::lock_guard<std::mutex> lock(print_mutex);
       progress.clear();
       std::cerr << outcome.err << std::flush;
       written += outcome.written;
+      drawn[i] = outcome.written;
       progress.update(++finished, files[i]);
     }
   };
@@ -115,9 +121,8 @@ int run_batch_render(const BatchRenderOptions& o) {
     // time while drawing, so that a folder of large pictures fits in memory.
     std::vector<SheetPicture> sheet;
     for (size_t i = 0; i < count; ++i) {
+      if (!drawn[i]) continue;  // it failed: an older picture of it is not this run's
       const std::string out = picture_path(i);
-      std::error_code ec;
-      if (!std::filesystem::exists(out, ec)) continue;  // it failed
       try {
         sheet.push_back({names[i], thumbnail(read_png(out), kSheetThumbWidth)});
       } catch (const std::exception& e) {

@@ -25,6 +25,7 @@ struct BatchRenderOptions {
   size_t jobs = 1;  // pictures drawn at a time, each in its own GL context
   std::optional<Shard> shard;
   std::optional<std::string> sheet;  // also one PNG of every picture, labelled with its file's name
+  bool any_texture_path = false;     // texture maps from any folder, not only the one each file was found in
 };
 
 // Samples per pixel along each side that a picture of `path` gets unless
@@ -34,7 +35,9 @@ int default_supersampling(const std::string& path);
 
 // Writes OUT_DIR/NAME.png for each file, NAME its path relative to the
 // folder it was found in (or its file name), so that a.obj and a.stl do not
-// meet. With `sheet`, also a contact sheet of the pictures in file order.
+// meet; where two files would still share a NAME (a/x.off and b/x.off), each
+// NAME takes as many of its folders' names as tell them apart, all decided
+// before anything is drawn. With `sheet`, also a contact sheet of the pictures in file order.
 // A file that fails is reported on stderr and the rest go on. Returns
 // 0 when every picture was written, 1 when any file failed, 2 when there is
 // nothing to render.

@@ -103,9 +103,7 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
     if (o.shard) throw UsageError("--repair checks one mesh: --shard does not apply");
     if (!repair_can_write(*o.repair_output))
       throw UsageError("--repair needs an output ending in " + mesh_format_extensions(true) + ", got \"" + *o.repair_output + "\"");
-    std::error_code ec;
-    if (*o.repair_output == o.meshes[0] || std::filesystem::equivalent(*o.repair_output, o.meshes[0], ec))
-      throw UsageError("--repair would overwrite its input \"" + o.meshes[0] + "\"; name another file");
+    require_other_than_input("--repair", *o.repair_output, o.meshes[0]);
   }
   return o;
 }
@@ -126,7 +124,7 @@ CheckOutcome check_one(const std::string& path, const CheckCommandOptions& optio
     outcome.status = 2;
   };
   try {
-    const MeshReport report = check_mesh(read_polygon_soup(path, TextureMaps::kSkip), options.check);
+    const MeshReport report = check_mesh(read_polygon_soup(path, TextureMaps::skip()), options.check);
     options.json ? report.print_json(out) : report.print_text(out);
     outcome.status = report.is_closed_manifold() ? 0 : 1;
   } catch (const InputError& e) {
@@ -142,9 +140,9 @@ CheckOutcome check_one(const std::string& path, const CheckCommandOptions& optio
 
 int repair_one(const std::string& path, const std::string& output, const CheckCommandOptions& options) {
   try {
-    const PolygonSoup soup = read_polygon_soup(path, TextureMaps::kSkip);
+    const PolygonSoup soup = read_polygon_soup(path, TextureMaps::skip());
     const RepairSummary summary = repair_mesh(soup, output);
-    const MeshReport after = check_mesh(read_polygon_soup(output, TextureMaps::kSkip), options.check);
+    const MeshReport after = check_mesh(read_polygon_soup(output, TextureMaps::skip()), options.check);
     if (options.json) {
       after.print_json(std::cout);
     } else {

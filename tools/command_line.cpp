@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 
 #include <CLI/CLI.hpp>
 
@@ -206,6 +207,17 @@ void add_up_option(CommandOptions& options, std::string& up) {
     if (!is_up_axis(t)) throw UsageError(o + " must be +x, -x, +y, -y, +z or -z, got \"" + t + "\"");
     up = t;
   });
+}
+
+void add_any_texture_path_option(CommandOptions& options, bool& anywhere) { options.flag("--any-texture-path", anywhere); }
+
+bool same_file(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  return a == b || std::filesystem::equivalent(a, b, ec);
+}
+
+void require_other_than_input(const std::string& option, const std::string& output, const std::string& input) {
+  if (same_file(output, input)) throw UsageError(option + " would overwrite its input \"" + input + "\"; name another file");
 }
 
 void add_output_option(CommandOptions& options, std::string& path) {

@@ -95,5 +95,12 @@ void add_map_size_option(CommandOptions& options, int& texels);                 
 void add_output_option(CommandOptions& options, std::string& path);                   // -o, --output
 void add_gl_option(CommandOptions& options, HeadlessGl& gl);                         // --gl auto|egl|osmesa
 void add_up_option(CommandOptions& options, std::string& up);                         // --up +x|-x|+y|-y|+z|-z
+void add_any_texture_path_option(CommandOptions& options, bool& anywhere);            // --any-texture-path
+
+// Whether `a` and `b` name one file: the same words, or one file by two
+// names (links, "./"), when both exist.
+bool same_file(const std::string& a, const std::string& b);
+// A UsageError when the output `option` names would overwrite the input `input`.
+void require_other_than_input(const std::string& option, const std::string& output, const std::string& input);
 
 }  // namespace umbra

@@ -32,7 +32,7 @@ void meshes_in_folder(const std::string& folder, MeshPaths& out) {
   if (ec) throw UsageError("cannot search the folder \"" + folder + "\": " + ec.message());
   std::sort(found.begin(), found.end());
   std::sort(passed_over.begin(), passed_over.end());
-  for (const std::string& path : found) out.names.push_back(fs::path(path).lexically_relative(folder).string());
+  for (const std::string& path : found) out.names.push_back(fs::path(path).lexically_relative(folder).string()), out.roots.push_back(folder);
   out.meshes.insert(out.meshes.end(), found.begin(), found.end());
   out.passed_over.insert(out.passed_over.end(), passed_over.begin(), passed_over.end());
 }
@@ -44,7 +44,9 @@ MeshPaths expand_mesh_paths(const std::vector<std::string>& arguments) {
   for (const std::string& argument : arguments) {
     std::error_code ec;
     if (std::filesystem::is_directory(argument, ec)) meshes_in_folder(argument, paths);
-    else paths.meshes.push_back(argument), paths.names.push_back(std::filesystem::path(argument).filename().string());
+    else
+      paths.meshes.push_back(argument), paths.names.push_back(std::filesystem::path(argument).filename().string()),
+          paths.roots.emplace_back();
   }
   return paths;
 }

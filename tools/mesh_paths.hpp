@@ -21,6 +21,9 @@ struct MeshPaths {
   // Per mesh, its path relative to the folder argument it was found in, or
   // its file name when it was an argument itself: where a folder's picture goes.
   std::vector<std::string> names;
+  // Per mesh, the folder argument it was found in, or "" when it was an
+  // argument itself: the folder its texture maps may be read from.
+  std::vector<std::string> roots;
   std::vector<std::pair<std::string, std::string>> passed_over;  // (path, what it is)
 };
 MeshPaths expand_mesh_paths(const std::vector<std::string>& arguments);

@@ -1,5 +1,7 @@
 #include "tools/render_command.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -77,6 +79,11 @@ options:
   --sheet SHEET.png     with several files: also one picture of them all,
                         each shrunk to at most 200 pixels wide and labelled
                         with its file's name
+  --any-texture-path    read texture maps from any folder: by default a model's
+                        maps are read only from inside the folder named on
+                        the command line (the model's own, for a file named
+                        on its own), so that a model from anywhere cannot
+                        put another image you can read into its picture
   --explain             print the render plan (camera, lights, each caster's
                         volume, how each light's volumes are counted and how
                         far they reach, the GL, the pages malloc takes) to
@@ -92,6 +99,15 @@ exit status is 1 when any failed.
 
 namespace {
 
+// Whether `path` ends as a picture's name does (.png, .jpg, ...), case aside.
+bool is_picture_name(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  for (const char* picture : {".png", ".jpg", ".jpeg", ".webp", ".bmp", ".tif", ".tiff"})
+    if (extension == picture) return true;
+  return false;
+}
+
 struct RenderOptions {
   std::string scene_path;
   std::optional<BatchRenderOptions> batch;  // several files or a folder
@@ -104,6 +120,7 @@ struct RenderOptions {
   std::optional<int> antialias;  // unset: by what is rendered (staged_supersampling)
   bool show_volumes = false;
   bool explain = false;
+  bool any_texture_path = false;
   bool help = false;
 };
 
@@ -124,6 +141,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   options.flag("--show-volumes", o.show_volumes);
   options.flag("--explain", o.explain);
   add_up_option(options, o.up);
+  add_any_texture_path_option(options, o.any_texture_path);
   std::optional<size_t> jobs;
   std::optional<Shard> shard;
   std::optional<std::string> sheet;
@@ -138,16 +156,24 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   std::error_code ec;
   if (scenes.size() > 1 || std::filesystem::is_directory(o.scene_path, ec)) {
     if (o.output.empty()) throw UsageError("no output folder given (-o OUTDIR)");
+    if (std::filesystem::exists(o.output, ec) && !std::filesystem::is_directory(o.output, ec))
+      throw UsageError("-o " + o.output + " is a file; several inputs make one picture each, in a folder: name a folder");
+    if (!std::filesystem::exists(o.output, ec) && o.output.back() != '/' && is_picture_name(o.output))
+      throw UsageError("-o " + o.output + " names a picture, but several inputs make one picture each, in a folder: name a "
+                       "folder (\"" + o.output + "/\" makes one of that name)");
     if (o.mask) throw UsageError("--mask writes one scene's mask; with several files there is none to choose");
     if (o.explain) throw UsageError("--explain prints one scene's plan; with several files, ask for one of them");
     o.batch = BatchRenderOptions{scenes, o.output, o.settings, o.light_angle_deg, o.up, o.gl, o.antialias, o.show_volumes,
-                                 jobs.value_or(std::max(1u, std::thread::hardware_concurrency())), shard, sheet};
+                                 jobs.value_or(std::max(1u, std::thread::hardware_concurrency())), shard, sheet,
+                                 o.any_texture_path};
   } else {
     if (shard) throw UsageError("--shard splits several files; \"" + o.scene_path + "\" is one");
     if (sheet) throw UsageError("--sheet shows several files; \"" + o.scene_path + "\" is one");
     if (o.output.empty()) throw UsageError("no output image given (-o OUT.png)");
+    require_other_than_input("-o", o.output, o.scene_path);
+    if (o.mask) require_other_than_input("--mask", *o.mask, o.scene_path);
   }
-  if (o.mask && *o.mask == o.output) throw UsageError("--mask and -o name the same file");
+  if (o.mask && same_file(*o.mask, o.output)) throw UsageError("--mask and -o name the same file");
   if (!o.up.empty() && !o.batch && !is_mesh_file(o.scene_path))
     throw UsageError("--up stands a mesh file on its own; \"" + o.scene_path + "\" is not one");
   const RenderMethod m = o.settings.method;
@@ -175,7 +201,7 @@ int run_render_command(const std::vector<std::string>& argv) {
     std::string staged;
     Scene scene = parse_scene_or_mesh_file(options.scene_path, [&](size_t loaded, size_t total, const std::string& path) {
       progress->update(0, "loading mesh " + std::to_string(loaded + 1) + " of " + std::to_string(total) + ": " + path);
-    }, &staged, options.up);
+    }, &staged, options.up, TextureMaps{true, "", options.any_texture_path});
     progress->clear();
     if (options.explain && !staged.empty())
       std::cout << "staged scene for " << options.scene_path << " (save it as a .scene file beside the mesh to edit it):\n"

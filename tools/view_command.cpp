@@ -64,6 +64,8 @@ options:
   --segments N         sphere segments (default 64)
   --up AXIS            for a MESH: its axis that points up (see umbra render
                        --help)
+  --any-texture-path   read texture maps from any folder, not only the
+                       model's own (see umbra render --help)
   --frames N           draw N frames, then exit, printing the median and the
                        worst time a frame took; the light then advances by
                        SPEED/60 degrees per frame, so a run is reproducible
@@ -78,6 +80,7 @@ namespace {
 struct ViewOptions {
   std::string scene_path;
   std::string up;  // for a mesh file: "" for its format's own
+  bool any_texture_path = false;
   RenderSettings settings;
   double light_angle_deg = 0.0;
   double speed_deg_per_s = 30.0;
@@ -104,6 +107,7 @@ ViewOptions parse_view_options(const std::vector<std::string>& argv) {
   options.value("--screenshot", [&](const std::string&, const std::string& t) { o.screenshot = t; });
   options.flag("--overlay-in-screenshot", o.overlay_in_screenshot);
   add_up_option(options, o.up);
+  add_any_texture_path_option(options, o.any_texture_path);
   options.positionals(scenes);
   options.parse(argv);
   if (scenes.size() > 1) throw UsageError("one scene at a time (got \"" + scenes[0] + "\" and \"" + scenes[1] + "\")");
@@ -196,7 +200,7 @@ int run_view_command(const std::vector<std::string>& argv) {
     std::optional<ProgressBar> progress(std::in_place, 2);  // loading, then preparing the shadows
     Scene parsed = parse_scene_or_mesh_file(options.scene_path, [&](size_t loaded, size_t total, const std::string& path) {
       progress->update(0, "loading mesh " + std::to_string(loaded + 1) + " of " + std::to_string(total) + ": " + path);
-    }, nullptr, options.up);
+    }, nullptr, options.up, TextureMaps{true, "", options.any_texture_path});
     progress->clear();
     for (const Warning& w : parsed.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
     progress->update(1, "preparing shadow volumes");

@@ -62,6 +62,7 @@ VolumeOptions parse_volume_options(const std::vector<std::string>& argv) {
   if (o.help) return o;
   if (o.scene_path.empty()) throw UsageError("no scene file given");
   if (o.output.empty()) throw UsageError("no output file given (-o OUT.obj)");
+  require_other_than_input("-o", o.output, o.scene_path);
   return o;
 }
 

@@ -322,5 +322,78 @@ TEST_F(RenderCommand, SeveralFilesTakeAnOutputFolderAndNoSingleSceneOptions) {
   EXPECT_NE(r.err.find("--shard splits several files; \"" + a + "\" is one"), std::string::npos) << r.err;
 }
 
+
+// Two inputs that would make one picture name each keep their own picture,
+// named by as many of their folders as tell them apart, decided before
+// anything is drawn; shards name alike.
+TEST_F(RenderCommand, InputsThatShareAPictureNameKeepEveryPicture) {
+  fs::create_directories(path("a")), fs::create_directories(path("b"));
+  const std::string tet = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+  write("a/x.obj", tet);
+  write("b/x.obj", "v 0 0 0\nv 2 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+  CommandResult r = run("render " + path("a/x.obj") + " " + path("b/x.obj") + " -o " + path("out") + " --size 40x30 --jobs 2");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find(": 2 pictures in "), std::string::npos) << r.err;
+  ASSERT_TRUE(fs::exists(path("out/a/x.obj.png")) && fs::exists(path("out/b/x.obj.png")));
+  EXPECT_NE(read(path("out/a/x.obj.png")), read(path("out/b/x.obj.png")));
+  // The folders a and b, each holding x.obj; and one file named twice.
+  r = run("render " + path("a") + " " + path("b") + " -o " + path("folders") + " --size 40x30");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(read(path("folders/a/x.obj.png")), read(path("out/a/x.obj.png")));
+  EXPECT_EQ(read(path("folders/b/x.obj.png")), read(path("out/b/x.obj.png")));
+  r = run("render " + path("a/x.obj") + " " + path("a/x.obj") + " -o " + path("twice") + " --size 40x30 --shard 1/2");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(path("twice/x.obj (2).png")));
+}
+
+// A file that drew in an earlier run and fails now is not on this run's sheet.
+TEST_F(RenderCommand, TheSheetShowsThisRunsPicturesOnly) {
+  fs::create_directories(path("models"));
+  write("models/t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  CommandResult r = run("render " + path("models") + " -o " + path("out") + " --size 40x30 --sheet " + path("sheet.png"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  write("models/t.obj", "v 0 0 0\nf 1 2 3\n");
+  r = run("render " + path("models") + " -o " + path("out") + " --size 40x30 --sheet " + path("sheet.png"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("umbra render: wrote the contact sheet " + path("sheet.png") + " (0 pictures)"), std::string::npos) << r.err;
+}
+
+// Outputs that would overwrite an input or cannot be a folder are usage
+// errors, said before anything is drawn.
+TEST_F(RenderCommand, AnOutputThatWouldOverwriteAnInputOrIsNoFolderIsRefused) {
+  const std::string tet = write("tet.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  const std::string before = read(tet);
+  CommandResult r = run("render " + tet + " -o " + tet);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "umbra render: -o would overwrite its input \"" + tet + "\"; name another file\n(see umbra render --help)\n");
+  r = run("render " + tet + " -o " + path("./tet.off"));
+  EXPECT_EQ(r.status, 2);
+  const std::string scene = std::string(UMBRA_SOURCE_DIR) + "/scenes/two_spheres.scene";
+  fs::copy_file(scene, path("s.scene"));
+  r = run("render " + path("s.scene") + " -o " + path("x.png") + " --mask " + path("s.scene"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(read(path("s.scene")), read(scene));
+  r = run("volume " + path("s.scene") + " -o " + path("s.scene"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "umbra volume: -o would overwrite its input \"" + path("s.scene") + "\"; name another file\n(see umbra volume --help)\n");
+  EXPECT_EQ(read(path("s.scene")), read(scene));
+  EXPECT_EQ(read(tet), before);
+
+  // Several inputs: an existing file, or a picture's name, is no folder.
+  const std::string other = write("other.off", before);
+  r = run("render " + tet + " " + other + " -o " + tet);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "umbra render: -o " + tet + " is a file; several inputs make one picture each, in a folder: name a folder\n"
+                   "(see umbra render --help)\n");
+  r = run("render " + tet + " " + other + " -o " + path("two.png"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "umbra render: -o " + path("two.png") + " names a picture, but several inputs make one picture each, in a folder: "
+                   "name a folder (\"" + path("two.png") + "/\" makes one of that name)\n(see umbra render --help)\n");
+  EXPECT_FALSE(fs::exists(path("two.png")));
+  r = run("render " + tet + " " + other + " -o " + path("two.png/") + " --size 16x16");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(path("two.png/tet.off.png")));
+}
+
 }  // namespace
 }  // namespace umbra
