@@ -40,11 +40,31 @@ namespace {
 
 int text_width(const std::string& text) { return stb_easy_font_width(const_cast<char*>(text.c_str())) * kScale; }
 
-// `label`, or its end after "..." when it is wider than `width`.
-std::string fitted(const std::string& label, int width) {
+// `label` in the font's characters: stb_easy_font draws printable ASCII
+// only, and reads outside its tables for any other byte; each other
+// character (a UTF-8 sequence, a control byte) shows as one '?'.
+std::string printable(const std::string& label) {
+  std::string out;
+  for (const char ch : label) {
+    const auto byte = static_cast<unsigned char>(ch);
+    if (byte >= 0x20 && byte < 0x7f) out += ch;
+    else if ((byte & 0xc0) != 0x80) out += '?';  // a UTF-8 continuation byte belongs to the '?' before it
+  }
+  return out;
+}
+
+// `label`, fitted to `width`: whole if it fits; else without the start that
+// every label on the sheet shares (`shared` characters), said as "..."; else
+// cut in its middle, so that the part that tells it from the others stays
+// at its front and the file's own name at its end.
+std::string fitted(const std::string& label, size_t shared, int width) {
   if (text_width(label) <= width) return label;
-  for (size_t cut = 1; cut < label.size(); ++cut)
-    if (text_width("..." + label.substr(cut)) <= width) return "..." + label.substr(cut);
+  const std::string rest = shared > 3 ? "..." + label.substr(shared) : label;
+  if (text_width(rest) <= width) return rest;
+  for (size_t keep = rest.size(); keep-- > 0;) {
+    const std::string cut = rest.substr(0, (keep + 1) / 2) + "..." + rest.substr(rest.size() - keep / 2);
+    if (text_width(cut) <= width) return cut;
+  }
   return "";
 }
 
@@ -73,6 +93,10 @@ Image contact_sheet(const std::vector<SheetPicture>& pictures, int thumb_width, 
     tile_h = std::max(tile_h, thumbs.back().height);
   }
   const int n = int(pictures.size());
+  std::vector<std::string> labels;
+  for (const SheetPicture& p : pictures) labels.push_back(printable(p.label));
+  size_t shared = labels.size() > 1 ? labels[0].size() : 0;  // the start every label has
+  for (const std::string& l : labels) shared = std::min<size_t>(shared, std::mismatch(l.begin(), l.end(), labels[0].begin(), labels[0].end()).first - l.begin());
   if (columns <= 0) columns = std::max(1, int(std::ceil(std::sqrt(double(n)))));
   const int rows = std::max(1, (n + columns - 1) / columns);
   const int cell_w = tile_w + 2 * kPad, cell_h = tile_h + kLabelHeight + 2 * kPad;
@@ -83,7 +107,7 @@ Image contact_sheet(const std::vector<SheetPicture>& pictures, int thumb_width, 
     for (int y = 0; y < t.height; ++y)
       for (int x = 0; x < t.width; ++x)
         for (int c = 0; c < 3; ++c) sheet.at(x0 + x, y0 + y, c) = t.at(x, y, c);
-    draw_text(sheet, x0, y0 + tile_h + 4, fitted(pictures[size_t(k)].label, tile_w));
+    draw_text(sheet, x0, y0 + tile_h + 4, fitted(labels[size_t(k)], shared, tile_w));
   }
   return sheet;
 }

@@ -10,7 +10,7 @@
 namespace umbra {
 
 struct SheetPicture {
-  std::string label;  // said as given; cut at the front with "..." when too long for its tile
+  std::string label;  // printable ASCII as given, any other character as '?'; shortened with "..." when too long for its tile
   Image picture;      // RGB
 };
 

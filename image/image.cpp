@@ -7,6 +7,8 @@
 
 #include <png.h>
 
+#include "image/partial_file.hpp"
+
 namespace umbra {
 
 // libpng's simplified API (png_image): no setjmp, errors come back as text.
@@ -20,16 +22,12 @@ void write_png(const Image& image, const std::string& path) {
   png.height = png_uint_32(image.height);
   png.format = image.channels == 1 ? PNG_FORMAT_GRAY : PNG_FORMAT_RGB;
 
-  const std::string temporary = path + ".partial";
-  const bool written =
-      png_image_write_to_file(&png, temporary.c_str(), 0, image.pixels.data(), 0, nullptr) != 0;
+  PartialFile partial(path, "the image");
+  const bool written = png_image_write_to_file(&png, partial.temporary_path().c_str(), 0, image.pixels.data(), 0, nullptr) != 0;
   const std::string reason = written ? "" : png.message;
   png_image_free(&png);
-  if (!written || std::rename(temporary.c_str(), path.c_str()) != 0) {
-    const std::string why = written ? std::strerror(errno) : reason;
-    std::remove(temporary.c_str());
-    throw std::runtime_error(path + ": cannot write the image: " + why);
-  }
+  if (!written) throw std::runtime_error(path + ": cannot write the image: " + reason);
+  partial.commit();
 }
 
 Image read_png(const std::string& path) {

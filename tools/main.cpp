@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "image/partial_file.hpp"
 #include "render/headless_context.hpp"
 #include "tools/bench_command.hpp"
 #include "tools/check_command.hpp"
@@ -40,6 +41,7 @@ int main(int argc, char** argv) {
     return args.empty() ? 2 : 0;
   }
   umbra::restart_with_huge_page_malloc(argv);  // before any allocation worth the name
+  umbra::remove_partial_files_on_signals();
   if (args[0] == "--version") {
     std::cout << "umbra " << UMBRA_VERSION << "\n";
     // What umbra render would draw with: the platform --gl auto picks.

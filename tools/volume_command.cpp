@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "image/partial_file.hpp"
 #include "scene/scene_checks.hpp"
 #include "scene/scene_parser.hpp"
 #include "render/render_plan.hpp"
@@ -115,8 +116,8 @@ int run_volume_command(const std::vector<std::string>& argv) {
     const LightPlan& lp = plan.lights[size_t(options.light - 1)];
     const glm::dvec3 light = scene.lights[size_t(options.light - 1)].position;
 
-    const std::string temporary = options.output + ".partial";
-    std::ofstream out(temporary);
+    PartialFile partial(options.output, "the volume file");
+    std::ofstream out(partial.temporary_path());
     out << "# shadow volumes of light " << options.light << " of " << scene.path << ", made by umbra volume\n"
         << "# vertices at infinity are drawn " << options.far << " beyond the caster\n";
     size_t written = 0, groups = 0;
@@ -139,10 +140,8 @@ int run_volume_command(const std::vector<std::string>& argv) {
       ++groups;
     }
     out.close();
-    if (!out || std::rename(temporary.c_str(), options.output.c_str()) != 0) {
-      std::remove(temporary.c_str());
-      throw InputError({options.output}, "cannot write the volume file");
-    }
+    if (!out) throw InputError({options.output}, "cannot write the volume file");
+    partial.commit();
     std::cout << "wrote " << options.output << ": " << groups << " volume(s), " << lp.side_quads << " side quads, "
               << lp.light_cap_triangles << " near-cap and " << lp.dark_cap_triangles << " far-cap triangles\n";
     return 0;

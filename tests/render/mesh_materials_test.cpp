@@ -65,7 +65,7 @@ TEST_F(MeshMaterials, ObjUsemtlColoursEachFaceInBothRenderers) {
   ASSERT_EQ(scene.warnings.size(), 2u);  // and that the floor is open
   // Its texture map is missing: said once, and its faces keep Kd.
   EXPECT_EQ(scene.warnings[0].message, "material \"blue\"'s texture map \"" + (folder_ / "blue.png").string() +
-                                           "\": cannot open it: its faces take the material's Kd colour");
+                                           "\": does not exist: its faces take the material's Kd colour");
   const test::RenderedImages r = render_both(scene);
   expect_red_left_blue_right(r.gl);
   expect_red_left_blue_right(r.cpu);

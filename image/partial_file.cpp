@@ -1,0 +1,90 @@
+#include "image/partial_file.hpp"
+
+#include <signal.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+#include <vector>
+
+namespace umbra {
+namespace {
+
+// The temporary files being written, for the signal handler: a handler may
+// call little more than unlink(2), so the list is fixed slots of plain
+// characters, each published by its flag once its name is whole. A global,
+// as nothing else reaches a signal handler. Writers past the slots' number
+// (more pictures drawn at once than any machine has cores) go unlisted.
+constexpr int kSlots = 256;
+constexpr size_t kLongestPath = 4096;
+struct Slot {
+  std::atomic<bool> used{false};
+  std::atomic<bool> listed{false};
+  char path[kLongestPath];
+};
+Slot slots[kSlots];
+
+int list(const std::string& path) {
+  if (path.size() >= kLongestPath) return -1;
+  for (int s = 0; s < kSlots; ++s) {
+    bool free = false;
+    if (!slots[s].used.compare_exchange_strong(free, true)) continue;
+    std::memcpy(slots[s].path, path.c_str(), path.size() + 1);
+    slots[s].listed.store(true);
+    return s;
+  }
+  return -1;
+}
+
+void unlist(int slot) {
+  if (slot < 0) return;
+  slots[slot].listed.store(false);
+  slots[slot].used.store(false);
+}
+
+void remove_listed_and_die(int signal_number) {
+  for (Slot& slot : slots)
+    if (slot.listed.load()) ::unlink(slot.path);
+  ::signal(signal_number, SIG_DFL);
+  ::raise(signal_number);
+}
+
+}  // namespace
+
+PartialFile::PartialFile(const std::string& path, const std::string& what) : path_(path), what_(what) {
+  std::vector<char> name(path.begin(), path.end());
+  const std::string ending = ".XXXXXX.partial";
+  name.insert(name.end(), ending.begin(), ending.end());
+  name.push_back('\0');
+  const int fd = ::mkstemps(name.data(), int(ending.size()) - 7);
+  if (fd < 0) throw std::runtime_error(path + ": cannot write " + what + ": " + std::strerror(errno));
+  ::close(fd);
+  temporary_ = name.data();
+  slot_ = list(temporary_);
+}
+
+PartialFile::~PartialFile() {
+  if (!committed_) std::remove(temporary_.c_str());
+  unlist(slot_);
+}
+
+void PartialFile::commit() {
+  if (std::rename(temporary_.c_str(), path_.c_str()) != 0)
+    throw std::runtime_error(path_ + ": cannot write " + what_ + ": " + std::strerror(errno));
+  committed_ = true;
+  unlist(slot_);
+  slot_ = -1;
+}
+
+void remove_partial_files_on_signals() {
+  struct sigaction action {};
+  action.sa_handler = remove_listed_and_die;
+  sigemptyset(&action.sa_mask);
+  for (const int signal_number : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(signal_number, &action, nullptr);
+}
+
+}  // namespace umbra

@@ -1,0 +1,37 @@
+#pragma once
+// An output file written under a temporary name beside its final one and
+// renamed into place once whole, so that nobody ever sees part of it. Each
+// writer's temporary name is its own (the final name, a random part and
+// ".partial"), so that two writers of one name never meet, and a process
+// stopped by SIGINT or SIGTERM removes every temporary file it had open
+// (remove_partial_files_on_signals).
+
+#include <string>
+
+namespace umbra {
+
+class PartialFile {
+ public:
+  // Creates the temporary file for `path`; throws std::runtime_error, "PATH:
+  // cannot write WHAT: why", when it cannot.
+  PartialFile(const std::string& path, const std::string& what);
+  ~PartialFile();  // removes the temporary file, unless committed
+  PartialFile(const PartialFile&) = delete;
+  PartialFile& operator=(const PartialFile&) = delete;
+
+  // Where to write: an empty file, created for this writer alone.
+  const std::string& temporary_path() const { return temporary_; }
+  // Renames the temporary file to the final path; throws std::runtime_error.
+  void commit();
+
+ private:
+  std::string path_, what_, temporary_;
+  int slot_ = -1;  // in the list the signal handler removes; -1 when the list was full
+  bool committed_ = false;
+};
+
+// Makes SIGINT and SIGTERM remove every PartialFile's temporary file before
+// the process ends as the signal would end it. Called once, by main.
+void remove_partial_files_on_signals();
+
+}  // namespace umbra

@@ -1,0 +1,75 @@
+// Output files are written under a temporary name of their writer's own and
+// renamed into place; SIGINT or SIGTERM while one is written leaves nothing.
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "image/partial_file.hpp"
+#include "tests/scratch_folder.hpp"
+
+namespace umbra {
+namespace {
+
+class PartialFiles : public test::ScratchFolder {
+ protected:
+  size_t files_in_folder() const {
+    size_t n = 0;
+    for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(folder_)) ++n;
+    return n;
+  }
+};
+
+TEST_F(PartialFiles, TwoWritersOfOneNameNeverShareATemporaryFile) {
+  const std::string out = (folder_ / "x.png").string();
+  PartialFile a(out, "the image"), b(out, "the image");
+  EXPECT_NE(a.temporary_path(), b.temporary_path());
+  EXPECT_EQ(a.temporary_path().rfind(out + ".", 0), 0u);
+  std::ofstream(a.temporary_path()) << "a";
+  std::ofstream(b.temporary_path()) << "b";
+  a.commit();
+  EXPECT_EQ(files_in_folder(), 2u);  // x.png and b's
+  b.commit();
+  EXPECT_EQ(files_in_folder(), 1u);
+  std::ifstream in(out);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "b");
+}
+
+TEST_F(PartialFiles, AWriterGivenUpLeavesNothing) {
+  { PartialFile a((folder_ / "x.png").string(), "the image"); }
+  EXPECT_EQ(files_in_folder(), 0u);
+}
+
+TEST_F(PartialFiles, SigtermOrSigintWhileWritingLeavesNothing) {
+  for (const int signal_number : {SIGTERM, SIGINT}) {
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      remove_partial_files_on_signals();
+      PartialFile a((folder_ / "x.png").string(), "the image"), b((folder_ / "y.png").string(), "the image");
+      std::ofstream(a.temporary_path()) << "half a picture";
+      ::raise(signal_number);
+      ::_exit(0);  // not reached: the signal ends the process
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal_number) << status;  // ended as the signal ends it
+    EXPECT_EQ(files_in_folder(), 0u);
+  }
+}
+
+TEST_F(PartialFiles, AFolderThatCannotBeWrittenSaysWhy) {
+  try {
+    PartialFile((folder_ / "missing" / "x.png").string(), "the image");
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), (folder_ / "missing" / "x.png").string() + ": cannot write the image: No such file or directory");
+  }
+}
+
+}  // namespace
+}  // namespace umbra
