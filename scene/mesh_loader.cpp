@@ -1,6 +1,7 @@
 #include "scene/mesh_loader.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <exception>
@@ -16,6 +17,7 @@
 
 #include "mesh/check/mesh_check.hpp"
 #include "mesh/io/mesh_file.hpp"
+#include "mesh/predicates/orientation.hpp"
 #include "scene/scene_text.hpp"
 
 namespace umbra {
@@ -27,12 +29,16 @@ struct LoadedMesh {
   Mesh mesh;
   std::vector<ReadWarning> warnings;
   std::vector<SoupMaterial> file_materials;  // which mesh.triangle_materials index until placed in the scene
+  double rounding = 0.0;  // how far placing may have moved a point, at most (placed_points)
 };
 
 // Fit, then scale, then rotate, then translate (scene-format.md): the
 // transform that takes the file's points into the scene. A positive scale
-// and a rotation keep the faces' orientation.
-std::vector<glm::dvec3> placed_points(const Mesh& m, const FileLoc& path_at, const MeshAnalysis& analysis) {
+// and a rotation keep the faces' orientation. `rounding`: a bound on how far
+// rounding may have moved any placed point, which grows with the file's
+// coordinates over the mesh's size (a 1e-3 cube at 3e7, fitted, moves by
+// about 1e-5).
+std::vector<glm::dvec3> placed_points(const Mesh& m, const FileLoc& path_at, const MeshAnalysis& analysis, double& rounding) {
   glm::dvec3 fit_centre(0.0);
   double fit_scale = 1.0;
   if (m.fit && !analysis.positions.empty()) {
@@ -41,7 +47,12 @@ std::vector<glm::dvec3> placed_points(const Mesh& m, const FileLoc& path_at, con
     for (const auto& t : analysis.triangles)
       for (const uint32_t v : t) lo = glm::min(lo, analysis.positions[v]), hi = glm::max(hi, analysis.positions[v]);
     const double longest = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
-    if (analysis.triangles.empty())
+    // Corners that coincide leave no triangles; corners on one line leave
+    // triangles, but nothing to see.
+    const auto flat = [&](const std::array<uint32_t, 3>& t) {
+      return collinear(analysis.positions[t[0]], analysis.positions[t[1]], analysis.positions[t[2]]);
+    };
+    if (std::all_of(analysis.triangles.begin(), analysis.triangles.end(), flat))
       throw InputError(path_at, "mesh file " + in_quotes(m.path) + " has no faces with area to fit");
     if (std::isinf(longest))
       throw InputError(path_at, "mesh file " + in_quotes(m.path) + " is too large to fit: its extent overflows double precision");
@@ -50,6 +61,13 @@ std::vector<glm::dvec3> placed_points(const Mesh& m, const FileLoc& path_at, con
     fit_centre = lo / 2.0 + hi / 2.0;  // halves first: lo + hi may overflow where each does not
     fit_scale = 2.0 / longest;
   }
+  double farthest = 0.0;  // the largest coordinate, whose last bits the subtraction of the centre keeps
+  for (const glm::dvec3& p : analysis.positions) farthest = std::max({farthest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  const double scale = std::abs(m.scale) * fit_scale;
+  const double eps = std::numeric_limits<double>::epsilon();
+  // The point and the centre each to half an ulp of `farthest`, scaled;
+  // then the rotation and the translation, a few ulps of the result.
+  rounding = 8.0 * eps * (2.0 * farthest * scale + glm::length(m.translation) + 1.0);
   const glm::dmat3 rotation(glm::rotate(glm::dmat4(1.0), glm::radians(m.rotation_deg), glm::normalize(m.rotation_axis)));
   std::vector<glm::dvec3> points;
   points.reserve(analysis.positions.size());
@@ -74,7 +92,7 @@ LoadedMesh load_mesh(MeshStatement statement, const TextureMaps& maps) {
       throw InputError(statement.path_at, "mesh file " + in_quotes(m.path) + ": " + e.message());
     throw InputError(e.where(), e.message() + " (in the mesh of " + m.where.str() + ")");
   }
-  m.positions = placed_points(m, statement.path_at, analysis);
+  m.positions = placed_points(m, statement.path_at, analysis, loaded.rounding);
   m.triangles = std::move(analysis.triangles);
   if (!m.triangles.empty()) {  // the faces' box, as fit measures it
     m.bounds_min = m.bounds_max = m.positions[m.triangles[0][0]];
@@ -93,10 +111,9 @@ LoadedMesh load_mesh(MeshStatement statement, const TextureMaps& maps) {
   return loaded;
 }
 
-// Beyond the cube by more than fitting's rounding.
-bool outside_the_cube(const Mesh& m) {
-  constexpr double kRounding = 1e-9;
-  return glm::any(glm::greaterThan(glm::max(glm::abs(m.bounds_min), glm::abs(m.bounds_max)), glm::dvec3(1.0 + kRounding)));
+// Beyond the cube by more than placing's rounding.
+bool outside_the_cube(const Mesh& m, double rounding) {
+  return glm::any(glm::greaterThan(glm::max(glm::abs(m.bounds_min), glm::abs(m.bounds_max)), glm::dvec3(1.0 + 1e-9 + rounding)));
 }
 
 std::string box_text(const glm::dvec3& lo, const glm::dvec3& hi) {
@@ -165,7 +182,7 @@ void load_scene_meshes(std::vector<MeshStatement> statements, Scene& scene, cons
     if (m.triangles.empty()) {
       warn(m.where, named + " has no faces: it casts no shadow");
     } else {
-      if (outside_the_cube(m))
+      if (outside_the_cube(m, loaded[k].rounding))
         warn(m.where, named + " reaches outside the cube [-1,1]^3 that scenes are made for (its box is " +
                           box_text(m.bounds_min, m.bounds_max) + (m.fit ? ")" : "; \"fit\" scales it into the cube)"));
       if (!m.components.all_closed()) warn(m.where, named + " is " + m.components.phrase() + ": " + m.components.volume_phrase());

@@ -102,6 +102,7 @@ BenchOptions parse_bench_options(const std::vector<std::string>& argv) {
   options.positionals(o.scenes);
   options.parse(argv);
   if (o.help) return o;
+  o.gl = gl_with_environment(o.gl);
   if (o.scenes.empty()) {
     std::error_code ec;
     for (const auto& entry : std::filesystem::directory_iterator("scenes", ec))

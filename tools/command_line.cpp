@@ -198,6 +198,15 @@ void add_gl_option(CommandOptions& options, HeadlessGl& gl) {
   });
 }
 
+HeadlessGl gl_with_environment(HeadlessGl chosen) {
+  if (chosen != HeadlessGl::kAuto) return chosen;
+  try {
+    return headless_gl_from_environment();
+  } catch (const std::runtime_error& e) {
+    throw UsageError(e.what());
+  }
+}
+
 void add_map_size_option(CommandOptions& options, int& texels) {
   options.value("--map-size", [&](const std::string& o, const std::string& t) { texels = parse_int_in(o, t, 16, 8192); });
 }

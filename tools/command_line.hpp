@@ -94,6 +94,9 @@ void add_method_option(CommandOptions& options, RenderMethod& method);          
 void add_map_size_option(CommandOptions& options, int& texels);                       // --map-size N
 void add_output_option(CommandOptions& options, std::string& path);                   // -o, --output
 void add_gl_option(CommandOptions& options, HeadlessGl& gl);                         // --gl auto|egl|osmesa
+// The platform --gl chose, where auto takes UMBRA_GL's: checked once, before
+// any work, a UsageError as a bad --gl is.
+HeadlessGl gl_with_environment(HeadlessGl chosen);
 void add_up_option(CommandOptions& options, std::string& up);                         // --up +x|-x|+y|-y|+z|-z
 void add_any_texture_path_option(CommandOptions& options, bool& anywhere);            // --any-texture-path
 

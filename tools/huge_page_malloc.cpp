@@ -1,5 +1,6 @@
 #include "tools/huge_page_malloc.hpp"
 
+#include <sys/auxv.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -31,6 +32,10 @@ MallocEnvironment current_malloc_environment() {
   env.ld_preload = environment_variable("LD_PRELOAD");
   std::ifstream modes("/sys/kernel/mm/transparent_hugepage/enabled");
   env.transparent_huge_pages.assign(std::istreambuf_iterator<char>(modes), {});
+  // The kernel names an interpreter's base (AT_BASE) only when it started
+  // the interpreter for the program; run as a program itself, the loader
+  // has none, and umbra is no static executable.
+  env.started_by_loader = getauxval(AT_BASE) == 0;
 #if defined(__SANITIZE_ADDRESS__)
   env.sanitizer_allocator = true;
 #elif defined(__has_feature)
@@ -53,6 +58,7 @@ std::optional<std::string> reason_not_to_restart(const MallocEnvironment& env) {
   return "this C library has no glibc.malloc.hugetlb tunable";
 #endif
   if (env.sanitizer_allocator) return "AddressSanitizer's allocator is in charge of memory";
+  if (env.started_by_loader) return "umbra was started through the dynamic loader, which a restart would run instead";
   if (env.glibc_tunables) return "GLIBC_TUNABLES is set, and umbra leaves it as it is";
   if (env.ld_preload) return "LD_PRELOAD is set (a profiler or another malloc may be in charge)";
   const std::string mode = selected_mode(env.transparent_huge_pages);

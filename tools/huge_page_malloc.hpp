@@ -20,6 +20,10 @@ struct MallocEnvironment {
   std::optional<std::string> ld_preload;      // LD_PRELOAD, if set
   std::string transparent_huge_pages;         // /sys/kernel/mm/transparent_hugepage/enabled, "" if absent
   bool sanitizer_allocator = false;           // built with AddressSanitizer, whose malloc is its own
+  // Started through the dynamic loader ("ld.so umbra ..."): /proc/self/exe
+  // is then the loader, and restarting it would run the loader with umbra's
+  // arguments.
+  bool started_by_loader = false;
 };
 
 // This process's environment and kernel.

@@ -152,6 +152,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   options.parse(argv);
   if (!scenes.empty()) o.scene_path = scenes[0];
   if (o.help) return o;
+  o.gl = gl_with_environment(o.gl);
   if (o.scene_path.empty()) throw UsageError("no scene or mesh file given");
   std::error_code ec;
   if (scenes.size() > 1 || std::filesystem::is_directory(o.scene_path, ec)) {

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#define GLM_ENABLE_EXPERIMENTAL
+#include <glm/gtx/component_wise.hpp>
+
 #include <filesystem>
 #include <fstream>
 
@@ -231,6 +234,16 @@ TEST_F(SceneMeshes, FitCentresTheBoxAndScalesItsLongestSideToTheCubeBeforeTheRes
   write("point.obj", "v 1 1 1\nv 1 1 1\nv 1 1 1\nf 1 2 3\n");
   EXPECT_EQ(error("light 0 0 5\nmesh point.obj fit\n"),
             dir() + "s.scene:2:6: mesh file \"" + dir() + "point.obj\" has no faces with area to fit");
+  // Corners on one line: triangles, but no area either.
+  write("line.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
+  EXPECT_EQ(error("light 0 0 5\nmesh line.obj fit\n"),
+            dir() + "s.scene:2:6: mesh file \"" + dir() + "line.obj\" has no faces with area to fit");
+  // A 1e-3 cube far from the origin, fitted: its points land past the
+  // cube's faces by rounding alone (about 1e-5), which is no warning.
+  write("far.obj", test::obj_text(test::box_triangles(glm::dvec3(1e7, -1e7, 3e7), glm::dvec3(1e7 + 1e-3, -1e7 + 1e-3, 3e7 + 1e-3))));
+  const Scene far = parse("light 0 0 5\nmesh far.obj fit\n");
+  EXPECT_TRUE(far.warnings.empty()) << far.warnings[0].message;
+  EXPECT_GT(glm::compMax(far.meshes[0].bounds_max), 1.0 - 1e-4);
 }
 
 TEST_F(SceneMeshes, FitMeasuresTheFacesNotPointsNoFaceUses) {

@@ -45,6 +45,10 @@ TEST(HugePageMalloc, LeavesTheUsersTunablesPreloadsAndSanitizersAlone) {
   MallocEnvironment sanitized = plain_environment();
   sanitized.sanitizer_allocator = true;
   EXPECT_EQ(reason_not_to_restart(sanitized), "AddressSanitizer's allocator is in charge of memory");
+
+  MallocEnvironment loaded = plain_environment();
+  loaded.started_by_loader = true;
+  EXPECT_EQ(reason_not_to_restart(loaded), "umbra was started through the dynamic loader, which a restart would run instead");
 }
 
 TEST(HugePageMalloc, SaysSoWhenTheTunableIsInTheEnvironment) {
@@ -85,6 +89,24 @@ TEST_F(HugePageRestart, AnEmptyTunablesVariableKeepsTheDefault) {
   EXPECT_NE(version.out.find("\nmemory: malloc as the C library starts it: GLIBC_TUNABLES is set, and umbra leaves it as it is\n"),
             std::string::npos)
       << version.out;
+}
+
+// Started as "ld.so umbra ...", umbra is umbra: a restart of /proc/self/exe
+// would run the loader with umbra's arguments (its --version, or exit 127).
+TEST_F(HugePageRestart, StartedThroughTheDynamicLoaderUmbraStaysUmbra) {
+  const std::string loader = "/lib64/ld-linux-x86-64.so.2";
+  if (!std::filesystem::exists(loader)) GTEST_SKIP() << "no " << loader << " on this machine";
+  const test::CommandResult version = run("--version", "env -u GLIBC_TUNABLES -u LD_PRELOAD " + loader + " ");
+  ASSERT_EQ(version.status, 0) << version.err;
+  EXPECT_EQ(version.out.rfind("umbra ", 0), 0u) << version.out;
+  if (!current_malloc_environment().sanitizer_allocator)
+    EXPECT_NE(version.out.find("\nmemory: malloc as the C library starts it: umbra was started through the dynamic loader, which a "
+                               "restart would run instead\n"),
+              std::string::npos)
+        << version.out;
+  const test::CommandResult check = run("check " + write("t.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"), loader + " ");
+  EXPECT_NE(check.status, 127) << check.err;
+  EXPECT_NE(check.out.find("t.off"), std::string::npos) << check.out << check.err;
 }
 
 }  // namespace

@@ -66,9 +66,17 @@ TEST_F(Options, GlPicksThePlatformThatExplainNames) {
   EXPECT_NE(osmesa.out.find("\n  OpenGL: OSMesa: "), std::string::npos) << osmesa.out;
   const CommandResult chosen = run("render " + scene + " -o " + path("env.png") + " --size 64x48 --explain", "UMBRA_GL=osmesa ");
   EXPECT_NE(chosen.out.find("\n  OpenGL: OSMesa: "), std::string::npos) << chosen.out;
-  EXPECT_EQ(run("render " + scene + " -o " + path("bad.png") + " --size 64x48", "UMBRA_GL=glx ").err,
-            "UMBRA_GL must be auto, egl or osmesa, not \"glx\"\n");
+  // A bad UMBRA_GL is a usage error, said once before any work, as a bad --gl is.
+  const std::string bad_gl = "umbra render: UMBRA_GL must be auto, egl or osmesa, not \"glx\"\n(see umbra render --help)\n";
+  CommandResult bad = run("render " + scene + " -o " + path("bad.png") + " --size 64x48", "UMBRA_GL=glx ");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_EQ(bad.err, bad_gl);
   EXPECT_FALSE(test::fs::exists(path("bad.png")));
+  bad = run("render " + scene + " " + scene + " -o " + path("bad") + " --size 64x48", "UMBRA_GL=glx ");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_EQ(bad.err, bad_gl);
+  EXPECT_FALSE(test::fs::exists(path("bad")));
+  EXPECT_EQ(run("render " + scene + " -o " + path("bad.png") + " --gl osmesa --size 64x48", "UMBRA_GL=glx ").status, 0);
 }
 
 TEST_F(Options, AntialiasingIsOnForAStagedMeshAndOffForASceneUnlessAsked) {

@@ -103,6 +103,11 @@ TEST_F(RenderCommand, AMeshFileWithNoFacesExitsWithOneAndWritesNothing) {
   CommandResult r = run("render " + points + " -o " + path("a.png"));
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err, points + ": has no faces with area to fit\n");
+  // Corners on one line, each face distinct: no area either, said alike.
+  const std::string collinear = write("collinear.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 3 0 0\nf 1 2 3\nf 2 3 4\n");
+  r = run("render " + collinear + " -o " + path("a.png"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, collinear + ": has no faces with area to fit\n");
   const std::string lines = write("lines.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2 3\n");
   r = run("render " + lines + " -o " + path("a.png"));
   EXPECT_EQ(r.status, 1);
