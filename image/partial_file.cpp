@@ -55,12 +55,17 @@ void remove_listed_and_die(int signal_number) {
 
 }  // namespace
 
-PartialFile::PartialFile(const std::string& path, const std::string& what) : path_(path), what_(what) {
+PartialFile::PartialFile(const std::string& path, const std::string& what, Ending ending) : path_(path), what_(what) {
   std::vector<char> name(path.begin(), path.end());
-  const std::string ending = ".XXXXXX.partial";
-  name.insert(name.end(), ending.begin(), ending.end());
+  const size_t slash = path.rfind('/'), dot = path.rfind('.');
+  const std::string extension =
+      ending == Ending::kKeepExtension && dot != std::string::npos && (slash == std::string::npos || dot > slash) ? path.substr(dot) : "";
+  const std::string suffix = ".partial" + extension;
+  const std::string random = ".XXXXXX";
+  name.insert(name.end(), random.begin(), random.end());
+  name.insert(name.end(), suffix.begin(), suffix.end());
   name.push_back('\0');
-  const int fd = ::mkstemps(name.data(), int(ending.size()) - 7);
+  const int fd = ::mkstemps(name.data(), int(suffix.size()));
   if (fd < 0) throw std::runtime_error(path + ": cannot write " + what + ": " + std::strerror(errno));
   ::close(fd);
   temporary_ = name.data();

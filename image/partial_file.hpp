@@ -13,8 +13,11 @@ namespace umbra {
 class PartialFile {
  public:
   // Creates the temporary file for `path`; throws std::runtime_error, "PATH:
-  // cannot write WHAT: why", when it cannot.
-  PartialFile(const std::string& path, const std::string& what);
+  // cannot write WHAT: why", when it cannot. The temporary name ends as
+  // `path` does (PATH.XXXXXX.partial.EXT) where a writer tells the format by
+  // the extension.
+  enum class Ending { kPartial, kKeepExtension };
+  PartialFile(const std::string& path, const std::string& what, Ending ending = Ending::kPartial);
   ~PartialFile();  // removes the temporary file, unless committed
   PartialFile(const PartialFile&) = delete;
   PartialFile& operator=(const PartialFile&) = delete;

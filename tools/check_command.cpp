@@ -20,6 +20,7 @@
 #include "mesh/check/mesh_check.hpp"
 #include "mesh/io/mesh_file.hpp"
 #include "mesh/io/mesh_format.hpp"
+#include "image/partial_file.hpp"
 #include "mesh/check/mesh_repair.hpp"
 #include "tools/command_line.hpp"
 #include "tools/mesh_paths.hpp"
@@ -104,6 +105,10 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
     if (!repair_can_write(*o.repair_output))
       throw UsageError("--repair needs an output ending in " + mesh_format_extensions(true) + ", got \"" + *o.repair_output + "\"");
     require_other_than_input("--repair", *o.repair_output, o.meshes[0]);
+    const std::filesystem::path folder = std::filesystem::path(*o.repair_output).parent_path();
+    std::error_code ec;
+    if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
+      throw UsageError("--repair " + *o.repair_output + ": there is no folder \"" + folder.string() + "\" to write it in");
   }
   return o;
 }
@@ -141,7 +146,9 @@ CheckOutcome check_one(const std::string& path, const CheckCommandOptions& optio
 int repair_one(const std::string& path, const std::string& output, const CheckCommandOptions& options) {
   try {
     const PolygonSoup soup = read_polygon_soup(path, TextureMaps::skip());
-    const RepairSummary summary = repair_mesh(soup, output);
+    PartialFile partial(output, "the repaired mesh", PartialFile::Ending::kKeepExtension);
+    const RepairSummary summary = repair_mesh(soup, output, partial.temporary_path());
+    partial.commit();
     const MeshReport after = check_mesh(read_polygon_soup(output, TextureMaps::skip()), options.check);
     if (options.json) {
       after.print_json(std::cout);

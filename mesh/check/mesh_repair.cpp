@@ -2,6 +2,8 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
+#include <sstream>
 #include <limits>
 #include <map>
 
@@ -105,7 +107,7 @@ bool repair_can_write(const std::string& path) {
   return format && format->repair_writes;
 }
 
-RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output) {
+RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output, const std::string& write_to) {
   RepairSummary summary;
   auto& changes = summary.changes;
   std::vector<Point> points;
@@ -158,19 +160,16 @@ RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output) {
     changes.push_back("turned " + counted(n, "closed component", "closed components") + " outward");
   if (mesh.number_of_faces() == 0) throw InputError({soup.path, 0, 0}, "nothing left after the repair: every face was degenerate");
 
-  // Write beside the output (same extension: it chooses the format), then rename.
-  const std::filesystem::path final_path(output);
-  const std::filesystem::path partial =
-      final_path.parent_path() / ("." + final_path.stem().string() + ".partial" + final_path.extension().string());
-  if (!CGAL::IO::write_polygon_mesh(partial.string(), mesh, CGAL::parameters::stream_precision(17))) {
-    std::remove(partial.c_str());
-    throw InputError({output, 0, 0}, "cannot write the repaired mesh");
-  }
-  std::error_code ec;
-  std::filesystem::rename(partial, final_path, ec);
-  if (ec) {
-    std::remove(partial.c_str());
-    throw InputError({output, 0, 0}, "cannot write the repaired mesh: " + ec.message());
+  // CGAL says why it could not write on std::cerr, unended: kept for the
+  // message instead.
+  std::ostringstream cgal_said;
+  std::streambuf* const cerr = std::cerr.rdbuf(cgal_said.rdbuf());
+  const bool written = CGAL::IO::write_polygon_mesh(write_to, mesh, CGAL::parameters::stream_precision(17));
+  std::cerr.rdbuf(cerr);
+  if (!written) {
+    std::string why = cgal_said.str();
+    while (!why.empty() && (why.back() == '\n' || why.back() == ' ')) why.pop_back();
+    throw InputError({output, 0, 0}, "cannot write the repaired mesh" + (why.empty() ? "" : " (CGAL: " + why + ")"));
   }
   return summary;
 }

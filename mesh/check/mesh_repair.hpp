@@ -19,9 +19,10 @@ bool repair_can_write(const std::string& path);
 // Merges repeated vertices, drops degenerate and duplicate faces and unused
 // vertices, splits non-manifold vertices, orients faces consistently, stitches
 // borders that coincide, triangulates, and turns every closed component
-// outward; writes the result to `output` (format by extension) through a
-// temporary file, so a failure leaves nothing behind. Throws InputError when
-// nothing usable is left or the file cannot be written.
-RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output);
+// outward; writes the result to `write_to`, a file whose extension is
+// `output`'s and chooses the format (the caller renames it to `output` once
+// whole). Throws InputError, located at `output`, when nothing usable is left
+// or the file cannot be written.
+RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output, const std::string& write_to);
 
 }  // namespace umbra

@@ -39,6 +39,14 @@ TEST_F(PartialFiles, TwoWritersOfOneNameNeverShareATemporaryFile) {
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "b");
 }
 
+// A writer that tells the format by the extension (CGAL's) gets one.
+TEST_F(PartialFiles, TheExtensionStaysLastWhereAsked) {
+  const std::string out = (folder_ / "repaired.off").string();
+  const PartialFile a(out, "the mesh", PartialFile::Ending::kKeepExtension), b(out, "the mesh");
+  EXPECT_EQ(a.temporary_path().substr(out.size() + 7), ".partial.off");
+  EXPECT_EQ(b.temporary_path().substr(out.size() + 7), ".partial");
+}
+
 TEST_F(PartialFiles, AWriterGivenUpLeavesNothing) {
   { PartialFile a((folder_ / "x.png").string(), "the image"); }
   EXPECT_EQ(files_in_folder(), 0u);

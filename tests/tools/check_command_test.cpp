@@ -208,8 +208,14 @@ TEST_F(CheckCommand, RepairIntoAMissingFolderFailsWithoutLeavingAFile) {
   const std::string input = write("in.obj", obj_text(test::tetrahedron()));
   const CommandResult r = run("check " + input + " --repair " + path("no/such/out.obj"));
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err, path("no/such/out.obj") + ": cannot write the repaired mesh\n");
+  EXPECT_EQ(r.err, "umbra check: --repair " + path("no/such/out.obj") + ": there is no folder \"" + path("no/such") +
+                       "\" to write it in\n(see umbra check --help)\n");
   EXPECT_FALSE(fs::exists(path("no")));
+  // A repair that is written leaves no temporary file beside it.
+  ASSERT_EQ(run("check " + input + " --repair " + path("out.obj")).status, 0);
+  size_t files = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(folder_)) ++files;
+  EXPECT_EQ(files, 4u);  // in.obj, out.obj and the command's out.txt and err.txt
 }
 
 TEST_F(CheckCommand, HelpAndUsageErrors) {
