@@ -24,7 +24,7 @@ ClosedComponents closed_components_of(const EdgeTable& edges, const std::vector<
   c.border_edges = report.border_edges;
   c.border_loops = report.border_loops;
   c.non_manifold_edges = report.non_manifold_edges;
-  for (const ComponentReport& r : report.components) c.non_manifold_edges += r.overlapping_diagonals;
+  for (const ComponentReport& r : report.components) c.overlapping_diagonals += r.overlapping_diagonals;
   c.non_manifold_vertices = report.non_manifold_vertices;
   for (size_t e = 0; e < edges.size(); ++e) {
     const uint32_t* use = edges.uses.data() + edges.first_use[e];

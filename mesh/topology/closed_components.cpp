@@ -32,6 +32,8 @@ std::string ClosedComponents::phrase() const {
   if (non_manifold_edges > 0) add(count_of(non_manifold_edges, "non-manifold edge", "non-manifold edges"));
   if (inconsistent_edges > 0) add(count_of(inconsistent_edges, "edge", "edges") + " with mixed winding");
   if (non_manifold_vertices > 0) add(count_of(non_manifold_vertices, "non-manifold vertex", "non-manifold vertices"));
+  if (overlapping_diagonals > 0)
+    add(count_of(overlapping_diagonals, "diagonal", "diagonals") + " along another edge once triangulated");
   if (s.empty()) return "closed 2-manifold";
   if (closed_components > 0) s += "; " + std::to_string(closed_components) + " of " + std::to_string(components) +
                                    " components closed";

@@ -26,6 +26,10 @@ struct ClosedComponents {
   size_t non_manifold_edges = 0;     // three or more faces
   size_t inconsistent_edges = 0;     // two faces running the same way
   size_t non_manifold_vertices = 0;  // two or more fans, on no non-manifold edge
+  // Polygons' diagonals that, once triangulated, lie along another edge
+  // (component_shape.hpp): non-manifold among the triangles, not among the
+  // file's faces, and said apart so that a render words them as the check does.
+  size_t overlapping_diagonals = 0;
 
   bool all_closed() const { return closed_components == components && components > 0; }
   // "closed 2-manifold", or what is not: "open, 3 holes, 2 non-manifold edges".

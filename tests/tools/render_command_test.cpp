@@ -400,5 +400,24 @@ TEST_F(RenderCommand, AnOutputThatWouldOverwriteAnInputOrIsNoFolderIsRefused) {
   EXPECT_TRUE(fs::exists(path("two.png/tet.off.png")));
 }
 
+
+// Assimp's one-quad regression file (a quad and the two triangles it splits
+// into): the check finds no non-manifold edge among the file's faces, and a
+// diagonal that lies along another edge once triangulated; the render's
+// warning says the same in the same words.
+TEST_F(RenderCommand, RenderAndCheckWordAMeshAlike) {
+  const std::string quad = "/usr/share/assimp/models/OBJ/regr_3429812.obj";
+  const CommandResult check = run("check " + quad);
+  EXPECT_NE(check.out.find("non-manifold       0 edges, 0 vertices"), std::string::npos) << check.out;
+  EXPECT_NE(check.out.find("1 diagonal along another edge once triangulated"), std::string::npos) << check.out;
+  const CommandResult render = run("render " + quad + " -o " + path("q.png") + " --size 40x40");
+  EXPECT_EQ(render.status, 0) << render.err;
+  EXPECT_EQ(render.err.find("non-manifold"), std::string::npos) << render.err;
+  EXPECT_NE(render.err.find("warning: mesh \"regr_3429812.obj\" is 1 diagonal along another edge once triangulated: "
+                            "edge-multiplicity volume\n"),
+            std::string::npos)
+      << render.err;
+}
+
 }  // namespace
 }  // namespace umbra
