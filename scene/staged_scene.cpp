@@ -104,7 +104,7 @@ std::vector<glm::dvec3> framing_points(const Mesh& mesh, size_t most) {
   return points;
 }
 
-Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<glm::dvec3>& model_points) {
+Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<glm::dvec3>& model_points, double aspect) {
   Stage stage;
   const glm::dvec3 centre = lo / 2.0 + hi / 2.0;
   stage.floor_z = floor_height(lo.z);
@@ -122,7 +122,9 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
   const glm::dvec3 forward = -back;
   const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 0, 1)));
   const glm::dvec3 up = glm::cross(right, forward);
-  const double reach = std::tan(glm::radians(kFovyDeg / 2)) / kMargin;  // assumes a frame at least as wide as high
+  // How far off the axis a point may be, over its depth: across and up. A
+  // frame wider than high has room to spare across; a narrower one less.
+  const double reach_up = std::tan(glm::radians(kFovyDeg / 2)) / kMargin, reach_across = reach_up * std::min(aspect, 1.0);
   // From the middle of the points' box, which no point's repeats move.
   glm::dvec3 box_lo = points[0], box_hi = points[0];
   for (const glm::dvec3& p : points) box_lo = glm::min(box_lo, p), box_hi = glm::max(box_hi, p);
@@ -134,7 +136,8 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
     distance = 0.0;
     for (const glm::dvec3& p : points) {
       const glm::dvec3 q = p - target;
-      distance = std::max(distance, std::max(std::abs(glm::dot(q, right)), std::abs(glm::dot(q, up))) / reach - glm::dot(q, forward));
+      distance = std::max(distance, std::max(std::abs(glm::dot(q, right)) / reach_across, std::abs(glm::dot(q, up)) / reach_up) -
+                                        glm::dot(q, forward));
     }
     double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo, y_lo = x_lo, y_hi = -x_lo;
     for (const glm::dvec3& p : points) {
@@ -157,7 +160,8 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
 std::string staged_scene_name(const std::string& mesh_path) { return mesh_path + " (staged)"; }
 
 Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& progress, std::string* staged,
-                               const std::string& up, const TextureMaps& maps) {
+                               const StagingOptions& staging, const TextureMaps& maps) {
+  const std::string& up = staging.up;
   if (!is_mesh_file(path)) {
     if (staged) staged->clear();
     return parse_scene_file(path, progress, maps);
@@ -203,7 +207,7 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
   Mesh& mesh = loaded.meshes.at(0);
   if (mesh.triangles.empty()) throw InputError({path}, "has no faces: there is nothing to show");
 
-  const Stage stage = stage_for(mesh.bounds_min, mesh.bounds_max, framing_points(mesh));
+  const Stage stage = stage_for(mesh.bounds_min, mesh.bounds_max, framing_points(mesh), staging.frame_aspect);
   const double s = stage.floor_half_size;
   const glm::dvec3 f = stage.floor_centre;
   const glm::dvec3 corners[4] = {f + glm::dvec3(-s, -s, 0), f + glm::dvec3(s, -s, 0), f + glm::dvec3(s, s, 0), f + glm::dvec3(-s, s, 0)};

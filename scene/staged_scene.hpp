@@ -34,7 +34,8 @@ bool is_up_axis(const std::string& up);
 
 // The floor, light and camera for a model whose box, fitted and turned so that
 // its up axis is +z, is [lo, hi]; the camera frames `points` (points of the
-// model) and their shadows on the floor.
+// model) and their shadows on the floor, in a picture `aspect` (width over
+// height) wide: by the narrower of its two fields of view.
 struct Stage {
   glm::dvec3 light{0.0};
   double floor_z = 0.0;  // a thousandth below the model, written to a millionth
@@ -42,7 +43,7 @@ struct Stage {
   double floor_half_size = 0.0;
   Camera camera;
 };
-Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<glm::dvec3>& points);
+Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<glm::dvec3>& points, double aspect = 1.0);
 
 // Points of `mesh` that show its extent to a camera: the corners of up to
 // `most` of its triangles, spread over them, and the corners that reach
@@ -52,12 +53,18 @@ std::vector<glm::dvec3> framing_points(const Mesh& mesh, size_t most = 4096);
 // The name the staged scene goes by in messages: "MESH (staged)", in the mesh's folder.
 std::string staged_scene_name(const std::string& mesh_path);
 
-// parse_scene_file for a scene, or the staged scene for a mesh file, stood on
-// its `up` axis ("" for its format's own). `staged` (when given) receives the
-// staged scene's text, or "" for a scene file. A mesh file with no faces is
-// an InputError: there is nothing to show. `maps` says where texture maps
-// may be read from.
+// How a mesh file on its own is staged: stood on its `up` axis ("" for its
+// format's own), framed for a picture `frame_aspect` (width over height) wide.
+struct StagingOptions {
+  std::string up;
+  double frame_aspect = 1.0;
+};
+
+// parse_scene_file for a scene, or the staged scene for a mesh file.
+// `staged` (when given) receives the staged scene's text, or "" for a scene
+// file. A mesh file with no faces is an InputError: there is nothing to show.
+// `maps` says where texture maps may be read from.
 Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& progress = {}, std::string* staged = nullptr,
-                               const std::string& up = "", const TextureMaps& maps = {});
+                               const StagingOptions& staging = {}, const TextureMaps& maps = {});
 
 }  // namespace umbra

@@ -1,13 +1,18 @@
 #include "tools/batch_render.hpp"
 
-#include <atomic>
+#include <signal.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <mutex>
+#include <sstream>
 #include <thread>
 
+#include <nlohmann/json.hpp>
 #include <tbb/global_control.h>
 
 #include "image/contact_sheet.hpp"
@@ -19,6 +24,7 @@
 #include "scene/scene_checks.hpp"
 #include "scene/staged_scene.hpp"
 #include "tools/command_line.hpp"
+#include "tools/isolated_runs.hpp"
 #include "tools/picture_names.hpp"
 #include "tools/progress_bar.hpp"
 
@@ -27,26 +33,61 @@ namespace {
 
 constexpr int kSheetThumbWidth = 200;  // a contact sheet's tiles, in pixels
 
-// One file's picture, drawn in the worker's own GL context (made on first
-// use, then kept for every file it draws); its warnings and error, if any.
-struct Outcome {
-  std::string err;
-  bool written = false;
+// What a run says of one input file: its line of --json, and its part of
+// the summary. Every input gets one.
+struct Record {
+  std::string path, picture;
+  std::string status;  // one of the statuses below
+  double seconds = 0.0;
+  size_t triangles = 0;  // drawn: the scene's triangles, meshes' and floor's
+  std::string error;     // failed, timed out, crashed: why
+  std::string messages;  // for stderr: warnings, then the error
 };
+const char* const kDrawn = "drawn";
+const char* const kSkipped = "skipped";  // --skip-existing: its picture is newer than it
+const char* const kFailed = "failed";
+const char* const kTimedOut = "timed out";
+const char* const kCrashed = "crashed";
+const char* const kPassedOver = "passed over";
 
-}  // namespace
+// One line of JSON. Paths are bytes, JSON text is UTF-8: a byte that is no
+// part of UTF-8 becomes U+FFFD (docs/rendering.md says so).
+std::string json_line(const Record& r) {
+  nlohmann::ordered_json line;
+  line["path"] = r.path;
+  line["picture"] = r.picture.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.picture);
+  line["status"] = r.status;
+  line["seconds"] = std::round(r.seconds * 1000.0) / 1000.0;
+  line["triangles"] = r.triangles;
+  line["error"] = r.error.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.error);
+  return line.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+}
 
-int default_supersampling(const std::string& path) { return is_mesh_file(path) ? 3 : 1; }
+#ifdef UMBRA_FAULT_INJECTION
+// A test build's faults, by the file's name, as a render could meet them:
+// a crash, an allocation that fails, the kernel's OOM killer, a hang.
+void inject_fault(const std::string& path) {
+  const std::string name = std::filesystem::path(path).filename().string();
+  if (name.find("crash") != std::string::npos) std::abort();
+  if (name.find("out-of-memory") != std::string::npos) throw std::bad_alloc();
+  if (name.find("oom-killed") != std::string::npos) ::raise(SIGKILL);
+  if (name.find("hang") != std::string::npos)
+    for (;;) ::pause();
+}
+#endif
 
-namespace {
-
-Outcome render_one(const std::string& path, const std::string& root, const std::string& out, const BatchRenderOptions& o,
-                   std::optional<HeadlessContext>& context) {
-  Outcome outcome;
+// One file's picture, drawn in this process (a job's own: see render_job).
+// Fills `record`'s status, triangles, error and messages.
+void render_one(const std::string& path, const std::string& root, const std::string& out, const BatchRenderOptions& o,
+                Record& record) {
   try {
+#ifdef UMBRA_FAULT_INJECTION
+    inject_fault(path);
+#endif
     if (const std::string what = neither_scene_nor_mesh(path); !what.empty()) throw InputError({path}, what);
-    Scene scene = parse_scene_or_mesh_file(path, {}, nullptr, o.up, TextureMaps{true, root, o.any_texture_path});
-    for (const Warning& w : scene.warnings) outcome.err += w.where.str() + ": warning: " + w.message + "\n";
+    const double aspect = double(o.settings.width) / o.settings.height;
+    Scene scene = parse_scene_or_mesh_file(path, {}, nullptr, {o.up, aspect}, TextureMaps{true, root, o.any_texture_path});
+    for (const Warning& w : scene.warnings) record.messages += w.where.str() + ": warning: " + w.message + "\n";
     rotate_lights_about_z(scene, o.light_angle_deg);
     require_lights_off_casters(scene);
     RenderSettings settings = o.settings;
@@ -55,21 +96,70 @@ Outcome render_one(const std::string& path, const std::string& root, const std::
     if (settings.method == RenderMethod::kRaycast) {
       image = ray_cast_frame(scene, settings.width, settings.height, settings.supersampling).image;
     } else {
-      if (!context) context.emplace(settings.width, settings.height, o.gl);
+      const HeadlessContext context(settings.width, settings.height, o.gl);
       const RenderPlan plan = make_render_plan(scene, settings);
       ShadowRenderer renderer(scene, plan);
       image = renderer.render_image(o.show_volumes);
     }
     std::filesystem::create_directories(std::filesystem::path(out).parent_path());
     write_png(image, out);
-    outcome.written = true;
+    record.status = kDrawn;
+    record.triangles = scene.triangles.size();
+    for (const Mesh& m : scene.meshes) record.triangles += m.triangles.size();
+  } catch (const std::bad_alloc&) {
+    record.status = kFailed;
+    record.error = path + ": not enough memory to render it";
   } catch (const std::exception& e) {
-    outcome.err += std::string(e.what()) + "\n";
+    record.status = kFailed;
+    record.error = e.what();
   }
-  return outcome;
+  if (!record.error.empty()) record.messages += record.error + "\n";
+}
+
+// A job's process: renders file `i`, and hands back its record as the
+// status, the triangles, the error (one line) and the messages.
+std::string render_job(const std::string& path, const std::string& root, const std::string& out, const BatchRenderOptions& o) {
+  // The jobs share the cores: each takes its part for its own threads.
+  const size_t cores = std::max(1u, std::thread::hardware_concurrency());
+  const tbb::global_control threads(tbb::global_control::max_allowed_parallelism, std::max<size_t>(1, cores / o.jobs));
+  Record record;
+  render_one(path, root, out, o, record);
+  std::string error = record.error;
+  std::replace(error.begin(), error.end(), '\n', ' ');
+  return record.status + "\n" + std::to_string(record.triangles) + "\n" + error + "\n" + record.messages;
+}
+
+// The record a job handed back, or what ended it.
+void read_job_result(const IsolatedResult& result, double timeout_s, Record& record) {
+  record.seconds = result.seconds;
+  if (const std::string ended = unfinished_phrase(result, timeout_s); !ended.empty()) {
+    record.status = result.ending == IsolatedResult::Ending::kTimedOut ? kTimedOut : kCrashed;
+    record.error = record.path + ": " + ended;
+    record.messages = record.error + "\n";
+    return;
+  }
+  std::istringstream in(result.output);
+  std::string triangles;
+  if (!std::getline(in, record.status) || !std::getline(in, triangles) || !std::getline(in, record.error)) {
+    record.status = kCrashed;
+    record.error = record.path + ": the render ended without a result (exit status " + std::to_string(result.exit_status) + ")";
+    record.messages = record.error + "\n";
+    return;
+  }
+  record.triangles = std::stoull(triangles);
+  record.messages.assign(std::istreambuf_iterator<char>(in), {});
+}
+
+// Whether `picture` is newer than `input` (--skip-existing).
+bool up_to_date(const std::string& picture, const std::string& input) {
+  std::error_code a, b;
+  const auto drawn = std::filesystem::last_write_time(picture, a), changed = std::filesystem::last_write_time(input, b);
+  return !a && !b && drawn >= changed;
 }
 
 }  // namespace
+
+int default_supersampling(const std::string& path) { return is_mesh_file(path) ? 3 : 1; }
 
 int run_batch_render(const BatchRenderOptions& o) {
   MeshPaths found;
@@ -82,49 +172,74 @@ int run_batch_render(const BatchRenderOptions& o) {
   }
   // Said once for all the shards: by the first.
   if (o.shard && o.shard->index > 0) found.passed_over.clear();
-  for (const auto& [path, what] : found.passed_over) std::cerr << "umbra render: passed over " << path << ": " << what << ", not a mesh\n";
+  for (const auto& [path, what] : found.passed_over) {
+    std::cerr << "umbra render: passed over " << path << ": " << what << ", not a mesh\n";
+    if (o.json) std::cout << json_line({path, "", kPassedOver, 0.0, 0, what + ", not a mesh", ""});
+  }
   // Named for all the files, before the shards part: every shard names alike.
   const std::vector<std::string> all_names = distinct_picture_names(found.meshes, found.names, found.roots);
   const std::vector<std::string> files = o.shard ? shard_of(found.meshes, *o.shard) : found.meshes;
   const std::vector<std::string> names = o.shard ? shard_of(all_names, *o.shard) : all_names;
   const std::vector<std::string> roots = o.shard ? shard_of(found.roots, *o.shard) : found.roots;
-  const auto picture_path = [&](size_t i) { return (std::filesystem::path(o.out_dir) / (names[i] + ".png")).string(); };
-  const auto start = std::chrono::steady_clock::now();
-  // --jobs bounds the threads of the whole process, as in umbra check.
-  const tbb::global_control threads(tbb::global_control::max_allowed_parallelism, o.jobs);
   const size_t count = files.size();
-  std::atomic<size_t> next{0};
-  std::mutex print_mutex;
-  size_t finished = 0, written = 0;
-  std::vector<char> drawn(count, 0);  // this run's pictures: the sheet shows no other
+  std::vector<Record> records(count);
+  for (size_t i = 0; i < count; ++i)
+    records[i].path = files[i], records[i].picture = (std::filesystem::path(o.out_dir) / (names[i] + ".png")).string();
+  const auto start = std::chrono::steady_clock::now();
+
+  // Records are printed in file order, each as soon as it and those before
+  // it are done, as umbra check prints its reports.
+  std::vector<char> ended(count, 0);
+  size_t finished = 0, printed = 0;
   ProgressBar progress(count);
-  const auto work = [&] {
-    std::optional<HeadlessContext> context;
-    for (size_t i = next++; i < count; i = next++) {
-      const Outcome outcome = render_one(files[i], roots[i], picture_path(i), o, context);
-      const std::lock_guard<std::mutex> lock(print_mutex);
-      progress.clear();
-      std::cerr << outcome.err << std::flush;
-      written += outcome.written;
-      drawn[i] = outcome.written;
-      progress.update(++finished, files[i]);
-    }
+  const auto end = [&](size_t i) {
+    ended[i] = 1;
+    progress.clear();
+    std::cerr << records[i].messages << std::flush;
+    for (; printed < count && ended[printed]; ++printed)
+      if (o.json) std::cout << json_line(records[printed]) << std::flush;
+    progress.update(++finished, files[i]);
   };
-  std::vector<std::thread> workers;
-  for (size_t j = 1; j < std::min(o.jobs, count); ++j) workers.emplace_back(work);
-  work();
-  for (std::thread& t : workers) t.join();
+  std::vector<size_t> to_draw;
+  for (size_t i = 0; i < count; ++i) {
+    if (o.skip_existing && up_to_date(records[i].picture, files[i])) {
+      records[i].status = kSkipped;
+      end(i);
+    } else {
+      to_draw.push_back(i);
+    }
+  }
+  // Each file in a process of its own: one that hangs, crashes or runs out
+  // of memory costs only its own picture.
+  run_isolated(
+      to_draw.size(), o.jobs, o.timeout_s,
+      [&](size_t k) {
+        const size_t i = to_draw[k];
+        return render_job(files[i], roots[i], records[i].picture, o);
+      },
+      [&](size_t k, const IsolatedResult& result) {
+        read_job_result(result, o.timeout_s, records[to_draw[k]]);
+        end(to_draw[k]);
+      });
   progress.clear();
+
+  size_t drawn = 0, skipped = 0, timed_out = 0, failed = 0;
+  for (const Record& r : records) {
+    drawn += r.status == kDrawn;
+    skipped += r.status == kSkipped;
+    timed_out += r.status == kTimedOut;
+  }
+  failed = count - drawn - skipped;
   bool sheet_failed = false;
   if (o.sheet) {
-    // The pictures just written, read back in file order: held one at a
-    // time while drawing, so that a folder of large pictures fits in memory.
+    // This run's pictures (drawn, or up to date), read back in file order:
+    // held one at a time while drawing, so that a folder of large pictures
+    // fits in memory; never an older picture of a file that failed now.
     std::vector<SheetPicture> sheet;
     for (size_t i = 0; i < count; ++i) {
-      if (!drawn[i]) continue;  // it failed: an older picture of it is not this run's
-      const std::string out = picture_path(i);
+      if (records[i].status != kDrawn && records[i].status != kSkipped) continue;
       try {
-        sheet.push_back({names[i], thumbnail(read_png(out), kSheetThumbWidth)});
+        sheet.push_back({names[i], thumbnail(read_png(records[i].picture), kSheetThumbWidth)});
       } catch (const std::exception& e) {
         std::cerr << e.what() << "\n";
       }
@@ -144,9 +259,10 @@ int run_batch_render(const BatchRenderOptions& o) {
             << (o.shard ? " (shard " + std::to_string(o.shard->index) + "/" + std::to_string(o.shard->count) + " of " +
                               std::to_string(found.meshes.size()) + ")"
                         : "")
-            << " in " << elapsed << ": " << written << (written == 1 ? " picture" : " pictures") << " in " << o.out_dir << ", "
-            << count - written << " failed\n";
-  return written == count && !sheet_failed ? 0 : 1;
+            << " in " << elapsed << ": " << drawn << (drawn == 1 ? " picture" : " pictures") << " in " << o.out_dir
+            << (skipped ? ", " + std::to_string(skipped) + " up to date (--skip-existing)" : "") << ", " << failed << " failed"
+            << (timed_out ? " (" + std::to_string(timed_out) + " timed out)" : "") << "\n";
+  return failed == 0 && !sheet_failed ? 0 : 1;
 }
 
 }  // namespace umbra

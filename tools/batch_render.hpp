@@ -26,6 +26,9 @@ struct BatchRenderOptions {
   std::optional<Shard> shard;
   std::optional<std::string> sheet;  // also one PNG of every picture, labelled with its file's name
   bool any_texture_path = false;     // texture maps from any folder, not only the one each file was found in
+  double timeout_s = 0.0;            // a file's render stopped after this long (0: no limit)
+  bool skip_existing = false;        // a picture newer than its file is not drawn again
+  bool json = false;                 // a line of JSON on stdout per input file
 };
 
 // Samples per pixel along each side that a picture of `path` gets unless
@@ -37,10 +40,12 @@ int default_supersampling(const std::string& path);
 // folder it was found in (or its file name), so that a.obj and a.stl do not
 // meet; where two files would still share a NAME (a/x.off and b/x.off), each
 // NAME takes as many of its folders' names as tell them apart, all decided
-// before anything is drawn. With `sheet`, also a contact sheet of the pictures in file order.
-// A file that fails is reported on stderr and the rest go on. Returns
-// 0 when every picture was written, 1 when any file failed, 2 when there is
-// nothing to render.
+// before anything is drawn. Each file is drawn in a process of its own
+// (isolated_runs.hpp): one that fails, hangs past `timeout_s`, crashes or
+// runs out of memory is reported on stderr (and in its JSON line) and the
+// rest go on. With `sheet`, also a contact sheet of this run's pictures in
+// file order. Returns 0 when every picture was written (or was up to date),
+// 1 when any file failed, 2 when there is nothing to render.
 int run_batch_render(const BatchRenderOptions& options);
 
 }  // namespace umbra

@@ -44,7 +44,10 @@ shadow. --explain prints that scene as text to save and edit.
 Several files, or a folder (searched for mesh files by their content, as
 umbra check searches it), render to one picture each in OUTDIR: a file found
 in a folder to OUTDIR/its path in that folder.png, a file named on its own
-to OUTDIR/its name.png. A file that fails is reported and the rest go on.
+to OUTDIR/its name.png; files that would share a name take as many of their
+folders' names as tell them apart. Each file is drawn in a process of its
+own: a file that fails is reported and the rest go on. A model's texture
+maps are read only from inside the folder named (see --any-texture-path).
 
 options:
   -o, --output OUT      the image to write, or with several files the folder
@@ -76,9 +79,20 @@ options:
                         one per core)
   --shard K/N           with several files: draw only part K (counting from 0)
                         of N disjoint parts, as umbra check --shard splits them
-  --sheet SHEET.png     with several files: also one picture of them all,
-                        each shrunk to at most 200 pixels wide and labelled
-                        with its file's name
+  --sheet SHEET.png     with several files: also one picture of this run's
+                        pictures, each shrunk to at most 200 pixels wide and
+                        labelled with its file's name
+  --timeout SECONDS     with several files: stop a file's render after this
+                        long, report it as timed out and go on (each file is
+                        drawn in a process of its own, so a crash or running
+                        out of memory costs only that file too)
+  --skip-existing       with several files: draw only the files whose picture
+                        is missing or older than the file, so that a run
+                        stopped part way resumes where it stopped
+  --json                with several files: one line of JSON per file on
+                        stdout: path, picture, status (drawn, skipped,
+                        failed, timed out, crashed or passed over), seconds,
+                        triangles and error
   --any-texture-path    read texture maps from any folder: by default a model's
                         maps are read only from inside the folder named on
                         the command line (the model's own, for a file named
@@ -145,7 +159,15 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   std::optional<size_t> jobs;
   std::optional<Shard> shard;
   std::optional<std::string> sheet;
+  double timeout_s = 0.0;
+  bool skip_existing = false, json = false;
   options.value("--sheet", [&](const std::string&, const std::string& t) { sheet = t; });
+  options.value("--timeout", [&](const std::string& n, const std::string& t) {
+    timeout_s = parse_finite_number(n, t);
+    if (!(timeout_s > 0.0)) throw UsageError(n + " must be a number of seconds above 0, got \"" + t + "\"");
+  });
+  options.flag("--skip-existing", skip_existing);
+  options.flag("--json", json);
   options.value("--jobs", [&](const std::string& n, const std::string& t) { jobs = size_t(parse_int_in(n, t, 1, 4096)); });
   options.value("--shard", [&](const std::string& n, const std::string& t) { shard = parse_shard(n, t); });
   options.positionals(scenes);
@@ -166,10 +188,12 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     if (o.explain) throw UsageError("--explain prints one scene's plan; with several files, ask for one of them");
     o.batch = BatchRenderOptions{scenes, o.output, o.settings, o.light_angle_deg, o.up, o.gl, o.antialias, o.show_volumes,
                                  jobs.value_or(std::max(1u, std::thread::hardware_concurrency())), shard, sheet,
-                                 o.any_texture_path};
+                                 o.any_texture_path, timeout_s, skip_existing, json};
   } else {
     if (shard) throw UsageError("--shard splits several files; \"" + o.scene_path + "\" is one");
     if (sheet) throw UsageError("--sheet shows several files; \"" + o.scene_path + "\" is one");
+    for (const auto& [given, name] : {std::pair{timeout_s > 0.0, "--timeout"}, {skip_existing, "--skip-existing"}, {json, "--json"}})
+      if (given) throw UsageError(std::string(name) + " is for several files or a folder; \"" + o.scene_path + "\" is one");
     if (o.output.empty()) throw UsageError("no output image given (-o OUT.png)");
     require_other_than_input("-o", o.output, o.scene_path);
     if (o.mask) require_other_than_input("--mask", *o.mask, o.scene_path);
@@ -202,7 +226,7 @@ int run_render_command(const std::vector<std::string>& argv) {
     std::string staged;
     Scene scene = parse_scene_or_mesh_file(options.scene_path, [&](size_t loaded, size_t total, const std::string& path) {
       progress->update(0, "loading mesh " + std::to_string(loaded + 1) + " of " + std::to_string(total) + ": " + path);
-    }, &staged, options.up, TextureMaps{true, "", options.any_texture_path});
+    }, &staged, {options.up, double(options.settings.width) / options.settings.height}, TextureMaps{true, "", options.any_texture_path});
     progress->clear();
     if (options.explain && !staged.empty())
       std::cout << "staged scene for " << options.scene_path << " (save it as a .scene file beside the mesh to edit it):\n"

@@ -200,7 +200,7 @@ int run_view_command(const std::vector<std::string>& argv) {
     std::optional<ProgressBar> progress(std::in_place, 2);  // loading, then preparing the shadows
     Scene parsed = parse_scene_or_mesh_file(options.scene_path, [&](size_t loaded, size_t total, const std::string& path) {
       progress->update(0, "loading mesh " + std::to_string(loaded + 1) + " of " + std::to_string(total) + ": " + path);
-    }, nullptr, options.up, TextureMaps{true, "", options.any_texture_path});
+    }, nullptr, {options.up, double(options.settings.width) / options.settings.height}, TextureMaps{true, "", options.any_texture_path});
     progress->clear();
     for (const Warning& w : parsed.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
     progress->update(1, "preparing shadow volumes");

@@ -9,6 +9,7 @@
 #include "hard_case_scenes.hpp"
 #include "image_agreement.hpp"
 #include "mask_comparison.hpp"
+#include "scene/camera_transform.hpp"
 #include "scene/scene_parser.hpp"
 #include "scene/staged_scene.hpp"
 #include "tests/mesh/interchange_writers.hpp"
@@ -168,6 +169,35 @@ TEST(StagedMesh, RealEngineModelMaskMatchesExactShadowRays) {
   EXPECT_EQ(scene.meshes[0].components.closed_components, 29u);
   // Small: the reference casts every pixel's rays against every triangle.
   test::expect_masks_match_reference(scene, 64, 64, 64);
+}
+
+
+// A frame taller than wide is framed by its narrower field of view, across:
+// Khronos's engine at 150x600 keeps every framing point and its shadow in
+// the frame (once cut off at both sides), and at 600x150 too.
+TEST(StagedMesh, APortraitFrameHoldsTheModelAndItsShadowAcross) {
+  const std::string engine = "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
+  if (!std::filesystem::exists(engine)) GTEST_SKIP() << "needs Debian's assimp-testmodels (build.sh installs it)";
+  for (const double aspect : {150.0 / 600.0, 1.0, 600.0 / 150.0}) {
+    SCOPED_TRACE(aspect);
+    const Scene scene = parse_scene_or_mesh_file(engine, {}, nullptr, StagingOptions{"", aspect});
+    const Mesh& mesh = scene.meshes[0];
+    const glm::dvec3 light = scene.lights[0].position;
+    const double floor_z = scene.triangles[0].a.z;
+    const glm::dmat4 view_projection = infinite_perspective(scene.camera.fovy_deg, aspect, 0.01) * view_matrix(scene.camera);
+    double widest = 0.0, highest = 0.0;
+    for (const glm::dvec3& p : framing_points(mesh)) {
+      const glm::dvec3 shadow = light + (p - light) * ((light.z - floor_z) / (light.z - p.z));
+      for (const glm::dvec3& q : {p, shadow}) {
+        const glm::dvec4 clip = view_projection * glm::dvec4(q, 1.0);
+        widest = std::max(widest, std::abs(clip.x / clip.w));
+        highest = std::max(highest, std::abs(clip.y / clip.w));
+      }
+    }
+    EXPECT_LE(widest, 1.0);
+    EXPECT_LE(highest, 1.0);
+    EXPECT_GT(std::max(widest, highest), 0.8);  // framed, not lost in the middle
+  }
 }
 
 }  // namespace

@@ -26,10 +26,10 @@ class CommandTest : public ScratchFolder {
  protected:
   std::string path(const std::string& name) const { return (folder_ / name).string(); }
 
-  // Runs `umbra ARGS`, after `prefix` (such as "xvfb-run -a ") when given.
-  CommandResult run(const std::string& args, const std::string& prefix = "") const {
-    const std::string command =
-        prefix + std::string(UMBRA_EXECUTABLE) + " " + args + " >" + path("out.txt") + " 2>" + path("err.txt");
+  // Runs `umbra ARGS`, after `prefix` (such as "xvfb-run -a ") when given;
+  // `executable` is another build of umbra (a test build's).
+  CommandResult run(const std::string& args, const std::string& prefix = "", const std::string& executable = UMBRA_EXECUTABLE) const {
+    const std::string command = prefix + executable + " " + args + " >" + path("out.txt") + " 2>" + path("err.txt");
     CommandResult r;
     const int raw = std::system(command.c_str());
     r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

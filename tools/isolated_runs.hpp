@@ -1,0 +1,39 @@
+#pragma once
+// Runs of one job per file, each in a process of its own, so that a file
+// that hangs, crashes or runs out of memory costs only its own result: the
+// folder runs of `umbra render` (and of `umbra check --timeout`) over
+// corpora of downloaded files, some of them broken or hostile.
+
+#include <cstddef>
+#include <functional>
+#include <string>
+
+namespace umbra {
+
+struct IsolatedResult {
+  enum class Ending {
+    kFinished,  // the job returned: `output` is what it returned
+    kTimedOut,  // stopped (SIGKILL) after the time allowed
+    kKilled,    // ended by a signal: a crash (SIGSEGV, SIGABRT) or the kernel's OOM killer (SIGKILL)
+  };
+  Ending ending = Ending::kFinished;
+  int signal = 0;       // kKilled: the signal that ended it
+  int exit_status = 0;  // kFinished: the process's (0 when the job returned)
+  std::string output;
+  double seconds = 0.0;
+};
+
+// What `result` says of a job that did not finish: "timed out after 10 s",
+// "crashed (SIGSEGV)", "killed (SIGKILL: out of memory?)"; "" for one that did.
+std::string unfinished_phrase(const IsolatedResult& result, double timeout_s);
+
+// Runs `job(i)` for each i in [0, count), each in a forked process, at most
+// `jobs` at a time, each stopped after `timeout_s` seconds (0: no limit).
+// `done(i, result)` is called here, in this process, as each ends, in the
+// order they end. A job's process ends when it returns, and with this one;
+// it has only the thread that forked it, so it must touch no state of this
+// process's other threads (a progress bar's). The job must not throw.
+void run_isolated(size_t count, size_t jobs, double timeout_s, const std::function<std::string(size_t)>& job,
+                  const std::function<void(size_t, const IsolatedResult&)>& done);
+
+}  // namespace umbra
