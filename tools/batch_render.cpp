@@ -1,8 +1,5 @@
 #include "tools/batch_render.hpp"
 
-#include <signal.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <chrono>
@@ -24,6 +21,7 @@
 #include "scene/scene_checks.hpp"
 #include "scene/staged_scene.hpp"
 #include "tools/command_line.hpp"
+#include "tools/fault_injection.hpp"
 #include "tools/isolated_runs.hpp"
 #include "tools/picture_names.hpp"
 #include "tools/progress_bar.hpp"
@@ -63,27 +61,12 @@ std::string json_line(const Record& r) {
   return line.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
-#ifdef UMBRA_FAULT_INJECTION
-// A test build's faults, by the file's name, as a render could meet them:
-// a crash, an allocation that fails, the kernel's OOM killer, a hang.
-void inject_fault(const std::string& path) {
-  const std::string name = std::filesystem::path(path).filename().string();
-  if (name.find("crash") != std::string::npos) std::abort();
-  if (name.find("out-of-memory") != std::string::npos) throw std::bad_alloc();
-  if (name.find("oom-killed") != std::string::npos) ::raise(SIGKILL);
-  if (name.find("hang") != std::string::npos)
-    for (;;) ::pause();
-}
-#endif
-
 // One file's picture, drawn in this process (a job's own: see render_job).
 // Fills `record`'s status, triangles, error and messages.
 void render_one(const std::string& path, const std::string& root, const std::string& out, const BatchRenderOptions& o,
                 Record& record) {
   try {
-#ifdef UMBRA_FAULT_INJECTION
     inject_fault(path);
-#endif
     if (const std::string what = neither_scene_nor_mesh(path); !what.empty()) throw InputError({path}, what);
     const double aspect = double(o.settings.width) / o.settings.height;
     Scene scene = parse_scene_or_mesh_file(path, {}, nullptr, {o.up, aspect}, TextureMaps{true, root, o.any_texture_path});

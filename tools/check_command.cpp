@@ -22,7 +22,9 @@
 #include "mesh/io/mesh_format.hpp"
 #include "image/partial_file.hpp"
 #include "mesh/check/mesh_repair.hpp"
+#include "tools/isolated_runs.hpp"
 #include "tools/command_line.hpp"
+#include "tools/fault_injection.hpp"
 #include "tools/mesh_paths.hpp"
 #include "tools/progress_bar.hpp"
 
@@ -64,6 +66,10 @@ options:
                     what changed and what is still wrong. Never writes MESH.
   --time-limit SEC  stop the search for self-intersections after SEC seconds
                     per mesh and report that it stopped (default 60; 0 skips)
+  --timeout SEC     check each mesh in a process of its own and stop it after
+                    SEC seconds: a mesh that hangs, crashes or runs out of
+                    memory is reported as unreadable (exit status 2), and
+                    the rest go on
   -h, --help        show this help
 
 exit status: 0 every mesh is a closed 2-manifold; 1 one is not (after the
@@ -80,6 +86,7 @@ struct CheckCommandOptions {
   std::optional<Shard> shard;
   std::optional<std::string> repair_output;
   CheckOptions check;
+  double timeout_s = 0.0;  // >0: each mesh in a process of its own, stopped after this long
   bool help = false;
 };
 
@@ -91,6 +98,10 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
   options.value("--repair", [&](const std::string&, const std::string& t) { o.repair_output = t; });
   options.value("--jobs", [&](const std::string& n, const std::string& t) { o.jobs = size_t(parse_int_in(n, t, 1, 4096)); });
   options.value("--shard", [&](const std::string& n, const std::string& t) { o.shard = parse_shard(n, t); });
+  options.value("--timeout", [&](const std::string& n, const std::string& t) {
+    o.timeout_s = parse_finite_number(n, t);
+    if (!(o.timeout_s > 0.0)) throw UsageError(n + " must be a number of seconds above 0, got \"" + t + "\"");
+  });
   options.value("--time-limit", [&](const std::string& n, const std::string& t) {
     o.check.self_intersection_seconds = parse_finite_number(n, t);
     if (o.check.self_intersection_seconds < 0.0) throw UsageError("--time-limit must not be negative");
@@ -102,6 +113,7 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
   if (o.repair_output) {
     if (o.meshes.size() != 1 || std::filesystem::is_directory(o.meshes[0])) throw UsageError("--repair takes one mesh file at a time");
     if (o.shard) throw UsageError("--repair checks one mesh: --shard does not apply");
+    if (o.timeout_s > 0.0) throw UsageError("--repair checks one mesh: --timeout does not apply");
     if (!repair_can_write(*o.repair_output))
       throw UsageError("--repair needs an output ending in " + mesh_format_extensions(true) + ", got \"" + *o.repair_output + "\"");
     require_other_than_input("--repair", *o.repair_output, o.meshes[0]);
@@ -119,28 +131,47 @@ struct CheckOutcome {
   int status = 0;
 };
 
+// A mesh that could not be checked: said on stderr, and still its line of
+// JSON (every mesh gets one).
+CheckOutcome unchecked(const std::string& path, const std::string& message, const CheckCommandOptions& options) {
+  return {options.json ? json_error_line(path, message) : "", message + "\n", 2};
+}
+
 CheckOutcome check_one(const std::string& path, const CheckCommandOptions& options) {
-  CheckOutcome outcome;
-  std::ostringstream out;
-  // Every mesh gets its line of JSON: a report, or what stopped it.
-  const auto failed = [&](const std::string& message) {
-    outcome.err = message + "\n";
-    if (options.json) out << json_error_line(path, message);
-    outcome.status = 2;
-  };
   try {
+    inject_fault(path);
     const MeshReport report = check_mesh(read_polygon_soup(path, TextureMaps::skip()), options.check);
+    std::ostringstream out;
     options.json ? report.print_json(out) : report.print_text(out);
-    outcome.status = report.is_closed_manifold() ? 0 : 1;
+    return {out.str(), "", report.is_closed_manifold() ? 0 : 1};
   } catch (const InputError& e) {
-    failed(e.what());
+    return unchecked(path, e.what(), options);
   } catch (const std::bad_alloc&) {
-    failed(path + ": not enough memory to check this mesh");
+    return unchecked(path, path + ": not enough memory to check this mesh", options);
   } catch (const std::exception& e) {
-    failed(path + ": the check failed: " + e.what());
+    return unchecked(path, path + ": the check failed: " + e.what(), options);
   }
-  outcome.out = out.str();
-  return outcome;
+}
+
+// check_one in a process of its own (--timeout): its outcome as the status,
+// the length of its output, the output and its messages.
+std::string check_job(const std::string& path, const CheckCommandOptions& options) {
+  const size_t cores = std::max(1u, std::thread::hardware_concurrency());
+  const tbb::global_control threads(tbb::global_control::max_allowed_parallelism, std::max<size_t>(1, cores / options.jobs));
+  const CheckOutcome o = check_one(path, options);
+  return std::to_string(o.status) + "\n" + std::to_string(o.out.size()) + "\n" + o.out + o.err;
+}
+
+CheckOutcome read_check_job(const std::string& path, const IsolatedResult& result, const CheckCommandOptions& options) {
+  if (const std::string ended = unfinished_phrase(result, options.timeout_s); !ended.empty())
+    return unchecked(path, path + ": " + ended, options);
+  std::istringstream in(result.output);
+  std::string status, length;
+  if (!std::getline(in, status) || !std::getline(in, length))
+    return unchecked(path, path + ": the check ended without a result (exit status " + std::to_string(result.exit_status) + ")", options);
+  const size_t out_size = std::stoull(length);
+  const std::string rest(std::istreambuf_iterator<char>(in), {});
+  return {rest.substr(0, out_size), rest.substr(std::min(out_size, rest.size())), std::stoi(status)};
 }
 
 int repair_one(const std::string& path, const std::string& output, const CheckCommandOptions& options) {
@@ -191,9 +222,6 @@ int run_check_command(const std::vector<std::string>& argv) {
   for (const auto& [path, what] : found.passed_over) std::cerr << "umbra check: passed over " << path << ": " << what << ", not a mesh\n";
   const std::vector<std::string> meshes = options.shard ? shard_of(all, *options.shard) : all;
   const auto start = std::chrono::steady_clock::now();
-  // --jobs bounds the threads of the whole process: this one and TBB's
-  // workers, which check meshes and run the searches inside them alike.
-  const tbb::global_control threads(tbb::global_control::max_allowed_parallelism, options.jobs);
 
   // Workers take meshes in order; reports are printed in order, each as soon
   // as it and those before it are done, by whichever worker finishes the
@@ -217,20 +245,35 @@ int run_check_command(const std::vector<std::string>& argv) {
     }
     if (printed < count) progress.update(finished, meshes[printed]);
   };
-  tbb::task_arena arena(int(options.jobs));
-  arena.execute([&] {
-    tbb::parallel_for(size_t(0), std::min(count, options.jobs), [&](size_t) {
-      for (size_t i = next++; i < count; i = next++) {
-        // Isolated: while a check waits for its own parallel work, its thread
-        // takes no other mesh, which would hold back this mesh's report.
-        CheckOutcome outcome = tbb::this_task_arena::isolate([&] { return check_one(meshes[i], options); });
-        const std::lock_guard<std::mutex> lock(print_mutex);
-        outcomes[i] = std::move(outcome);
-        ++finished;
-        print_ready();
-      }
+  if (options.timeout_s > 0.0) {
+    // Each mesh in a process of its own: one that hangs, crashes or runs out
+    // of memory costs only its own report.
+    run_isolated(
+        count, options.jobs, options.timeout_s, [&](size_t i) { return check_job(meshes[i], options); },
+        [&](size_t i, const IsolatedResult& result) {
+          outcomes[i] = read_check_job(meshes[i], result, options);
+          ++finished;
+          print_ready();
+        });
+  } else {
+    // --jobs bounds the threads of the whole process: this one and TBB's
+    // workers, which check meshes and run the searches inside them alike.
+    const tbb::global_control threads(tbb::global_control::max_allowed_parallelism, options.jobs);
+    tbb::task_arena arena(int(options.jobs));
+    arena.execute([&] {
+      tbb::parallel_for(size_t(0), std::min(count, options.jobs), [&](size_t) {
+        for (size_t i = next++; i < count; i = next++) {
+          // Isolated: while a check waits for its own parallel work, its thread
+          // takes no other mesh, which would hold back this mesh's report.
+          CheckOutcome outcome = tbb::this_task_arena::isolate([&] { return check_one(meshes[i], options); });
+          const std::lock_guard<std::mutex> lock(print_mutex);
+          outcomes[i] = std::move(outcome);
+          ++finished;
+          print_ready();
+        }
+      });
     });
-  });
+  }
   if (count > 1 || all.size() != options.meshes.size() || options.shard || !found.passed_over.empty()) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     char elapsed[32];

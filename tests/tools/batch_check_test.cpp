@@ -5,6 +5,7 @@
 
 #include <fstream>
 #include <regex>
+#include <sstream>
 
 #include "tests/mesh/mesh_builders.hpp"
 #include "tests/tools/command_fixture.hpp"
@@ -150,6 +151,34 @@ TEST_F(BatchCheck, AProgressBarShowsOnATerminalOnlyOnceTheCheckHasRunForASecond)
   // Without a terminal, stderr holds the summary alone (the other tests check it exactly).
   const CommandResult piped = run("check --jobs 1 " + path("meshes"));
   EXPECT_EQ(piped.err.find('['), std::string::npos);
+}
+
+// --timeout: each mesh in a process of its own. In the test build that hangs
+// or crashes on purpose (fault_injection.hpp), the mesh that hangs is
+// stopped and the one that crashes reported; every other report is as
+// without --timeout, in order, and every mesh has its line.
+TEST_F(BatchCheck, WithATimeoutAHangOrACrashCostsOnlyItsOwnReport) {
+  const std::string meshes = mesh_folder();
+  const CommandResult unisolated = run("check " + meshes + " --json --jobs 2");
+  write("meshes/b/hang.obj", obj_text(test::unit_cube()));
+  write("meshes/b/crash.obj", obj_text(test::unit_cube()));
+  const CommandResult r = run("check " + meshes + " --json --jobs 2 --timeout 2", "", UMBRA_FAULT_INJECTED_EXECUTABLE);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(verdicts(r.out), "a-closed.obj True\nb/crash.obj error\nb/deep/tet True\nb/hang.obj error\nb/open.obj False\n");
+  EXPECT_NE(r.out.find("{\"path\":\"" + path("meshes/b/hang.obj") + "\",\"error\":\"" + path("meshes/b/hang.obj") +
+                       ": timed out after 2 s (--timeout)\"}\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.err.find(path("meshes/b/crash.obj") + ": crashed (SIGABRT)\n"), std::string::npos) << r.err;
+  // The others' lines are those of a check in one process, but for the
+  // seconds the search took.
+  const std::regex seconds("\"seconds\":[-0-9.e+]+");
+  const std::string expected = std::regex_replace(unisolated.out, seconds, "\"seconds\":0");
+  std::string others;
+  for (std::istringstream in(r.out); std::getline(in, others);) {
+    if (others.find("hang.obj") != std::string::npos || others.find("crash.obj") != std::string::npos) continue;
+    EXPECT_NE(expected.find(std::regex_replace(others, seconds, "\"seconds\":0") + "\n"), std::string::npos) << others;
+  }
 }
 
 TEST_F(BatchCheck, AFolderWithNoMeshExitsTwoAndSaysSo) {
