@@ -156,8 +156,8 @@ int run_batch_render(const BatchRenderOptions& o) {
   // Said once for all the shards: by the first.
   if (o.shard && o.shard->index > 0) found.passed_over.clear();
   for (const auto& [path, what] : found.passed_over) {
-    std::cerr << "umbra render: passed over " << path << ": " << what << ", not a mesh\n";
-    if (o.json) std::cout << json_line({path, "", kPassedOver, 0.0, 0, what + ", not a mesh", ""});
+    std::cerr << "umbra render: passed over " << path << ": " << what << "\n";
+    if (o.json) std::cout << json_line({path, "", kPassedOver, 0.0, 0, what, ""});
   }
   // Named for all the files, before the shards part: every shard names alike.
   const std::vector<std::string> all_names = distinct_picture_names(found.meshes, found.names, found.roots);

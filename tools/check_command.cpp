@@ -219,7 +219,7 @@ int run_check_command(const std::vector<std::string>& argv) {
   const std::vector<std::string>& all = found.meshes;
   // Said once for all the shards: by the first.
   if (options.shard && options.shard->index > 0) found.passed_over.clear();
-  for (const auto& [path, what] : found.passed_over) std::cerr << "umbra check: passed over " << path << ": " << what << ", not a mesh\n";
+  for (const auto& [path, what] : found.passed_over) std::cerr << "umbra check: passed over " << path << ": " << what << "\n";
   const std::vector<std::string> meshes = options.shard ? shard_of(all, *options.shard) : all;
   const auto start = std::chrono::steady_clock::now();
 

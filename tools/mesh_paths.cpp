@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <set>
 
 #include "mesh/io/mesh_format.hpp"
 #include "tools/command_line.hpp"
@@ -10,23 +11,42 @@ namespace umbra {
 namespace {
 
 // A folder's files that are meshes by content, or by name unless their
-// content is plainly something else.
+// content is plainly something else. Links are followed, to files and to
+// folders, but a folder is searched once however many links lead to it (a
+// link to a folder above it would lead round for ever); a link to nothing,
+// and a second way into a folder, are passed over and said.
 void meshes_in_folder(const std::string& folder, MeshPaths& out) {
   namespace fs = std::filesystem;
   std::vector<std::string> found;
   std::vector<std::pair<std::string, std::string>> passed_over;
+  std::set<fs::path> searched;  // folders, links resolved
   std::error_code ec;
-  fs::recursive_directory_iterator it(folder, fs::directory_options::skip_permission_denied, ec), end;
+  searched.insert(fs::canonical(folder, ec));
+  fs::recursive_directory_iterator it(folder, fs::directory_options::skip_permission_denied | fs::directory_options::follow_directory_symlink,
+                                      ec),
+      end;
   for (; !ec && it != end; it.increment(ec)) {
     std::error_code type_ec;
-    if (!it->is_regular_file(type_ec)) continue;
     const std::string path = it->path().string();
+    if (it->is_symlink(type_ec) && !it->exists(type_ec)) {
+      passed_over.emplace_back(path, "a link to nothing (" + fs::read_symlink(it->path(), type_ec).string() + ")");
+      continue;
+    }
+    if (it->is_directory(type_ec)) {
+      const fs::path real = fs::canonical(it->path(), type_ec);
+      if (!searched.insert(real).second) {
+        it.disable_recursion_pending();
+        passed_over.emplace_back(path, "a link to the folder " + real.string() + ", searched once already");
+      }
+      continue;
+    }
+    if (!it->is_regular_file(type_ec)) continue;
     if (!detect_mesh_format_of_file(path).empty()) {
       found.push_back(path);
     } else if (!mesh_format_of(path).empty()) {
       const std::string other = other_known_format_of_file(path);
       if (other.empty()) found.push_back(path);  // a mesh too broken to tell: its reader says why
-      else passed_over.emplace_back(path, other);
+      else passed_over.emplace_back(path, other + ", not a mesh");
     }
   }
   if (ec) throw UsageError("cannot search the folder \"" + folder + "\": " + ec.message());

@@ -14,8 +14,10 @@ namespace umbra {
 // whose content is a mesh format or whose name has a mesh extension, in
 // sorted order. A file in a folder that has a mesh's name but is plainly
 // something else (a JPEG, a PDF, UTF-16 text, a zip without a model) is
-// passed over, with what it is. Throws UsageError for a folder that cannot
-// be searched.
+// passed over, with what it is. Links are followed, each folder searched
+// once however many links lead to it; a link to nothing, and a second way
+// into a folder, are passed over too. Throws UsageError for a folder that
+// cannot be searched.
 struct MeshPaths {
   std::vector<std::string> meshes;
   // Per mesh, its path relative to the folder argument it was found in, or
@@ -24,7 +26,8 @@ struct MeshPaths {
   // Per mesh, the folder argument it was found in, or "" when it was an
   // argument itself: the folder its texture maps may be read from.
   std::vector<std::string> roots;
-  std::vector<std::pair<std::string, std::string>> passed_over;  // (path, what it is)
+  // (path, what it is): "a JPEG image, not a mesh", "a link to nothing (x.obj)"
+  std::vector<std::pair<std::string, std::string>> passed_over;
 };
 MeshPaths expand_mesh_paths(const std::vector<std::string>& arguments);
 

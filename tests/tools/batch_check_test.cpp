@@ -181,6 +181,36 @@ TEST_F(BatchCheck, WithATimeoutAHangOrACrashCostsOnlyItsOwnReport) {
   }
 }
 
+// Links in a folder: a linked folder is searched (once, however many links
+// lead to it, a link to a folder above included), a linked mesh is checked,
+// and a link to nothing or a second way into a folder is said, not skipped
+// in silence.
+TEST_F(BatchCheck, LinksAreFollowedOnceAndDanglingOnesAreSaid) {
+  fs::create_directories(path("shared/parts"));
+  write("shared/parts/tet.obj", obj_text(test::tetrahedron()));
+  fs::create_directories(path("meshes"));
+  write("meshes/cube.obj", obj_text(test::unit_cube()));
+  fs::create_directory_symlink(path("shared"), path("meshes/linked"));
+  fs::create_directory_symlink(path("shared"), path("meshes/again"));
+  fs::create_directory_symlink(path("meshes"), path("meshes/loop"));
+  fs::create_symlink(path("shared/parts/tet.obj"), path("meshes/tet-link.obj"));
+  fs::create_symlink(path("gone.obj"), path("meshes/gone.obj"));
+  const CommandResult r = run("check " + path("meshes") + " --json");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(verdicts(r.out), "again/parts/tet.obj True\ncube.obj True\ntet-link.obj True\n") << r.out;
+  EXPECT_NE(r.err.find("umbra check: passed over " + path("meshes/gone.obj") + ": a link to nothing (" + path("gone.obj") + ")\n"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("umbra check: passed over " + path("meshes/linked") + ": a link to the folder " +
+                       fs::canonical(path("shared")).string() + ", searched once already\n"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("umbra check: passed over " + path("meshes/loop") + ": a link to the folder " +
+                       fs::canonical(path("meshes")).string() + ", searched once already\n"),
+            std::string::npos)
+      << r.err;
+}
+
 TEST_F(BatchCheck, AFolderWithNoMeshExitsTwoAndSaysSo) {
   fs::create_directories(path("empty/inner"));
   write("empty/notes.txt", "no meshes here\n");
