@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -61,10 +62,11 @@ std::string json_line(const Record& r) {
   return line.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
-// One file's picture, drawn in this process (a job's own: see render_job).
-// Fills `record`'s status, triangles, error and messages.
+// One file's picture, drawn in this process (a worker's: see render_job), in
+// `context`, made on first use and kept for the worker's next file. Fills
+// `record`'s status, triangles, error and messages.
 void render_one(const std::string& path, const std::string& root, const std::string& out, const BatchRenderOptions& o,
-                Record& record) {
+                std::optional<HeadlessContext>& context, Record& record) {
   try {
     inject_fault(path);
     if (const std::string what = neither_scene_nor_mesh(path); !what.empty()) throw InputError({path}, what);
@@ -79,7 +81,7 @@ void render_one(const std::string& path, const std::string& root, const std::str
     if (settings.method == RenderMethod::kRaycast) {
       image = ray_cast_frame(scene, settings.width, settings.height, settings.supersampling).image;
     } else {
-      const HeadlessContext context(settings.width, settings.height, o.gl);
+      if (!context) context.emplace(settings.width, settings.height, o.gl);
       const RenderPlan plan = make_render_plan(scene, settings);
       ShadowRenderer renderer(scene, plan);
       image = renderer.render_image(o.show_volumes);
@@ -99,14 +101,15 @@ void render_one(const std::string& path, const std::string& root, const std::str
   if (!record.error.empty()) record.messages += record.error + "\n";
 }
 
-// A job's process: renders file `i`, and hands back its record as the
+// A worker's job: renders one file, and hands back its record as the
 // status, the triangles, the error (one line) and the messages.
-std::string render_job(const std::string& path, const std::string& root, const std::string& out, const BatchRenderOptions& o) {
+std::string render_job(const std::string& path, const std::string& root, const std::string& out, const BatchRenderOptions& o,
+                       std::optional<HeadlessContext>& context) {
   // The jobs share the cores: each takes its part for its own threads.
   const size_t cores = std::max(1u, std::thread::hardware_concurrency());
   const tbb::global_control threads(tbb::global_control::max_allowed_parallelism, std::max<size_t>(1, cores / o.jobs));
   Record record;
-  render_one(path, root, out, o, record);
+  render_one(path, root, out, o, context, record);
   std::string error = record.error;
   std::replace(error.begin(), error.end(), '\n', ' ');
   return record.status + "\n" + std::to_string(record.triangles) + "\n" + error + "\n" + record.messages;
@@ -192,13 +195,15 @@ int run_batch_render(const BatchRenderOptions& o) {
       to_draw.push_back(i);
     }
   }
-  // Each file in a process of its own: one that hangs, crashes or runs out
-  // of memory costs only its own picture.
+  // In worker processes: a file that hangs, crashes or runs out of memory
+  // costs only its own picture. Each worker keeps its GL context (its own
+  // copy of `context`) from one file to the next.
+  std::optional<HeadlessContext> context;
   run_isolated(
       to_draw.size(), o.jobs, o.timeout_s,
       [&](size_t k) {
         const size_t i = to_draw[k];
-        return render_job(files[i], roots[i], records[i].picture, o);
+        return render_job(files[i], roots[i], records[i].picture, o, context);
       },
       [&](size_t k, const IsolatedResult& result) {
         read_job_result(result, o.timeout_s, records[to_draw[k]]);

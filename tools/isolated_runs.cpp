@@ -11,9 +11,11 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -22,72 +24,119 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-struct Running {
+// A worker is replaced after this many jobs, so that whatever a library
+// leaks or scatters over a long run (a GL driver's caches, say) goes with it.
+constexpr size_t kJobsPerWorker = 256;
+
+// A worker process: takes job indices on one pipe and answers each with the
+// job's output, its length first, on another.
+struct Worker {
   pid_t pid = -1;
-  int from_job = -1;  // the read end of the job's pipe, -1 once it is closed
-  size_t index = 0;
+  int to_worker = -1;    // this process's end of the index pipe
+  int from_worker = -1;  // this process's end of the result pipe
+  size_t jobs_done = 0;
+  std::optional<size_t> index;  // the job under way
   Clock::time_point start;
-  std::string output;
+  std::string received;  // the result's bytes so far
 };
 
-// Writes all of `bytes` to `fd`, across short writes.
-void write_all(int fd, const std::string& bytes) {
-  for (size_t done = 0; done < bytes.size();) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+bool write_all(int fd, const void* bytes, size_t size) {
+  const char* at = static_cast<const char*>(bytes);
+  for (size_t done = 0; done < size;) {
+    const ssize_t n = ::write(fd, at + done, size - done);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return;
+    if (n <= 0) return false;
     done += size_t(n);
   }
+  return true;
 }
 
-// The job's process: runs it, hands its output to the parent and ends
-// without the parent's exit handlers (its GL libraries, its streams).
-[[noreturn]] void run_job(size_t index, int to_parent, pid_t parent, const std::function<std::string(size_t)>& job) {
-  ::prctl(PR_SET_PDEATHSIG, SIGTERM);  // the parent gone, nobody reads the result
+bool read_all(int fd, void* bytes, size_t size) {
+  char* at = static_cast<char*>(bytes);
+  for (size_t done = 0; done < size;) {
+    const ssize_t n = ::read(fd, at + done, size - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += size_t(n);
+  }
+  return true;
+}
+
+// The worker's life: jobs until the index pipe closes, then an end without
+// this process's exit handlers (its GL libraries, its streams).
+[[noreturn]] void work(int indices, int results, pid_t parent, const std::function<std::string(size_t)>& job) {
+  ::prctl(PR_SET_PDEATHSIG, SIGTERM);  // the parent gone, nobody reads the results
   if (::getppid() != parent) ::_exit(1);
-  const std::string output = job(index);
-  write_all(to_parent, output);
+  for (uint64_t index = 0; read_all(indices, &index, sizeof index);) {
+    const std::string output = job(size_t(index));
+    const uint64_t size = output.size();
+    if (!write_all(results, &size, sizeof size) || !write_all(results, output.data(), output.size())) break;
+  }
   std::cout.flush(), std::cerr.flush();
   ::_exit(0);
 }
 
-Running start(size_t index, const std::function<std::string(size_t)>& job) {
-  int pipe_ends[2];
-  if (::pipe2(pipe_ends, O_CLOEXEC) != 0) throw std::runtime_error(std::string("cannot make a pipe: ") + std::strerror(errno));
+Worker start_worker(const std::vector<Worker>& others, const std::function<std::string(size_t)>& job) {
+  int indices[2], results[2];
+  if (::pipe(indices) != 0) throw std::runtime_error(std::string("cannot make a pipe: ") + std::strerror(errno));
+  if (::pipe(results) != 0) {
+    ::close(indices[0]), ::close(indices[1]);
+    throw std::runtime_error(std::string("cannot make a pipe: ") + std::strerror(errno));
+  }
   const pid_t parent = ::getpid();
-  std::cout.flush(), std::cerr.flush();  // or the child would write the parent's buffered text again
+  std::cout.flush(), std::cerr.flush();  // or the worker would write this process's buffered text again
   const pid_t pid = ::fork();
   if (pid < 0) {
-    ::close(pipe_ends[0]), ::close(pipe_ends[1]);
+    for (const int fd : {indices[0], indices[1], results[0], results[1]}) ::close(fd);
     throw std::runtime_error(std::string("cannot start a process: ") + std::strerror(errno));
   }
   if (pid == 0) {
-    ::close(pipe_ends[0]);
-    run_job(index, pipe_ends[1], parent, job);
+    // Only its own pipes: another worker's ends held here would keep that
+    // worker from seeing its index pipe close.
+    for (const Worker& w : others)
+      for (const int fd : {w.to_worker, w.from_worker})
+        if (fd >= 0) ::close(fd);
+    ::close(indices[1]), ::close(results[0]);
+    work(indices[0], results[1], parent, job);
   }
-  ::close(pipe_ends[1]);
-  return Running{pid, pipe_ends[0], index, Clock::now(), {}};
+  ::close(indices[0]), ::close(results[1]);
+  Worker w;
+  w.pid = pid, w.to_worker = indices[1], w.from_worker = results[0];
+  return w;
 }
 
-IsolatedResult reap(Running& r, bool timed_out) {
-  if (timed_out) ::kill(r.pid, SIGKILL);
-  if (r.from_job >= 0) ::close(r.from_job), r.from_job = -1;
+// Ends `w` (SIGKILL where `kill`), waits for it, and says how it ended.
+int stop_worker(Worker& w, bool kill) {
+  if (kill) ::kill(w.pid, SIGKILL);
+  for (int* fd : {&w.to_worker, &w.from_worker})
+    if (*fd >= 0) ::close(*fd), *fd = -1;
   int status = 0;
-  while (::waitpid(r.pid, &status, 0) < 0 && errno == EINTR) {
+  while (::waitpid(w.pid, &status, 0) < 0 && errno == EINTR) {
   }
-  IsolatedResult result;
-  result.seconds = std::chrono::duration<double>(Clock::now() - r.start).count();
-  if (timed_out) {
-    result.ending = IsolatedResult::Ending::kTimedOut;
-  } else if (WIFSIGNALED(status)) {
-    result.ending = IsolatedResult::Ending::kKilled;
-    result.signal = WTERMSIG(status);
-  } else {
-    result.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : 0;
-    result.output = std::move(r.output);
-  }
-  return result;
+  return status;
 }
+
+// The result `w` has received whole, if it has: its output, less its length.
+std::optional<std::string> whole_result(const Worker& w) {
+  uint64_t size = 0;
+  if (w.received.size() < sizeof size) return std::nullopt;
+  std::memcpy(&size, w.received.data(), sizeof size);
+  if (w.received.size() < sizeof size + size) return std::nullopt;
+  return w.received.substr(sizeof size, size_t(size));
+}
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// SIGPIPE ignored while the workers run: a worker that died with an index on
+// its way is reported as such, not taken for this process's own death.
+class IgnoredSigpipe {
+ public:
+  IgnoredSigpipe() { previous_ = ::signal(SIGPIPE, SIG_IGN); }
+  ~IgnoredSigpipe() { ::signal(SIGPIPE, previous_); }
+
+ private:
+  sighandler_t previous_;
+};
 
 }  // namespace
 
@@ -109,43 +158,86 @@ std::string unfinished_phrase(const IsolatedResult& result, double timeout_s) {
 
 void run_isolated(size_t count, size_t jobs, double timeout_s, const std::function<std::string(size_t)>& job,
                   const std::function<void(size_t, const IsolatedResult&)>& done) {
-  std::vector<Running> running;
-  size_t next = 0;
-  while (next < count || !running.empty()) {
-    while (next < count && running.size() < std::max<size_t>(jobs, 1)) running.push_back(start(next++, job));
-    // Wait for output, an end, or the first time limit.
+  const IgnoredSigpipe ignored;
+  std::vector<Worker> workers;
+  size_t next = 0, finished = 0;
+  // A worker ended while on a job: the job's result is how it ended.
+  const auto lost = [&](Worker& w, bool timed_out) {
+    const size_t index = *w.index;
+    IsolatedResult result;
+    result.seconds = seconds_since(w.start);
+    const int status = stop_worker(w, timed_out);
+    if (timed_out) {
+      result.ending = IsolatedResult::Ending::kTimedOut;
+    } else if (WIFSIGNALED(status)) {
+      result.ending = IsolatedResult::Ending::kKilled;
+      result.signal = WTERMSIG(status);
+    } else {
+      result.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : 0;
+    }
+    ++finished;
+    done(index, result);
+  };
+  while (finished < count) {
+    // Every job under way, as far as the workers go: idle ones take the next.
+    workers.erase(std::remove_if(workers.begin(), workers.end(), [](const Worker& w) { return w.pid < 0; }), workers.end());
+    for (Worker& w : workers) {
+      if (w.index || next >= count) continue;
+      const uint64_t index = next;
+      if (!write_all(w.to_worker, &index, sizeof index)) {  // it died idle: replaced below
+        stop_worker(w, true), w.pid = -1;
+        continue;
+      }
+      w.index = next++, w.start = Clock::now(), w.received.clear();
+    }
+    workers.erase(std::remove_if(workers.begin(), workers.end(), [](const Worker& w) { return w.pid < 0; }), workers.end());
+    if (next < count && workers.size() < std::min(std::max<size_t>(jobs, 1), count - finished)) {
+      workers.push_back(start_worker(workers, job));
+      continue;
+    }
+    // Wait for results, an end, or the first time limit.
     int wait_ms = -1;
     if (timeout_s > 0.0) {
       double soonest = timeout_s;
-      for (const Running& r : running) soonest = std::min(soonest, timeout_s - std::chrono::duration<double>(Clock::now() - r.start).count());
+      for (const Worker& w : workers)
+        if (w.index) soonest = std::min(soonest, timeout_s - seconds_since(w.start));
       wait_ms = int(std::ceil(std::max(soonest, 0.0) * 1000.0));
     }
     std::vector<pollfd> fds;
-    for (const Running& r : running) fds.push_back({r.from_job, POLLIN, 0});
+    for (const Worker& w : workers) fds.push_back({w.index ? w.from_worker : -1, POLLIN, 0});  // -1: not polled
     if (::poll(fds.data(), fds.size(), wait_ms) < 0 && errno != EINTR)
       throw std::runtime_error(std::string("cannot wait for the jobs: ") + std::strerror(errno));
-    for (size_t k = 0; k < running.size();) {
-      Running& r = running[k];
-      bool ended = false, timed_out = false;
+    for (size_t k = 0; k < workers.size(); ++k) {
+      Worker& w = workers[k];
+      if (!w.index) continue;
       if (fds[k].revents & (POLLIN | POLLHUP | POLLERR)) {
         char buffer[65536];
-        const ssize_t n = ::read(r.from_job, buffer, sizeof buffer);
-        if (n > 0) r.output.append(buffer, size_t(n));
-        else if (n == 0 || errno != EINTR) ended = true;
+        const ssize_t n = ::read(w.from_worker, buffer, sizeof buffer);
+        if (n > 0) {
+          w.received.append(buffer, size_t(n));
+        } else if (n == 0 || errno != EINTR) {
+          lost(w, false);  // it ended before its result was whole
+          w.pid = -1;
+          continue;
+        }
       }
-      if (!ended && timeout_s > 0.0 && std::chrono::duration<double>(Clock::now() - r.start).count() >= timeout_s)
-        ended = timed_out = true;
-      if (!ended) {
-        ++k;
-        continue;
+      if (const std::optional<std::string> output = whole_result(w)) {
+        IsolatedResult result;
+        result.seconds = seconds_since(w.start);
+        result.output = *output;
+        const size_t index = *w.index;
+        w.index.reset();
+        if (++w.jobs_done >= kJobsPerWorker) stop_worker(w, false), w.pid = -1;
+        ++finished;
+        done(index, result);
+      } else if (timeout_s > 0.0 && seconds_since(w.start) >= timeout_s) {
+        lost(w, true);
+        w.pid = -1;
       }
-      const size_t index = r.index;
-      const IsolatedResult result = reap(r, timed_out);
-      running.erase(running.begin() + std::ptrdiff_t(k));
-      fds.erase(fds.begin() + std::ptrdiff_t(k));
-      done(index, result);
     }
   }
+  for (Worker& w : workers)
+    if (w.pid >= 0) stop_worker(w, false);  // its index pipe closed: it ends
 }
 
 }  // namespace umbra

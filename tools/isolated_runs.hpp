@@ -1,8 +1,11 @@
 #pragma once
-// Runs of one job per file, each in a process of its own, so that a file
-// that hangs, crashes or runs out of memory costs only its own result: the
-// folder runs of `umbra render` (and of `umbra check --timeout`) over
-// corpora of downloaded files, some of them broken or hostile.
+// Runs of one job per file in worker processes, so that a file that hangs,
+// crashes or runs out of memory costs only its own result: the folder runs
+// of `umbra render` (and of `umbra check --timeout`) over corpora of
+// downloaded files, some of them broken or hostile. A worker does one job at
+// a time and keeps what it made for the next (a GL context); one that
+// crashes or runs past its time is replaced, and each is replaced after 256
+// jobs, so that nothing a library leaks piles up.
 
 #include <cstddef>
 #include <functional>
@@ -27,12 +30,14 @@ struct IsolatedResult {
 // "crashed (SIGSEGV)", "killed (SIGKILL: out of memory?)"; "" for one that did.
 std::string unfinished_phrase(const IsolatedResult& result, double timeout_s);
 
-// Runs `job(i)` for each i in [0, count), each in a forked process, at most
-// `jobs` at a time, each stopped after `timeout_s` seconds (0: no limit).
-// `done(i, result)` is called here, in this process, as each ends, in the
-// order they end. A job's process ends when it returns, and with this one;
-// it has only the thread that forked it, so it must touch no state of this
-// process's other threads (a progress bar's). The job must not throw.
+// Runs `job(i)` for each i in [0, count) in forked worker processes, at
+// most `jobs` at a time, each job stopped (its worker killed) after
+// `timeout_s` seconds (0: no limit). `done(i, result)` is called here, in
+// this process, as each ends, in the order they end. Workers end with this
+// process; each has only the thread that forked it, so a job must touch no
+// state of this process's other threads (a progress bar's), and must not
+// throw. What a job keeps in this process's memory (captured by reference)
+// is its worker's own copy, kept from one job to its worker's next.
 void run_isolated(size_t count, size_t jobs, double timeout_s, const std::function<std::string(size_t)>& job,
                   const std::function<void(size_t, const IsolatedResult&)>& done);
 
