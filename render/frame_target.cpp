@@ -1,6 +1,7 @@
 #include "render/frame_target.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -39,16 +40,22 @@ void FrameTarget::bind(int width, int height) {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_stencil_);
-  require_complete("the frame's framebuffer (RGBA32F, 24-bit depth, 8-bit stencil)");
+  require_complete("the frame's framebuffer (RGBA32F, 24-bit depth, 8-bit stencil)", width, height);
   width_ = width;
   height_ = height;
 }
 
-void FrameTarget::require_complete(const char* what) {
+void FrameTarget::require_complete(const char* what, int width, int height) {
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   if (status == GL_FRAMEBUFFER_COMPLETE) return;
   release();
-  throw std::runtime_error(std::string(what) + " is incomplete (status " + std::to_string(status) + ")");
+  // GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT where the GL could not allocate it:
+  // say how large the frame is, and what makes it smaller.
+  // 16 bytes of colour, 4 of depth and stencil and 4 of the volumes' count a pixel.
+  char size[96];
+  std::snprintf(size, sizeof size, "%dx%d, about %.0f MiB", width, height, double(width) * height * 24.0 / (1 << 20));
+  throw std::runtime_error(std::string(what) + " is incomplete (status " + std::to_string(status) + ") for a frame of " + size +
+                           ", which this GL could not make: make --size or --antialias smaller");
 }
 
 void FrameTarget::bind_count() {
@@ -66,7 +73,7 @@ void FrameTarget::bind_count() {
   glBindFramebuffer(GL_FRAMEBUFFER, count_framebuffer_);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, count_, 0);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_stencil_);
-  require_complete("the shadow volumes' count framebuffer (R32F, 24-bit depth, 8-bit stencil)");
+  require_complete("the shadow volumes' count framebuffer (R32F, 24-bit depth, 8-bit stencil)", width_, height_);
 }
 
 void FrameTarget::bind_colour() const { glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_); }

@@ -56,7 +56,7 @@ class FrameTarget {
  private:
   void release();
   // Throws, naming `what`, unless the bound framebuffer is complete.
-  void require_complete(const char* what);
+  void require_complete(const char* what, int width, int height);  // throws, saying the frame's size, unless complete
   int width_ = 0, height_ = 0;
   unsigned framebuffer_ = 0, colour_ = 0, depth_stencil_ = 0;
   unsigned count_framebuffer_ = 0, count_ = 0;

@@ -122,9 +122,9 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
   const glm::dvec3 forward = -back;
   const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 0, 1)));
   const glm::dvec3 up = glm::cross(right, forward);
-  // How far off the axis a point may be, over its depth: across and up. A
-  // frame wider than high has room to spare across; a narrower one less.
-  const double reach_up = std::tan(glm::radians(kFovyDeg / 2)) / kMargin, reach_across = reach_up * std::min(aspect, 1.0);
+  // How far off the axis a point may be, over its depth: up, by the lens,
+  // and across, by the lens and the frame's shape.
+  const double reach_up = std::tan(glm::radians(kFovyDeg / 2)) / kMargin, reach_across = reach_up * aspect;
   // From the middle of the points' box, which no point's repeats move.
   glm::dvec3 box_lo = points[0], box_hi = points[0];
   for (const glm::dvec3& p : points) box_lo = glm::min(box_lo, p), box_hi = glm::max(box_hi, p);
@@ -167,8 +167,13 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
     return parse_scene_file(path, progress, maps);
   }
   const std::string file_name = std::filesystem::path(path).filename().string();
-  if (file_name.find('"') != std::string::npos)
-    throw InputError({path}, "a scene cannot name a file whose name holds a double quote: rename it to stage it");
+  // A scene's quoted path holds no double quote and no line break: such a
+  // name is loaded as it is, and written into the scene's text with '?' in
+  // their place and a comment that says so.
+  const bool nameable = file_name.find_first_of("\"\n\r") == std::string::npos;
+  std::string written_name = file_name;
+  for (char& ch : written_name)
+    if (ch == '"' || ch == '\n' || ch == '\r') ch = '?';
   const MeshFormat* format = mesh_format_by_id(detect_mesh_format_of_file(path));
   const std::string axis = !up.empty() ? up : format ? std::string(format->up) : "+y";
   const UpTurn& turn = up_turn(axis);
@@ -176,13 +181,14 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
 
   // The mesh first, loaded once: where the floor, light and camera go
   // depends on its box.
-  const std::string header = "# " + file_name + " on its own, as umbra stages a mesh file: fitted into the\n"
+  const std::string header = "# " + written_name + " on its own, as umbra stages a mesh file: fitted into the\n"
                              "# cube [-1,1]^3 with its " + axis + " axis up" + (up.empty() ? " (--up changes it)" : "") +
                              ", standing on a floor,\n"
                              "# lit from above and to the left, seen from a raised three-quarter view.\n";
   const int mesh_line = 4;
-  std::string mesh_statement = "mesh \"" + file_name + "\" fit";
+  std::string mesh_statement = "mesh \"" + written_name + "\" fit";
   if (turn.degrees != 0) mesh_statement += " rotate " + vec(turn.axis) + " " + num(turn.degrees);
+  if (!nameable) mesh_statement += "  # a scene cannot name this file (a double quote or a line break in its name): rename it";
   MeshStatement statement;
   statement.mesh.path = file_name;
   statement.mesh.fit = true;

@@ -220,6 +220,14 @@ void add_up_option(CommandOptions& options, std::string& up) {
 
 void add_any_texture_path_option(CommandOptions& options, bool& anywhere) { options.flag("--any-texture-path", anywhere); }
 
+void require_drawable_size(int width, int height, int samples) {
+  if (std::max(width, height) * samples <= kLargestImage) return;
+  const std::string size = std::to_string(width) + "x" + std::to_string(height);
+  throw UsageError("--size " + size + " at " + std::to_string(samples) + " x " + std::to_string(samples) + " samples (--antialias " +
+                   std::to_string(samples) + ") is a frame of " + std::to_string(width * samples) + "x" + std::to_string(height * samples) +
+                   ", more than the " + std::to_string(kLargestImage) + " along a side umbra draws: make --size or --antialias smaller");
+}
+
 bool same_file(const std::string& a, const std::string& b) {
   std::error_code ec;
   return a == b || std::filesystem::equivalent(a, b, ec);

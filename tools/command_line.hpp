@@ -85,7 +85,10 @@ RenderMethod parse_method(const std::string& option, const std::string& text);
 void parse_size(const std::string& option, const std::string& text, int largest, int& width, int& height);
 
 // The options that several commands take, each defined once.
-constexpr int kLargestImage = 16384;
+constexpr int kLargestImage = 16384;  // along a side of the frame drawn, supersampled: llvmpipe's and most GPUs' limit
+// A UsageError when `samples` x `samples` supersampling makes a frame of
+// `width` x `height` larger than kLargestImage along a side.
+void require_drawable_size(int width, int height, int samples);
 void add_help_option(CommandOptions& options, bool& help);                            // -h, --help
 void add_size_option(CommandOptions& options, int& width, int& height);               // --size WxH
 void add_light_angle_option(CommandOptions& options, double& degrees);                // --light-angle DEG

@@ -199,6 +199,9 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     if (o.mask) require_other_than_input("--mask", *o.mask, o.scene_path);
   }
   if (o.mask && same_file(*o.mask, o.output)) throw UsageError("--mask and -o name the same file");
+  // A folder's files may differ in their default; each is checked as drawn.
+  if (!o.batch) require_drawable_size(o.settings.width, o.settings.height, o.antialias.value_or(default_supersampling(o.scene_path)));
+  else if (o.antialias) require_drawable_size(o.settings.width, o.settings.height, *o.antialias);
   if (!o.up.empty() && !o.batch && !is_mesh_file(o.scene_path))
     throw UsageError("--up stands a mesh file on its own; \"" + o.scene_path + "\" is not one");
   const RenderMethod m = o.settings.method;
