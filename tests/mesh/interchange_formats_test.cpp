@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "mesh/io/mesh_format.hpp"
 #include "mesh/check/mesh_check.hpp"
 #include "mesh/input_error.hpp"
 #include "mesh/io/mesh_file.hpp"
@@ -188,9 +189,9 @@ TEST(InterchangeFormats, FoundByContentWhateverTheName) {
 // (Prose, UTF-16 and images: mesh_file_test.cpp.)
 TEST(InterchangeFormats, FilesThatAreNoMeshSayWhatTheyAre) {
   EXPECT_EQ(test::read_error_of(std::string("v 0 0 0\n\x01\x02\x03 binary\n", 20), "odd.obj"),
-            "odd.obj: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): binary data");
+            "odd.obj: not a mesh file (" + mesh_format_names() + "): binary data");
   EXPECT_EQ(test::read_error_of(test::stored_zip({{"readme.txt", "hello"}}), "archive.3mf"),
-            "archive.3mf: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): a zip archive without a 3D model part");
+            "archive.3mf: not a mesh file (" + mesh_format_names() + "): a zip archive without a 3D model part");
 }
 
 // glTF 1.0 is refused by name, as GLB (header version 1) and as JSON (its

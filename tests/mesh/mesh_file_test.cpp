@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "mesh/io/mesh_format.hpp"
 #include "mesh/input_error.hpp"
 #include "mesh/io/mapped_file.hpp"
 #include "mesh/io/mesh_file.hpp"
@@ -251,7 +252,7 @@ TEST(MeshFile, BadFilesGetTheirExactLocatedError) {
   EXPECT_EQ(test::read_error_of("ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
                                 "element face 1\nproperty list uchar int vertex_indices\nend_header\n7.5 0 1 2\n", "d.ply"),
             "d.ply:10:1: expected an integer for the list's length, got \"7.5\"");
-  EXPECT_EQ(test::read_error_of("", "e.dae"), "e.dae: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): the file is empty");
+  EXPECT_EQ(test::read_error_of("", "e.dae"), "e.dae: not a mesh file (" + mesh_format_names() + "): the file is empty");
 }
 
 TEST(MeshFormat, ContentDecidesTheFormatWhateverTheName) {
@@ -285,7 +286,7 @@ TEST(MeshFormat, ABinaryFileWithAPlausibleCountIsNoStl) {
   const uint32_t count = 26;  // 84 + 26 * 50 = 1384: 16 bytes to spare
   std::memcpy(&blob[80], &count, 4);
   EXPECT_EQ(detect_mesh_format(blob), "");
-  EXPECT_EQ(test::read_error_of(blob, "scene.3ds"), "scene.3ds: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): binary data");
+  EXPECT_EQ(test::read_error_of(blob, "scene.3ds"), "scene.3ds: not a mesh file (" + mesh_format_names() + "): binary data");
   // The same count over real STL records is still an STL with trailing bytes.
   const std::string stl = binary_stl({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}, {{{0, 0, 0}, {0, 1, 0}, {0, 0, 1}}}});
   EXPECT_EQ(detect_mesh_format(stl + std::string(16, '\x7f')), "stl");
@@ -301,12 +302,12 @@ TEST(MeshFormat, ABinaryFileWithAPlausibleCountIsNoStl) {
 
 TEST(MeshFormat, FilesThatAreNoMeshSayWhatTheyAre) {
   EXPECT_EQ(test::read_error_of("# umbra\nThis is a README.\n", "README.obj"),
-            "README.obj: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): text starting with \"#\"");
-  EXPECT_EQ(test::read_error_of("Just words\n", "notes"), "notes: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): text starting with \"Just\"");
-  EXPECT_EQ(test::read_error_of(std::string("\xff\xfev\0 \0", 6), "u16.obj"), "u16.obj: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): UTF-16 text");
+            "README.obj: not a mesh file (" + mesh_format_names() + "): text starting with \"#\"");
+  EXPECT_EQ(test::read_error_of("Just words\n", "notes"), "notes: not a mesh file (" + mesh_format_names() + "): text starting with \"Just\"");
+  EXPECT_EQ(test::read_error_of(std::string("\xff\xfev\0 \0", 6), "u16.obj"), "u16.obj: not a mesh file (" + mesh_format_names() + "): UTF-16 text");
   EXPECT_EQ(test::read_error_of(std::string("\xff\xd8\xff\xe0\0\x10JFIF", 10), "photo.obj"),
-            "photo.obj: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): a JPEG image");
-  EXPECT_EQ(test::read_error_of("", "empty.obj"), "empty.obj: not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): the file is empty");
+            "photo.obj: not a mesh file (" + mesh_format_names() + "): a JPEG image");
+  EXPECT_EQ(test::read_error_of("", "empty.obj"), "empty.obj: not a mesh file (" + mesh_format_names() + "): the file is empty");
 }
 
 TEST(MeshFile, MissingFileAndFolderAreReportedByName) {

@@ -128,7 +128,7 @@ TEST_F(RealFiles, BrokenFilesGetTheirMessage) {
   EXPECT_EQ(error("glTF2/draco/2CylinderEngine.gltf"),
             ": its meshes are Draco-compressed (KHR_draco_mesh_compression), which umbra does not read (tinygltf: accessor[0] "
             "invalid bufferView)");
-  EXPECT_EQ(error("OBJ/box_UTF16BE.obj"), ": not a mesh file (OBJ, OFF, PLY, STL, glTF or 3MF): UTF-16 text");
+  EXPECT_EQ(error("OBJ/box_UTF16BE.obj"), ": not a mesh file (" + mesh_format_names() + "): UTF-16 text");
 }
 
 }  // namespace

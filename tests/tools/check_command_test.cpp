@@ -4,6 +4,7 @@
 
 #include <sstream>
 
+#include "mesh/io/mesh_format.hpp"
 #include "mesh/io/mesh_file.hpp"
 #include "tests/mesh/mesh_builders.hpp"
 #include "tests/tools/command_fixture.hpp"
@@ -198,7 +199,7 @@ TEST_F(CheckCommand, RepairRefusesToOverwriteItsInputOrTakeTwoMeshes) {
     const CommandResult unwritable = run("check " + input + " --repair " + path(name));
     EXPECT_EQ(unwritable.status, 2) << name;
     EXPECT_EQ(unwritable.out, "") << name;
-    EXPECT_EQ(unwritable.err, "umbra check: --repair needs an output ending in .obj, .off, .ply or .stl, got \"" + path(name) +
+    EXPECT_EQ(unwritable.err, "umbra check: --repair needs an output ending in " + mesh_format_extensions(true) + ", got \"" + path(name) +
                                   "\"\n(see umbra check --help)\n");
     EXPECT_FALSE(fs::exists(path(name))) << name;
   }

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "mesh/io/mesh_format.hpp"
 #include "scene/scene_parser.hpp"
 #include "image/image.hpp"
 #include "reference/ray_cast.hpp"
@@ -82,7 +83,7 @@ TEST_F(RenderCommand, UpPicksTheAxisAMeshStandsOn) {
 }
 
 TEST_F(RenderCommand, AFileThatIsPlainlyNeitherASceneNorAMeshExitsWithTwo) {
-  const std::string formats = "(OBJ, OFF, PLY, STL, glTF or 3MF)";
+  const std::string formats = "(" + mesh_format_names() + ")";
   const std::string jpeg = write("photo.jpg", std::string("\xff\xd8\xff\xe0\0\x10JFIF\0", 11));
   CommandResult r = run("render " + jpeg + " -o " + path("a.png"));
   EXPECT_EQ(r.status, 2);
