@@ -127,7 +127,7 @@ void read_material_library(const std::string& path, int line, PolygonSoup& soup,
         const std::string map = map_path(scanner.rest_of_line(), std::filesystem::path(path).parent_path());
         std::string error;
         current->texture = maps->texture(map, error);
-        if (!current->texture)
+        if (!current->texture && !error.empty())
           soup.warn(line, "material \"" + current->name + "\"'s texture map \"" + map + "\": " + error +
                               ": its faces take the material's Kd colour");
       } else if (!noted_maps && (keyword.substr(0, 4) == "map_" || keyword == "bump" || keyword == "disp" || keyword == "decal")) {

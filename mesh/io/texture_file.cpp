@@ -134,7 +134,7 @@ std::shared_ptr<const TextureImage> ModelFiles::texture(const std::string& path,
     if (d.error.empty() && read_regular_file(path, kMostTextureFileBytes, bytes, d.error))
       d.image = decode_texture(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path, d.error);
   }
-  error = d.error;
+  error = first_time ? d.error : "";
   return d.image;
 }
 

@@ -49,7 +49,8 @@ class ModelFiles {
   // regular file (a FIFO)". Reads nothing.
   std::string refusal(const std::string& path) const;
 
-  // The texture map at `path`, decoded once; null, with `error` saying why.
+  // The texture map at `path`, decoded once; null, with `error` saying why
+  // the first time `path` is asked for and "" after (said once is enough).
   std::shared_ptr<const TextureImage> texture(const std::string& path, std::string& error);
 
  private:

@@ -195,8 +195,9 @@ TEST_F(UntrustedMaps, AMapOutsideTheNamedFolderIsRefusedUnlessAnyPathIsAllowed) 
   std::filesystem::create_directories(folder_ / "pack" / "textures");
   write_png_map("pack/textures/wood.png");
   write_png_map("secret.png");
+  write_png_map("other secret.png");
   write("pack/models/m.mtl", "newmtl painted\nmap_Kd ../textures/wood.png\nnewmtl leak\nmap_Kd ../../secret.png\n"
-                             "newmtl absolute\nmap_Kd " + (folder_ / "secret.png").string() + "\n");
+                             "newmtl absolute\nmap_Kd " + (folder_ / "other secret.png").string() + "\n");
   const std::string obj = write("pack/models/t.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl painted\nf 1/1 2/1 3/1\n");
   const std::string pack = canonical(folder_ / "pack").string();
   const std::string outside = "lies outside " + pack + ", the folder umbra reads this model's files from (--any-texture-path reads it)";
@@ -209,7 +210,7 @@ TEST_F(UntrustedMaps, AMapOutsideTheNamedFolderIsRefusedUnlessAnyPathIsAllowed) 
   EXPECT_TRUE(soup.materials[0].texture);
   EXPECT_EQ(soup.warnings[0].message, "material \"leak\"'s texture map \"" + (folder_ / "secret.png").string() + "\": " + outside +
                                           ": its faces take the material's Kd colour");
-  EXPECT_EQ(soup.warnings[1].message, "material \"absolute\"'s texture map \"" + (folder_ / "secret.png").string() + "\": " +
+  EXPECT_EQ(soup.warnings[1].message, "material \"absolute\"'s texture map \"" + (folder_ / "other secret.png").string() + "\": " +
                                           outside + ": its faces take the material's Kd colour");
   // The mesh named on its own: its own folder.
   EXPECT_FALSE(read_polygon_soup(obj).materials[0].texture);
@@ -224,7 +225,7 @@ TEST_F(UntrustedMaps, AMapOutsideTheNamedFolderIsRefusedUnlessAnyPathIsAllowed) 
   EXPECT_FALSE(read_polygon_soup(obj, maps).materials[0].texture);
 }
 
-TEST_F(UntrustedMaps, OneFileNamedByManyMaterialsIsDecodedOnce) {
+TEST_F(UntrustedMaps, OneFileNamedByManyMaterialsIsDecodedOnceAndSaidOnce) {
   write_png_map("shared.png");
   std::string library, faces = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\n";
   for (int m = 0; m < 200; ++m)
@@ -234,6 +235,14 @@ TEST_F(UntrustedMaps, OneFileNamedByManyMaterialsIsDecodedOnce) {
   ASSERT_EQ(soup.materials.size(), 200u);
   for (const SoupMaterial& m : soup.materials) EXPECT_EQ(m.texture.get(), soup.materials[0].texture.get());
   ASSERT_TRUE(soup.materials[0].texture);
+  // A map that cannot be read, named by every material: said once.
+  std::string zero_library;
+  for (int m = 0; m < 200; ++m) zero_library += "newmtl m" + std::to_string(m) + "\nmap_Kd fifo.png\n";
+  write("m.mtl", zero_library);
+  ASSERT_EQ(::mkfifo((folder_ / "fifo.png").c_str(), 0600), 0);
+  const PolygonSoup fifo = read_polygon_soup(write("t.obj", faces));
+  ASSERT_EQ(fifo.warnings.size(), 1u);
+  EXPECT_EQ(fifo.warnings[0].message.find("material \"m0\"'s texture map"), 0u) << fifo.warnings[0].message;
 }
 
 TEST_F(UntrustedMaps, AnImageLargerThanTheBudgetIsRefusedFromItsHeader) {
