@@ -199,16 +199,22 @@ int run_batch_render(const BatchRenderOptions& o) {
   // costs only its own picture. Each worker keeps its GL context (its own
   // copy of `context`) from one file to the next.
   std::optional<HeadlessContext> context;
-  run_isolated(
-      to_draw.size(), o.jobs, o.timeout_s,
-      [&](size_t k) {
-        const size_t i = to_draw[k];
-        return render_job(files[i], roots[i], records[i].picture, o, context);
-      },
-      [&](size_t k, const IsolatedResult& result) {
-        read_job_result(result, o.timeout_s, records[to_draw[k]]);
-        end(to_draw[k]);
-      });
+  try {
+    run_isolated(
+        to_draw.size(), o.jobs, o.timeout_s,
+        [&](size_t k) {
+          const size_t i = to_draw[k];
+          return render_job(files[i], roots[i], records[i].picture, o, context);
+        },
+        [&](size_t k, const IsolatedResult& result) {
+          read_job_result(result, o.timeout_s, records[to_draw[k]]);
+          end(to_draw[k]);
+        });
+  } catch (const std::exception& e) {  // no process or pipe to be had: what was drawn stays
+    progress.clear();
+    std::cerr << "umbra render: " << e.what() << "\n";
+    return 1;
+  }
   progress.clear();
 
   size_t drawn = 0, skipped = 0, timed_out = 0, failed = 0;

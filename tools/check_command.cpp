@@ -248,13 +248,19 @@ int run_check_command(const std::vector<std::string>& argv) {
   if (options.timeout_s > 0.0) {
     // Each mesh in a process of its own: one that hangs, crashes or runs out
     // of memory costs only its own report.
-    run_isolated(
-        count, options.jobs, options.timeout_s, [&](size_t i) { return check_job(meshes[i], options); },
-        [&](size_t i, const IsolatedResult& result) {
-          outcomes[i] = read_check_job(meshes[i], result, options);
-          ++finished;
-          print_ready();
-        });
+    try {
+      run_isolated(
+          count, options.jobs, options.timeout_s, [&](size_t i) { return check_job(meshes[i], options); },
+          [&](size_t i, const IsolatedResult& result) {
+            outcomes[i] = read_check_job(meshes[i], result, options);
+            ++finished;
+            print_ready();
+          });
+    } catch (const std::exception& e) {  // no process or pipe to be had: what was reported stays
+      progress.clear();
+      std::cerr << "umbra check: " << e.what() << "\n";
+      return 2;
+    }
   } else {
     // --jobs bounds the threads of the whole process: this one and TBB's
     // workers, which check meshes and run the searches inside them alike.
