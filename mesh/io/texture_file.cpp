@@ -113,14 +113,15 @@ ModelFiles::ModelFiles(const TextureMaps& maps, const std::string& model_path) :
 }
 
 std::string ModelFiles::refusal(const std::string& path) const {
-  struct stat st {};
-  if (::stat(path.c_str(), &st) != 0) return errno == ENOENT ? "does not exist" : std::string("cannot be read: ") + std::strerror(errno);
   std::error_code ec;
   // Links resolved: a link inside the folder to a file outside it reads
-  // the file outside.
+  // the file outside. Said before whether it exists, which outside the
+  // folder is none of the model's business.
   const std::filesystem::path real = std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec);
   if (!anywhere_ && !lies_in(real, root_))
     return "lies outside " + root_.string() + ", the folder umbra reads this model's files from (--any-texture-path reads it)";
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return errno == ENOENT ? "does not exist" : std::string("cannot be read: ") + std::strerror(errno);
   if (!S_ISREG(st.st_mode)) return not_regular(st.st_mode);
   return "";
 }
