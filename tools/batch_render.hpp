@@ -40,7 +40,7 @@ int default_supersampling(const std::string& path);
 // folder it was found in (or its file name), so that a.obj and a.stl do not
 // meet; where two files would still share a NAME (a/x.off and b/x.off), each
 // NAME takes as many of its folders' names as tell them apart, all decided
-// before anything is drawn. Each file is drawn in a process of its own
+// before anything is drawn. Files are drawn in worker processes
 // (isolated_runs.hpp): one that fails, hangs past `timeout_s`, crashes or
 // runs out of memory is reported on stderr (and in its JSON line) and the
 // rest go on. With `sheet`, also a contact sheet of this run's pictures in

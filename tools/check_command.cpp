@@ -66,7 +66,7 @@ options:
                     what changed and what is still wrong. Never writes MESH.
   --time-limit SEC  stop the search for self-intersections after SEC seconds
                     per mesh and report that it stopped (default 60; 0 skips)
-  --timeout SEC     check each mesh in a process of its own and stop it after
+  --timeout SEC     check the meshes in worker processes and stop one after
                     SEC seconds: a mesh that hangs, crashes or runs out of
                     memory is reported as unreadable (exit status 2), and
                     the rest go on
@@ -86,7 +86,7 @@ struct CheckCommandOptions {
   std::optional<Shard> shard;
   std::optional<std::string> repair_output;
   CheckOptions check;
-  double timeout_s = 0.0;  // >0: each mesh in a process of its own, stopped after this long
+  double timeout_s = 0.0;  // >0: meshes checked in worker processes, each stopped after this long
   bool help = false;
 };
 
@@ -153,7 +153,7 @@ CheckOutcome check_one(const std::string& path, const CheckCommandOptions& optio
   }
 }
 
-// check_one in a process of its own (--timeout): its outcome as the status,
+// check_one in a worker process (--timeout): its outcome as the status,
 // the length of its output, the output and its messages.
 std::string check_job(const std::string& path, const CheckCommandOptions& options) {
   const size_t cores = std::max(1u, std::thread::hardware_concurrency());
@@ -246,7 +246,7 @@ int run_check_command(const std::vector<std::string>& argv) {
     if (printed < count) progress.update(finished, meshes[printed]);
   };
   if (options.timeout_s > 0.0) {
-    // Each mesh in a process of its own: one that hangs, crashes or runs out
+    // In worker processes: a mesh that hangs, crashes or runs out
     // of memory costs only its own report.
     try {
       run_isolated(

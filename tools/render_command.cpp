@@ -45,8 +45,9 @@ Several files, or a folder (searched for mesh files by their content, as
 umbra check searches it), render to one picture each in OUTDIR: a file found
 in a folder to OUTDIR/its path in that folder.png, a file named on its own
 to OUTDIR/its name.png; files that would share a name take as many of their
-folders' names as tell them apart. Each file is drawn in a process of its
-own: a file that fails is reported and the rest go on. A model's texture
+folders' names as tell them apart. Files are drawn in worker processes: a
+file that fails, crashes or runs out of memory is reported and the rest go
+on. A model's texture
 maps are read only from inside the folder named (see --any-texture-path).
 
 options:
@@ -83,9 +84,8 @@ options:
                         pictures, each shrunk to at most 200 pixels wide and
                         labelled with its file's name
   --timeout SECONDS     with several files: stop a file's render after this
-                        long, report it as timed out and go on (each file is
-                        drawn in a process of its own, so a crash or running
-                        out of memory costs only that file too)
+                        long (its worker is stopped and replaced), report it
+                        as timed out and go on
   --skip-existing       with several files: draw only the files whose picture
                         is missing or older than the file, so that a run
                         stopped part way resumes where it stopped

@@ -153,7 +153,7 @@ TEST_F(BatchCheck, AProgressBarShowsOnATerminalOnlyOnceTheCheckHasRunForASecond)
   EXPECT_EQ(piped.err.find('['), std::string::npos);
 }
 
-// --timeout: each mesh in a process of its own. In the test build that hangs
+// --timeout: the meshes in worker processes. In the test build that hangs
 // or crashes on purpose (fault_injection.hpp), the mesh that hangs is
 // stopped and the one that crashes reported; every other report is as
 // without --timeout, in order, and every mesh has its line.

@@ -1,5 +1,5 @@
 // Folder renders over corpora of downloaded models, some broken or hostile:
-// each file in a process of its own, a time limit per file, a record of
+// files drawn in worker processes, a time limit per file, a record of
 // every file, a run that resumes, and nothing overwritten or lost.
 #include <gtest/gtest.h>
 
