@@ -2,13 +2,15 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
+#include <filesystem>
+#include <optional>
 #include <map>
 #include <set>
 #include <sstream>
 
 #include <glm/geometric.hpp>
 
+#include "mesh/io/mapped_file.hpp"
 #include "mesh/predicates/orientation.hpp"
 #include "mesh/word_list.hpp"
 #include "scene/scene_text.hpp"
@@ -318,12 +320,20 @@ Scene parse_scene_text(const std::string& text, const std::string& name, const M
 }
 
 Scene parse_scene_file(const std::string& path, const MeshLoadProgress& progress, const TextureMaps& maps) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({path}, "cannot open the scene file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError({path}, "cannot read the scene file");
-  return parse_scene_text(text.str(), path, progress, maps);
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError({path}, "is a folder, not a scene file");
+  // Mapped, as a regular file only: a FIFO named as a scene never blocks.
+  std::optional<MappedFile> file;
+  try {
+    file.emplace(path);
+  } catch (const InputError& e) {
+    std::string why = e.message();
+    if (why.rfind("cannot open: ", 0) == 0) why.erase(0, 13);
+    throw InputError({path}, "cannot open the scene file: " + why);
+  }
+  const std::string text(file->bytes());
+  if (file->cut_short()) throw InputError({path}, "the scene file was cut short while it was read: read it again once it is written");
+  return parse_scene_text(text, path, progress, maps);
 }
 
 }  // namespace umbra

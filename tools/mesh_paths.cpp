@@ -1,9 +1,12 @@
 #include "tools/mesh_paths.hpp"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <set>
 
+#include "mesh/io/mapped_file.hpp"
 #include "mesh/io/mesh_format.hpp"
 #include "tools/command_line.hpp"
 
@@ -40,7 +43,13 @@ void meshes_in_folder(const std::string& folder, MeshPaths& out) {
       }
       continue;
     }
-    if (!it->is_regular_file(type_ec)) continue;
+    if (!it->is_regular_file(type_ec)) {
+      // A FIFO or a device with a mesh's name: never opened, but said.
+      struct stat st {};
+      if (!mesh_format_of(path).empty() && ::stat(path.c_str(), &st) == 0)
+        passed_over.emplace_back(path, non_regular_kind(st.st_mode) + ", not a mesh file");
+      continue;
+    }
     if (!detect_mesh_format_of_file(path).empty()) {
       found.push_back(path);
     } else if (!mesh_format_of(path).empty()) {

@@ -77,14 +77,20 @@ int guard(const char* data, size_t size) {
 
 }  // namespace
 
+std::string non_regular_kind(unsigned mode) {
+  return S_ISDIR(mode) ? "a folder" : S_ISFIFO(mode) ? "a FIFO" : S_ISCHR(mode) ? "a character device"
+         : S_ISBLK(mode) ? "a block device" : S_ISSOCK(mode) ? "a socket" : "not a plain file";
+}
+
 MappedFile::MappedFile(const std::string& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  // Without O_NONBLOCK, opening a FIFO waits for a writer that may never come.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) throw InputError({path, 0, 0}, std::string("cannot open: ") + std::strerror(errno));
   struct stat info {};
   if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
     const bool folder = S_ISDIR(info.st_mode);
     ::close(fd);
-    throw InputError({path, 0, 0}, folder ? "is a folder, not a mesh file" : "is not a regular file");
+    throw InputError({path, 0, 0}, folder ? "is a folder, not a mesh file" : "is not a regular file (" + non_regular_kind(info.st_mode) + ")");
   }
   size_ = size_t(info.st_size);
   if (size_ > 0) {

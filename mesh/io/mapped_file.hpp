@@ -13,9 +13,15 @@
 
 namespace umbra {
 
+// What a file that is not a regular file is, as `st_mode` says: "a folder",
+// "a FIFO", "a character device", ... Only regular files are read: a FIFO or
+// a device could be endless, or never answer.
+std::string non_regular_kind(unsigned mode);
+
 class MappedFile {
  public:
-  // Throws InputError naming `path` when it cannot be opened or mapped.
+  // Throws InputError naming `path` when it cannot be opened or mapped, or
+  // is not a regular file (opened without waiting: a FIFO never blocks it).
   explicit MappedFile(const std::string& path);
   ~MappedFile();
   MappedFile(const MappedFile&) = delete;

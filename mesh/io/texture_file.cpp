@@ -1,5 +1,7 @@
 #include "mesh/io/texture_file.hpp"
 
+#include "mesh/io/mapped_file.hpp"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -25,11 +27,8 @@ std::string decoding_failure(std::string_view bytes) {
   return "cannot decode the image (" + said + ")";
 }
 
-// What a file that is not a regular file is, for a message.
 std::string not_regular(mode_t mode) {
-  const char* what = S_ISDIR(mode) ? "a folder" : S_ISFIFO(mode) ? "a FIFO" : S_ISCHR(mode) ? "a character device"
-                     : S_ISBLK(mode) ? "a block device" : S_ISSOCK(mode) ? "a socket" : "not a plain file";
-  return std::string("is not a regular file (") + what + "), which umbra does not read as an image";
+  return "is not a regular file (" + non_regular_kind(mode) + "), which umbra does not read as an image";
 }
 
 std::string size_in_mib(size_t bytes) { return std::to_string((bytes + (size_t(1) << 20) - 1) >> 20) + " MiB"; }

@@ -330,7 +330,7 @@ TEST(SceneParserErrors, MissingFile) {
     parse_scene_file("/nonexistent/x.scene");
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "/nonexistent/x.scene: cannot open the scene file");
+    EXPECT_STREQ(e.what(), "/nonexistent/x.scene: cannot open the scene file: No such file or directory");
   }
 }
 

@@ -3,6 +3,8 @@
 // reports as before on CGAL's data meshes.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -209,6 +211,25 @@ TEST_F(BatchCheck, LinksAreFollowedOnceAndDanglingOnesAreSaid) {
                        fs::canonical(path("meshes")).string() + ", searched once already\n"),
             std::string::npos)
       << r.err;
+}
+
+// A FIFO named as a mesh or a scene is never opened for reading (it would
+// wait for a writer for ever): named on its own it is an error at once, in
+// a folder it is passed over and said.
+TEST_F(BatchCheck, AFifoIsNeverWaitedFor) {
+  fs::create_directories(path("meshes"));
+  write("meshes/tet.obj", obj_text(test::tetrahedron()));
+  ASSERT_EQ(::mkfifo(path("meshes/pipe.obj").c_str(), 0600), 0);
+  CommandResult r = run("check " + path("meshes/pipe.obj"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, path("meshes/pipe.obj") + ": is not a regular file (a FIFO)\n");
+  r = run("check " + path("meshes"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("umbra check: passed over " + path("meshes/pipe.obj") + ": a FIFO, not a mesh file\n"), std::string::npos)
+      << r.err;
+  r = run("render " + path("meshes/pipe.obj") + " -o " + path("p.png"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, path("meshes/pipe.obj") + ": cannot open the scene file: is not a regular file (a FIFO)\n");
 }
 
 TEST_F(BatchCheck, AFolderWithNoMeshExitsTwoAndSaysSo) {
