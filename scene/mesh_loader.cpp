@@ -61,18 +61,17 @@ std::vector<glm::dvec3> placed_points(const Mesh& m, const FileLoc& path_at, con
     fit_centre = lo / 2.0 + hi / 2.0;  // halves first: lo + hi may overflow where each does not
     fit_scale = 2.0 / longest;
   }
-  double farthest = 0.0;  // the largest coordinate, whose last bits the subtraction of the centre keeps
-  for (const glm::dvec3& p : analysis.positions) farthest = std::max({farthest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-  const double scale = std::abs(m.scale) * fit_scale;
-  const double eps = std::numeric_limits<double>::epsilon();
-  // The point and the centre each to half an ulp of `farthest`, scaled;
-  // then the rotation and the translation, a few ulps of the result.
-  rounding = 8.0 * eps * (2.0 * farthest * scale + glm::length(m.translation) + 1.0);
   const glm::dmat3 rotation(glm::rotate(glm::dmat4(1.0), glm::radians(m.rotation_deg), glm::normalize(m.rotation_axis)));
   std::vector<glm::dvec3> points;
   points.reserve(analysis.positions.size());
-  for (const glm::dvec3& p : analysis.positions)
+  double farthest = 0.0;  // the largest coordinate, whose last bits the subtraction of the centre keeps
+  for (const glm::dvec3& p : analysis.positions) {
     points.push_back(rotation * (m.scale * fit_scale * (p - fit_centre)) + m.translation);
+    farthest = std::max({farthest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  }
+  // The point and the centre each to half an ulp of `farthest`, scaled;
+  // then the rotation and the translation, a few ulps of the result.
+  rounding = 8.0 * std::numeric_limits<double>::epsilon() * (2.0 * farthest * std::abs(m.scale) * fit_scale + glm::length(m.translation) + 1.0);
   return points;
 }
 

@@ -8,10 +8,8 @@
 #include <iostream>
 #include <optional>
 #include <sstream>
-#include <thread>
 
 #include <nlohmann/json.hpp>
-#include <tbb/global_control.h>
 
 #include "image/contact_sheet.hpp"
 #include "image/image.hpp"
@@ -105,9 +103,6 @@ void render_one(const std::string& path, const std::string& root, const std::str
 // status, the triangles, the error (one line) and the messages.
 std::string render_job(const std::string& path, const std::string& root, const std::string& out, const BatchRenderOptions& o,
                        std::optional<HeadlessContext>& context) {
-  // The jobs share the cores: each takes its part for its own threads.
-  const size_t cores = std::max(1u, std::thread::hardware_concurrency());
-  const tbb::global_control threads(tbb::global_control::max_allowed_parallelism, std::max<size_t>(1, cores / o.jobs));
   Record record;
   render_one(path, root, out, o, context, record);
   std::string error = record.error;
@@ -217,13 +212,13 @@ int run_batch_render(const BatchRenderOptions& o) {
   }
   progress.clear();
 
-  size_t drawn = 0, skipped = 0, timed_out = 0, failed = 0;
+  size_t drawn = 0, skipped = 0, timed_out = 0;
   for (const Record& r : records) {
     drawn += r.status == kDrawn;
     skipped += r.status == kSkipped;
     timed_out += r.status == kTimedOut;
   }
-  failed = count - drawn - skipped;
+  const size_t failed = count - drawn - skipped;
   bool sheet_failed = false;
   if (o.sheet) {
     // This run's pictures (drawn, or up to date), read back in file order:

@@ -156,8 +156,6 @@ CheckOutcome check_one(const std::string& path, const CheckCommandOptions& optio
 // check_one in a worker process (--timeout): its outcome as the status,
 // the length of its output, the output and its messages.
 std::string check_job(const std::string& path, const CheckCommandOptions& options) {
-  const size_t cores = std::max(1u, std::thread::hardware_concurrency());
-  const tbb::global_control threads(tbb::global_control::max_allowed_parallelism, std::max<size_t>(1, cores / options.jobs));
   const CheckOutcome o = check_one(path, options);
   return std::to_string(o.status) + "\n" + std::to_string(o.out.size()) + "\n" + o.out + o.err;
 }

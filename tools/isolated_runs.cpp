@@ -17,7 +17,10 @@
 #include <iostream>
 #include <optional>
 #include <stdexcept>
+#include <thread>
 #include <vector>
+
+#include <tbb/global_control.h>
 
 namespace umbra {
 namespace {
@@ -63,10 +66,13 @@ bool read_all(int fd, void* bytes, size_t size) {
 }
 
 // The worker's life: jobs until the index pipe closes, then an end without
-// this process's exit handlers (its GL libraries, its streams).
-[[noreturn]] void work(int indices, int results, pid_t parent, const std::function<std::string(size_t)>& job) {
+// this process's exit handlers (its GL libraries, its streams). The `jobs`
+// workers share the cores: each takes its part for its own threads.
+[[noreturn]] void work(int indices, int results, pid_t parent, size_t jobs, const std::function<std::string(size_t)>& job) {
   ::prctl(PR_SET_PDEATHSIG, SIGTERM);  // the parent gone, nobody reads the results
   if (::getppid() != parent) ::_exit(1);
+  const size_t cores = std::max(1u, std::thread::hardware_concurrency());
+  const tbb::global_control threads(tbb::global_control::max_allowed_parallelism, std::max<size_t>(1, cores / jobs));
   for (uint64_t index = 0; read_all(indices, &index, sizeof index);) {
     const std::string output = job(size_t(index));
     const uint64_t size = output.size();
@@ -76,7 +82,7 @@ bool read_all(int fd, void* bytes, size_t size) {
   ::_exit(0);
 }
 
-Worker start_worker(const std::vector<Worker>& others, const std::function<std::string(size_t)>& job) {
+Worker start_worker(const std::vector<Worker>& others, size_t jobs, const std::function<std::string(size_t)>& job) {
   int indices[2], results[2];
   if (::pipe(indices) != 0) throw std::runtime_error(std::string("cannot make a pipe: ") + std::strerror(errno));
   if (::pipe(results) != 0) {
@@ -97,7 +103,7 @@ Worker start_worker(const std::vector<Worker>& others, const std::function<std::
       for (const int fd : {w.to_worker, w.from_worker})
         if (fd >= 0) ::close(fd);
     ::close(indices[1]), ::close(results[0]);
-    work(indices[0], results[1], parent, job);
+    work(indices[0], results[1], parent, jobs, job);
   }
   ::close(indices[0]), ::close(results[1]);
   Worker w;
@@ -192,7 +198,7 @@ void run_isolated(size_t count, size_t jobs, double timeout_s, const std::functi
     }
     workers.erase(std::remove_if(workers.begin(), workers.end(), [](const Worker& w) { return w.pid < 0; }), workers.end());
     if (next < count && workers.size() < std::min(std::max<size_t>(jobs, 1), count - finished)) {
-      workers.push_back(start_worker(workers, job));
+      workers.push_back(start_worker(workers, std::max<size_t>(jobs, 1), job));
       continue;
     }
     // Wait for results, an end, or the first time limit.

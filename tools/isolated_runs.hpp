@@ -33,8 +33,9 @@ std::string unfinished_phrase(const IsolatedResult& result, double timeout_s);
 // Runs `job(i)` for each i in [0, count) in forked worker processes, at
 // most `jobs` at a time, each job stopped (its worker killed) after
 // `timeout_s` seconds (0: no limit). `done(i, result)` is called here, in
-// this process, as each ends, in the order they end. Workers end with this
-// process; each has only the thread that forked it, so a job must touch no
+// this process, as each ends, in the order they end. Each worker lets TBB
+// use its share of the cores (cores / jobs, at least one). Workers end with
+// this process; each has only the thread that forked it, so a job must touch no
 // state of this process's other threads (a progress bar's), and must not
 // throw. What a job keeps in this process's memory (captured by reference)
 // is its worker's own copy, kept from one job to its worker's next.

@@ -1,16 +1,15 @@
 #include "mesh/io/texture_file.hpp"
 
-#include "mesh/io/mapped_file.hpp"
-
-#include <fcntl.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <cerrno>
 #include <climits>
 #include <cstring>
 
 #include <stb_image.h>  // Debian's libstb: its implementation is in libstb.so
+
+#include "mesh/input_error.hpp"
+#include "mesh/io/mapped_file.hpp"
 
 namespace umbra {
 namespace {
@@ -77,31 +76,23 @@ std::shared_ptr<TextureImage> decode_texture(std::string_view bytes, const std::
 }
 
 bool read_regular_file(const std::string& path, size_t most, std::vector<unsigned char>& bytes, std::string& error) {
-  // Without O_NONBLOCK, opening a FIFO waits for a writer that may never come.
-  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0) {
-    error = std::string("cannot be opened: ") + std::strerror(errno);
+  try {
+    const MappedFile file(path);  // a regular file only, opened without waiting
+    const std::string_view mapped = file.bytes();
+    if (mapped.size() > most) {
+      error = "is " + size_in_mib(mapped.size()) + ", more than the " + size_in_mib(most) + " umbra reads of such a file";
+      return false;
+    }
+    bytes.assign(mapped.begin(), mapped.end());
+    if (file.cut_short()) {
+      error = "was cut short while it was read";
+      return false;
+    }
+    return true;
+  } catch (const InputError& e) {
+    error = e.message();
     return false;
   }
-  struct stat st {};
-  bool ok = ::fstat(fd, &st) == 0;
-  if (!ok) error = std::string("cannot be read: ") + std::strerror(errno);
-  else if (!S_ISREG(st.st_mode)) ok = false, error = not_regular(st.st_mode);
-  else if (size_t(st.st_size) > most)
-    ok = false, error = "is " + size_in_mib(size_t(st.st_size)) + ", more than the " + size_in_mib(most) + " umbra reads of such a file";
-  if (ok) {
-    bytes.resize(size_t(st.st_size));
-    size_t done = 0;
-    while (done < bytes.size()) {
-      const ssize_t n = ::read(fd, bytes.data() + done, bytes.size() - done);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) break;  // cut short while read: what there is
-      done += size_t(n);
-    }
-    bytes.resize(done);
-  }
-  ::close(fd);
-  return ok;
 }
 
 ModelFiles::ModelFiles(const TextureMaps& maps, const std::string& model_path) : anywhere_(maps.anywhere) {

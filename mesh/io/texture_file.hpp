@@ -33,8 +33,8 @@ constexpr size_t kMostTextureFileBytes = size_t(1) << 28;
 std::shared_ptr<TextureImage> decode_texture(std::string_view bytes, const std::string& name, std::string& error);
 
 // Reads the file at `path` whole into `bytes` when it is a regular file (not
-// a device, a FIFO or a folder, which could be endless or never answer) of
-// at most `most` bytes; else false, with `error` saying why.
+// a device, a FIFO or a folder, which could be endless or never answer: see
+// MappedFile) of at most `most` bytes; else false, with `error` saying why.
 bool read_regular_file(const std::string& path, size_t most, std::vector<unsigned char>& bytes, std::string& error);
 
 // The files one model may read beside it, under `maps`: each decoded once,
