@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "mesh/predicates/orientation.hpp"
 #include "scene/camera_transform.hpp"
 #include "reference/ray_primitives.hpp"
 
@@ -51,7 +52,8 @@ std::optional<RayHit> nearest_hit(const Scene& scene, const glm::dvec3& origin, 
     const Triangle& tri = scene.triangles[j];
     const auto t = hit_triangle(tri.a, tri.b, tri.c, origin, direction, t_min);
     if (t && (!best || *t < best->t))
-      best = RayHit{*t, origin + *t * direction, glm::normalize(glm::cross(tri.b - tri.a, tri.c - tri.a)), id};
+      best = RayHit{*t, origin + *t * direction, glm::normalize(glm::cross(tri.b - tri.a, tri.c - tri.a)), id,
+                    {&tri.a, &tri.b, &tri.c}};
   }
   int first_id = sphere_count + int(scene.triangles.size());
   for (const Mesh& mesh : scene.meshes) {
@@ -66,7 +68,8 @@ std::optional<RayHit> nearest_hit(const Scene& scene, const glm::dvec3& origin, 
       const glm::dvec3& b = mesh.positions[mesh.triangles[j][1]];
       const glm::dvec3& c = mesh.positions[mesh.triangles[j][2]];
       const auto t = hit_triangle(a, b, c, origin, direction, t_min);
-      if (t && (!best || *t < best->t)) best = RayHit{*t, origin + *t * direction, glm::normalize(glm::cross(b - a, c - a)), id};
+      if (t && (!best || *t < best->t))
+        best = RayHit{*t, origin + *t * direction, glm::normalize(glm::cross(b - a, c - a)), id, {&a, &b, &c}};
     }
   }
   return best;
@@ -84,14 +87,22 @@ bool shadow_ray_blocked(const Scene& scene, const glm::dvec3& point, int self, c
   return hit && hit->t < distance;
 }
 
+bool seen_side_faces_light(const RayHit& hit, const glm::dvec3& eye, const glm::dvec3& light) {
+  if (const auto& [a, b, c] = hit.corners; a) {
+    const int light_side = orientation(*a, *b, *c, light);
+    return light_side != 0 && light_side == orientation(*a, *b, *c, eye);
+  }
+  glm::dvec3 n = hit.normal;
+  if (glm::dot(n, eye - hit.point) < 0.0) n = -n;  // the side facing the camera
+  return glm::dot(n, light - hit.point) > 0.0;
+}
+
 uint8_t reference_mask_value(const Scene& scene, int width, int height, double px, double py, size_t light) {
   const glm::dvec3 eye = scene.camera.eye;
   const auto hit = nearest_hit(scene, eye, pixel_ray_direction(scene.camera, width, height, px, py));
   if (!hit) return kMaskNoSurface;
-  glm::dvec3 n = hit->normal;
-  if (glm::dot(n, eye - hit->point) < 0.0) n = -n;  // the side facing the camera
   const glm::dvec3 l = scene.lights[light].position;
-  if (glm::dot(n, l - hit->point) <= 0.0) return kMaskUnlit;
+  if (!seen_side_faces_light(*hit, eye, l)) return kMaskUnlit;
   return shadow_ray_blocked(scene, hit->point, hit->object, l) ? kMaskUnlit : kMaskLit;
 }
 

@@ -3,6 +3,7 @@
 // against true spheres, triangles and the triangles of meshes. It answers, per pixel, what the shadow
 // mask must be; tests compare the GL renderer's mask with it.
 
+#include <array>
 #include <optional>
 
 #include <glm/vec3.hpp>
@@ -17,7 +18,17 @@ struct RayHit {
   glm::dvec3 point{0.0};
   glm::dvec3 normal{0.0};  // unit; the outward normal for spheres, either side for triangles
   int object = -1;         // spheres first, then triangles, then each mesh's triangles, in file order
+  // A triangle's corners, in its file's order (which sets its normal's
+  // side); null for a sphere.
+  std::array<const glm::dvec3*, 3> corners{nullptr, nullptr, nullptr};
 };
+
+// True when the side of the hit surface that the eye sees faces the light.
+// For a triangle this is decided once for the whole triangle, by the exact
+// orientation predicate: the eye and the light strictly on one side of its
+// plane. A light in the plane lights neither side, however the hit point
+// rounds. For a sphere, by the outward normal at the hit.
+bool seen_side_faces_light(const RayHit& hit, const glm::dvec3& eye, const glm::dvec3& light);
 
 // The nearest hit with t > t_min, skipping object `skip` (-1: none).
 std::optional<RayHit> nearest_hit(const Scene& scene, const glm::dvec3& origin, const glm::dvec3& direction,

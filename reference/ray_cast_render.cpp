@@ -76,10 +76,12 @@ glm::dvec3 shade(const Scene& scene, const RayCaster& caster, const glm::dvec3& 
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& light = scene.lights[i];
     const glm::dvec3 l = glm::normalize(light.position - hit.point);
-    const double n_dot_l = glm::dot(n, l);
-    const bool lit = n_dot_l > 0.0 && !caster.shadow_ray_blocked(hit.point, hit.object, light.position);
+    const bool lit = seen_side_faces_light(hit, eye, light.position) &&
+                     !caster.shadow_ray_blocked(hit.point, hit.object, light.position);
     if (masks) (*masks)[i].at(x, y) = lit ? kMaskLit : kMaskUnlit;
     if (!lit) continue;
+    // A face lit at a grazing angle may round to n . l just below 0: none.
+    const double n_dot_l = std::max(glm::dot(n, l), 0.0);
     const glm::dvec3 v = glm::normalize(eye - hit.point);
     const glm::dvec3 r = 2.0 * n_dot_l * n - l;  // reflect(-l, n)
     const double s = m.shininess > 0.0 ? std::pow(std::max(glm::dot(r, v), 0.0), m.shininess) : 1.0;

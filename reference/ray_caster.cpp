@@ -182,7 +182,7 @@ std::optional<RayHit> RayCaster::nearest_hit(const glm::dvec3& origin, const glm
   const glm::dvec3 normal =
       prim.sphere ? (p - prim.sphere->center) / prim.sphere->radius
                   : glm::normalize(glm::cross(*prim.corners[1] - *prim.corners[0], *prim.corners[2] - *prim.corners[0]));
-  return RayHit{q.t, p, normal, q.object};
+  return RayHit{q.t, p, normal, q.object, {prim.corners[0], prim.corners[1], prim.corners[2]}};
 }
 
 bool RayCaster::shadow_ray_blocked(const glm::dvec3& point, int self, const glm::dvec3& light) const {

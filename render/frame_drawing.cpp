@@ -122,6 +122,7 @@ void FrameDrawing::draw_surfaces(int pass, size_t light, shaders::ShadowTest tes
     p->set("shadow_map_texel", 2.0f / float(plan_.settings.shadow_map_size));
   }
   triangle_program_->use();
+  surfaces_->use_light(light, l.position);
   for (const SurfaceBuffers::TriangleGroup& group : surfaces_->triangle_groups()) {
     set_material(*triangle_program_, group.material);
     const unsigned texture = surfaces_->material_texture(group.material);

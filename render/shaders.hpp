@@ -20,9 +20,11 @@ enum ShadowTest { kNoShadowTest = 0, kShadowMapTest = 1, kVolumeCountTest = 2 };
 // the cube shadow map, the volumes' count. Unit 0 is the one left active.
 enum TextureUnit { kMaterialTextureUnit = 0, kShadowMapUnit = 1, kVolumeCountUnit = 2 };
 
-// Phong shading shared by triangles and spheres; `n` is the unit normal on the
-// side facing the camera, so a triangle's visible side is lit only when the
-// light is on the camera's side of its plane.
+// Phong shading shared by triangles and spheres; `n` is a unit normal, turned
+// here to the side facing the camera. `faces_light` says whether that side
+// faces the light: for a triangle, from the exact side of the light that its
+// vertices carry (kTriangleVertex), never from n . l, whose rounding varies
+// across a face in the light's plane and would speckle it.
 inline constexpr const char* kShading = R"(
 uniform int pass;
 uniform vec3 eye;
@@ -63,7 +65,15 @@ bool in_shadow(vec3 p, float n_dot_l) {
   return false;
 }
 
-void shade(vec3 p, vec3 n) {
+// Whether the side of a sphere's point `p` with normal `n` that the camera
+// sees faces the light (its terminator is a curve, which no rounding moves
+// by more than a pixel's part).
+bool seen_side_faces_light(vec3 p, vec3 n) {
+  if (dot(n, eye - p) < 0.0) n = -n;
+  return dot(n, light_position - p) > 0.0;
+}
+
+void shade(vec3 p, vec3 n, bool faces_light) {
   if (pass == 4) {
     frag_color = vec4(length(p - light_position));
     return;
@@ -76,11 +86,11 @@ void shade(vec3 p, vec3 n) {
   }
   if (dot(n, eye - p) < 0.0) n = -n;
   vec3 l = normalize(light_position - p);
-  float n_dot_l = dot(n, l);
+  float n_dot_l = max(dot(n, l), 0.0);  // may round below 0 where the face meets the light at a grazing angle
   if (pass == 0) {
     frag_color = vec4(ambient_sum * material_ambient * surface_color, 1.0);
   } else if (pass == 1) {
-    if (n_dot_l <= 0.0) discard;
+    if (!faces_light) discard;
     if (in_shadow(p, n_dot_l)) discard;
     vec3 colour = material_diffuse * surface_color * n_dot_l;
     if (specular_used) {
@@ -91,7 +101,7 @@ void shade(vec3 p, vec3 n) {
     }
     frag_color = vec4(light_color * colour, 1.0);
   } else {
-    if (n_dot_l <= 0.0) discard;
+    if (!faces_light) discard;
     if (in_shadow(p, n_dot_l)) discard;
     frag_color = vec4(1.0);
   }
@@ -103,15 +113,20 @@ layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec3 color;  // white (a constant attribute) when no mesh has vertex colours
 layout(location = 3) in vec2 uv;     // texture coordinates, v down the image; (0, 0) when none
+// The light's side of the triangle's plane, exactly (SurfaceBuffers::use_light):
+// +1 where `normal` points, -1 the other side, 0 in the plane.
+layout(location = 4) in int light_side;
 uniform mat4 view_projection;
 out vec3 world_position;
 out vec3 world_normal;
 out vec3 vertex_color;
 out vec2 texture_uv;
+flat out int triangle_light_side;
 invariant gl_Position;
 void main() {
   world_position = position;
   world_normal = normal;
+  triangle_light_side = light_side;
   vertex_color = color;
   texture_uv = uv;
   gl_Position = view_projection * vec4(position, 1.0);
@@ -134,6 +149,7 @@ in vec3 world_position;
 in vec3 world_normal;
 in vec3 vertex_color;
 in vec2 texture_uv;
+flat in int triangle_light_side;
 uniform bool material_textured;
 uniform sampler2D material_texture;
 uniform ivec2 material_wrap;  // TextureWrap, along u and along v
@@ -167,7 +183,10 @@ vec3 bilinear(vec2 uv) {
 void main() {
   surface_color = vertex_color;
   if (material_textured) surface_color *= bilinear(texture_uv);
-  shade(world_position, normalize(world_normal));
+  // The camera's side of the plane, by the interpolated point: it can round
+  // only where the plane nearly holds the eye, and the face is seen edge-on.
+  int eye_side = dot(world_normal, eye - world_position) < 0.0 ? -1 : 1;
+  shade(world_position, normalize(world_normal), triangle_light_side != 0 && triangle_light_side == eye_side);
 }
 )";
 
@@ -212,7 +231,8 @@ void main() {
   vec3 p = eye + t * d;
   vec4 clip = view_projection * vec4(p, 1.0);
   gl_FragDepth = 0.5 * (clip.z / clip.w) + 0.5;
-  shade(p, (p - sphere_center) / sphere_radius);
+  vec3 n = (p - sphere_center) / sphere_radius;
+  shade(p, n, seen_side_faces_light(p, n));
 }
 )";
 

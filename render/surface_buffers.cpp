@@ -12,6 +12,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "mesh/predicates/orientation.hpp"
 #include "render/gl.hpp"
 
 namespace umbra {
@@ -53,16 +54,13 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
   // Sorted as runs (a scene triangle, a whole mesh, or a mesh's triangles of
   // one material) rather than triangle by triangle: a million-triangle mesh
   // is one run, copied once.
-  struct Run {
-    int material;
-    const Mesh* closed_mesh;  // the closed mesh it is, if any
-    const Triangle* triangle;  // a scene triangle, or
-    const Mesh* mesh;          // a mesh's triangles: all, or
-    const std::vector<uint32_t>* subset;  // those of one material, when the file gives its faces materials
-  };
-  std::vector<Run> runs;
-  std::vector<std::map<int, std::vector<uint32_t>>> by_material(scene.meshes.size());
-  size_t triangle_count = scene.triangles.size();
+  // (A mesh's subset lists its triangles of one material, when the file
+  // gives its faces materials.)
+  std::vector<Run>& runs = runs_;
+  std::vector<std::map<int, std::vector<uint32_t>>>& by_material = mesh_subsets_;
+  by_material.resize(scene.meshes.size());
+  size_t& triangle_count = triangle_count_;
+  triangle_count = scene.triangles.size();
   for (const Triangle& t : scene.triangles) runs.push_back({t.material, nullptr, &t, nullptr, nullptr});
   for (size_t k = 0; k < scene.meshes.size(); ++k) {
     const Mesh& mesh = scene.meshes[k];
@@ -110,7 +108,8 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
   const bool textured = std::any_of(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return !m.triangle_uvs.empty(); });
   std::vector<float> uvs(textured ? triangle_count * 6 : 0, 0.0f);
   size_t placed = 0;  // triangles laid out so far
-  for (const Run& run : runs) {
+  for (Run& run : runs) {
+    run.first = placed;
     const bool closed = run.closed_mesh != nullptr;
     if (groups_.empty() || groups_.back().material != run.material || groups_.back().closed != closed) {
       groups_.push_back({run.material, closed, glm::dvec3(0.0), glm::dvec3(0.0), int(3 * placed), 0});
@@ -172,6 +171,7 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
 SurfaceBuffers::~SurfaceBuffers() {
   const GLuint buffers[] = {triangle_vbo_, box_vbo_, box_ibo_, color_vbo_, uv_vbo_};
   glDeleteBuffers(5, buffers);
+  for (const LightSides& sides : light_sides_) glDeleteBuffers(1, &sides.vbo);
   const GLuint arrays[] = {triangle_vao_, box_vao_};
   glDeleteVertexArrays(2, arrays);
   glDeleteTextures(GLsizei(textures_.size()), textures_.data());
@@ -207,6 +207,41 @@ void SurfaceBuffers::upload_textures(const Scene& scene) {
     textures_[m] = uploaded[image] = texture;
   }
   glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+void SurfaceBuffers::use_light(size_t light, const glm::dvec3& position) {
+  if (triangle_count_ == 0) return;
+  if (light_sides_.size() <= light) light_sides_.resize(light + 1);
+  LightSides& sides = light_sides_[light];
+  glBindVertexArray(triangle_vao_);
+  if (sides.vbo == 0 || sides.position != position) {
+    std::vector<int8_t> side(3 * triangle_count_);
+    for (const Run& run : runs_) {
+      if (run.triangle) {
+        const Triangle& t = *run.triangle;
+        std::fill_n(side.data() + 3 * run.first, 3, int8_t(orientation(t.a, t.b, t.c, position)));
+        continue;
+      }
+      const std::vector<glm::dvec3>& p = run.mesh->positions;
+      const size_t count = run.subset ? run.subset->size() : run.mesh->triangles.size();
+      tbb::this_task_arena::isolate([&] {
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 16384), [&](const tbb::blocked_range<size_t>& r) {
+          for (size_t i = r.begin(); i < r.end(); ++i) {
+            const auto& t = run.mesh->triangles[run.subset ? (*run.subset)[i] : i];
+            std::fill_n(side.data() + 3 * (run.first + i), 3, int8_t(orientation(p[t[0]], p[t[1]], p[t[2]], position)));
+          }
+        });
+      });
+    }
+    if (sides.vbo == 0) glGenBuffers(1, &sides.vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, sides.vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(side.size()), side.data(), GL_DYNAMIC_DRAW);
+    sides.position = position;
+  }
+  glBindBuffer(GL_ARRAY_BUFFER, sides.vbo);
+  glVertexAttribIPointer(4, 1, GL_BYTE, 0, nullptr);
+  glEnableVertexAttribArray(4);
+  glBindVertexArray(0);
 }
 
 unsigned SurfaceBuffers::material_texture(int material) const {

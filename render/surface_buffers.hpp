@@ -4,6 +4,7 @@
 // volumes: those of spheres and triangles re-uploaded each frame as the light
 // moves, those of meshes with static vertices and per-frame indices.
 
+#include <map>
 #include <vector>
 
 #include "render/draw_pacing.hpp"
@@ -38,11 +39,36 @@ class SurfaceBuffers {
   // They are sent through `pacing`.
   void draw_triangle_group(const TriangleGroup& group, const glm::dvec3& viewpoint, DrawPacing& pacing) const;
   void draw_sphere_box() const;
+  // Light `light`, at `position`, for the triangles drawn next: each
+  // triangle's exact side of it (the orientation predicate), for the shader
+  // to light a face only from the side the light is on. Worked out once per
+  // position of each light, on every core.
+  void use_light(size_t light, const glm::dvec3& position);
   // Material `material`'s texture map as a GL texture, or 0 when it has none.
   unsigned material_texture(int material) const;
 
  private:
   void upload_textures(const Scene& scene);
+
+  // Where the buffer's triangles come from, in its order: a scene triangle,
+  // or a mesh's triangles (all, or those listed in `subset`).
+  struct Run {
+    int material;
+    const Mesh* closed_mesh;  // the closed mesh it is, if any
+    const Triangle* triangle;
+    const Mesh* mesh;
+    const std::vector<uint32_t>* subset;  // into mesh_subsets_
+    size_t first = 0;  // its first triangle's place in the buffer
+  };
+  std::vector<Run> runs_;
+  std::vector<std::map<int, std::vector<uint32_t>>> mesh_subsets_;  // per mesh, its triangles of each material
+  size_t triangle_count_ = 0;
+  // Per light: the position whose sides `vbo` holds, one byte a vertex.
+  struct LightSides {
+    glm::dvec3 position{0.0};
+    unsigned vbo = 0;
+  };
+  std::vector<LightSides> light_sides_;
 
   std::vector<TriangleGroup> groups_;
   unsigned triangle_vao_ = 0, triangle_vbo_ = 0;

@@ -90,9 +90,32 @@ Scene light_by_triangle_plane(double offset) {
   return parse_scene_text(text.str(), "plane.scene");
 }
 
+// How many of the pixels that see scene object `object` the reference's mask
+// (for light 1) calls lit, at size x size.
+int reference_lit_pixels_of(const Scene& scene, int object, int size) {
+  int lit = 0;
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, size, size, x, y));
+      lit += hit && hit->object == object && reference_mask_value(scene, size, size, x, y, 0) == kMaskLit;
+    }
+  return lit;
+}
+
 TEST(HardTriangle, LightInItsPlaneCastsNothing) {
   const Scene scene = light_by_triangle_plane(0.0);
   EXPECT_EQ(volume_phrase_of(scene, 2), "none: its plane contains the light, so it is seen edge-on");
+  expect_hard_case_holds(scene);
+}
+
+TEST(HardTriangle, LightInItsPlaneLightsNeitherSideOfIt) {
+  // Seen from its side, so that it fills much of the view: every pixel of it
+  // is unlit, in the reference and in the GL (where n . l rounded at each
+  // point speckled both).
+  Scene scene = light_by_triangle_plane(0.0);
+  scene.camera = Camera{glm::dvec3(1.5, -2.0, 1.0), glm::dvec3(0.0, 0.0, -0.4), glm::dvec3(0.0, 0.0, 1.0), 50.0};
+  const int triangle = int(scene.spheres.size()) + 2;  // after the spheres and the floor's two
+  EXPECT_EQ(reference_lit_pixels_of(scene, triangle, 120), 0);
   expect_hard_case_holds(scene);
 }
 
@@ -136,6 +159,20 @@ TEST(HardMesh, LightInTheirFacesPlanes) {
     ASSERT_TRUE(scene.meshes[0].components.all_closed());
     expect_hard_case_holds(scene);
   }
+}
+
+TEST(HardMesh, LightInAPlaneTwoBoxesShare) {
+  // Two boxes whose faces x = 0.6 lie in one plane, the light in it, seen from
+  // the side those faces turn to: each face is unlit throughout, in the
+  // reference's mask and the GL's alike.
+  const std::string boxes = box_obj(glm::dvec3(0.2, -0.8, -1.0), glm::dvec3(0.6, -0.3, -0.4)) +
+                            box_obj(glm::dvec3(0.2, 0.3, -1.0), glm::dvec3(0.6, 0.8, -0.2), 8);
+  Scene scene = mesh_scene("light 0.6 0 1.2\n", "two_boxes.obj", boxes);
+  scene.camera = Camera{glm::dvec3(2.2, 0.3, 1.4), glm::dvec3(0.0, 0.0, -0.6), glm::dvec3(0.0, 0.0, 1.0), 50.0};
+  ASSERT_TRUE(scene.meshes[0].components.all_closed());
+  const int first_box_triangle = 2;  // after the floor's two
+  for (const int face_x_06 : {6, 7, 18, 19}) EXPECT_EQ(reference_lit_pixels_of(scene, first_box_triangle + face_x_06, 120), 0);
+  expect_hard_case_holds(scene);
 }
 
 TEST(HardMesh, NearlyCoplanarNeighbours) {

@@ -5,8 +5,10 @@
 // most a quarter of such pixels, within_boundary_bound), or
 // where the point's shadow ray passes through the sliver between a sphere's
 // true tangent cone and the cone of its inscribed N-gon (docs/geometry.md), the one
-// approximation in the volumes; or where the surface is lit at a grazing angle
-// the shader's float arithmetic cannot resolve (kGrazing).
+// approximation in the volumes; or where the surface is lit at a grazing
+// angle that float and double arithmetic cannot resolve (kGrazing). A
+// triangle whose plane holds the light exactly has no such excuse: both
+// decide its side of the light exactly, and it is unlit.
 
 #include <array>
 #include <cmath>
@@ -17,6 +19,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "mesh/predicates/orientation.hpp"
 #include "scene/scene_checks.hpp"
 #include "scene/camera_transform.hpp"
 #include "render/headless_context.hpp"
@@ -55,13 +58,17 @@ inline bool in_ngon_band(const Sphere& s, const glm::dvec3& light, const glm::dv
   return tan_angle >= inner && tan_angle <= outer;
 }
 
-// The shader interpolates world positions in float (about 1e-7 of the scene's
+// The shader finds a sphere's point in float (about 1e-7 of the scene's
 // size per operation, and a few operations), so it cannot tell the sign of
 // n . l (unit vectors) below about 1e-5: the light then lies in the
-// surface's plane to within its rounding.
+// tangent plane to within its rounding, on the sphere's terminator. A
+// triangle's side is exact in both, but a shadow ray that leaves it at such
+// an angle skims its neighbours, and where it meets them is rounded: in the
+// GL's volumes (float) and in the reference's ray (double) alike.
 constexpr double kGrazing = 1e-5;
 
 inline bool grazing(const RayHit& hit, const glm::dvec3& light) {
+  if (hit.corners[0] && orientation(*hit.corners[0], *hit.corners[1], *hit.corners[2], light) == 0) return false;
   return std::abs(glm::dot(hit.normal, glm::normalize(light - hit.point))) < kGrazing;
 }
 
