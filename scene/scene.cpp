@@ -91,12 +91,13 @@ double nearest_surface_distance(const Scene& scene, const glm::dvec3& point) {
 }
 
 void rotate_lights_about_z(Scene& scene, double degrees) {
+  for (Light& light : scene.lights) light.position = rotated_about_z(light.position, degrees);
+}
+
+glm::dvec3 rotated_about_z(const glm::dvec3& p, double degrees) {
   const double a = degrees * M_PI / 180.0;
   const double c = std::cos(a), s = std::sin(a);
-  for (Light& light : scene.lights) {
-    const glm::dvec3 p = light.position;
-    light.position = {c * p.x - s * p.y, s * p.x + c * p.y, p.z};
-  }
+  return {c * p.x - s * p.y, s * p.x + c * p.y, p.z};
 }
 
 }  // namespace umbra

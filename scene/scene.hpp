@@ -157,5 +157,7 @@ double nearest_surface_distance(const Scene& scene, const glm::dvec3& point);
 
 // The light motion of the viewer and --light-angle: every light rotated about the z axis.
 void rotate_lights_about_z(Scene& scene, double degrees);
+// `p` turned about the z axis by `degrees`, as rotate_lights_about_z turns a light.
+glm::dvec3 rotated_about_z(const glm::dvec3& p, double degrees);
 
 }  // namespace umbra

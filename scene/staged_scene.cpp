@@ -39,14 +39,32 @@ const UpTurn& up_turn(const std::string& up) {
   throw std::invalid_argument("not an up axis: " + up);
 }
 
-// The view: from the front (-y) and to the right (35 degrees round toward
-// +x), 30 degrees above the floor, through a 30-degree lens; the light from
-// the front and to the left, high up, so that the shadow falls to the back
-// and right, beside the model rather than behind it.
-constexpr double kAzimuthDeg = 35.0, kElevationDeg = 30.0, kFovyDeg = 30.0;
+// The unit vector from the model's centre toward azimuth and elevation
+// (StageView's convention).
+glm::dvec3 toward(double azimuth_deg, double elevation_deg) {
+  const double a = glm::radians(azimuth_deg), e = glm::radians(elevation_deg);
+  return {std::sin(a) * std::cos(e), -std::cos(a) * std::cos(e), std::sin(e)};
+}
+
+// The light by default (StageView's defaults for the view): from the front
+// and to the left, high up, so that the shadow falls to the back and right.
 const glm::dvec3 kToLight = glm::normalize(glm::dvec3(-0.55, -0.5, 1.0));
+const double kLightAzimuthDeg = glm::degrees(std::atan2(kToLight.x, -kToLight.y));
+const double kLightElevationDeg = glm::degrees(std::asin(kToLight.z));
 constexpr double kLightDistance = 4.0;  // from the model's centre; the fitted model's longest side is 2
 constexpr double kMargin = 1.2;         // the frame's half-size over the framed points'
+// How far from the model's centre a shadow is framed: a point little below
+// a low light casts its shadow toward the horizon, which no frame holds.
+constexpr double kShadowReach = 8.0;
+
+glm::dvec3 light_position(const glm::dvec3& centre, const StageView& view) {
+  const glm::dvec3 light = view.light.value_or(
+      centre + kLightDistance * (view.light_azimuth_deg || view.light_elevation_deg
+                                     ? toward(view.light_azimuth_deg.value_or(kLightAzimuthDeg),
+                                              view.light_elevation_deg.value_or(kLightElevationDeg))
+                                     : kToLight));
+  return view.light_turn_deg != 0.0 ? rotated_about_z(light, view.light_turn_deg) : light;
+}
 
 // Numbers as the staged text writes them: short, and read back as the same doubles.
 std::string num(double v) {
@@ -104,27 +122,33 @@ std::vector<glm::dvec3> framing_points(const Mesh& mesh, size_t most) {
   return points;
 }
 
-Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<glm::dvec3>& model_points, double aspect) {
+Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<glm::dvec3>& model_points, double aspect,
+                const StageView& view) {
   Stage stage;
   const glm::dvec3 centre = lo / 2.0 + hi / 2.0;
   stage.floor_z = floor_height(lo.z);
-  stage.light = centre + kLightDistance * kToLight;
+  stage.light = light_position(centre, view);
   // What the frame must hold: the model's points and their shadows on the
-  // floor (the light is above the box).
+  // floor, where the light is above the point (else its shadow has no end),
+  // the furthest drawn in to kShadowReach.
   std::vector<glm::dvec3> points;
   for (const glm::dvec3& p : model_points) {
     points.push_back(p);
-    points.push_back(stage.light + (p - stage.light) * ((stage.light.z - stage.floor_z) / (stage.light.z - p.z)));
+    if (!(stage.light.z > p.z)) continue;
+    glm::dvec3 shadow = stage.light + (p - stage.light) * ((stage.light.z - stage.floor_z) / (stage.light.z - p.z));
+    const glm::dvec3 out(shadow.x - centre.x, shadow.y - centre.y, 0.0);
+    if (glm::length(out) > kShadowReach) shadow = glm::dvec3(centre.x, centre.y, stage.floor_z) + out * (kShadowReach / glm::length(out));
+    points.push_back(shadow);
   }
   if (points.empty()) points = {lo, hi};
-  const double azimuth = glm::radians(kAzimuthDeg), elevation = glm::radians(kElevationDeg);
-  const glm::dvec3 back(std::sin(azimuth) * std::cos(elevation), -std::cos(azimuth) * std::cos(elevation), std::sin(elevation));
+  const double fovy_deg = view.fov_deg;
+  const glm::dvec3 back = toward(view.camera_azimuth_deg, view.camera_elevation_deg);
   const glm::dvec3 forward = -back;
   const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 0, 1)));
   const glm::dvec3 up = glm::cross(right, forward);
   // How far off the axis a point may be, over its depth: up, by the lens,
   // and across, by the lens and the frame's shape.
-  const double reach_up = std::tan(glm::radians(kFovyDeg / 2)) / kMargin, reach_across = reach_up * aspect;
+  const double reach_up = std::tan(glm::radians(fovy_deg / 2)) / kMargin, reach_across = reach_up * aspect;
   // From the middle of the points' box, which no point's repeats move.
   glm::dvec3 box_lo = points[0], box_hi = points[0];
   for (const glm::dvec3& p : points) box_lo = glm::min(box_lo, p), box_hi = glm::max(box_hi, p);
@@ -150,10 +174,15 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
     target += shift;
     if (glm::length(shift) < 1e-9 * distance) break;
   }
-  stage.camera = Camera{target + distance * back, target, {0, 0, 1}, kFovyDeg};
+  distance /= view.camera_zoom;
+  // An eye or target given outright replaces the framed one; the other keeps
+  // its place relative to it.
+  const glm::dvec3 aim = view.target.value_or(target);
+  const glm::dvec3 eye = view.eye.value_or(aim + distance * back);
+  stage.camera = Camera{eye, aim, {0, 0, 1}, fovy_deg};
   // Far past every edge of the frame: the floor's horizon is never in view.
   stage.floor_centre = {centre.x, centre.y, stage.floor_z};
-  stage.floor_half_size = 20.0 * distance;
+  stage.floor_half_size = 20.0 * (view.eye ? std::max(distance, glm::length(eye - centre)) : distance);
   return stage;
 }
 
@@ -164,7 +193,9 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
   const std::string& up = staging.up;
   if (!is_mesh_file(path)) {
     if (staged) staged->clear();
-    return parse_scene_file(path, progress, maps);
+    Scene scene = parse_scene_file(path, progress, maps);
+    if (staging.view.light_turn_deg != 0.0) rotate_lights_about_z(scene, staging.view.light_turn_deg);
+    return scene;
   }
   const std::string file_name = std::filesystem::path(path).filename().string();
   // A scene's quoted path holds no double quote and no line break: such a
@@ -183,8 +214,9 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
   // depends on its box.
   const std::string header = "# " + written_name + " on its own, as umbra stages a mesh file: fitted into the\n"
                              "# cube [-1,1]^3 with its " + axis + " axis up" + (up.empty() ? " (--up changes it)" : "") +
-                             ", standing on a floor,\n"
-                             "# lit from above and to the left, seen from a raised three-quarter view.\n";
+                             ", standing on a floor,\n" +
+                             std::string(staging.view == StageView{} ? "# lit from above and to the left, seen from a raised three-quarter view.\n"
+                                                          : "# lit and seen from where the command line's options put the light and camera.\n");
   const int mesh_line = 4;
   std::string mesh_statement = "mesh \"" + written_name + "\" fit";
   if (turn.degrees != 0) mesh_statement += " rotate " + vec(turn.axis) + " " + num(turn.degrees);
@@ -213,7 +245,7 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
   Mesh& mesh = loaded.meshes.at(0);
   if (mesh.triangles.empty()) throw InputError({path}, "has no faces: there is nothing to show");
 
-  const Stage stage = stage_for(mesh.bounds_min, mesh.bounds_max, framing_points(mesh), staging.frame_aspect);
+  const Stage stage = stage_for(mesh.bounds_min, mesh.bounds_max, framing_points(mesh), staging.frame_aspect, staging.view);
   const double s = stage.floor_half_size;
   const glm::dvec3 f = stage.floor_centre;
   const glm::dvec3 corners[4] = {f + glm::dvec3(-s, -s, 0), f + glm::dvec3(s, -s, 0), f + glm::dvec3(s, s, 0), f + glm::dvec3(-s, s, 0)};

@@ -7,6 +7,7 @@
 // stage is written as scene text that the user can save and edit, and that
 // reads back as the same scene.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,35 @@ std::string neither_scene_nor_mesh(const std::string& path);
 // "+x", "-x", "+y", "-y", "+z" or "-z": the axis of the file that points up.
 bool is_up_axis(const std::string& up);
 
+// Where the stage's camera and light go, in the staged scene's coordinates
+// (the model fitted into the cube [-1,1]^3, its up axis turned to +z).
+// Angles are in degrees round the model's centre: azimuth 0 looks at the
+// model's front (from -y), and grows toward its right (+x); elevation 0 is
+// level, 90 straight down from above. The camera keeps the model and its
+// shadow in frame wherever it or the light is, unless `eye` or `target`
+// place it outright.
+struct StageView {
+  double camera_azimuth_deg = 35.0;
+  double camera_elevation_deg = 30.0;
+  double camera_zoom = 1.0;  // over the framing distance: 2 shows the model twice as large
+  double fov_deg = 30.0;     // the lens's vertical field of view
+  std::optional<glm::dvec3> eye, target;
+  // The light: `light` outright, or 4 model half-sizes from its centre in
+  // the direction these give; unset, above and to the left of the front
+  // (azimuth about -47.7, elevation about 53.4), so that the shadow falls
+  // beside the model rather than behind it.
+  std::optional<double> light_azimuth_deg, light_elevation_deg;
+  std::optional<glm::dvec3> light;
+  double light_turn_deg = 0.0;  // then turned about the z axis (--light-angle)
+
+  bool operator==(const StageView& o) const {
+    return camera_azimuth_deg == o.camera_azimuth_deg && camera_elevation_deg == o.camera_elevation_deg &&
+           camera_zoom == o.camera_zoom && fov_deg == o.fov_deg && eye == o.eye && target == o.target &&
+           light_azimuth_deg == o.light_azimuth_deg && light_elevation_deg == o.light_elevation_deg && light == o.light &&
+           light_turn_deg == o.light_turn_deg;
+  }
+};
+
 // The floor, light and camera for a model whose box, fitted and turned so that
 // its up axis is +z, is [lo, hi]; the camera frames `points` (points of the
 // model) and their shadows on the floor, in a picture `aspect` (width over
@@ -43,7 +73,8 @@ struct Stage {
   double floor_half_size = 0.0;
   Camera camera;
 };
-Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<glm::dvec3>& points, double aspect = 1.0);
+Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<glm::dvec3>& points, double aspect = 1.0,
+                const StageView& view = {});
 
 // Points of `mesh` that show its extent to a camera: the corners of up to
 // `most` of its triangles, spread over them, and the corners that reach
@@ -58,9 +89,12 @@ std::string staged_scene_name(const std::string& mesh_path);
 struct StagingOptions {
   std::string up;
   double frame_aspect = 1.0;
+  StageView view;
 };
 
-// parse_scene_file for a scene, or the staged scene for a mesh file.
+// parse_scene_file for a scene, or the staged scene for a mesh file; either
+// way with its lights turned by `staging.view.light_turn_deg` about the z
+// axis (a staged light before the camera frames its shadow).
 // `staged` (when given) receives the staged scene's text, or "" for a scene
 // file. A mesh file with no faces is an InputError: there is nothing to show.
 // `maps` says where texture maps may be read from.

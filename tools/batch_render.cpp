@@ -68,10 +68,8 @@ void render_one(const std::string& path, const std::string& root, const std::str
   try {
     inject_fault(path);
     if (const std::string what = neither_scene_nor_mesh(path); !what.empty()) throw InputError({path}, what);
-    const double aspect = double(o.settings.width) / o.settings.height;
-    Scene scene = parse_scene_or_mesh_file(path, {}, nullptr, {o.up, aspect}, TextureMaps{true, root, o.any_texture_path});
+    Scene scene = parse_scene_or_mesh_file(path, {}, nullptr, staging_for(o.staging, o.settings), TextureMaps{true, root, o.any_texture_path});
     for (const Warning& w : scene.warnings) record.messages += w.where.str() + ": warning: " + w.message + "\n";
-    rotate_lights_about_z(scene, o.light_angle_deg);
     require_lights_off_casters(scene);
     RenderSettings settings = o.settings;
     settings.supersampling = o.antialias.value_or(default_supersampling(path));

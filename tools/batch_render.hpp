@@ -9,6 +9,7 @@
 
 #include "render/headless_context.hpp"
 #include "render/render_plan.hpp"
+#include "scene/staged_scene.hpp"
 #include "tools/mesh_paths.hpp"
 
 namespace umbra {
@@ -17,8 +18,7 @@ struct BatchRenderOptions {
   std::vector<std::string> paths;  // files and folders, as given
   std::string out_dir;
   RenderSettings settings;
-  double light_angle_deg = 0.0;
-  std::string up;  // for mesh files: "" for each format's own
+  StagingOptions staging;  // for mesh files, with each format's own up unless it says; its light turn for scenes too
   HeadlessGl gl = HeadlessGl::kAuto;
   std::optional<int> antialias;  // unset: each file's default_supersampling
   bool show_volumes = false;

@@ -4,8 +4,10 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 
 #include <CLI/CLI.hpp>
+#include <glm/geometric.hpp>
 
 #include "mesh/io/mesh_format.hpp"
 #include "mesh/word_list.hpp"
@@ -211,11 +213,85 @@ void add_map_size_option(CommandOptions& options, int& texels) {
   options.value("--map-size", [&](const std::string& o, const std::string& t) { texels = parse_int_in(o, t, 16, 8192); });
 }
 
-void add_up_option(CommandOptions& options, std::string& up) {
-  options.value("--up", [&](const std::string& o, const std::string& t) {
+namespace {
+
+// "X,Y,Z": three finite numbers.
+glm::dvec3 parse_point(const std::string& option, const std::string& text) {
+  glm::dvec3 p(0.0);
+  size_t at = 0;
+  for (int k = 0; k < 3; ++k) {
+    const size_t comma = k < 2 ? text.find(',', at) : text.size();
+    if (comma == std::string::npos || (k == 2 && text.find(',', at) != std::string::npos))
+      throw UsageError(option + " expects X,Y,Z such as 0,-3,1.5, got \"" + text + "\"");
+    p[k] = parse_finite_number(option, text.substr(at, comma - at));
+    at = comma + 1;
+  }
+  return p;
+}
+
+// A number of degrees above `lowest` (or from it, when `from_lowest`) and up to `highest`.
+double parse_degrees_in(const std::string& option, const std::string& text, double lowest, double highest, bool from_lowest) {
+  const double v = parse_finite_number(option, text);
+  if (v > highest || v < lowest || (!from_lowest && v == lowest)) {
+    std::ostringstream range;
+    range << (from_lowest ? "from " : "above ") << lowest << " to " << highest;
+    throw UsageError(option + " expects degrees " + range.str() + ", got \"" + text + "\"");
+  }
+  return v;
+}
+
+}  // namespace
+
+void add_staging_options(CommandOptions& options, StagingOptions& staging, std::vector<std::string>& given) {
+  StageView& v = staging.view;
+  // Each option's value, checked, then its name noted as given.
+  const auto add = [&](const std::string& name, std::function<void(const std::string&, const std::string&)> take) {
+    options.value(name, [&given, take = std::move(take)](const std::string& o, const std::string& t) {
+      take(o, t);
+      given.push_back(o);
+    });
+  };
+  add("--up", [&](const std::string& o, const std::string& t) {
     if (!is_up_axis(t)) throw UsageError(o + " must be +x, -x, +y, -y, +z or -z, got \"" + t + "\"");
-    up = t;
+    staging.up = t;
   });
+  add("--camera-azimuth", [&](const std::string& o, const std::string& t) { v.camera_azimuth_deg = parse_finite_number(o, t); });
+  // Short of the poles, where the floor's up would be the view's direction.
+  add("--camera-elevation", [&](const std::string& o, const std::string& t) {
+    v.camera_elevation_deg = parse_degrees_in(o, t, -89.9, 89.9, true);
+  });
+  add("--camera-zoom", [&](const std::string& o, const std::string& t) {
+    v.camera_zoom = parse_finite_number(o, t);
+    if (!(v.camera_zoom > 0.0)) throw UsageError(o + " expects a factor above 0, got \"" + t + "\"");
+  });
+  add("--fov", [&](const std::string& o, const std::string& t) { v.fov_deg = parse_degrees_in(o, t, 1.0, 170.0, true); });
+  add("--eye", [&](const std::string& o, const std::string& t) { v.eye = parse_point(o, t); });
+  add("--target", [&](const std::string& o, const std::string& t) { v.target = parse_point(o, t); });
+  add("--light-azimuth", [&](const std::string& o, const std::string& t) { v.light_azimuth_deg = parse_finite_number(o, t); });
+  add("--light-elevation", [&](const std::string& o, const std::string& t) {
+    v.light_elevation_deg = parse_degrees_in(o, t, -90.0, 90.0, true);
+  });
+  add("--light", [&](const std::string& o, const std::string& t) { v.light = parse_point(o, t); });
+}
+
+StagingOptions staging_for(StagingOptions staging, const RenderSettings& settings) {
+  staging.frame_aspect = double(settings.width) / settings.height;
+  return staging;
+}
+
+void require_consistent_staging(const StagingOptions& staging) {
+  const StageView& v = staging.view;
+  if (v.light && (v.light_azimuth_deg || v.light_elevation_deg))
+    throw UsageError("--light places the light outright; --light-azimuth and --light-elevation place it by angles: give one or the other");
+  if (v.eye && v.target && *v.eye == *v.target) throw UsageError("--eye and --target are the same point: the camera would look nowhere");
+  if (v.eye && v.target && glm::length(glm::cross(*v.target - *v.eye, glm::dvec3(0, 0, 1))) == 0.0)
+    throw UsageError("--eye is straight above or below --target: the staged camera keeps +z up, so it cannot look along it");
+}
+
+void require_staged(const std::vector<std::string>& given, const std::string& path) {
+  if (given.empty() || is_mesh_file(path)) return;
+  throw UsageError(given.front() + " is for a mesh file on its own, which umbra stages; \"" + path +
+                   "\" is not one (a scene has its own camera and lights)");
 }
 
 void add_any_texture_path_option(CommandOptions& options, bool& anywhere) { options.flag("--any-texture-path", anywhere); }

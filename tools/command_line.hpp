@@ -14,6 +14,8 @@
 
 #include "render/headless_context.hpp"
 #include "render/render_method.hpp"
+#include "render/render_plan.hpp"
+#include "scene/staged_scene.hpp"
 
 namespace CLI {
 class App;
@@ -100,7 +102,20 @@ void add_gl_option(CommandOptions& options, HeadlessGl& gl);                    
 // The platform --gl chose, where auto takes UMBRA_GL's: checked once, before
 // any work, a UsageError as a bad --gl is.
 HeadlessGl gl_with_environment(HeadlessGl chosen);
-void add_up_option(CommandOptions& options, std::string& up);                         // --up +x|-x|+y|-y|+z|-z
+// How a mesh file on its own is staged: --up AXIS; the camera's
+// --camera-azimuth, --camera-elevation, --camera-zoom, --fov, --eye and
+// --target; the light's --light-azimuth, --light-elevation and --light. The
+// names of those given are added to `given`, for a command to refuse them
+// where nothing is staged.
+void add_staging_options(CommandOptions& options, StagingOptions& staging, std::vector<std::string>& given);
+// `staging` for a picture of `settings`' size: framed for its shape.
+StagingOptions staging_for(StagingOptions staging, const RenderSettings& settings);
+// A UsageError for staging options that contradict each other: --light with
+// --light-azimuth or --light-elevation, --eye at --target.
+void require_consistent_staging(const StagingOptions& staging);
+// A UsageError naming the first of `given` when `path` is not a mesh file
+// (a scene has its own camera and lights).
+void require_staged(const std::vector<std::string>& given, const std::string& path);
 void add_any_texture_path_option(CommandOptions& options, bool& anywhere);            // --any-texture-path
 
 // Whether `a` and `b` name one file: the same words, or one file by two

@@ -126,7 +126,8 @@ struct RenderOptions {
   std::string scene_path;
   std::optional<BatchRenderOptions> batch;  // several files or a folder
   std::string output;
-  std::string up;  // for a mesh file: "" for its format's own
+  StagingOptions staging;  // for a mesh file on its own
+  std::vector<std::string> staging_given;  // the staging options named
   std::optional<std::string> mask;
   RenderSettings settings;
   double light_angle_deg = 0.0;
@@ -154,7 +155,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   options.value("--antialias", [&](const std::string& n, const std::string& t) { o.antialias = parse_int_in(n, t, 1, 4); });
   options.flag("--show-volumes", o.show_volumes);
   options.flag("--explain", o.explain);
-  add_up_option(options, o.up);
+  add_staging_options(options, o.staging, o.staging_given);
   add_any_texture_path_option(options, o.any_texture_path);
   std::optional<size_t> jobs;
   std::optional<Shard> shard;
@@ -175,6 +176,8 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   if (!scenes.empty()) o.scene_path = scenes[0];
   if (o.help) return o;
   o.gl = gl_with_environment(o.gl);
+  require_consistent_staging(o.staging);
+  o.staging.view.light_turn_deg = o.light_angle_deg;
   if (o.scene_path.empty()) throw UsageError("no scene or mesh file given");
   std::error_code ec;
   if (scenes.size() > 1 || std::filesystem::is_directory(o.scene_path, ec)) {
@@ -186,7 +189,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
                        "folder (\"" + o.output + "/\" makes one of that name)");
     if (o.mask) throw UsageError("--mask writes one scene's mask; with several files there is none to choose");
     if (o.explain) throw UsageError("--explain prints one scene's plan; with several files, ask for one of them");
-    o.batch = BatchRenderOptions{scenes, o.output, o.settings, o.light_angle_deg, o.up, o.gl, o.antialias, o.show_volumes,
+    o.batch = BatchRenderOptions{scenes, o.output, o.settings, o.staging, o.gl, o.antialias, o.show_volumes,
                                  jobs.value_or(std::max(1u, std::thread::hardware_concurrency())), shard, sheet,
                                  o.any_texture_path, timeout_s, skip_existing, json};
   } else {
@@ -202,8 +205,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   // A folder's files may differ in their default; each is checked as drawn.
   if (!o.batch) require_drawable_size(o.settings.width, o.settings.height, o.antialias.value_or(default_supersampling(o.scene_path)));
   else if (o.antialias) require_drawable_size(o.settings.width, o.settings.height, *o.antialias);
-  if (!o.up.empty() && !o.batch && !is_mesh_file(o.scene_path))
-    throw UsageError("--up stands a mesh file on its own; \"" + o.scene_path + "\" is not one");
+  if (!o.batch) require_staged(o.staging_given, o.scene_path);
   const RenderMethod m = o.settings.method;
   if (o.show_volumes && !counts_volumes(m))
     throw UsageError(std::string("--show-volumes needs shadow volumes; --method ") + method_name(m) + " has none");
@@ -229,14 +231,13 @@ int run_render_command(const std::vector<std::string>& argv) {
     std::string staged;
     Scene scene = parse_scene_or_mesh_file(options.scene_path, [&](size_t loaded, size_t total, const std::string& path) {
       progress->update(0, "loading mesh " + std::to_string(loaded + 1) + " of " + std::to_string(total) + ": " + path);
-    }, &staged, {options.up, double(options.settings.width) / options.settings.height}, TextureMaps{true, "", options.any_texture_path});
+    }, &staged, staging_for(options.staging, options.settings), TextureMaps{true, "", options.any_texture_path});
     progress->clear();
     if (options.explain && !staged.empty())
       std::cout << "staged scene for " << options.scene_path << " (save it as a .scene file beside the mesh to edit it):\n"
                 << staged << "\n";
     for (const Warning& w : scene.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
     progress->update(1, "planning shadow volumes");
-    rotate_lights_about_z(scene, options.light_angle_deg);
     require_lights_off_casters(scene);
 
     Image image;

@@ -79,7 +79,8 @@ namespace {
 
 struct ViewOptions {
   std::string scene_path;
-  std::string up;  // for a mesh file: "" for its format's own
+  StagingOptions staging;  // for a mesh file on its own
+  std::vector<std::string> staging_given;
   bool any_texture_path = false;
   RenderSettings settings;
   double light_angle_deg = 0.0;
@@ -106,7 +107,7 @@ ViewOptions parse_view_options(const std::vector<std::string>& argv) {
   options.value("--frames", [&](const std::string& n, const std::string& t) { o.frames = parse_int_in(n, t, 1, 1 << 30); });
   options.value("--screenshot", [&](const std::string&, const std::string& t) { o.screenshot = t; });
   options.flag("--overlay-in-screenshot", o.overlay_in_screenshot);
-  add_up_option(options, o.up);
+  add_staging_options(options, o.staging, o.staging_given);
   add_any_texture_path_option(options, o.any_texture_path);
   options.positionals(scenes);
   options.parse(argv);
@@ -115,8 +116,8 @@ ViewOptions parse_view_options(const std::vector<std::string>& argv) {
   if (o.help) return o;
   if (o.scene_path.empty()) throw UsageError("no scene or mesh file given");
   if (o.screenshot && o.frames == 0) throw UsageError("--screenshot needs --frames N");
-  if (!o.up.empty() && !is_mesh_file(o.scene_path))
-    throw UsageError("--up stands a mesh file on its own; \"" + o.scene_path + "\" is not one");
+  require_consistent_staging(o.staging);
+  require_staged(o.staging_given, o.scene_path);
   if (!is_interactive(o.settings.method))
     throw UsageError(std::string("--method ") + method_name(o.settings.method) + " is not interactive; use umbra render --method " +
                      method_name(o.settings.method));
@@ -200,7 +201,7 @@ int run_view_command(const std::vector<std::string>& argv) {
     std::optional<ProgressBar> progress(std::in_place, 2);  // loading, then preparing the shadows
     Scene parsed = parse_scene_or_mesh_file(options.scene_path, [&](size_t loaded, size_t total, const std::string& path) {
       progress->update(0, "loading mesh " + std::to_string(loaded + 1) + " of " + std::to_string(total) + ": " + path);
-    }, nullptr, {options.up, double(options.settings.width) / options.settings.height}, TextureMaps{true, "", options.any_texture_path});
+    }, nullptr, staging_for(options.staging, options.settings), TextureMaps{true, "", options.any_texture_path});
     progress->clear();
     for (const Warning& w : parsed.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
     progress->update(1, "preparing shadow volumes");

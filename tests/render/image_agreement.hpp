@@ -1,8 +1,9 @@
 #pragma once
 // The GL image against the ray-cast reference's image, pixel by pixel, away
-// from the edges of objects: wherever a pixel's footprint sees one object
-// throughout, both must draw the same surface in the same colour (to one
-// level in 255), except where the point's shadow ray passes through the band
+// from the edges of objects and of shadows: wherever a pixel's footprint
+// sees one object throughout, lit by the same lights throughout, both must
+// draw the same surface in the same colour (to one level in 255; the masks'
+// tests hold the shadow edges), except where the point's shadow ray passes through the band
 // between a sphere's true shadow cone and its N-gon's (in_ngon_band). A surface clipped away, culled or hidden behind the wrong
 // face shows here even where the shadow masks agree.
 
@@ -57,7 +58,11 @@ inline int differing_channels_away_from_edges(const Scene& scene, const Rendered
       const int object = object_at(x, y);
       bool straddles = false;
       for (const double dx : {-0.5, 0.5})
-        for (const double dy : {-0.5, 0.5}) straddles = straddles || object_at(x + dx, y + dy) != object;
+        for (const double dy : {-0.5, 0.5}) {
+          straddles = straddles || object_at(x + dx, y + dy) != object;
+          for (size_t light = 0; light < scene.lights.size() && !straddles; ++light)
+            straddles = reference_mask_value(scene, w, h, x + dx, y + dy, light) != reference_mask_value(scene, w, h, x, y, light);
+        }
       if (straddles || in_a_band(x, y)) continue;
       for (int c = 0; c < 3; ++c) differing += std::abs(int(r.gl.at(x, y, c)) - int(r.cpu.at(x, y, c))) > 1;
     }

@@ -19,6 +19,8 @@
 namespace umbra {
 namespace {
 
+const std::string kEngine = "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
+
 // A torus at its native size, far from the origin, as glTF binary.
 std::string write_torus_glb() {
   PolygonSoup torus = test::triangulated(test::quad_torus(24, 12, 40.0, 10.0));
@@ -175,9 +177,8 @@ TEST(StagedMesh, MaskMatchesExactShadowRays) {
 // components, 67 of them open; at its native size of about +-370), as
 // umbra check reports it.
 TEST(StagedMesh, RealEngineModelMaskMatchesExactShadowRays) {
-  const std::string engine = "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
-  if (!std::filesystem::exists(engine)) GTEST_SKIP() << "needs Debian's assimp-testmodels (build.sh installs it)";
-  const Scene scene = parse_scene_or_mesh_file(engine);
+  if (!std::filesystem::exists(kEngine)) GTEST_SKIP() << "needs Debian's assimp-testmodels (build.sh installs it)";
+  const Scene scene = parse_scene_or_mesh_file(kEngine);
   ASSERT_EQ(scene.meshes.size(), 1u);
   EXPECT_EQ(scene.meshes[0].triangles.size(), 110336u);
   EXPECT_EQ(scene.meshes[0].components.components, 96u);
@@ -187,32 +188,107 @@ TEST(StagedMesh, RealEngineModelMaskMatchesExactShadowRays) {
 }
 
 
+// How far across and up the frame (1: its edge) the staged mesh's framing
+// points and their shadows on the floor reach, in a picture `aspect` wide.
+struct FrameReach {
+  double across = 0.0, up = 0.0;
+};
+FrameReach frame_reach(const Scene& scene, double aspect) {
+  const glm::dvec3 light = scene.lights[0].position;
+  const double floor_z = scene.triangles[0].a.z;
+  const glm::dmat4 view_projection = infinite_perspective(scene.camera.fovy_deg, aspect, 0.01) * view_matrix(scene.camera);
+  FrameReach reach;
+  for (const glm::dvec3& p : framing_points(scene.meshes[0])) {
+    EXPECT_GT(light.z, p.z) << "the light should be above the model";
+    const glm::dvec3 shadow = light + (p - light) * ((light.z - floor_z) / (light.z - p.z));
+    for (const glm::dvec3& q : {p, shadow}) {
+      const glm::dvec4 clip = view_projection * glm::dvec4(q, 1.0);
+      reach.across = std::max(reach.across, std::abs(clip.x / clip.w));
+      reach.up = std::max(reach.up, std::abs(clip.y / clip.w));
+    }
+  }
+  return reach;
+}
+
+void expect_framed(const Scene& scene, double aspect) {
+  const FrameReach reach = frame_reach(scene, aspect);
+  EXPECT_LE(reach.across, 1.0);
+  EXPECT_LE(reach.up, 1.0);
+  EXPECT_GT(std::max(reach.across, reach.up), 0.8);  // framed, not lost in the middle
+}
+
 // The frame is filled by its field of view each way: Khronos's engine at
 // 150x600 keeps every framing point and its shadow in the frame (once cut
 // off at both sides), and at 600x150 fills the width it has.
 TEST(StagedMesh, APortraitFrameHoldsTheModelAndItsShadowAcross) {
-  const std::string engine = "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
-  if (!std::filesystem::exists(engine)) GTEST_SKIP() << "needs Debian's assimp-testmodels (build.sh installs it)";
+  if (!std::filesystem::exists(kEngine)) GTEST_SKIP() << "needs Debian's assimp-testmodels (build.sh installs it)";
   for (const double aspect : {150.0 / 600.0, 1.0, 600.0 / 150.0}) {
     SCOPED_TRACE(aspect);
-    const Scene scene = parse_scene_or_mesh_file(engine, {}, nullptr, StagingOptions{"", aspect});
-    const Mesh& mesh = scene.meshes[0];
-    const glm::dvec3 light = scene.lights[0].position;
-    const double floor_z = scene.triangles[0].a.z;
-    const glm::dmat4 view_projection = infinite_perspective(scene.camera.fovy_deg, aspect, 0.01) * view_matrix(scene.camera);
-    double widest = 0.0, highest = 0.0;
-    for (const glm::dvec3& p : framing_points(mesh)) {
-      const glm::dvec3 shadow = light + (p - light) * ((light.z - floor_z) / (light.z - p.z));
-      for (const glm::dvec3& q : {p, shadow}) {
-        const glm::dvec4 clip = view_projection * glm::dvec4(q, 1.0);
-        widest = std::max(widest, std::abs(clip.x / clip.w));
-        highest = std::max(highest, std::abs(clip.y / clip.w));
-      }
-    }
-    EXPECT_LE(widest, 1.0);
-    EXPECT_LE(highest, 1.0);
-    EXPECT_GT(std::max(widest, highest), 0.8);  // framed, not lost in the middle
+    expect_framed(parse_scene_or_mesh_file(kEngine, {}, nullptr, StagingOptions{"", aspect, {}}), aspect);
   }
+}
+
+StagingOptions staged_with(const StageView& view) { return StagingOptions{"", 1.0, view}; }
+
+// Wherever the camera or the light is put, by angles, the frame holds the
+// model and its whole shadow; --light-angle (light_turn_deg) turns the
+// staged light before the camera frames its shadow, which once left it.
+TEST(StagedMesh, TheFrameHoldsTheModelAndItsShadowWhereverTheCameraAndLightAre) {
+  if (!std::filesystem::exists(kEngine)) GTEST_SKIP() << "needs Debian's assimp-testmodels (build.sh installs it)";
+  std::vector<StageView> views(6);
+  views[0].camera_azimuth_deg = 200.0, views[0].camera_elevation_deg = 60.0;
+  views[1].camera_azimuth_deg = -80.0, views[1].camera_elevation_deg = 10.0, views[1].fov_deg = 60.0;
+  views[2].light_azimuth_deg = 90.0, views[2].light_elevation_deg = 25.0;
+  views[3].light_turn_deg = 180.0;
+  views[4].light = glm::dvec3(0.5, 3.0, 1.5);
+  views[5].light_elevation_deg = 80.0, views[5].camera_elevation_deg = -20.0;
+  for (const StageView& view : views) {
+    const Scene scene = parse_scene_or_mesh_file(kEngine, {}, nullptr, staged_with(view));
+    SCOPED_TRACE(scene.lights[0].position.x);
+    expect_framed(scene, 1.0);
+  }
+}
+
+// The angles say where the camera and light are, round the model's centre,
+// in one convention: azimuth 0 from the front (-y), growing toward +x.
+TEST(StagedMesh, CameraAndLightAnglesPlaceThemRoundTheModel) {
+  const std::string cube = test::write_mesh("angles.obj", test::obj_text(test::unit_cube()));
+  StageView view;
+  view.camera_azimuth_deg = 90.0, view.camera_elevation_deg = 0.0;
+  view.light_azimuth_deg = 180.0, view.light_elevation_deg = 90.0;
+  const Scene scene = parse_scene_or_mesh_file(cube, {}, nullptr, staged_with(view));
+  const glm::dvec3 look = glm::normalize(scene.camera.eye - scene.camera.target);
+  EXPECT_NEAR(look.x, 1.0, 1e-12);  // from +x, level
+  EXPECT_NEAR(look.z, 0.0, 1e-12);
+  const glm::dvec3 centre = scene.meshes[0].bounds_min / 2.0 + scene.meshes[0].bounds_max / 2.0;
+  const glm::dvec3 light = scene.lights[0].position;
+  EXPECT_NEAR(light.x, centre.x, 1e-5);  // straight above, 4 half-sizes up (written to 6 digits)
+  EXPECT_NEAR(light.y, centre.y, 1e-5);
+  EXPECT_NEAR(light.z, centre.z + 4.0, 1e-5);
+  // Zoom brings the camera nearer along the same line; --eye and --target
+  // place it outright; --light puts the light there.
+  StageView zoomed = view;
+  zoomed.camera_zoom = 2.0;
+  const Scene near = parse_scene_or_mesh_file(cube, {}, nullptr, staged_with(zoomed));
+  EXPECT_NEAR(glm::length(near.camera.eye - near.camera.target), glm::length(scene.camera.eye - scene.camera.target) / 2, 1e-5);
+  StageView placed;
+  placed.eye = glm::dvec3(3, -4, 2), placed.target = glm::dvec3(0, 0, 0.5), placed.light = glm::dvec3(-2, 1, 3);
+  const Scene there = parse_scene_or_mesh_file(cube, {}, nullptr, staged_with(placed));
+  EXPECT_EQ(there.camera.eye, glm::dvec3(3, -4, 2));
+  EXPECT_EQ(there.camera.target, glm::dvec3(0, 0, 0.5));
+  EXPECT_EQ(there.lights[0].position, glm::dvec3(-2, 1, 3));
+}
+
+// A camera turned round the model sees it where the ray-cast reference does:
+// the GL's image and mask against the reference's, from behind and below the
+// default view, with the light moved too.
+TEST(StagedMesh, ATurnedCameraAndMovedLightDrawWhatTheReferenceSees) {
+  StageView view;
+  view.camera_azimuth_deg = 160.0, view.camera_elevation_deg = 20.0;  // the floor's far edge just out of view
+  view.light_azimuth_deg = 120.0, view.light_elevation_deg = 40.0;
+  const Scene scene = parse_scene_or_mesh_file(write_torus_glb(), {}, nullptr, staged_with(view));
+  test::expect_masks_match_reference(scene, 120, 120, 64);
+  test::expect_images_agree(scene, test::render_gl_and_ray_cast(scene, 120));
 }
 
 }  // namespace

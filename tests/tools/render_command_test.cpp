@@ -79,7 +79,36 @@ TEST_F(RenderCommand, UpPicksTheAxisAMeshStandsOn) {
   EXPECT_NE(r.err.find("--up must be +x, -x, +y, -y, +z or -z, got \"+w\""), std::string::npos) << r.err;
   r = run("render " + std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene -o " + path("a.png") + " --up +z");
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("--up stands a mesh file on its own"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err, "umbra render: --up is for a mesh file on its own, which umbra stages; \"" + std::string(UMBRA_SOURCE_DIR) +
+                       "/scenes/demo.scene\" is not one (a scene has its own camera and lights)\n(see umbra render --help)\n");
+}
+
+// The camera and light options place what umbra stages; each bad value, or
+// two that contradict each other, is a usage error before any work.
+TEST_F(RenderCommand, CameraAndLightOptionsAreCheckedBeforeAnyWork) {
+  const std::string tet = write("t.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  const std::string demo = std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {tet + " --camera-elevation 90", "--camera-elevation expects degrees from -89.9 to 89.9, got \"90\""},
+      {tet + " --camera-zoom 0", "--camera-zoom expects a factor above 0, got \"0\""},
+      {tet + " --fov 180", "--fov expects degrees from 1 to 170, got \"180\""},
+      {tet + " --light-elevation -91", "--light-elevation expects degrees from -90 to 90, got \"-91\""},
+      {tet + " --eye 1,2", "--eye expects X,Y,Z such as 0,-3,1.5, got \"1,2\""},
+      {tet + " --target 1,2,3,4", "--target expects X,Y,Z such as 0,-3,1.5, got \"1,2,3,4\""},
+      {tet + " --light 1,x,3", "--light expects a number, got \"x\""},
+      {tet + " --light 1,2,3 --light-azimuth 10",
+       "--light places the light outright; --light-azimuth and --light-elevation place it by angles: give one or the other"},
+      {tet + " --eye 0,0,3 --target 0,0,0",
+       "--eye is straight above or below --target: the staged camera keeps +z up, so it cannot look along it"},
+      {demo + " --camera-azimuth 10",
+       "--camera-azimuth is for a mesh file on its own, which umbra stages; \"" + demo +
+           "\" is not one (a scene has its own camera and lights)"}};
+  for (const auto& [arguments, message] : cases) {
+    const CommandResult r = run("render " + arguments + " -o " + path("a.png"));
+    EXPECT_EQ(r.status, 2) << arguments;
+    EXPECT_EQ(r.err, "umbra render: " + message + "\n(see umbra render --help)\n") << arguments;
+  }
+  EXPECT_FALSE(fs::exists(path("a.png")));
 }
 
 TEST_F(RenderCommand, AFileThatIsPlainlyNeitherASceneNorAMeshExitsWithTwo) {
