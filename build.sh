@@ -20,7 +20,7 @@ packages=(
   libglfw3-dev libgl1-mesa-dri       # umbra view: a window with an OpenGL context
   libimgui-dev                       # umbra view's overlay (Dear ImGui)
   libstb-dev                         # texture maps (stb_image), the contact sheet's label font (stb_easy_font)
-  libjpeg62-turbo-dev                # bench/texture_decode_benchmark: libjpeg-turbo, against stb_image
+  libjpeg62-turbo-dev                # pictures written as JPEG (libjpeg-turbo); the texture benchmark
   xvfb xauth                         # tests run umbra view in a virtual display
   libcgal-dev libgmp-dev libmpfr-dev # exact predicates, mesh checks and repair
   libopenmesh-dev                    # half-edge meshes for silhouettes

@@ -2,6 +2,7 @@
 
 #include <signal.h>
 #include <stdlib.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -56,6 +57,19 @@ void remove_listed_and_die(int signal_number) {
 }  // namespace
 
 PartialFile::PartialFile(const std::string& path, const std::string& what, Ending ending) : path_(path), what_(what) {
+  // What is there already decides: a FIFO or a character device (-o
+  // /dev/null) is written in place, as renaming over it would replace the
+  // device itself; a folder or a block device takes no file.
+  struct stat there {};
+  if (::stat(path.c_str(), &there) == 0 && !S_ISREG(there.st_mode)) {
+    if (S_ISFIFO(there.st_mode) || S_ISCHR(there.st_mode)) {
+      temporary_ = path;
+      in_place_ = true;
+      return;
+    }
+    throw std::runtime_error(path + ": cannot write " + what + ": it is " +
+                             (S_ISDIR(there.st_mode) ? "a folder" : S_ISBLK(there.st_mode) ? "a block device" : "not a file"));
+  }
   std::vector<char> name(path.begin(), path.end());
   const size_t slash = path.rfind('/'), dot = path.rfind('.');
   const std::string extension =
@@ -73,11 +87,12 @@ PartialFile::PartialFile(const std::string& path, const std::string& what, Endin
 }
 
 PartialFile::~PartialFile() {
-  if (!committed_) std::remove(temporary_.c_str());
+  if (!committed_ && !in_place_) std::remove(temporary_.c_str());
   unlist(slot_);
 }
 
 void PartialFile::commit() {
+  if (in_place_) return;
   if (std::rename(temporary_.c_str(), path_.c_str()) != 0)
     throw std::runtime_error(path_ + ": cannot write " + what_ + ": " + std::strerror(errno));
   committed_ = true;

@@ -13,7 +13,9 @@ namespace umbra {
 class PartialFile {
  public:
   // Creates the temporary file for `path`; throws std::runtime_error, "PATH:
-  // cannot write WHAT: why", when it cannot. The temporary name ends as
+  // cannot write WHAT: why", when it cannot, or when `path` is a folder or a
+  // block device. Where `path` is a FIFO or a character device (/dev/null,
+  // /dev/stdout), it is written in place: the temporary path is `path`. The temporary name ends as
   // `path` does (PATH.XXXXXX.partial.EXT) where a writer tells the format by
   // the extension.
   enum class Ending { kPartial, kKeepExtension };
@@ -31,6 +33,7 @@ class PartialFile {
   std::string path_, what_, temporary_;
   int slot_ = -1;  // in the list the signal handler removes; -1 when the list was full
   bool committed_ = false;
+  bool in_place_ = false;  // a FIFO or device, written as it is
 };
 
 // Makes SIGINT and SIGTERM remove every PartialFile's temporary file before

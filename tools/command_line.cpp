@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <glm/geometric.hpp>
 
+#include "image/picture_file.hpp"
 #include "mesh/io/mesh_format.hpp"
 #include "mesh/word_list.hpp"
 #include "render/headless_context.hpp"
@@ -92,6 +93,7 @@ std::string usage_text(std::string text) {
   replace_all(text, "{bench methods}", wrapped(bench_sweeps(), 0, 0, kWidth));
   replace_all(text, "{interactive methods}", word_list(interactive));
   replace_all(text, "{mesh formats}", mesh_format_names());
+  replace_all(text, "{picture extensions}", picture_extensions());
   replace_all(text, "{mesh extensions}", mesh_format_extensions());
   replace_all(text, "{repair extensions}", mesh_format_extensions(true));
   return text;
@@ -311,6 +313,13 @@ bool same_file(const std::string& a, const std::string& b) {
 
 void require_other_than_input(const std::string& option, const std::string& output, const std::string& input) {
   if (same_file(output, input)) throw UsageError(option + " would overwrite its input \"" + input + "\"; name another file");
+}
+
+void require_picture_name(const std::string& option, const std::string& path) {
+  if (picture_format_of(path)) return;
+  const std::string extension = std::filesystem::path(path).extension().string();
+  throw UsageError(option + " " + path + (extension.empty() ? " has no extension" : ": umbra does not write " + extension + " pictures") +
+                   "; name a " + picture_extensions() + " file, or - for PNG on standard output");
 }
 
 void add_output_option(CommandOptions& options, std::string& path) {

@@ -118,6 +118,10 @@ void require_consistent_staging(const StagingOptions& staging);
 void require_staged(const std::vector<std::string>& given, const std::string& path);
 void add_any_texture_path_option(CommandOptions& options, bool& anywhere);            // --any-texture-path
 
+// A UsageError when `path`, given to `option`, is not a picture's name that
+// umbra writes (picture_file.hpp): .png, .jpg, .jpeg, or - for standard output.
+void require_picture_name(const std::string& option, const std::string& path);
+
 // Whether `a` and `b` name one file: the same words, or one file by two
 // names (links, "./"), when both exist.
 bool same_file(const std::string& a, const std::string& b);

@@ -17,6 +17,7 @@
 #include "tools/batch_render.hpp"
 #include "render/headless_context.hpp"
 #include "image/image.hpp"
+#include "image/picture_file.hpp"
 #include "reference/ray_cast_render.hpp"
 #include "render/render_plan.hpp"
 #include "render/shadow_renderer.hpp"
@@ -52,7 +53,10 @@ maps are read only from inside the folder named (see --any-texture-path).
 
 options:
   -o, --output OUT      the image to write, or with several files the folder
-                        to write their pictures in (required)
+                        to write their pictures in (required): its name's
+                        ending says the format, {picture extensions}; - writes
+                        PNG to standard output
+  --jpeg-quality N      for a .jpg output: 1 to 100 (default 90)
   --size WxH            image size in pixels (default 800x800)
   --light-angle DEG     rotate every light about the z axis by DEG degrees
   --segments N          sides of the N-gon that stands for a sphere's tangent
@@ -129,6 +133,8 @@ struct RenderOptions {
   StagingOptions staging;  // for a mesh file on its own
   std::vector<std::string> staging_given;  // the staging options named
   std::optional<std::string> mask;
+  PictureOptions picture;
+  bool jpeg_quality_given = false;
   RenderSettings settings;
   double light_angle_deg = 0.0;
   HeadlessGl gl = HeadlessGl::kAuto;
@@ -146,6 +152,10 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   add_help_option(options, o.help);
   add_output_option(options, o.output);
   options.value("--mask", [&](const std::string&, const std::string& t) { o.mask = t; });
+  options.value("--jpeg-quality", [&](const std::string& n, const std::string& t) {
+    o.picture.jpeg_quality = parse_int_in(n, t, 1, 100);
+    o.jpeg_quality_given = true;
+  });
   add_size_option(options, o.settings.width, o.settings.height);
   add_light_angle_option(options, o.light_angle_deg);
   add_segments_option(options, o.settings.sphere_segments);
@@ -198,8 +208,18 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     for (const auto& [given, name] : {std::pair{timeout_s > 0.0, "--timeout"}, {skip_existing, "--skip-existing"}, {json, "--json"}})
       if (given) throw UsageError(std::string(name) + " is for several files or a folder; \"" + o.scene_path + "\" is one");
     if (o.output.empty()) throw UsageError("no output image given (-o OUT.png)");
+    require_picture_name("-o", o.output);
+    if (o.jpeg_quality_given && picture_format_of(o.output) != PictureFormat::kJpeg)
+      throw UsageError("--jpeg-quality is for a JPEG picture; -o " + o.output + " is not one");
+    if (o.output == "-" && o.explain)
+      throw UsageError("--explain prints to standard output, where -o - writes the picture: name a file with -o");
     require_other_than_input("-o", o.output, o.scene_path);
-    if (o.mask) require_other_than_input("--mask", *o.mask, o.scene_path);
+    if (o.mask) {
+      // A mask is exact, pixel by pixel: only a lossless PNG keeps it.
+      if (picture_format_of(*o.mask) != PictureFormat::kPng || *o.mask == "-")
+        throw UsageError("--mask writes a PNG file (a mask must stay exact), got \"" + *o.mask + "\"");
+      require_other_than_input("--mask", *o.mask, o.scene_path);
+    }
   }
   if (o.mask && same_file(*o.mask, o.output)) throw UsageError("--mask and -o name the same file");
   // A folder's files may differ in their default; each is checked as drawn.
@@ -275,18 +295,21 @@ int run_render_command(const std::vector<std::string>& argv) {
     }
 
     progress.reset();
-    write_png(image, options.output);
+    write_picture(image, options.output, options.picture);
     if (mask) {
       try {
         write_png(*mask, *options.mask);
       } catch (...) {
-        std::remove(options.output.c_str());  // all outputs or none
+        if (options.output != "-") std::remove(options.output.c_str());  // all outputs or none
         throw;
       }
     }
-    std::cout << "wrote " << options.output << " (" << image.width << "x" << image.height << ")";
-    if (mask) std::cout << " and mask " << *options.mask;
-    std::cout << "\n";
+    // With -o -, standard output holds the picture alone.
+    std::ostream& said = options.output == "-" ? std::cerr : std::cout;
+    said << "wrote " << (options.output == "-" ? "the picture to standard output" : options.output) << " (" << image.width
+         << "x" << image.height << ")";
+    if (mask) said << " and mask " << *options.mask;
+    said << "\n";
     return 0;
   } catch (const std::exception& e) {
     std::cerr << e.what() << "\n";

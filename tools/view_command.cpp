@@ -17,6 +17,7 @@
 #include "scene/scene_parser.hpp"
 #include "scene/staged_scene.hpp"
 #include "image/image.hpp"
+#include "image/picture_file.hpp"
 #include "render/render_plan.hpp"
 #include "render/shadow_renderer.hpp"
 #include "render/text_overlay.hpp"
@@ -116,6 +117,7 @@ ViewOptions parse_view_options(const std::vector<std::string>& argv) {
   if (o.help) return o;
   if (o.scene_path.empty()) throw UsageError("no scene or mesh file given");
   if (o.screenshot && o.frames == 0) throw UsageError("--screenshot needs --frames N");
+  if (o.screenshot) require_picture_name("--screenshot", *o.screenshot);
   require_consistent_staging(o.staging);
   require_staged(o.staging_given, o.scene_path);
   if (!is_interactive(o.settings.method))
@@ -330,7 +332,7 @@ int run_view_command(const std::vector<std::string>& argv) {
       if (options.screenshot) {
         if (options.overlay_in_screenshot) draw_overlay();
         try {
-          write_png(scene.renderer->read_image(), *options.screenshot);
+          write_picture(scene.renderer->read_image(), *options.screenshot);
         } catch (const std::exception& e) {
           std::cerr << e.what() << "\n";
           return 1;

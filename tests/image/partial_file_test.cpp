@@ -6,8 +6,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <sys/stat.h>
+
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 #include "image/partial_file.hpp"
 #include "tests/scratch_folder.hpp"
@@ -40,6 +43,43 @@ TEST_F(PartialFiles, TwoWritersOfOneNameNeverShareATemporaryFile) {
 }
 
 // A writer that tells the format by the extension (CGAL's) gets one.
+// A FIFO or a character device named as the output (-o /dev/null, to time a
+// render) is written in place: renaming a temporary file over it would
+// replace the device itself, which root may do (and /dev/null is then a
+// file). The FIFO is still one afterwards, and its reader got the bytes.
+TEST_F(PartialFiles, AFifoOrDeviceIsWrittenInPlaceNeverReplaced) {
+  const std::string fifo = (folder_ / "pipe").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::string read;
+  {
+    PartialFile out(fifo, "the image");
+    ASSERT_EQ(out.temporary_path(), fifo);
+    std::thread reader([&] {
+      std::ifstream in(fifo);
+      read.assign(std::istreambuf_iterator<char>(in), {});
+    });
+    std::ofstream(out.temporary_path()) << "bytes";
+    out.commit();
+    reader.join();
+  }
+  EXPECT_EQ(read, "bytes");
+  ASSERT_TRUE(std::filesystem::is_fifo(fifo));
+  EXPECT_EQ(files_in_folder(), 1u);
+  PartialFile null("/dev/null", "the image");
+  EXPECT_EQ(null.temporary_path(), "/dev/null");
+  null.commit();
+  EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
+}
+
+TEST_F(PartialFiles, AFolderOrABlockDeviceIsNoPlaceForAFile) {
+  try {
+    PartialFile out(folder_.string(), "the image");
+    FAIL() << "a folder was taken for a file";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), folder_.string() + ": cannot write the image: it is a folder");
+  }
+}
+
 TEST_F(PartialFiles, TheExtensionStaysLastWhereAsked) {
   const std::string out = (folder_ / "repaired.off").string();
   const PartialFile a(out, "the mesh", PartialFile::Ending::kKeepExtension), b(out, "the mesh");

@@ -111,6 +111,37 @@ TEST_F(RenderCommand, CameraAndLightOptionsAreCheckedBeforeAnyWork) {
   EXPECT_FALSE(fs::exists(path("a.png")));
 }
 
+// The output's name says its format: PNG or JPEG, - for PNG on standard
+// output; any other name is a usage error before any work, and a mask stays
+// a PNG, as only a lossless format keeps it exact.
+TEST_F(RenderCommand, TheOutputsNameSaysItsFormat) {
+  const std::string demo = std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene";
+  CommandResult r = run("render " + demo + " --size 40x30 -o " + path("a.jpg") + " --jpeg-quality 80");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(read(path("a.jpg")).substr(0, 3), "\xff\xd8\xff");  // a JPEG's start of image
+  EXPECT_EQ(run("render " + demo + " --size 40x30 -o " + path("b.JPEG")).status, 0);
+  EXPECT_EQ(read(path("b.JPEG")).substr(0, 3), "\xff\xd8\xff");
+  EXPECT_EQ(run("render " + demo + " --size 40x30 -o " + path("c.png")).status, 0);
+  r = run("render " + demo + " --size 40x30 -o -");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, read(path("c.png")));  // standard output holds the PNG alone
+  EXPECT_EQ(r.err, "wrote the picture to standard output (40x30)\n");
+  const std::vector<std::pair<std::string, std::string>> refused = {
+      {"-o " + path("d.webp"), "-o " + path("d.webp") + ": umbra does not write .webp pictures; name a .png, .jpg or .jpeg file, "
+                                                       "or - for PNG on standard output"},
+      {"-o " + path("d"), "-o " + path("d") + " has no extension; name a .png, .jpg or .jpeg file, or - for PNG on standard output"},
+      {"-o " + path("d.png") + " --jpeg-quality 50", "--jpeg-quality is for a JPEG picture; -o " + path("d.png") + " is not one"},
+      {"-o " + path("d.jpg") + " --jpeg-quality 101", "--jpeg-quality expects a whole number from 1 to 100, got \"101\""},
+      {"-o " + path("d.png") + " --mask " + path("m.jpg"), "--mask writes a PNG file (a mask must stay exact), got \"" + path("m.jpg") + "\""},
+      {"-o - --explain", "--explain prints to standard output, where -o - writes the picture: name a file with -o"}};
+  for (const auto& [arguments, message] : refused) {
+    r = run("render " + demo + " " + arguments);
+    EXPECT_EQ(r.status, 2) << arguments;
+    EXPECT_EQ(r.err, "umbra render: " + message + "\n(see umbra render --help)\n");
+  }
+  for (const char* never : {"d.webp", "d", "d.png", "d.jpg", "m.jpg"}) EXPECT_FALSE(fs::exists(path(never))) << never;
+}
+
 TEST_F(RenderCommand, AFileThatIsPlainlyNeitherASceneNorAMeshExitsWithTwo) {
   const std::string formats = "(" + mesh_format_names() + ")";
   const std::string jpeg = write("photo.jpg", std::string("\xff\xd8\xff\xe0\0\x10JFIF\0", 11));
