@@ -15,6 +15,7 @@
 #include "render/headless_context.hpp"
 #include "render/render_method.hpp"
 #include "scene/staged_scene.hpp"
+#include "tools/nearest_word.hpp"
 
 namespace umbra {
 namespace {
@@ -68,28 +69,33 @@ std::string bench_sweeps() {
   return text;
 }
 
-// One row of an option's list of values: the name, then its help wrapped
-// in a column of its own.
-std::string value_row(std::string name, const std::string& help) {
-  constexpr size_t kNameColumn = 26, kHelpColumn = 37, kWidth = 79;
-  name.resize(kHelpColumn - kNameColumn, ' ');
-  return std::string(kNameColumn, ' ') + name + wrapped(help, kHelpColumn, kHelpColumn, kWidth) + "\n";
-}
 
 }  // namespace
 
+std::string value_rows(const std::vector<std::pair<std::string, std::string>>& rows) {
+  constexpr size_t kNameColumn = 26, kWidth = 79;
+  size_t longest = 0;
+  for (const auto& row : rows) longest = std::max(longest, row.first.size());
+  const size_t help_column = kNameColumn + longest + 2;
+  std::string text;
+  for (auto [name, help] : rows) {
+    name.resize(longest + 2, ' ');
+    text += std::string(kNameColumn, ' ') + name + wrapped(help, help_column, help_column, kWidth) + "\n";
+  }
+  return text;
+}
+
 std::string usage_text(std::string text) {
   constexpr size_t kWidth = 79;
-  std::string methods;
+  std::vector<std::pair<std::string, std::string>> methods, platforms;
   std::vector<std::string> interactive;
   for (const RenderMethod m : all_methods()) {
     if (is_interactive(m)) interactive.push_back(method_name(m));
-    methods += value_row(method_name(m), method_help(m));
+    methods.emplace_back(method_name(m), method_help(m));
   }
-  replace_all(text, "{methods}\n", methods);
-  std::string platforms;
-  for (const HeadlessGlRow& row : kHeadlessGlTable) platforms += value_row(row.name, row.help);
-  replace_all(text, "{gl platforms}\n", platforms);
+  replace_all(text, "{methods}\n", value_rows(methods));
+  for (const HeadlessGlRow& row : kHeadlessGlTable) platforms.emplace_back(row.name, row.help);
+  replace_all(text, "{gl platforms}\n", value_rows(platforms));
   replace_all(text, "{bench methods}", wrapped(bench_sweeps(), 0, 0, kWidth));
   replace_all(text, "{interactive methods}", word_list(interactive));
   replace_all(text, "{mesh formats}", mesh_format_names());
@@ -137,8 +143,14 @@ void CommandOptions::parse(const std::vector<std::string>& all) {
   } catch (const CLI::ParseError& e) {
     throw UsageError(e.what());
   }
-  for (const std::string& extra : app_->remaining())
-    if (extra.size() > 1 && extra[0] == '-') throw UsageError("unknown option " + extra.substr(0, extra.find('=')));
+  for (const std::string& extra : app_->remaining()) {
+    if (extra.size() < 2 || extra[0] != '-') continue;
+    const std::string option = extra.substr(0, extra.find('='));
+    std::vector<std::string> known;
+    for (const CLI::Option* o : app_->get_options())
+      for (const std::string& name : o->get_lnames()) known.push_back("--" + name);
+    throw UsageError("unknown option " + option + did_you_mean(option, known));
+  }
   if (end_of_options == all.end()) return;
   if (!positionals_) throw UsageError("takes no arguments, got \"" + (end_of_options + 1 == all.end() ? std::string("--") : *(end_of_options + 1)) + "\"");
   positionals_->insert(positionals_->end(), end_of_options + 1, all.end());
@@ -169,6 +181,11 @@ void parse_size(const std::string& option, const std::string& text, int largest,
   if (x == std::string::npos) throw UsageError(option + " expects WIDTHxHEIGHT such as 800x600, got \"" + text + "\"");
   width = parse_int_in(option + " width", text.substr(0, x), 1, largest);
   height = parse_int_in(option + " height", text.substr(x + 1), 1, largest);
+}
+
+std::string parse_up_axis(const std::string& option, const std::string& text) {
+  if (!is_up_axis(text)) throw UsageError(option + " must be +x, -x, +y, -y, +z or -z, got \"" + text + "\"");
+  return text;
 }
 
 RenderMethod parse_method(const std::string& option, const std::string& text) {
@@ -253,10 +270,7 @@ void add_staging_options(CommandOptions& options, StagingOptions& staging, std::
       given.push_back(o);
     });
   };
-  add("--up", [&](const std::string& o, const std::string& t) {
-    if (!is_up_axis(t)) throw UsageError(o + " must be +x, -x, +y, -y, +z or -z, got \"" + t + "\"");
-    staging.up = t;
-  });
+  add("--up", [&](const std::string& o, const std::string& t) { staging.up = parse_up_axis(o, t); });
   add("--camera-azimuth", [&](const std::string& o, const std::string& t) { v.camera_azimuth_deg = parse_finite_number(o, t); });
   // Short of the poles, where the floor's up would be the view's direction.
   add("--camera-elevation", [&](const std::string& o, const std::string& t) {

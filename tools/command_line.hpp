@@ -59,6 +59,9 @@ class CommandOptions {
 // and {methods} (each method's name and help, one wrapped entry each, in
 // --method's column of umbra render --help).
 std::string usage_text(std::string text);
+// An option's list of values for --help, a row each: the name from column
+// 26, then its help wrapped in a column two spaces right of the longest name.
+std::string value_rows(const std::vector<std::pair<std::string, std::string>>& rows);
 
 // Runs `parse` over a command's arguments. On a usage error prints it with a
 // hint to --help and returns 2; when the options ask for help prints `usage`
@@ -83,6 +86,8 @@ double parse_finite_number(const std::string& option, const std::string& text);
 int parse_int_in(const std::string& option, const std::string& text, int lowest, int highest);
 // One of method_names().
 RenderMethod parse_method(const std::string& option, const std::string& text);
+// "+x", "-x", "+y", "-y", "+z" or "-z" (is_up_axis).
+std::string parse_up_axis(const std::string& option, const std::string& text);
 // "WxH", each between 1 and `largest`.
 void parse_size(const std::string& option, const std::string& text, int largest, int& width, int& height);
 

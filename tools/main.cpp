@@ -7,6 +7,8 @@
 #include "render/headless_context.hpp"
 #include "tools/bench_command.hpp"
 #include "tools/check_command.hpp"
+#include "tools/command_line.hpp"
+#include "tools/nearest_word.hpp"
 #include "tools/huge_page_malloc.hpp"
 #include "tools/render_command.hpp"
 #include "tools/view_command.hpp"
@@ -14,31 +16,79 @@
 
 namespace {
 
-const char* const kUsage = R"(usage: umbra COMMAND [options]
+// The commands: each one's name, the arguments its line in the help shows,
+// what it does, and what runs it. `umbra help NAME` is `umbra NAME --help`.
+struct Command {
+  const char* name;
+  const char* arguments;
+  const char* does;
+  int (*run)(const std::vector<std::string>&);
+};
+const Command kCommands[] = {
+    {"render", "MESH|SCENE|FOLDER... -o OUT", "a picture with exact shadows: a mesh file staged on a floor, a scene as\n"
+                                              "written, a folder's meshes one picture each", umbra::run_render_command},
+    {"check", "MESH|FOLDER...", "is each mesh a closed 2-manifold, and if not, why; --repair", umbra::run_check_command},
+    {"view", "MESH|SCENE", "an interactive window: the light orbits, the camera follows the mouse", umbra::run_view_command},
+    {"volume", "MESH|SCENE -o OUT.obj", "a light's shadow volumes as a mesh, to look at", umbra::run_volume_command},
+    {"bench", "[SCENES...]", "shadow error against frame time for every method", umbra::run_bench_command},
+};
 
-Renders exact hard shadows with stencil shadow volumes.
+std::string usage() {
+  std::string text = R"(usage: umbra COMMAND [options]
+
+Exact hard shadows from stencil shadow volumes, for any mesh file
+({mesh formats}) and for scenes of spheres, triangles and meshes.
+
+  umbra render model.glb -o model.png    the model on a floor, with its shadow
+  umbra render models/ -o pictures/      every mesh in a folder, one picture each
+  umbra check model.stl                  is it closed and manifold? if not, why
+  umbra render scene.scene -o out.png    a scene file, as written
 
 commands:
-  render SCENE -o OUT.png   render a scene headless to a PNG (see umbra render --help)
-  check MESH...             is each mesh a closed 2-manifold, and if not, why
-                            (see umbra check --help)
-  view SCENE                an interactive window: the light orbits,
-                            keys and mouse (see umbra view --help)
-  volume SCENE -o OUT.obj   write a light's shadow volumes as a mesh to look at
-                            (see umbra volume --help)
-  bench [SCENES...]         shadow error against frame time for every method
-                            (see umbra bench --help)
-
+)";
+  for (const Command& c : kCommands) {
+    text += "  " + std::string(c.name) + " " + c.arguments + "\n";
+    std::string does = c.does;
+    for (size_t at = 0; at != std::string::npos;) {
+      const size_t end = does.find('\n', at);
+      text += "      " + does.substr(at, end == std::string::npos ? end : end - at) + "\n";
+      at = end == std::string::npos ? end : end + 1;
+    }
+  }
+  return umbra::usage_text(text) + R"(
+  umbra help COMMAND (or umbra COMMAND --help) for a command's options
   umbra --help, umbra --version
 )";
+}
+
+const Command* command_named(const std::string& name) {
+  for (const Command& c : kCommands)
+    if (name == c.name) return &c;
+  return nullptr;
+}
+
+// "unknown command "rendr" (did you mean render?)".
+std::string unknown_command(const std::string& name) {
+  std::vector<std::string> names;
+  for (const Command& c : kCommands) names.push_back(c.name);
+  return "umbra: unknown command \"" + name + "\"" + umbra::did_you_mean(name, names) + "\n";
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.empty() || args[0] == "-h" || args[0] == "--help" || args[0] == "help") {
-    std::cout << kUsage;
+  if (args.empty() || args[0] == "-h" || args[0] == "--help" || (args[0] == "help" && args.size() == 1)) {
+    std::cout << usage();
     return args.empty() ? 2 : 0;
+  }
+  if (args[0] == "help") {
+    const Command* command = command_named(args[1]);
+    if (!command) {
+      std::cerr << unknown_command(args[1]) << "(see umbra --help)\n";
+      return 2;
+    }
+    return command->run({"--help"});
   }
   umbra::restart_with_huge_page_malloc(argv);  // before any allocation worth the name
   umbra::remove_partial_files_on_signals();
@@ -54,11 +104,7 @@ int main(int argc, char** argv) {
     std::cout << "memory: " << umbra::malloc_pages_description(umbra::current_malloc_environment()) << "\n";
     return 0;
   }
-  if (args[0] == "render") return umbra::run_render_command({args.begin() + 1, args.end()});
-  if (args[0] == "check") return umbra::run_check_command({args.begin() + 1, args.end()});
-  if (args[0] == "volume") return umbra::run_volume_command({args.begin() + 1, args.end()});
-  if (args[0] == "bench") return umbra::run_bench_command({args.begin() + 1, args.end()});
-  if (args[0] == "view") return umbra::run_view_command({args.begin() + 1, args.end()});
-  std::cerr << "umbra: unknown command \"" << args[0] << "\"\n" << kUsage;
+  if (const Command* command = command_named(args[0])) return command->run({args.begin() + 1, args.end()});
+  std::cerr << unknown_command(args[0]) << "(see umbra --help)\n";
   return 2;
 }

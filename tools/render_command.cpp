@@ -58,7 +58,8 @@ options:
                         PNG to standard output
   --jpeg-quality N      for a .jpg output: 1 to 100 (default 90)
   --size WxH            image size in pixels (default 800x800)
-  --light-angle DEG     rotate every light about the z axis by DEG degrees
+  --light-angle DEG     rotate every light about the z axis by DEG degrees (for
+                        a MESH, before the camera frames its shadow)
   --segments N          sides of the N-gon that stands for a sphere's tangent
                         circle in its shadow volume (default 64, 3 to 4096)
   --method M            how shadows are made (default auto):
@@ -79,6 +80,25 @@ options:
   --up AXIS             for a MESH: its axis that points up, +x, -x, +y, -y, +z
                         or -z (default: its format's convention, +z for STL
                         and 3MF, +y for the others)
+
+  For a MESH, where the camera and the light are: in the staged scene's
+  coordinates (the model fitted into the cube [-1,1]^3, +z up), angles in
+  degrees round the model's centre, azimuth 0 from its front (-y) growing
+  toward its right (+x), elevation 0 level. The frame keeps the model and its
+  shadow in view wherever they are, unless --eye or --target place the camera.
+  --camera-azimuth DEG  the camera's azimuth (default 35)
+  --camera-elevation DEG
+                        the camera's elevation, -89.9 to 89.9 (default 30)
+  --camera-zoom F       come F times closer than the framing (default 1)
+  --fov DEG             the lens's vertical field of view, 1 to 170 (default
+                        30)
+  --eye X,Y,Z           put the camera there (aimed at the framing's target)
+  --target X,Y,Z        aim the camera there (from the framing's direction)
+  --light-azimuth DEG   the light's azimuth (default about -47.7: front left)
+  --light-elevation DEG the light's elevation, -90 to 90 (default about 53.4);
+                        it stands 4 half-sizes of the model from its centre
+  --light X,Y,Z         put the light there
+
   --jobs N              with several files: draw N at a time, each in its own
                         GL context, using at most N threads in all (default:
                         one per core)
@@ -208,12 +228,12 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     for (const auto& [given, name] : {std::pair{timeout_s > 0.0, "--timeout"}, {skip_existing, "--skip-existing"}, {json, "--json"}})
       if (given) throw UsageError(std::string(name) + " is for several files or a folder; \"" + o.scene_path + "\" is one");
     if (o.output.empty()) throw UsageError("no output image given (-o OUT.png)");
+    require_other_than_input("-o", o.output, o.scene_path);
     require_picture_name("-o", o.output);
     if (o.jpeg_quality_given && picture_format_of(o.output) != PictureFormat::kJpeg)
       throw UsageError("--jpeg-quality is for a JPEG picture; -o " + o.output + " is not one");
     if (o.output == "-" && o.explain)
       throw UsageError("--explain prints to standard output, where -o - writes the picture: name a file with -o");
-    require_other_than_input("-o", o.output, o.scene_path);
     if (o.mask) {
       // A mask is exact, pixel by pixel: only a lossless PNG keeps it.
       if (picture_format_of(*o.mask) != PictureFormat::kPng || *o.mask == "-")

@@ -65,6 +65,10 @@ options:
   --segments N         sphere segments (default 64)
   --up AXIS            for a MESH: its axis that points up (see umbra render
                        --help)
+  --camera-azimuth DEG, --camera-elevation DEG, --camera-zoom F, --fov DEG,
+  --eye X,Y,Z, --target X,Y,Z, --light-azimuth DEG, --light-elevation DEG,
+  --light X,Y,Z        for a MESH: where the camera and light start (see umbra
+                       render --help)
   --any-texture-path   read texture maps from any folder, not only the
                        model's own (see umbra render --help)
   --frames N           draw N frames, then exit, printing the median and the

@@ -9,6 +9,7 @@
 #include "image/partial_file.hpp"
 #include "scene/scene_checks.hpp"
 #include "scene/scene_parser.hpp"
+#include "scene/staged_scene.hpp"
 #include "render/render_plan.hpp"
 #include "tools/command_line.hpp"
 
@@ -16,10 +17,12 @@ namespace umbra {
 
 const std::string kVolumeUsage = usage_text(
     R"(usage: umbra volume SCENE -o OUT.obj [options]
+       umbra volume MESH -o OUT.obj [options]
 
 Writes the shadow volumes of one light as an OBJ file, to look at in any mesh
 viewer: one group per caster, named for its kind and line, and faces
-oriented outward. A volume reaches infinity; here its vertices at infinity
+oriented outward. A mesh file ({mesh formats}) is staged as umbra render
+stages it, and only its own volume is written (not the floor's). A volume reaches infinity; here its vertices at infinity
 (P - L, 0) are put at P + D (P - L) / |P - L|, a finite distance D beyond
 the caster.
 
@@ -29,6 +32,8 @@ options:
   --light-angle DEG     rotate every light about the z axis by DEG degrees
   --segments N          sides of a sphere's tangent-circle N-gon (default 64)
   --far D               distance of the far vertices beyond the caster (default 3)
+  --up AXIS             for a MESH: its axis that points up (see umbra render
+                        --help)
   -h, --help            show this help
 )");
 
@@ -39,6 +44,7 @@ struct VolumeOptions {
   int light = 1;
   double light_angle_deg = 0.0;
   double far = 3.0;
+  std::string up;  // for a mesh file: "" for its format's own
   RenderSettings settings;
   bool help = false;
 };
@@ -56,12 +62,14 @@ VolumeOptions parse_volume_options(const std::vector<std::string>& argv) {
     o.far = parse_finite_number(n, t);
     if (o.far <= 0) throw UsageError("--far must be positive");
   });
+  options.value("--up", [&](const std::string& n, const std::string& t) { o.up = parse_up_axis(n, t); });
   options.positionals(scenes);
   options.parse(argv);
   if (scenes.size() > 1) throw UsageError("one scene at a time (got \"" + scenes[0] + "\" and \"" + scenes[1] + "\")");
   if (!scenes.empty()) o.scene_path = scenes[0];
   if (o.help) return o;
-  if (o.scene_path.empty()) throw UsageError("no scene file given");
+  if (o.scene_path.empty()) throw UsageError("no scene or mesh file given");
+  if (!o.up.empty()) require_staged({"--up"}, o.scene_path);
   if (o.output.empty()) throw UsageError("no output file given (-o OUT.obj)");
   require_other_than_input("-o", o.output, o.scene_path);
   return o;
@@ -101,13 +109,19 @@ int run_volume_command(const std::vector<std::string>& argv) {
   VolumeOptions options;
   if (const auto exit_status = parse_command_line("volume", kVolumeUsage, argv, parse_volume_options, options))
     return *exit_status;
+  if (const std::string what = neither_scene_nor_mesh(options.scene_path); !what.empty()) {
+    std::cerr << options.scene_path << ": " << what << "\n";
+    return 2;
+  }
   try {
-    Scene scene = parse_scene_file(options.scene_path);
+    StagingOptions staging{options.up, 1.0, {}};
+    staging.view.light_turn_deg = options.light_angle_deg;
+    std::string staged;
+    Scene scene = parse_scene_or_mesh_file(options.scene_path, {}, &staged, staging);
     for (const Warning& w : scene.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
     if (size_t(options.light) > scene.lights.size())
       throw InputError({scene.path}, "--light " + std::to_string(options.light) + ": the scene has " +
                                          std::to_string(scene.lights.size()) + " light(s)");
-    rotate_lights_about_z(scene, options.light_angle_deg);
     require_lights_off_casters(scene);
     // The whole closed volume, caps included, whatever count a render would choose.
     RenderSettings settings = options.settings;
@@ -120,8 +134,9 @@ int run_volume_command(const std::vector<std::string>& argv) {
     std::ofstream out(partial.temporary_path());
     out << "# shadow volumes of light " << options.light << " of " << scene.path << ", made by umbra volume\n"
         << "# vertices at infinity are drawn " << options.far << " beyond the caster\n";
-    size_t written = 0, groups = 0;
+    size_t written = 0, groups = 0, triangles = 0;
     for (const CasterEntry& e : lp.casters) {
+      if (!staged.empty() && e.kind != "mesh") continue;  // the stage's floor
       ShadowVolume volume = e.volume;
       if (e.mesh_volume >= 0) {
         // A mesh volume: indices over the mesh's points, then the same points at infinity.
@@ -138,12 +153,12 @@ int run_volume_command(const std::vector<std::string>& argv) {
       write_group(out, e.kind + "_line_" + std::to_string(e.where.line), finite_vertices(volume, light, options.far),
                   volume.triangles, written);
       ++groups;
+      triangles += volume.triangles.size();
     }
     out.close();
     if (!out) throw InputError({options.output}, "cannot write the volume file");
     partial.commit();
-    std::cout << "wrote " << options.output << ": " << groups << " volume(s), " << lp.side_quads << " side quads, "
-              << lp.light_cap_triangles << " near-cap and " << lp.dark_cap_triangles << " far-cap triangles\n";
+    std::cout << "wrote " << options.output << ": " << groups << " volume(s), " << triangles << " triangles\n";
     return 0;
   } catch (const std::exception& e) {
     std::cerr << e.what() << "\n";

@@ -119,7 +119,30 @@ TEST_F(Options, VersionAndHelp) {
     EXPECT_EQ(help.status, 0) << command;
     EXPECT_EQ(help.out.rfind(std::string("usage: umbra ") + command, 0), 0u) << command;
     EXPECT_EQ(run(std::string(command) + " -h").out, help.out);
+    EXPECT_EQ(run(std::string("help ") + command).out, help.out);
   }
+  // The top-level help leads with what most users come for: a mesh file, a folder.
+  const CommandResult top = run("--help");
+  EXPECT_EQ(top.status, 0);
+  EXPECT_NE(top.out.find("\n  umbra render model.glb -o model.png "), std::string::npos) << top.out;
+  EXPECT_NE(top.out.find("\n  umbra render models/ -o pictures/ "), std::string::npos) << top.out;
+  EXPECT_NE(top.out.find("\n  render MESH|SCENE|FOLDER... -o OUT\n"), std::string::npos) << top.out;
+  EXPECT_NE(top.out.find("\n  volume MESH|SCENE -o OUT.obj\n"), std::string::npos) << top.out;
+}
+
+// A mistyped command or option is named with the nearest one, where one is near.
+TEST_F(Options, AMistypedCommandOrOptionGetsADidYouMean) {
+  CommandResult r = run("rendr " + scene);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "umbra: unknown command \"rendr\" (did you mean render?)\n(see umbra --help)\n");
+  r = run("help chekc");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "umbra: unknown command \"chekc\" (did you mean check?)\n(see umbra --help)\n");
+  EXPECT_EQ(run("explode").err, "umbra: unknown command \"explode\"\n(see umbra --help)\n");
+  r = run("render " + scene + " -o " + path("a.png") + " --antialais 2");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "umbra render: unknown option --antialais (did you mean --antialias?)\n(see umbra render --help)\n");
+  EXPECT_EQ(run("check --jbos 2 " + scene).err, "umbra check: unknown option --jbos (did you mean --jobs?)\n(see umbra check --help)\n");
 }
 
 }  // namespace

@@ -35,6 +35,26 @@ TEST_F(VolumeCommand, IcosphereVolumeReadsBackAsAClosedOutwardSurface) {
   EXPECT_EQ(report.border_edges + report.non_manifold_edges + report.inconsistent_edges, 0u);
 }
 
+// A mesh file is staged as umbra render stages it (once "unknown statement
+// "OFF""), and only its own volume is written: one closed, outward
+// surface, without the floor's.
+TEST_F(VolumeCommand, AMeshFileIsStagedAndOnlyItsVolumeWritten) {
+  const std::string tet = write("t.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  const CommandResult r = run("volume " + tet + " -o " + path("v.obj") + " --up +z");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const MeshReport report = check_mesh(read_polygon_soup(path("v.obj")));
+  EXPECT_EQ(r.out, "wrote " + path("v.obj") + ": 1 volume(s), " + std::to_string(report.triangles) + " triangles\n");
+  EXPECT_NE(read(path("v.obj")).find("g mesh_line_4\n"), std::string::npos);
+  ASSERT_EQ(report.components.size(), 1u);
+  EXPECT_TRUE(report.components[0].closed);
+  EXPECT_EQ(report.components[0].outward, true);
+  const std::string jpeg = write("photo.jpg", std::string("\xff\xd8\xff\xe0\0\x10JFIF\0", 11));
+  EXPECT_EQ(run("volume " + jpeg + " -o " + path("w.obj")).status, 2);
+  const CommandResult up = run("volume " + write("s.scene", "light 0 0 2\nsphere 0 0 0 0.5\n") + " -o " + path("w.obj") + " --up +y");
+  EXPECT_EQ(up.status, 2);
+  EXPECT_FALSE(fs::exists(path("w.obj")));
+}
+
 TEST_F(VolumeCommand, BadLightAndUsageErrors) {
   const std::string scene = write("s.scene", "light 0 0 2\nsphere 0 0 0 0.5\n");
   const CommandResult light = run("volume " + scene + " -o " + path("v.obj") + " --light 2");
