@@ -23,14 +23,20 @@ constexpr int kLabelHeight = 12 * kScale;    // one line
 
 Image thumbnail(const Image& picture, int max_width) {
   const int factor = std::max(1, (picture.width + max_width - 1) / std::max(max_width, 1));
-  if (factor <= 1) return picture;
+  if (factor <= 1 && picture.channels == 3) return picture;
+  // A picture with alpha (a transparent background) is laid on the sheet's ground.
+  const auto on_ground = [&](int x, int y, int c) {
+    if (picture.channels != 4) return int(picture.at(x, y, c));
+    const int a = picture.at(x, y, 3);
+    return (picture.at(x, y, c) * a + kGround * (255 - a) + 127) / 255;
+  };
   Image out(picture.width / factor, picture.height / factor, 3);
   for (int y = 0; y < out.height; ++y)
     for (int x = 0; x < out.width; ++x)
       for (int c = 0; c < 3; ++c) {
         int sum = 0;
         for (int dy = 0; dy < factor; ++dy)
-          for (int dx = 0; dx < factor; ++dx) sum += picture.at(x * factor + dx, y * factor + dy, c);
+          for (int dx = 0; dx < factor; ++dx) sum += on_ground(x * factor + dx, y * factor + dy, c);
         out.at(x, y, c) = uint8_t((sum + factor * factor / 2) / (factor * factor));
       }
   return out;

@@ -15,7 +15,8 @@ struct SheetPicture {
 };
 
 // `picture` shrunk by the least whole factor that makes it at most
-// `max_width` pixels wide, each pixel the mean of those it stands for.
+// `max_width` pixels wide, each pixel the mean of those it stands for; RGB,
+// a picture with alpha laid on the sheet's ground.
 Image thumbnail(const Image& picture, int max_width);
 
 // Thumbnails at most `thumb_width` pixels wide (each picture shrunk by a

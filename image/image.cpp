@@ -13,14 +13,18 @@ namespace umbra {
 
 // libpng's simplified API (png_image): no setjmp, errors come back as text.
 
+unsigned png_format_of(int channels) {
+  return channels == 1 ? PNG_FORMAT_GRAY : channels == 4 ? PNG_FORMAT_RGBA : PNG_FORMAT_RGB;
+}
+
 void write_png(const Image& image, const std::string& path) {
-  if (image.channels != 1 && image.channels != 3) throw std::runtime_error("write_png: 1 or 3 channels only");
+  if (image.channels != 1 && image.channels != 3 && image.channels != 4) throw std::runtime_error("write_png: 1, 3 or 4 channels only");
   png_image png;
   std::memset(&png, 0, sizeof png);
   png.version = PNG_IMAGE_VERSION;
   png.width = png_uint_32(image.width);
   png.height = png_uint_32(image.height);
-  png.format = image.channels == 1 ? PNG_FORMAT_GRAY : PNG_FORMAT_RGB;
+  png.format = png_format_of(image.channels);
 
   PartialFile partial(path, "the image");
   const bool written = png_image_write_to_file(&png, partial.temporary_path().c_str(), 0, image.pixels.data(), 0, nullptr) != 0;
@@ -36,9 +40,10 @@ Image read_png(const std::string& path) {
   png.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_file(&png, path.c_str()))
     throw std::runtime_error(path + ": cannot read the PNG: " + png.message);
-  const bool grey = (png.format & PNG_FORMAT_FLAG_COLOR) == 0;
-  png.format = grey ? PNG_FORMAT_GRAY : PNG_FORMAT_RGB;
-  Image image(int(png.width), int(png.height), grey ? 1 : 3);
+  const bool grey = (png.format & PNG_FORMAT_FLAG_COLOR) == 0, alpha = (png.format & PNG_FORMAT_FLAG_ALPHA) != 0;
+  const int channels = grey ? 1 : alpha ? 4 : 3;  // grey with alpha: the grey alone
+  png.format = png_format_of(channels);
+  Image image(int(png.width), int(png.height), channels);
   if (!png_image_finish_read(&png, nullptr, image.pixels.data(), 0, nullptr)) {
     const std::string reason = png.message;
     png_image_free(&png);

@@ -12,7 +12,7 @@ namespace umbra {
 struct Image {
   int width = 0;
   int height = 0;
-  int channels = 0;  // 1: grey, 3: RGB
+  int channels = 0;  // 1: grey, 3: RGB, 4: RGBA (straight alpha)
   std::vector<uint8_t> pixels;  // row-major, row 0 at the top
 
   Image() = default;
@@ -34,7 +34,10 @@ constexpr uint8_t kMaskUnlit = 0;
 // so a failure never leaves a partial file. Throws std::runtime_error.
 void write_png(const Image& image, const std::string& path);
 
-// Reads an 8-bit grey or RGB PNG (used by tests). Throws std::runtime_error.
+// libpng's simplified format for an image of `channels` (1, 3 or 4).
+unsigned png_format_of(int channels);
+
+// Reads an 8-bit grey, RGB or RGBA PNG (used by tests). Throws std::runtime_error.
 Image read_png(const std::string& path);
 
 }  // namespace umbra

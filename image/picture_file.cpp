@@ -18,8 +18,8 @@
 namespace umbra {
 
 const PictureFormatRow kPictureFormats[2] = {
-    {PictureFormat::kPng, "PNG", {".png", nullptr, nullptr}},
-    {PictureFormat::kJpeg, "JPEG", {".jpg", ".jpeg", nullptr}},
+    {PictureFormat::kPng, "PNG", {".png", nullptr, nullptr}, true},
+    {PictureFormat::kJpeg, "JPEG", {".jpg", ".jpeg", nullptr}, false},
 };
 
 namespace {
@@ -74,7 +74,7 @@ std::string write_png_to(const Image& image, std::FILE* file) {
   png.version = PNG_IMAGE_VERSION;
   png.width = png_uint_32(image.width);
   png.height = png_uint_32(image.height);
-  png.format = image.channels == 1 ? PNG_FORMAT_GRAY : PNG_FORMAT_RGB;
+  png.format = png_format_of(image.channels);
   const bool written = png_image_write_to_stdio(&png, file, 0, image.pixels.data(), 0, nullptr) != 0;
   const std::string reason = written ? "" : png.message;
   png_image_free(&png);
@@ -86,6 +86,14 @@ std::string write_in(PictureFormat format, const Image& image, std::FILE* file, 
 }
 
 }  // namespace
+
+const PictureFormatRow& format_row(PictureFormat format) {
+  for (const PictureFormatRow& row : kPictureFormats)
+    if (row.format == format) return row;
+  throw std::logic_error("a picture format outside the table");
+}
+
+bool picture_format_keeps_alpha(PictureFormat format) { return format_row(format).alpha; }
 
 std::optional<PictureFormat> picture_format_of(const std::string& path) {
   std::error_code ec;
@@ -108,9 +116,10 @@ std::string picture_extensions() {
 }
 
 void write_picture(const Image& image, const std::string& path, const PictureOptions& options) {
-  if (image.channels != 1 && image.channels != 3) throw std::runtime_error("write_picture: 1 or 3 channels only");
   const std::optional<PictureFormat> format = picture_format_of(path);
   if (!format) throw std::runtime_error(path + ": umbra writes pictures as " + picture_extensions() + " only");
+  if (image.channels == 4 && !picture_format_keeps_alpha(*format))
+    throw std::runtime_error(path + ": a " + std::string(format_row(*format).name) + " picture has no alpha channel for a transparent background");
   if (path == "-") {
     const std::string reason = write_in(*format, image, stdout, options);
     if (!reason.empty() || std::fflush(stdout) != 0)

@@ -15,8 +15,11 @@ struct PictureFormatRow {
   PictureFormat format;
   const char* name;              // "PNG"
   const char* extensions[3];     // lower case, with the dot; unused ones null
+  bool alpha;                    // keeps an alpha channel (a transparent background)
 };
 extern const PictureFormatRow kPictureFormats[2];
+const PictureFormatRow& format_row(PictureFormat format);
+bool picture_format_keeps_alpha(PictureFormat format);
 
 // The format `path`'s extension names (case aside); PNG for "-", standard
 // output, and for a FIFO or a device such as /dev/null, whatever their names;
@@ -29,7 +32,7 @@ struct PictureOptions {
   int jpeg_quality = 90;  // 1 to 100, libjpeg's scale
 };
 
-// Writes `image` (grey or RGB) to `path` in picture_format_of(path): a file
+// Writes `image` (grey, RGB, or RGBA where the format keeps alpha) to `path` in picture_format_of(path): a file
 // through a temporary one renamed into place (PartialFile), or for "-" PNG
 // bytes to standard output. Throws std::runtime_error, naming the path, for
 // a format it does not know or a write that fails.

@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "image/pixel_mean.hpp"
 #include "scene/camera_transform.hpp"
 #include "reference/ray_caster.hpp"
 #include "reference/texture_sampling.hpp"
@@ -93,15 +94,19 @@ glm::dvec3 shade(const Scene& scene, const RayCaster& caster, const glm::dvec3& 
 }  // namespace
 
 RayCastFrame ray_cast_frame(const Scene& scene, int width, int height, int samples) {
-  RayCastFrame frame{Image(width, height, 3), std::vector<Image>(scene.lights.size(), Image(width, height, 1, kMaskNoSurface))};
+  const Background& background = scene.background;
+  RayCastFrame frame{Image(width, height, background.transparent ? 4 : 3),
+                     std::vector<Image>(scene.lights.size(), Image(width, height, 1, kMaskNoSurface))};
+  const glm::dvec4 nothing = background_sample(background.color, background.transparent);
   glm::dvec3 ambient_sum(0.0);
   for (const Light& light : scene.lights) ambient_sum += light.ambient;
   const RayCaster caster(scene);
   // A sample at (px, py) in pixels (the pixel's centre at x + 1/2): its
-  // colour, black where it sees nothing, as the GL clears its frame.
+  // colour and coverage, the background where it sees nothing, as the GL
+  // clears its frame (pixel_mean.hpp).
   const auto sample = [&](double px, double py, std::vector<Image>* masks, int x, int y) {
     const auto hit = caster.nearest_hit(scene.camera.eye, pixel_ray_direction(scene.camera, width, height, px - 0.5, py - 0.5));
-    return hit ? shade(scene, caster, ambient_sum, *hit, masks, x, y) : glm::dvec3(0.0);
+    return hit ? glm::dvec4(shade(scene, caster, ambient_sum, *hit, masks, x, y), 1.0) : nothing;
   };
   const auto rows = [&](int first, int step) {
     for (int y = first; y < height; y += step)
@@ -109,14 +114,13 @@ RayCastFrame ray_cast_frame(const Scene& scene, int width, int height, int sampl
         // The masks from the pixel's centre; the image from samples x
         // samples points at the centres of its sub-pixels, as the GL's
         // frame drawn that many times larger puts them, averaged.
-        const glm::dvec3 centre = sample(x + 0.5, y + 0.5, &frame.masks, x, y);
-        glm::dvec3 sum = samples % 2 ? centre : glm::dvec3(0.0);  // an odd grid's middle sample is the centre
+        const glm::dvec4 centre = sample(x + 0.5, y + 0.5, &frame.masks, x, y);
+        glm::dvec4 sum = samples % 2 ? centre : glm::dvec4(0.0);  // an odd grid's middle sample is the centre
         for (int j = 0; j < samples; ++j)
           for (int i = 0; i < samples; ++i)
             if (samples % 2 == 0 || i != samples / 2 || j != samples / 2)
               sum += sample(x + (i + 0.5) / samples, y + (j + 0.5) / samples, nullptr, x, y);
-        const glm::dvec3 colour = sum / double(samples * samples);
-        for (int c = 0; c < 3; ++c) frame.image.at(x, y, c) = channel_byte(colour[c]);
+        put_pixel_mean(frame.image, x, y, sum / double(samples * samples));
       }
   };
   const int threads = int(std::max(1u, std::thread::hardware_concurrency()));

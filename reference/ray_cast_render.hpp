@@ -12,7 +12,7 @@
 namespace umbra {
 
 struct RayCastFrame {
-  Image image;               // RGB, as ShadowRenderer::render_image draws it
+  Image image;               // RGB (RGBA for a transparent background), as ShadowRenderer::render_image draws it
   std::vector<Image> masks;  // per light, as ShadowRenderer::render_mask draws it
 };
 

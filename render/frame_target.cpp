@@ -86,13 +86,12 @@ void FrameTarget::show(int width, int height) const {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
 }
 
-std::vector<uint8_t> FrameTarget::read_rgba8(int samples) const {
+void FrameTarget::for_each_pixel_mean(int samples, const std::function<void(int, int, const glm::dvec4&)>& pixel) const {
   // In strips of 32 output rows: the floats of a whole 800x800 frame would
   // be 10 MB, and nine times that supersampled.
   constexpr int kStripRows = 32;
   const int width = width_ / samples, height = height_ / samples;
   const size_t row_values = size_t(width_) * 4;
-  std::vector<uint8_t> bytes(size_t(width) * size_t(height) * 4);
   std::vector<float> strip(row_values * size_t(kStripRows * samples));
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
@@ -101,16 +100,14 @@ std::vector<uint8_t> FrameTarget::read_rgba8(int samples) const {
     const int rows = std::min(kStripRows, height - y);
     glReadPixels(0, y * samples, width_, rows * samples, GL_RGBA, GL_FLOAT, strip.data());
     for (int r = 0; r < rows; ++r)
-      for (int x = 0; x < width; ++x)
-        for (int c = 0; c < 4; ++c) {
-          double sum = 0.0;
-          for (int j = 0; j < samples; ++j)
-            for (int i = 0; i < samples; ++i)
-              sum += strip[size_t(r * samples + j) * row_values + size_t(x * samples + i) * 4 + size_t(c)];
-          bytes[(size_t(y + r) * size_t(width) + size_t(x)) * 4 + size_t(c)] = channel_byte(sum * per_sample);
-        }
+      for (int x = 0; x < width; ++x) {
+        glm::dvec4 sum(0.0);
+        for (int j = 0; j < samples; ++j)
+          for (int i = 0; i < samples; ++i)
+            for (int c = 0; c < 4; ++c) sum[c] += strip[size_t(r * samples + j) * row_values + size_t(x * samples + i) * 4 + size_t(c)];
+        pixel(x, height - 1 - (y + r), sum * per_sample);  // the GL's row 0 is the bottom
+      }
   }
-  return bytes;
 }
 
 std::vector<float> FrameTarget::read_depth() const {

@@ -17,7 +17,10 @@
 // blending in a colour buffer (their V-buffer) rather than the stencil.
 
 #include <cstdint>
+#include <functional>
 #include <vector>
+
+#include <glm/vec4.hpp>
 
 namespace umbra {
 
@@ -41,10 +44,11 @@ class FrameTarget {
   // height, converted to its format by the GL (and scaled, filtered, when
   // supersampled), and leaves the target bound.
   void show(int width, int height) const;
-  // The colour as RGBA bytes, each block of samples x samples pixels
-  // averaged into one, each channel rounded once (channel_byte, as the
-  // ray-cast reference rounds), rows from the bottom as the GL keeps them.
-  std::vector<uint8_t> read_rgba8(int samples = 1) const;
+  // The colour, each block of samples x samples pixels averaged (in double)
+  // into one: `pixel` gets each mean with its column and its row counted
+  // from the top, to round once (pixel_mean.hpp, as the ray-cast reference
+  // rounds).
+  void for_each_pixel_mean(int samples, const std::function<void(int x, int y, const glm::dvec4& mean)>& pixel) const;
   // Per pixel, 1 where a surface was drawn (its depth is under the cleared
   // 1.0, which no fragment can equal and pass GL_LESS), 0 elsewhere; rows
   // from the bottom. For one sample a pixel.

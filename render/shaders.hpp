@@ -99,7 +99,7 @@ void shade(vec3 p, vec3 n, bool faces_light) {
       float s = material_shininess > 0.0 ? pow(max(dot(r, v), 0.0), material_shininess) : 1.0;
       colour += material_specular * s;
     }
-    frag_color = vec4(light_color * colour, 1.0);
+    frag_color = vec4(light_color * colour, 0.0);  // alpha, coverage, is the ambient pass's
   } else {
     if (!faces_light) discard;
     if (in_shadow(p, n_dot_l)) discard;

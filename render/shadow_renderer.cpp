@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "render/frame_drawing.hpp"
+#include "image/pixel_mean.hpp"
 #include "render/gl.hpp"
 #include "render/shaders.hpp"
 #include "render/shadow_technique.hpp"
@@ -24,7 +25,11 @@ ShadowTechnique& ShadowRenderer::technique() {
 void ShadowRenderer::depth_and_ambient_pass() {
   drawing_->apply_view();
   baseline_state();
-  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  // The background, alpha 0, where nothing is drawn; alpha 1 where a surface
+  // is (the ambient pass writes it, the others add none): pixel_mean.hpp.
+  const Background& background = drawing_->scene().background;
+  const glm::vec4 clear(background_sample(background.color, background.transparent));
+  glClearColor(clear.r, clear.g, clear.b, clear.a);
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
   last_cast_light_.reset();
@@ -44,7 +49,7 @@ void ShadowRenderer::show_volumes_pass() {
   static const glm::vec4 tints[] = {{1.0f, 0.85f, 0.1f, 0.3f}, {0.2f, 0.8f, 1.0f, 0.3f}, {1.0f, 0.3f, 0.8f, 0.3f}};
   glDepthMask(GL_FALSE);
   glEnable(GL_BLEND);
-  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);  // the frame's alpha stays its coverage
   glEnable(GL_CULL_FACE);  // front faces only: a wrongly oriented quad shows as missing
   glCullFace(GL_BACK);
   for (size_t i = 0; i < plan_.lights.size(); ++i) drawing_->draw_volumes(i, tints[i % 3]);
@@ -67,10 +72,17 @@ void ShadowRenderer::show() const { drawing_->target().show(plan_.settings.width
 
 Image ShadowRenderer::render_image(bool show_volumes) {
   draw(show_volumes);
-  return read_pixels(3);
+  return read_image();
 }
 
-Image ShadowRenderer::read_image() const { return read_pixels(3); }
+Image ShadowRenderer::read_image() const {
+  const Background& background = drawing_->scene().background;
+  Image image(plan_.settings.width, plan_.settings.height, background.transparent ? 4 : 3);
+  drawing_->target().for_each_pixel_mean(drawing_->samples_per_side(), [&](int x, int y, const glm::dvec4& mean) {
+    put_pixel_mean(image, x, y, mean);
+  });
+  return image;
+}
 
 std::vector<float> ShadowRenderer::read_depth() const { return drawing_->target().read_depth(); }
 
@@ -109,23 +121,14 @@ void ShadowRenderer::mask_passes(size_t light) {
 // over every surface: on llvmpipe that pass cost 0.1 s of the engine's 0.8 s
 // with --mask at one sample (docs/performance.md).
 Image ShadowRenderer::read_mask() const {
-  Image mask = read_pixels(1);
+  Image mask(plan_.settings.width, plan_.settings.height, 1);
+  drawing_->target().for_each_pixel_mean(1, [&](int x, int y, const glm::dvec4& mean) { mask.at(x, y) = channel_byte(mean.r); });
   const std::vector<uint8_t> covered = drawing_->target().read_covered();
   const int w = mask.width, h = mask.height;
   for (int y = 0; y < h; ++y)  // GL's row 0 is the bottom
     for (int x = 0; x < w; ++x)
       if (!covered[size_t(h - 1 - y) * size_t(w) + size_t(x)]) mask.at(x, y) = kMaskNoSurface;
   return mask;
-}
-
-Image ShadowRenderer::read_pixels(int channels) const {
-  const int w = plan_.settings.width, h = plan_.settings.height;
-  const std::vector<uint8_t> rgba = drawing_->target().read_rgba8(drawing_->samples_per_side());
-  Image image(w, h, channels);
-  for (int y = 0; y < h; ++y)  // GL's row 0 is the bottom
-    for (int x = 0; x < w; ++x)
-      for (int c = 0; c < channels; ++c) image.at(x, y, c) = rgba[(size_t(h - 1 - y) * w + x) * 4 + size_t(c)];
-  return image;
 }
 
 }  // namespace umbra

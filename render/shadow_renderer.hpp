@@ -40,9 +40,10 @@ class ShadowRenderer {
   void show() const;
   // Waits until the GL has finished every command so far (for timing).
   void finish() const;
-  // The shaded image (RGB): draw, then read it back.
+  // The shaded image (RGB, or RGBA where the scene's background is
+  // transparent): draw, then read it back.
   Image render_image(bool show_volumes);
-  // What the last draw left in the framebuffer (RGB).
+  // What the last draw left in the framebuffer (as render_image).
   Image read_image() const;
   // The window depth the last draw left, per pixel, rows from the bottom; 1
   // where no surface was drawn. For one sample a pixel (--antialias 1).
@@ -64,7 +65,6 @@ class ShadowRenderer {
   void direct_light_pass(size_t light);
   void show_volumes_pass();
   void mask_passes(size_t light);
-  Image read_pixels(int channels) const;
   Image read_mask() const;  // after mask_passes
 
   const RenderPlan& plan_;

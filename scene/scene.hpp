@@ -114,6 +114,13 @@ static_assert(sizeof(Camera) == 10 * sizeof(double), "compare the new member of 
 // of the cube [-1,1]^3 (z = 1) filling 99% of the window's height.
 Camera spec_camera();
 
+// What a picture shows where no surface is: a colour, or nothing at all
+// (alpha 0, in a PNG with an alpha channel).
+struct Background {
+  glm::dvec3 color{0.0};
+  bool transparent = false;
+};
+
 struct Warning {
   FileLoc where;
   std::string message;
@@ -128,6 +135,7 @@ struct Scene {
   std::vector<Mesh> meshes;
   Camera camera = spec_camera();
   std::optional<FileLoc> camera_from;  // where the camera statement was; none: the default view
+  Background background;
   std::vector<Warning> warnings;
 };
 

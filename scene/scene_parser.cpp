@@ -135,16 +135,23 @@ class SceneBuilder {
   }
 
   void statement(StatementReader& r) {
+    // The statements of the format (docs/scene-format.md), each read by its member.
+    struct Statement {
+      const char* keyword;
+      void (SceneBuilder::*read)(StatementReader&);
+    };
+    static constexpr Statement kStatements[] = {
+        {"light", &SceneBuilder::light},       {"material", &SceneBuilder::material}, {"sphere", &SceneBuilder::sphere},
+        {"triangle", &SceneBuilder::triangle}, {"mesh", &SceneBuilder::mesh},         {"camera", &SceneBuilder::camera},
+        {"background", &SceneBuilder::background},
+    };
     const std::string& k = r.keyword();
-    if (k == "light") light(r);
-    else if (k == "material") material(r);
-    else if (k == "sphere") sphere(r);
-    else if (k == "triangle") triangle(r);
-    else if (k == "mesh") mesh(r);
-    else if (k == "camera") camera(r);
-    else
-      throw InputError(r.statement_loc(), "unknown statement " + in_quotes(k) +
-                                              " (expected light, material, sphere, triangle, mesh or camera)");
+    std::vector<std::string> keywords;
+    for (const Statement& s : kStatements) {
+      if (k == s.keyword) return (this->*s.read)(r);
+      keywords.push_back(s.keyword);
+    }
+    throw InputError(r.statement_loc(), "unknown statement " + in_quotes(k) + " (expected " + word_list(keywords) + ")");
   }
 
   Scene finish(const MeshLoadProgress& progress, const TextureMaps& maps) {
@@ -190,7 +197,10 @@ class SceneBuilder {
       }
     }
     materials_[m.name] = name_at;
-    scene_.materials.push_back(m);
+    // "default" is the material of everything that names none: written
+    // once, it takes the built-in one's place.
+    if (m.name == "default") scene_.materials[0] = m;
+    else scene_.materials.push_back(m);
   }
 
   int material_ref(StatementReader& r, const std::string& statement) {
@@ -200,6 +210,7 @@ class SceneBuilder {
   int material_named(StatementReader& r) {
     const FileLoc at = r.next_loc();
     const std::string name = r.word("a material name");
+    if (name == "default" && materials_.count(name)) return 0;
     for (size_t i = 1; i < scene_.materials.size(); ++i)
       if (scene_.materials[i].name == name) return int(i);
     throw InputError(at, "material " + in_quotes(name) + " is not defined (define it on an earlier line)");
@@ -291,11 +302,25 @@ class SceneBuilder {
     scene_.camera_from = r.statement_loc();
   }
 
+  void background(StatementReader& r) {
+    if (background_from_)
+      throw InputError(r.statement_loc(), "a second background statement (the first is at line " +
+                                              std::to_string(background_from_->line) + ")");
+    background_from_ = r.statement_loc();
+    if (!r.done() && r.peek().text == "transparent") {
+      r.word("transparent");
+      scene_.background.transparent = true;
+      return;
+    }
+    scene_.background.color = r.color("background colour");
+  }
+
   void warn(const FileLoc& where, const std::string& message) { scene_.warnings.push_back({where, message}); }
 
   Scene scene_;
   std::map<std::string, FileLoc> materials_;
   std::vector<MeshStatement> pending_meshes_;
+  std::optional<FileLoc> background_from_;
 };
 
 }  // namespace

@@ -134,7 +134,7 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
   std::vector<glm::dvec3> points;
   for (const glm::dvec3& p : model_points) {
     points.push_back(p);
-    if (!(stage.light.z > p.z)) continue;
+    if (!view.frame_shadow || !(stage.light.z > p.z)) continue;
     glm::dvec3 shadow = stage.light + (p - stage.light) * ((stage.light.z - stage.floor_z) / (stage.light.z - p.z));
     const glm::dvec3 out(shadow.x - centre.x, shadow.y - centre.y, 0.0);
     if (glm::length(out) > kShadowReach) shadow = glm::dvec3(centre.x, centre.y, stage.floor_z) + out * (kShadowReach / glm::length(out));
@@ -195,6 +195,7 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
     if (staged) staged->clear();
     Scene scene = parse_scene_file(path, progress, maps);
     if (staging.view.light_turn_deg != 0.0) rotate_lights_about_z(scene, staging.view.light_turn_deg);
+    if (staging.background) scene.background = *staging.background;
     return scene;
   }
   const std::string file_name = std::filesystem::path(path).filename().string();
@@ -214,7 +215,7 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
   // depends on its box.
   const std::string header = "# " + written_name + " on its own, as umbra stages a mesh file: fitted into the\n"
                              "# cube [-1,1]^3 with its " + axis + " axis up" + (up.empty() ? " (--up changes it)" : "") +
-                             ", standing on a floor,\n" +
+                             (staging.no_floor ? ", in the air,\n" : ", standing on a floor,\n") +
                              std::string(staging.view == StageView{} ? "# lit from above and to the left, seen from a raised three-quarter view.\n"
                                                           : "# lit and seen from where the command line's options put the light and camera.\n");
   const int mesh_line = 4;
@@ -245,16 +246,23 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
   Mesh& mesh = loaded.meshes.at(0);
   if (mesh.triangles.empty()) throw InputError({path}, "has no faces: there is nothing to show");
 
-  const Stage stage = stage_for(mesh.bounds_min, mesh.bounds_max, framing_points(mesh), staging.frame_aspect, staging.view);
+  StageView view = staging.view;
+  view.frame_shadow = !staging.no_floor;
+  const Stage stage = stage_for(mesh.bounds_min, mesh.bounds_max, framing_points(mesh), staging.frame_aspect, view);
   const double s = stage.floor_half_size;
   const glm::dvec3 f = stage.floor_centre;
   const glm::dvec3 corners[4] = {f + glm::dvec3(-s, -s, 0), f + glm::dvec3(s, -s, 0), f + glm::dvec3(s, s, 0), f + glm::dvec3(-s, s, 0)};
   const Camera& c = stage.camera;
-  const std::string rest = "light " + vec(stage.light) + " ambient 0.35 0.35 0.35\n" +
-                           "material floor diffuse 0.7 0.7 0.72\n"
-                           "triangle " + vec(corners[0]) + "   " + vec(corners[1]) + "   " + vec(corners[2]) + " material floor\n" +
-                           "triangle " + vec(corners[0]) + "   " + vec(corners[2]) + "   " + vec(corners[3]) + " material floor\n" +
-                           "camera eye " + vec(c.eye) + " target " + vec(c.target) + " up 0 0 1 fovy " + num(c.fovy_deg) + "\n";
+  std::string rest = "light " + vec(stage.light) + " ambient 0.35 0.35 0.35\n";
+  if (staging.model_color) rest += "material default ambient " + vec(*staging.model_color) + " diffuse " + vec(*staging.model_color) + "\n";
+  if (!staging.no_floor)
+    rest += (staging.floor_color ? "material floor ambient " + vec(*staging.floor_color) + " diffuse " + vec(*staging.floor_color) + "\n"
+                                 : std::string("material floor diffuse 0.7 0.7 0.72\n")) +
+            "triangle " + vec(corners[0]) + "   " + vec(corners[1]) + "   " + vec(corners[2]) + " material floor\n" +
+            "triangle " + vec(corners[0]) + "   " + vec(corners[2]) + "   " + vec(corners[3]) + " material floor\n";
+  rest += "camera eye " + vec(c.eye) + " target " + vec(c.target) + " up 0 0 1 fovy " + num(c.fovy_deg) + "\n";
+  if (staging.background)
+    rest += staging.background->transparent ? std::string("background transparent\n") : "background " + vec(staging.background->color) + "\n";
   if (staged) *staged = header + mesh_statement + "\n" + rest;
   // The rest of the stage from the same text, the mesh's line left blank
   // (its mesh is the one loaded above), so that lines number alike. Its

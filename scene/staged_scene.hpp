@@ -53,12 +53,13 @@ struct StageView {
   std::optional<double> light_azimuth_deg, light_elevation_deg;
   std::optional<glm::dvec3> light;
   double light_turn_deg = 0.0;  // then turned about the z axis (--light-angle)
+  bool frame_shadow = true;     // frame the shadow on the floor too (there is a floor)
 
   bool operator==(const StageView& o) const {
     return camera_azimuth_deg == o.camera_azimuth_deg && camera_elevation_deg == o.camera_elevation_deg &&
            camera_zoom == o.camera_zoom && fov_deg == o.fov_deg && eye == o.eye && target == o.target &&
            light_azimuth_deg == o.light_azimuth_deg && light_elevation_deg == o.light_elevation_deg && light == o.light &&
-           light_turn_deg == o.light_turn_deg;
+           light_turn_deg == o.light_turn_deg && frame_shadow == o.frame_shadow;
   }
 };
 
@@ -90,11 +91,20 @@ struct StagingOptions {
   std::string up;
   double frame_aspect = 1.0;
   StageView view;
+  // The stage's floor: its colour (diffuse and ambient), or none at all.
+  std::optional<glm::dvec3> floor_color;
+  bool no_floor = false;
+  // The model's colour where its file gives none (the scene's default material).
+  std::optional<glm::dvec3> model_color;
+  // The background, for a mesh file's stage and a scene file alike (a
+  // scene's own then gives way).
+  std::optional<Background> background;
 };
 
 // parse_scene_file for a scene, or the staged scene for a mesh file; either
 // way with its lights turned by `staging.view.light_turn_deg` about the z
-// axis (a staged light before the camera frames its shadow).
+// axis (a staged light before the camera frames its shadow), and with
+// `staging.background` where given.
 // `staged` (when given) receives the staged scene's text, or "" for a scene
 // file. A mesh file with no faces is an InputError: there is nothing to show.
 // `maps` says where texture maps may be read from.

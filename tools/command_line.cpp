@@ -1,6 +1,7 @@
 #include "tools/command_line.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -259,7 +260,37 @@ double parse_degrees_in(const std::string& option, const std::string& text, doub
   return v;
 }
 
+// The colour names --background, --floor and --color take: CSS's basic
+// sixteen (W3C, CSS Color Module Level 3, 2011), grey and its spelling,
+// cyan, magenta and orange.
+struct NamedColor {
+  const char* name;
+  uint8_t r, g, b;
+};
+constexpr NamedColor kColorNames[] = {
+    {"black", 0, 0, 0},       {"silver", 192, 192, 192}, {"gray", 128, 128, 128},  {"grey", 128, 128, 128},
+    {"white", 255, 255, 255}, {"maroon", 128, 0, 0},     {"red", 255, 0, 0},       {"purple", 128, 0, 128},
+    {"fuchsia", 255, 0, 255}, {"magenta", 255, 0, 255},  {"green", 0, 128, 0},     {"lime", 0, 255, 0},
+    {"olive", 128, 128, 0},   {"yellow", 255, 255, 0},   {"navy", 0, 0, 128},      {"blue", 0, 0, 255},
+    {"teal", 0, 128, 128},    {"aqua", 0, 255, 255},     {"cyan", 0, 255, 255},    {"orange", 255, 165, 0},
+};
+
 }  // namespace
+
+glm::dvec3 parse_color(const std::string& option, const std::string& text) {
+  for (const NamedColor& c : kColorNames)
+    if (text == c.name) return glm::dvec3(c.r, c.g, c.b) / 255.0;
+  const auto hex = [](char c) { return std::isxdigit(static_cast<unsigned char>(c)) != 0; };
+  if (text.size() == 7 && text[0] == '#' && std::all_of(text.begin() + 1, text.end(), hex)) {
+    glm::dvec3 rgb;
+    for (int k = 0; k < 3; ++k) rgb[k] = double(std::stoi(text.substr(1 + 2 * size_t(k), 2), nullptr, 16)) / 255.0;
+    return rgb;
+  }
+  std::vector<std::string> names;
+  for (const NamedColor& c : kColorNames) names.push_back(c.name);
+  throw UsageError(option + " expects a colour, #rrggbb or a name (" + word_list(names) + "), got \"" + text + "\"" +
+                   did_you_mean(text, names));
+}
 
 void add_staging_options(CommandOptions& options, StagingOptions& staging, std::vector<std::string>& given) {
   StageView& v = staging.view;
@@ -288,6 +319,15 @@ void add_staging_options(CommandOptions& options, StagingOptions& staging, std::
     v.light_elevation_deg = parse_degrees_in(o, t, -90.0, 90.0, true);
   });
   add("--light", [&](const std::string& o, const std::string& t) { v.light = parse_point(o, t); });
+  add("--floor", [&](const std::string& o, const std::string& t) {
+    staging.no_floor = t == "none";
+    if (!staging.no_floor) staging.floor_color = parse_color(o, t);
+  });
+  add("--color", [&](const std::string& o, const std::string& t) { staging.model_color = parse_color(o, t); });
+  // Not a staging option only: a scene's own background gives way to it.
+  options.value("--background", [&](const std::string& o, const std::string& t) {
+    staging.background = t == "transparent" ? Background{glm::dvec3(0.0), true} : Background{parse_color(o, t), false};
+  });
 }
 
 StagingOptions staging_for(StagingOptions staging, const RenderSettings& settings) {

@@ -107,11 +107,14 @@ void add_gl_option(CommandOptions& options, HeadlessGl& gl);                    
 // The platform --gl chose, where auto takes UMBRA_GL's: checked once, before
 // any work, a UsageError as a bad --gl is.
 HeadlessGl gl_with_environment(HeadlessGl chosen);
+// A colour as the options take it: #rrggbb, or a name (black, white, red, ...).
+glm::dvec3 parse_color(const std::string& option, const std::string& text);
 // How a mesh file on its own is staged: --up AXIS; the camera's
 // --camera-azimuth, --camera-elevation, --camera-zoom, --fov, --eye and
-// --target; the light's --light-azimuth, --light-elevation and --light. The
-// names of those given are added to `given`, for a command to refuse them
-// where nothing is staged.
+// --target; the light's --light-azimuth, --light-elevation and --light;
+// --floor COLOR|none and --color COLOR. The names of those given are added
+// to `given`, for a command to refuse them where nothing is staged. Also
+// --background COLOR|transparent, which a scene file takes too.
 void add_staging_options(CommandOptions& options, StagingOptions& staging, std::vector<std::string>& given);
 // `staging` for a picture of `settings`' size: framed for its shape.
 StagingOptions staging_for(StagingOptions staging, const RenderSettings& settings);

@@ -98,6 +98,9 @@ options:
   --light-elevation DEG the light's elevation, -90 to 90 (default about 53.4);
                         it stands 4 half-sizes of the model from its centre
   --light X,Y,Z         put the light there
+  --floor COLOR         the floor's colour, or none: no floor (default grey)
+  --color COLOR         the model's colour where its file gives it none
+                        (default light grey)
 
   --jobs N              with several files: draw N at a time, each in its own
                         GL context, using at most N threads in all (default:
@@ -117,6 +120,10 @@ options:
                         stdout: path, picture, status (drawn, skipped,
                         failed, timed out, crashed or passed over), seconds,
                         triangles and error
+  --background COLOR    what shows where no surface is: a colour (#rrggbb or a
+                        name such as white), or transparent: alpha 0 there,
+                        in a PNG with an alpha channel (default: the scene's
+                        background statement, or black)
   --any-texture-path    read texture maps from any folder: by default a model's
                         maps are read only from inside the folder named on
                         the command line (the model's own, for a file named
@@ -230,6 +237,9 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     if (o.output.empty()) throw UsageError("no output image given (-o OUT.png)");
     require_other_than_input("-o", o.output, o.scene_path);
     require_picture_name("-o", o.output);
+    if (o.staging.background && o.staging.background->transparent && !picture_format_keeps_alpha(*picture_format_of(o.output)))
+      throw UsageError("--background transparent needs an alpha channel, which a " +
+                       std::string(format_row(*picture_format_of(o.output)).name) + " picture has not: name a .png");
     if (o.jpeg_quality_given && picture_format_of(o.output) != PictureFormat::kJpeg)
       throw UsageError("--jpeg-quality is for a JPEG picture; -o " + o.output + " is not one");
     if (o.output == "-" && o.explain)

@@ -114,7 +114,8 @@ int run_volume_command(const std::vector<std::string>& argv) {
     return 2;
   }
   try {
-    StagingOptions staging{options.up, 1.0, {}};
+    StagingOptions staging;
+    staging.up = options.up;
     staging.view.light_turn_deg = options.light_angle_deg;
     std::string staged;
     Scene scene = parse_scene_or_mesh_file(options.scene_path, {}, &staged, staging);

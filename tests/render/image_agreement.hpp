@@ -36,8 +36,8 @@ inline RenderedImages render_gl_and_ray_cast(const Scene& scene, int size, Rende
   return {renderer.render_image(false), ray_cast_frame(scene, size, size, supersampling).image};
 }
 
-// How many colour channels of pixels that see one object throughout differ
-// by more than one level.
+// How many channels (alpha too, where there is one) of pixels that see one
+// object throughout differ by more than one level.
 inline int differing_channels_away_from_edges(const Scene& scene, const RenderedImages& r,
                                               int segments = RenderSettings{}.sphere_segments) {
   const int w = r.gl.width, h = r.gl.height;
@@ -64,7 +64,7 @@ inline int differing_channels_away_from_edges(const Scene& scene, const Rendered
             straddles = reference_mask_value(scene, w, h, x + dx, y + dy, light) != reference_mask_value(scene, w, h, x, y, light);
         }
       if (straddles || in_a_band(x, y)) continue;
-      for (int c = 0; c < 3; ++c) differing += std::abs(int(r.gl.at(x, y, c)) - int(r.cpu.at(x, y, c))) > 1;
+      for (int c = 0; c < r.gl.channels; ++c) differing += std::abs(int(r.gl.at(x, y, c)) - int(r.cpu.at(x, y, c))) > 1;
     }
   return differing;
 }

@@ -224,11 +224,17 @@ TEST(StagedMesh, APortraitFrameHoldsTheModelAndItsShadowAcross) {
   if (!std::filesystem::exists(kEngine)) GTEST_SKIP() << "needs Debian's assimp-testmodels (build.sh installs it)";
   for (const double aspect : {150.0 / 600.0, 1.0, 600.0 / 150.0}) {
     SCOPED_TRACE(aspect);
-    expect_framed(parse_scene_or_mesh_file(kEngine, {}, nullptr, StagingOptions{"", aspect, {}}), aspect);
+    StagingOptions framed;
+    framed.frame_aspect = aspect;
+    expect_framed(parse_scene_or_mesh_file(kEngine, {}, nullptr, framed), aspect);
   }
 }
 
-StagingOptions staged_with(const StageView& view) { return StagingOptions{"", 1.0, view}; }
+StagingOptions staged_with(const StageView& view) {
+  StagingOptions staging;
+  staging.view = view;
+  return staging;
+}
 
 // Wherever the camera or the light is put, by angles, the frame holds the
 // model and its whole shadow; --light-angle (light_turn_deg) turns the

@@ -79,6 +79,33 @@ TEST(SceneParser, CameraStatement) {
   EXPECT_EQ(s.camera.fovy_deg, 30.0);
 }
 
+TEST(SceneParser, BackgroundIsAColourOrTransparent) {
+  EXPECT_EQ(parse_scene_text(kLight, "t").background.color, glm::dvec3(0.0));  // black unless written
+  EXPECT_FALSE(parse_scene_text(kLight, "t").background.transparent);
+  const Scene coloured = parse_scene_text(kLight + "background 0.2 0.4 1\n", "t");
+  EXPECT_EQ(coloured.background.color, glm::dvec3(0.2, 0.4, 1.0));
+  EXPECT_FALSE(coloured.background.transparent);
+  EXPECT_TRUE(parse_scene_text(kLight + "background transparent\n", "t").background.transparent);
+  EXPECT_EQ(error_of(kLight + "background 0.2 0.4 1\nbackground transparent\n"),
+            "t.scene:3:1: a second background statement (the first is at line 2)");
+  EXPECT_EQ(error_of(kLight + "background clear\n"), "t.scene:2:12: expected a number for the background colour red, got \"clear\"");
+  EXPECT_EQ(error_of(kLight + "background transparent 1\n"), "t.scene:2:24: unexpected \"1\" after the end of the background statement");
+}
+
+// "default", written once, is the material of everything that names none,
+// and may then be named; any other name still cannot be written twice.
+TEST(SceneParser, TheDefaultMaterialCanBeWrittenOnce) {
+  const Scene s = parse_scene_text(kLight + "material default diffuse 1 0 0\nsphere 0 0 0 0.5\ntriangle 0 0 0 1 0 0 0 1 0 material default\n", "t");
+  EXPECT_EQ(s.materials.size(), 1u);
+  EXPECT_EQ(s.materials[0].name, "default");
+  EXPECT_EQ(s.materials[0].diffuse, glm::dvec3(1, 0, 0));
+  EXPECT_EQ(s.spheres[0].material, 0);
+  EXPECT_EQ(s.triangles[0].material, 0);
+  EXPECT_EQ(error_of(kLight + "sphere 0 0 0 0.5 material default\n"),
+            "t.scene:2:27: material \"default\" is not defined (define it on an earlier line)");
+  EXPECT_EQ(error_of(kLight + "material default\nmaterial default\n"), "t.scene:3:10: material \"default\" is already defined at line 2");
+}
+
 TEST(SceneParser, NumbersInCLocaleWithExponentsAndSigns) {
   const Scene s = parse_scene_text("light +1e-3 -0.5 2.5E0\n", "t");
   EXPECT_EQ(s.lights[0].position, glm::dvec3(1e-3, -0.5, 2.5));
@@ -101,12 +128,12 @@ TEST(SceneParserErrors, NanAndInfAreNotNumbers) {
 
 TEST(SceneParserErrors, UnknownStatement) {
   EXPECT_EQ(error_of(kLight + "  cube 0 0 0 1\n"),
-            "t.scene:2:3: unknown statement \"cube\" (expected light, material, sphere, triangle, mesh or camera)");
+            "t.scene:2:3: unknown statement \"cube\" (expected light, material, sphere, triangle, mesh, camera or background)");
 }
 
 TEST(SceneParserErrors, KeywordsAreLowerCase) {
   EXPECT_EQ(error_of("Light 0 0 2\n"),
-            "t.scene:1:1: unknown statement \"Light\" (expected light, material, sphere, triangle, mesh or camera)");
+            "t.scene:1:1: unknown statement \"Light\" (expected light, material, sphere, triangle, mesh, camera or background)");
 }
 
 TEST(SceneParserErrors, UnknownKeyword) {

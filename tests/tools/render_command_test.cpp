@@ -58,7 +58,7 @@ TEST_F(RenderCommand, AMeshFileOnItsOwnIsStagedAndExplainPrintsTheSceneToSave) {
   const std::string neither = write("notes.txt", "hello\n");
   const CommandResult bad = run("render " + neither + " -o " + path("c.png"));
   EXPECT_EQ(bad.status, 1);
-  EXPECT_EQ(bad.err, neither + ":1:1: unknown statement \"hello\" (expected light, material, sphere, triangle, mesh or camera)\n");
+  EXPECT_EQ(bad.err, neither + ":1:1: unknown statement \"hello\" (expected light, material, sphere, triangle, mesh, camera or background)\n");
 }
 
 // --up names the file's axis that points up; the staged scene turns it to +z.
@@ -140,6 +140,59 @@ TEST_F(RenderCommand, TheOutputsNameSaysItsFormat) {
     EXPECT_EQ(r.err, "umbra render: " + message + "\n(see umbra render --help)\n");
   }
   for (const char* never : {"d.webp", "d", "d.png", "d.jpg", "m.jpg"}) EXPECT_FALSE(fs::exists(path(never))) << never;
+}
+
+// --floor, --color and --background change what they say and nothing else,
+// and are written into the staged scene's text, which reads back as the
+// same picture.
+TEST_F(RenderCommand, FloorColorAndBackgroundOptions) {
+  const std::string tet = write("t.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  const std::string base = "render " + tet + " --size 48x48 --antialias 1 ";
+  ASSERT_EQ(run(base + "-o " + path("plain.png")).status, 0);
+  CommandResult r = run(base + "-o " + path("red.png") + " --color red --explain");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\nmaterial default ambient 1 0 0 diffuse 1 0 0\n"), std::string::npos) << r.out;
+  const Image plain = read_png(path("plain.png")), red = read_png(path("red.png"));
+  int redder = 0, changed = 0;
+  for (int y = 0; y < 48; ++y)
+    for (int x = 0; x < 48; ++x) {
+      changed += plain.at(x, y, 0) != red.at(x, y, 0) || plain.at(x, y, 1) != red.at(x, y, 1) || plain.at(x, y, 2) != red.at(x, y, 2);
+      redder += red.at(x, y, 0) > red.at(x, y, 1) + 40;
+    }
+  EXPECT_GT(redder, 48 * 48 / 50) << "the model should turn red";
+  EXPECT_EQ(changed, redder) << "only the model's pixels should change";
+  // A model whose file colours every face keeps its colours.
+  const std::string coloured = write("c.obj", "mtllib c.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nusemtl blue\n"
+                                              "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+  write("c.mtl", "newmtl blue\nKd 0.1 0.2 0.9\n");
+  ASSERT_EQ(run("render " + coloured + " --size 48x48 --antialias 1 -o " + path("c1.png")).status, 0);
+  ASSERT_EQ(run("render " + coloured + " --size 48x48 --antialias 1 -o " + path("c2.png") + " --color red").status, 0);
+  EXPECT_EQ(read_png(path("c1.png")).pixels, read_png(path("c2.png")).pixels);
+  // The floor: a colour, or none at all.
+  r = run(base + "-o " + path("f.png") + " --floor '#ff8000' --explain");
+  EXPECT_NE(r.out.find("\nmaterial floor ambient 1 0.501961 0 diffuse 1 0.501961 0\n"), std::string::npos) << r.out;
+  r = run(base + "-o " + path("n.png") + " --floor none --background transparent --explain");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.find("floor"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\nbackground transparent\n"), std::string::npos) << r.out;
+  const Image alone = read_png(path("n.png"));
+  EXPECT_EQ(alone.channels, 4);
+  EXPECT_EQ(alone.at(0, 0, 3), 0);  // no floor: the corner sees nothing
+  // Mistakes: a colour that is none, a transparent JPEG, a floor for a scene.
+  const std::string demo = std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene";
+  r = run(base + "-o " + path("x.png") + " --background whte");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--background expects a colour, #rrggbb or a name (black, "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("got \"whte\" (did you mean white?)"), std::string::npos) << r.err;
+  r = run(base + "-o " + path("x.jpg") + " --background transparent");
+  EXPECT_EQ(r.err, "umbra render: --background transparent needs an alpha channel, which a JPEG picture has not: name a "
+                   ".png\n(see umbra render --help)\n");
+  EXPECT_EQ(run("render " + demo + " -o " + path("x.png") + " --floor red").status, 2);
+  // A scene takes --background, in place of its own.
+  ASSERT_EQ(run("render " + demo + " --size 32x32 -o " + path("d.png") + " --background transparent").status, 0);
+  EXPECT_EQ(read_png(path("d.png")).channels, 4);
+  EXPECT_FALSE(fs::exists(path("x.png")));
+  EXPECT_FALSE(fs::exists(path("x.jpg")));
 }
 
 TEST_F(RenderCommand, AFileThatIsPlainlyNeitherASceneNorAMeshExitsWithTwo) {

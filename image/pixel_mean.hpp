@@ -1,0 +1,29 @@
+#pragma once
+// What a pixel becomes from the mean of its samples, alike for the GL frame
+// and the ray-cast reference. Both count a sample that sees a surface as
+// (colour, 1), and one that sees nothing as (background, 0), or (0, 0, 0, 0)
+// where the background is transparent. So an RGB picture's mean is its
+// colour, background included; an RGBA one's is the colour premultiplied by
+// the coverage a (Porter and Duff 1984), kept as alpha beside the straight
+// colour.
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "image/image.hpp"
+
+namespace umbra {
+
+// The sample that sees no surface, for a background `color` or a transparent one.
+inline glm::dvec4 background_sample(const glm::dvec3& color, bool transparent) {
+  return transparent ? glm::dvec4(0.0) : glm::dvec4(color, 0.0);
+}
+
+inline void put_pixel_mean(Image& image, int x, int y, const glm::dvec4& mean) {
+  const bool alpha = image.channels == 4;
+  const double a = mean.a;
+  for (int c = 0; c < 3; ++c) image.at(x, y, c) = channel_byte(!alpha ? mean[c] : a > 0.0 ? mean[c] / a : 0.0);
+  if (alpha) image.at(x, y, 3) = channel_byte(a);
+}
+
+}  // namespace umbra
