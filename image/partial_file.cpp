@@ -47,6 +47,21 @@ void unlist(int slot) {
   slots[slot].used.store(false);
 }
 
+// The process's umask, read without changing it (umask(2) can only set it,
+// which would race with threads creating files): Linux's /proc/self/status
+// says it; failing that, 022, the usual one.
+mode_t current_umask() {
+  std::FILE* status = std::fopen("/proc/self/status", "r");
+  unsigned mask = 022;
+  if (status) {
+    char line[256];
+    while (std::fgets(line, sizeof line, status))
+      if (std::sscanf(line, "Umask: %o", &mask) == 1) break;
+    std::fclose(status);
+  }
+  return mode_t(mask);
+}
+
 void remove_listed_and_die(int signal_number) {
   for (Slot& slot : slots)
     if (slot.listed.load()) ::unlink(slot.path);
@@ -81,6 +96,8 @@ PartialFile::PartialFile(const std::string& path, const std::string& what, Endin
   name.push_back('\0');
   const int fd = ::mkstemps(name.data(), int(suffix.size()));
   if (fd < 0) throw std::runtime_error(path + ": cannot write " + what + ": " + std::strerror(errno));
+  // mkstemps makes it 0600; once renamed it is a file like any other.
+  ::fchmod(fd, 0666 & ~current_umask());
   ::close(fd);
   temporary_ = name.data();
   slot_ = list(temporary_);

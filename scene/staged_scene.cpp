@@ -53,6 +53,7 @@ const double kLightAzimuthDeg = glm::degrees(std::atan2(kToLight.x, -kToLight.y)
 const double kLightElevationDeg = glm::degrees(std::asin(kToLight.z));
 constexpr double kLightDistance = 4.0;  // from the model's centre; the fitted model's longest side is 2
 constexpr double kMargin = 1.2;         // the frame's half-size over the framed points'
+const glm::dvec3 kStageBackground(0.8, 0.8, 0.82);
 // How far from the model's centre a shadow is framed: a point little below
 // a low light casts its shadow toward the horizon, which no frame holds.
 constexpr double kShadowReach = 8.0;
@@ -261,8 +262,9 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
             "triangle " + vec(corners[0]) + "   " + vec(corners[1]) + "   " + vec(corners[2]) + " material floor\n" +
             "triangle " + vec(corners[0]) + "   " + vec(corners[2]) + "   " + vec(corners[3]) + " material floor\n";
   rest += "camera eye " + vec(c.eye) + " target " + vec(c.target) + " up 0 0 1 fovy " + num(c.fovy_deg) + "\n";
-  if (staging.background)
-    rest += staging.background->transparent ? std::string("background transparent\n") : "background " + vec(staging.background->color) + "\n";
+  // A studio's pale grey, behind the floor's horizon where a low camera sees it.
+  const Background background = staging.background.value_or(Background{kStageBackground, false});
+  rest += background.transparent ? std::string("background transparent\n") : "background " + vec(background.color) + "\n";
   if (staged) *staged = header + mesh_statement + "\n" + rest;
   // The rest of the stage from the same text, the mesh's line left blank
   // (its mesh is the one loaded above), so that lines number alike. Its

@@ -80,6 +80,21 @@ TEST_F(PartialFiles, AFolderOrABlockDeviceIsNoPlaceForAFile) {
   }
 }
 
+// A file written whole gets the mode any new file gets (0666 less the
+// umask), not the 0600 of its private temporary file.
+TEST_F(PartialFiles, AWrittenFileIsReadableAsAnyNewFileIs) {
+  const std::string out = (folder_ / "x.png").string();
+  const mode_t before = ::umask(022);
+  {
+    PartialFile file(out, "the image");
+    file.commit();
+  }
+  ::umask(before);
+  struct stat info {};
+  ASSERT_EQ(::stat(out.c_str(), &info), 0);
+  EXPECT_EQ(info.st_mode & 0777, 0644u);
+}
+
 TEST_F(PartialFiles, TheExtensionStaysLastWhereAsked) {
   const std::string out = (folder_ / "repaired.off").string();
   const PartialFile a(out, "the mesh", PartialFile::Ending::kKeepExtension), b(out, "the mesh");
