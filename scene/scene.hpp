@@ -136,6 +136,7 @@ struct Scene {
   Camera camera = spec_camera();
   std::optional<FileLoc> camera_from;  // where the camera statement was; none: the default view
   Background background;
+  std::optional<int> antialias;  // samples per side it is drawn with, unless told (none: 1)
   std::vector<Warning> warnings;
 };
 

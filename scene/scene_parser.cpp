@@ -143,7 +143,8 @@ class SceneBuilder {
     static constexpr Statement kStatements[] = {
         {"light", &SceneBuilder::light},       {"material", &SceneBuilder::material}, {"sphere", &SceneBuilder::sphere},
         {"triangle", &SceneBuilder::triangle}, {"mesh", &SceneBuilder::mesh},         {"camera", &SceneBuilder::camera},
-        {"background", &SceneBuilder::background},
+        {"background", &SceneBuilder::background}, {"floor", &SceneBuilder::floor},
+        {"antialias", &SceneBuilder::antialias},
     };
     const std::string& k = r.keyword();
     std::vector<std::string> keywords;
@@ -313,6 +314,41 @@ class SceneBuilder {
       return;
     }
     scene_.background.color = r.color("background colour");
+  }
+
+  // A level square, two triangles wound as the bundled scenes' floors are,
+  // which may reach past the cube without a warning: a floor is meant to.
+  void floor(StatementReader& r) {
+    const FileLoc where = r.statement_loc();
+    const double z = r.number("floor height");
+    glm::dvec2 centre(0.0);
+    double half = 1.0;
+    int material = 0;
+    while (auto k = r.keyword_of("floor", {"centre", "size", "material"})) {
+      if (*k == "centre") {
+        centre.x = r.number("floor centre x");
+        centre.y = r.number("floor centre y");
+      } else if (*k == "size") {
+        const FileLoc at = r.next_loc();
+        half = r.number("floor size");
+        if (half <= 0) throw InputError(at, "the floor size must be positive, got " + number_text(half));
+      } else {
+        material = material_named(r);
+      }
+    }
+    const glm::dvec3 a(centre.x - half, centre.y - half, z), b(centre.x + half, centre.y - half, z),
+        c(centre.x + half, centre.y + half, z), d(centre.x - half, centre.y + half, z);
+    scene_.triangles.push_back({a, b, c, material, where});
+    scene_.triangles.push_back({a, c, d, material, where});
+  }
+
+  void antialias(StatementReader& r) {
+    if (scene_.antialias) throw InputError(r.statement_loc(), "a second antialias statement");
+    const FileLoc at = r.next_loc();
+    const double n = r.number("samples per side");
+    if (n != std::floor(n) || n < 1 || n > 4)
+      throw InputError(at, "antialias takes a whole number of samples per side from 1 to 4, got " + number_text(n));
+    scene_.antialias = int(n);
   }
 
   void warn(const FileLoc& where, const std::string& message) { scene_.warnings.push_back({where, message}); }

@@ -250,21 +250,19 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
   StageView view = staging.view;
   view.frame_shadow = !staging.no_floor;
   const Stage stage = stage_for(mesh.bounds_min, mesh.bounds_max, framing_points(mesh), staging.frame_aspect, view);
-  const double s = stage.floor_half_size;
   const glm::dvec3 f = stage.floor_centre;
-  const glm::dvec3 corners[4] = {f + glm::dvec3(-s, -s, 0), f + glm::dvec3(s, -s, 0), f + glm::dvec3(s, s, 0), f + glm::dvec3(-s, s, 0)};
   const Camera& c = stage.camera;
   std::string rest = "light " + vec(stage.light) + " ambient 0.35 0.35 0.35\n";
   if (staging.model_color) rest += "material default ambient " + vec(*staging.model_color) + " diffuse " + vec(*staging.model_color) + "\n";
   if (!staging.no_floor)
     rest += (staging.floor_color ? "material floor ambient " + vec(*staging.floor_color) + " diffuse " + vec(*staging.floor_color) + "\n"
                                  : std::string("material floor diffuse 0.7 0.7 0.72\n")) +
-            "triangle " + vec(corners[0]) + "   " + vec(corners[1]) + "   " + vec(corners[2]) + " material floor\n" +
-            "triangle " + vec(corners[0]) + "   " + vec(corners[2]) + "   " + vec(corners[3]) + " material floor\n";
+            "floor " + num(f.z) + " centre " + num(f.x) + " " + num(f.y) + " size " + num(stage.floor_half_size) + " material floor\n";
   rest += "camera eye " + vec(c.eye) + " target " + vec(c.target) + " up 0 0 1 fovy " + num(c.fovy_deg) + "\n";
   // A studio's pale grey, behind the floor's horizon where a low camera sees it.
   const Background background = staging.background.value_or(Background{kStageBackground, false});
   rest += background.transparent ? std::string("background transparent\n") : "background " + vec(background.color) + "\n";
+  rest += "antialias " + std::to_string(kStagedAntialias) + "\n";
   if (staged) *staged = header + mesh_statement + "\n" + rest;
   // The rest of the stage from the same text, the mesh's line left blank
   // (its mesh is the one loaded above), so that lines number alike. Its

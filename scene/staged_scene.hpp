@@ -18,6 +18,10 @@
 
 namespace umbra {
 
+// Samples per side a staged mesh is drawn with (its text's `antialias`): a
+// picture to show.
+constexpr int kStagedAntialias = 3;
+
 // Whether `path` is a mesh file (by its content; see mesh_format.hpp) rather
 // than a scene. False for a file that cannot be read: the scene parser then
 // says why.

@@ -72,7 +72,8 @@ void render_one(const std::string& path, const std::string& root, const std::str
     for (const Warning& w : scene.warnings) record.messages += w.where.str() + ": warning: " + w.message + "\n";
     require_lights_off_casters(scene);
     RenderSettings settings = o.settings;
-    settings.supersampling = o.antialias.value_or(default_supersampling(path));
+    settings.supersampling = supersampling_for(o.antialias, scene);
+    require_drawable_size(settings.width, settings.height, settings.supersampling);
     Image image;
     if (settings.method == RenderMethod::kRaycast) {
       image = ray_cast_frame(scene, settings.width, settings.height, settings.supersampling).image;
@@ -138,7 +139,9 @@ bool up_to_date(const std::string& picture, const std::string& input) {
 
 }  // namespace
 
-int default_supersampling(const std::string& path) { return is_mesh_file(path) ? 3 : 1; }
+int default_supersampling(const std::string& path) { return is_mesh_file(path) ? kStagedAntialias : 1; }
+
+int supersampling_for(const std::optional<int>& asked, const Scene& scene) { return asked.value_or(scene.antialias.value_or(1)); }
 
 int run_batch_render(const BatchRenderOptions& o) {
   MeshPaths found;

@@ -35,6 +35,9 @@ struct BatchRenderOptions {
 // --antialias says: 3 for a mesh file staged on its own (a picture to show),
 // 1 for a scene file, whose pictures stay as they always were.
 int default_supersampling(const std::string& path);
+// Samples per side for a picture of `scene`: as --antialias `asked`, else as
+// the scene's `antialias` statement (a staged mesh's says 3), else 1.
+int supersampling_for(const std::optional<int>& asked, const Scene& scene);
 
 // Writes OUT_DIR/NAME.png for each file, NAME its path relative to the
 // folder it was found in (or its file name), so that a.obj and a.stl do not

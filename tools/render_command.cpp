@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <optional>
 #include <thread>
@@ -17,6 +18,7 @@
 #include "tools/batch_render.hpp"
 #include "render/headless_context.hpp"
 #include "image/image.hpp"
+#include "image/partial_file.hpp"
 #include "image/picture_file.hpp"
 #include "reference/ray_cast_render.hpp"
 #include "render/render_plan.hpp"
@@ -129,6 +131,10 @@ options:
                         the command line (the model's own, for a file named
                         on its own), so that a model from anywhere cannot
                         put another image you can read into its picture
+  --save-scene FILE     for a MESH: also write the scene umbra stages for it, the
+                        options' camera, light, floor and background included,
+                        naming the mesh by its path from FILE's folder: umbra
+                        render FILE then draws the same picture from anywhere
   --explain             print the render plan (camera, lights, each caster's
                         volume, how each light's volumes are counted and how
                         far they reach, the GL, the pages malloc takes) to
@@ -168,6 +174,7 @@ struct RenderOptions {
   std::optional<int> antialias;  // unset: by what is rendered (staged_supersampling)
   bool show_volumes = false;
   bool explain = false;
+  std::optional<std::string> save_scene;  // for a mesh file: where to write the staged scene
   bool any_texture_path = false;
   bool help = false;
 };
@@ -192,6 +199,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   options.value("--antialias", [&](const std::string& n, const std::string& t) { o.antialias = parse_int_in(n, t, 1, 4); });
   options.flag("--show-volumes", o.show_volumes);
   options.flag("--explain", o.explain);
+  options.value("--save-scene", [&](const std::string&, const std::string& t) { o.save_scene = t; });
   add_staging_options(options, o.staging, o.staging_given);
   add_any_texture_path_option(options, o.any_texture_path);
   std::optional<size_t> jobs;
@@ -226,6 +234,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
                        "folder (\"" + o.output + "/\" makes one of that name)");
     if (o.mask) throw UsageError("--mask writes one scene's mask; with several files there is none to choose");
     if (o.explain) throw UsageError("--explain prints one scene's plan; with several files, ask for one of them");
+    if (o.save_scene) throw UsageError("--save-scene saves one mesh file's staged scene; with several files, ask for one of them");
     o.batch = BatchRenderOptions{scenes, o.output, o.settings, o.staging, o.gl, o.antialias, o.show_volumes,
                                  jobs.value_or(std::max(1u, std::thread::hardware_concurrency())), shard, sheet,
                                  o.any_texture_path, timeout_s, skip_existing, json};
@@ -256,10 +265,41 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   if (!o.batch) require_drawable_size(o.settings.width, o.settings.height, o.antialias.value_or(default_supersampling(o.scene_path)));
   else if (o.antialias) require_drawable_size(o.settings.width, o.settings.height, *o.antialias);
   if (!o.batch) require_staged(o.staging_given, o.scene_path);
+  if (o.save_scene && !o.batch) {
+    require_staged({"--save-scene"}, o.scene_path);
+    require_other_than_input("--save-scene", *o.save_scene, o.scene_path);
+    if (same_file(*o.save_scene, o.output) || (o.mask && same_file(*o.save_scene, *o.mask)))
+      throw UsageError("--save-scene names a file another output writes");
+  }
   const RenderMethod m = o.settings.method;
   if (o.show_volumes && !counts_volumes(m))
     throw UsageError(std::string("--show-volumes needs shadow volumes; --method ") + method_name(m) + " has none");
   return o;
+}
+
+// Writes the staged scene's `text` to `path`, naming the mesh by its path
+// from `path`'s folder where the two share a folder below the root (a
+// project's scenes beside its models), else absolutely (a model under
+// /usr/share), so that the scene draws the same picture from any folder.
+void save_staged_scene(const std::string& text, const std::string& mesh_path, const std::string& path) {
+  namespace fs = std::filesystem;
+  const fs::path mesh = fs::weakly_canonical(fs::absolute(mesh_path));
+  const fs::path folder = fs::weakly_canonical(fs::absolute(path)).parent_path();
+  const auto [from_mesh, from_folder] = std::mismatch(mesh.begin(), mesh.end(), folder.begin(), folder.end());
+  const bool share_a_folder = std::distance(mesh.begin(), from_mesh) > 1;  // more than the root
+  const fs::path named = share_a_folder ? mesh.lexically_relative(folder) : mesh;
+  const std::string written = named.generic_string();
+  if (written.find_first_of("\"\n\r") != std::string::npos)
+    throw InputError({mesh_path}, "a scene cannot name this file (a double quote or a line break in its path): rename it to save its scene");
+  // The mesh statement is the staged text's one line that starts "mesh \"".
+  const size_t start = text.find("\nmesh \"") + 1, name_end = text.find('"', start + 6);
+  const std::string saved = text.substr(0, start) + "mesh \"" + written + text.substr(name_end);
+  PartialFile partial(path, "the scene");
+  std::ofstream out(partial.temporary_path());
+  out << saved;
+  out.close();
+  if (!out) throw InputError({path}, "cannot write the scene");
+  partial.commit();
 }
 
 }  // namespace
@@ -274,7 +314,6 @@ int run_render_command(const std::vector<std::string>& argv) {
     return 2;
   }
   keep_freed_memory_for_reuse();
-  options.settings.supersampling = options.antialias.value_or(default_supersampling(options.scene_path));
   try {
     // Loading, planning and drawing: three steps, the first per mesh file.
     std::optional<ProgressBar> progress(std::in_place, 3);
@@ -283,8 +322,10 @@ int run_render_command(const std::vector<std::string>& argv) {
       progress->update(0, "loading mesh " + std::to_string(loaded + 1) + " of " + std::to_string(total) + ": " + path);
     }, &staged, staging_for(options.staging, options.settings), TextureMaps{true, "", options.any_texture_path});
     progress->clear();
+    options.settings.supersampling = supersampling_for(options.antialias, scene);
+    require_drawable_size(options.settings.width, options.settings.height, options.settings.supersampling);
     if (options.explain && !staged.empty())
-      std::cout << "staged scene for " << options.scene_path << " (save it as a .scene file beside the mesh to edit it):\n"
+      std::cout << "staged scene for " << options.scene_path << " (--save-scene FILE saves it to render or edit):\n"
                 << staged << "\n";
     for (const Warning& w : scene.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
     progress->update(1, "planning shadow volumes");
@@ -326,19 +367,20 @@ int run_render_command(const std::vector<std::string>& argv) {
 
     progress.reset();
     write_picture(image, options.output, options.picture);
-    if (mask) {
-      try {
-        write_png(*mask, *options.mask);
-      } catch (...) {
-        if (options.output != "-") std::remove(options.output.c_str());  // all outputs or none
-        throw;
-      }
+    try {
+      if (mask) write_png(*mask, *options.mask);
+      if (options.save_scene) save_staged_scene(staged, options.scene_path, *options.save_scene);
+    } catch (...) {  // all outputs or none
+      if (options.output != "-") std::remove(options.output.c_str());
+      if (mask) std::remove(options.mask->c_str());
+      throw;
     }
     // With -o -, standard output holds the picture alone.
     std::ostream& said = options.output == "-" ? std::cerr : std::cout;
     said << "wrote " << (options.output == "-" ? "the picture to standard output" : options.output) << " (" << image.width
          << "x" << image.height << ")";
     if (mask) said << " and mask " << *options.mask;
+    if (options.save_scene) said << ", and saved its scene to " << *options.save_scene;
     said << "\n";
     return 0;
   } catch (const std::exception& e) {

@@ -106,6 +106,33 @@ TEST(SceneParser, TheDefaultMaterialCanBeWrittenOnce) {
   EXPECT_EQ(error_of(kLight + "material default\nmaterial default\n"), "t.scene:3:10: material \"default\" is already defined at line 2");
 }
 
+// A floor is the two triangles of the bundled scenes' floors, wound alike,
+// and may reach past the cube without a warning.
+TEST(SceneParser, AFloorIsTwoTrianglesThatMayReachPastTheCube) {
+  const Scene spec = parse_scene_text(kLight + "material grey\nfloor -1 material grey\n", "t");
+  ASSERT_EQ(spec.triangles.size(), 2u);
+  EXPECT_EQ(spec.triangles[0].a, glm::dvec3(-1, -1, -1));
+  EXPECT_EQ(spec.triangles[0].b, glm::dvec3(1, -1, -1));
+  EXPECT_EQ(spec.triangles[0].c, glm::dvec3(1, 1, -1));
+  EXPECT_EQ(spec.triangles[1].b, glm::dvec3(1, 1, -1));
+  EXPECT_EQ(spec.triangles[1].c, glm::dvec3(-1, 1, -1));
+  EXPECT_EQ(spec.triangles[1].material, 1);
+  const Scene wide = parse_scene_text(kLight + "floor -0.5 centre 2 3 size 50\n", "t");
+  EXPECT_EQ(wide.triangles[0].a, glm::dvec3(-48, -47, -0.5));
+  EXPECT_EQ(wide.triangles[0].c, glm::dvec3(52, 53, -0.5));
+  EXPECT_TRUE(wide.warnings.empty());
+  EXPECT_EQ(error_of(kLight + "floor -1 size 0\n"), "t.scene:2:15: the floor size must be positive, got 0");
+  EXPECT_EQ(error_of(kLight + "floor\n"), "t.scene:2:6: expected a number for the floor height, got end of line");
+}
+
+TEST(SceneParser, AntialiasSaysTheSamplesASceneIsDrawnWith) {
+  EXPECT_FALSE(parse_scene_text(kLight, "t").antialias);
+  EXPECT_EQ(parse_scene_text(kLight + "antialias 3\n", "t").antialias, 3);
+  EXPECT_EQ(error_of(kLight + "antialias 5\n"), "t.scene:2:11: antialias takes a whole number of samples per side from 1 to 4, got 5");
+  EXPECT_EQ(error_of(kLight + "antialias 2.5\n"), "t.scene:2:11: antialias takes a whole number of samples per side from 1 to 4, got 2.5");
+  EXPECT_EQ(error_of(kLight + "antialias 2\nantialias 2\n"), "t.scene:3:1: a second antialias statement");
+}
+
 TEST(SceneParser, NumbersInCLocaleWithExponentsAndSigns) {
   const Scene s = parse_scene_text("light +1e-3 -0.5 2.5E0\n", "t");
   EXPECT_EQ(s.lights[0].position, glm::dvec3(1e-3, -0.5, 2.5));
@@ -128,12 +155,12 @@ TEST(SceneParserErrors, NanAndInfAreNotNumbers) {
 
 TEST(SceneParserErrors, UnknownStatement) {
   EXPECT_EQ(error_of(kLight + "  cube 0 0 0 1\n"),
-            "t.scene:2:3: unknown statement \"cube\" (expected light, material, sphere, triangle, mesh, camera or background)");
+            "t.scene:2:3: unknown statement \"cube\" (expected light, material, sphere, triangle, mesh, camera, background, floor or antialias)");
 }
 
 TEST(SceneParserErrors, KeywordsAreLowerCase) {
   EXPECT_EQ(error_of("Light 0 0 2\n"),
-            "t.scene:1:1: unknown statement \"Light\" (expected light, material, sphere, triangle, mesh, camera or background)");
+            "t.scene:1:1: unknown statement \"Light\" (expected light, material, sphere, triangle, mesh, camera, background, floor or antialias)");
 }
 
 TEST(SceneParserErrors, UnknownKeyword) {

@@ -43,7 +43,7 @@ TEST_F(RenderCommand, AMeshFileOnItsOwnIsStagedAndExplainPrintsTheSceneToSave) {
   const CommandResult r = run("render " + mesh + " -o " + path("a.png") + " --size 32x32 --explain");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err, "");
-  const std::string header = "staged scene for " + mesh + " (save it as a .scene file beside the mesh to edit it):\n";
+  const std::string header = "staged scene for " + mesh + " (--save-scene FILE saves it to render or edit):\n";
   ASSERT_EQ(r.out.substr(0, header.size()), header);
   const std::string text = r.out.substr(header.size(), r.out.find("\nrender plan for ") - header.size());
   EXPECT_NE(text.find("\nmesh \"tet\" fit rotate 1 0 0 90\n"), std::string::npos) << text;  // OBJ: +y up, turned to +z
@@ -58,7 +58,7 @@ TEST_F(RenderCommand, AMeshFileOnItsOwnIsStagedAndExplainPrintsTheSceneToSave) {
   const std::string neither = write("notes.txt", "hello\n");
   const CommandResult bad = run("render " + neither + " -o " + path("c.png"));
   EXPECT_EQ(bad.status, 1);
-  EXPECT_EQ(bad.err, neither + ":1:1: unknown statement \"hello\" (expected light, material, sphere, triangle, mesh, camera or background)\n");
+  EXPECT_EQ(bad.err, neither + ":1:1: unknown statement \"hello\" (expected light, material, sphere, triangle, mesh, camera, background, floor or antialias)\n");
 }
 
 // --up names the file's axis that points up; the staged scene turns it to +z.
@@ -193,6 +193,46 @@ TEST_F(RenderCommand, FloorColorAndBackgroundOptions) {
   EXPECT_EQ(read_png(path("d.png")).channels, 4);
   EXPECT_FALSE(fs::exists(path("x.png")));
   EXPECT_FALSE(fs::exists(path("x.jpg")));
+}
+
+// --save-scene writes the staged scene, every option's part in it, naming
+// the mesh from the saved file's folder: rendered from another folder, with
+// no option but the size, it draws the same picture byte for byte, for
+// every bundled mesh and every staging option.
+TEST_F(RenderCommand, ASavedSceneDrawsTheSamePictureFromAnyFolder) {
+  fs::create_directories(path("saved/deeper"));
+  fs::create_directories(path("elsewhere"));
+  const std::vector<std::string> options = {
+      "",
+      "--camera-azimuth 120 --camera-elevation 10 --camera-zoom 1.3 --fov 40",
+      "--light-azimuth 80 --light-elevation 25 --up +z",
+      "--light 1,-2,3 --eye 2,-3,2 --target 0,0,0.2",
+      "--floor '#405060' --color orange --background white",
+      "--floor none --background transparent",
+      "--light-angle 150 --antialias 2"};
+  int case_number = 0;
+  for (const char* mesh : {"icosphere.obj", "open_box.obj", "pair.off", "torus.obj"})
+    for (const std::string& option : options) {
+      const std::string n = std::to_string(case_number++);
+      SCOPED_TRACE(std::string(mesh) + " " + option);
+      const std::string source = std::string(UMBRA_SOURCE_DIR) + "/scenes/meshes/" + mesh;
+      const std::string scene = path("saved/deeper/" + n + ".scene");
+      CommandResult r = run("render " + source + " --size 40x32 " + option + " -o " + path(n + ".png") + " --save-scene " + scene);
+      ASSERT_EQ(r.status, 0) << r.err;
+      EXPECT_EQ(r.out, "wrote " + path(n + ".png") + " (40x32), and saved its scene to " + scene + "\n");
+      const bool other_antialias = option.find("--antialias") != std::string::npos;
+      r = run("render " + scene + " --size 40x32 -o " + path("elsewhere/" + n + ".png") + (other_antialias ? " --antialias 2" : ""),
+              "cd " + path("elsewhere") + " && ");
+      ASSERT_EQ(r.status, 0) << r.err;
+      EXPECT_EQ(read(path(n + ".png")), read(path("elsewhere/" + n + ".png")));
+    }
+  // Only a mesh file on its own has a staged scene to save.
+  const std::string demo = std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene";
+  CommandResult r = run("render " + demo + " -o " + path("d.png") + " --save-scene " + path("d.scene"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "umbra render: --save-scene is for a mesh file on its own, which umbra stages; \"" + demo +
+                       "\" is not one (a scene has its own camera and lights)\n(see umbra render --help)\n");
+  EXPECT_FALSE(fs::exists(path("d.scene")));
 }
 
 TEST_F(RenderCommand, AFileThatIsPlainlyNeitherASceneNorAMeshExitsWithTwo) {
