@@ -388,6 +388,8 @@ Scene parse_scene_file(const std::string& path, const MeshLoadProgress& progress
   try {
     file.emplace(path);
   } catch (const InputError& e) {
+    // Unread, a file not named .scene is not known to be one (nothere.obj).
+    if (std::filesystem::path(path).extension() != ".scene") throw;
     std::string why = e.message();
     if (why.rfind("cannot open: ", 0) == 0) why.erase(0, 13);
     throw InputError({path}, "cannot open the scene file: " + why);

@@ -26,6 +26,7 @@
 #include "tools/command_line.hpp"
 #include "tools/fault_injection.hpp"
 #include "tools/mesh_paths.hpp"
+#include "tools/standard_input.hpp"
 #include "tools/progress_bar.hpp"
 
 namespace umbra {
@@ -33,6 +34,7 @@ namespace umbra {
 const std::string kCheckUsage = usage_text(
     R"(usage: umbra check PATH... [--json] [--jobs N] [--shard K/N] [--time-limit SEC]
        umbra check MESH --repair OUT
+       umbra check - [options]   (a mesh on standard input)
 
 Checks that each mesh ({mesh formats}, told by its
 content) is a closed, consistently oriented 2-manifold without
@@ -203,6 +205,19 @@ int run_check_command(const std::vector<std::string>& argv) {
   CheckCommandOptions options;
   if (const auto exit_status = parse_command_line("check", kCheckUsage, argv, parse_check_options, options))
     return *exit_status;
+  // "-", alone: the mesh on standard input, copied to a file for the readers.
+  std::optional<StandardInputFile> input;
+  try {
+    if (options.meshes.size() > 1 && std::count(options.meshes.begin(), options.meshes.end(), "-"))
+      throw UsageError("- (standard input) is one mesh: check it on its own");
+    if (options.meshes[0] == "-") input.emplace("-"), options.meshes[0] = input->path();
+  } catch (const UsageError& e) {
+    std::cerr << "umbra check: " << e.what() << "\n(see umbra check --help)\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << e.what() << "\n";
+    return 2;
+  }
   if (options.repair_output) return repair_one(options.meshes[0], *options.repair_output, options);
 
   MeshPaths found;

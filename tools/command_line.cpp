@@ -366,6 +366,7 @@ bool same_file(const std::string& a, const std::string& b) {
 }
 
 void require_other_than_input(const std::string& option, const std::string& output, const std::string& input) {
+  if (input == "-") return;  // standard input, read whole before anything is written
   if (same_file(output, input)) throw UsageError(option + " would overwrite its input \"" + input + "\"; name another file");
 }
 

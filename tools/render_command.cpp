@@ -1,5 +1,7 @@
 #include "tools/render_command.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -27,13 +29,15 @@
 #include "tools/freed_memory_reuse.hpp"
 #include "tools/huge_page_malloc.hpp"
 #include "tools/progress_bar.hpp"
+#include "tools/standard_input.hpp"
 
 namespace umbra {
 
 const std::string kRenderUsage = usage_text(
-    R"(usage: umbra render SCENE -o OUT.png [options]
-       umbra render MESH -o OUT.png [options]
+    R"(usage: umbra render MESH -o OUT.png [options]
+       umbra render SCENE -o OUT.png [options]
        umbra render PATH... -o OUTDIR [--jobs N] [--shard K/N] [options]
+       umbra render - -o OUT.png [options]   (a mesh on standard input)
 
 Renders SCENE headless (EGL or OSMesa) with exact hard shadows from stencil shadow
 volumes (Crow 1977; Heidmann 1991) and writes OUT.png. The sources cited
@@ -225,6 +229,12 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   o.staging.view.light_turn_deg = o.light_angle_deg;
   if (o.scene_path.empty()) throw UsageError("no scene or mesh file given");
   std::error_code ec;
+  if (o.scene_path == "-" && ::isatty(STDIN_FILENO))
+    throw UsageError("- reads standard input, which is a terminal here: pipe a file in, as in umbra render - -o out.png < model.stl");
+  if (scenes.size() > 1 && std::count(scenes.begin(), scenes.end(), "-"))
+    throw UsageError("- (standard input) is one file: render it on its own");
+  if (o.save_scene && o.scene_path == "-")
+    throw UsageError("--save-scene names the mesh's file, and standard input has none: save the mesh to a file first");
   if (scenes.size() > 1 || std::filesystem::is_directory(o.scene_path, ec)) {
     if (o.output.empty()) throw UsageError("no output folder given (-o OUTDIR)");
     if (std::filesystem::exists(o.output, ec) && !std::filesystem::is_directory(o.output, ec))
@@ -309,6 +319,15 @@ int run_render_command(const std::vector<std::string>& argv) {
   if (const auto exit_status = parse_command_line("render", kRenderUsage, argv, parse_render_options, options))
     return *exit_status;
   if (options.batch) return run_batch_render(*options.batch);
+  // "-": the mesh (or scene) on standard input, copied to a file for the readers.
+  std::optional<StandardInputFile> input;
+  try {
+    input.emplace(options.scene_path);
+  } catch (const std::exception& e) {
+    std::cerr << e.what() << "\n";
+    return 1;
+  }
+  options.scene_path = input->path();
   if (const std::string what = neither_scene_nor_mesh(options.scene_path); !what.empty()) {
     std::cerr << options.scene_path << ": " << what << "\n";
     return 2;

@@ -235,6 +235,39 @@ TEST_F(RenderCommand, ASavedSceneDrawsTheSamePictureFromAnyFolder) {
   EXPECT_FALSE(fs::exists(path("d.scene")));
 }
 
+// "-" reads the mesh from standard input, its format found by its content:
+// the same picture as the file's, to a file or to standard output; check
+// reads it too. An empty standard input says so.
+TEST_F(RenderCommand, AMeshReadFromStandardInputIsTheFilesPicture) {
+  const std::string pair = std::string(UMBRA_SOURCE_DIR) + "/scenes/meshes/pair.off";
+  ASSERT_EQ(run("render " + pair + " --size 40x30 -o " + path("file.png")).status, 0);
+  CommandResult r = run("render - --size 40x30 -o " + path("piped.png"), "cat " + pair + " | ");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(read(path("file.png")), read(path("piped.png")));
+  r = run("render - --size 40x30 -o -", "cat " + pair + " | ");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, read(path("file.png")));
+  r = run("check - --json", "cat " + pair + " | ");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\"format\":\"OFF\""), std::string::npos) << r.out;
+  r = run("render - -o " + path("empty.png") + " < /dev/null");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, "-: standard input is empty: pipe a file in, as in umbra render - -o out.png < model.stl\n");
+  EXPECT_EQ(run("render - " + pair + " -o " + path("out")).err,
+            "umbra render: - (standard input) is one file: render it on its own\n(see umbra render --help)\n");
+  EXPECT_FALSE(fs::exists(path("empty.png")));
+}
+
+// A file that cannot be opened says why, and is not called a scene unless
+// it is named as one.
+TEST_F(RenderCommand, AMissingFileSaysWhy) {
+  CommandResult r = run("render " + path("nothere.obj") + " -o " + path("a.png"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, path("nothere.obj") + ": cannot open: No such file or directory\n");
+  r = run("render " + path("nothere.scene") + " -o " + path("a.png"));
+  EXPECT_EQ(r.err, path("nothere.scene") + ": cannot open the scene file: No such file or directory\n");
+}
+
 TEST_F(RenderCommand, AFileThatIsPlainlyNeitherASceneNorAMeshExitsWithTwo) {
   const std::string formats = "(" + mesh_format_names() + ")";
   const std::string jpeg = write("photo.jpg", std::string("\xff\xd8\xff\xe0\0\x10JFIF\0", 11));
