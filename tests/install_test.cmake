@@ -8,7 +8,8 @@ execute_process(COMMAND "${CMAKE_COMMAND}" --install "${BUILD}" --prefix "${pref
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "cmake --install failed (${status})")
 endif()
-foreach(file bin/umbra share/doc/umbra/LICENSE share/doc/umbra/README.md share/doc/umbra/docs/check.md)
+foreach(file bin/umbra share/doc/umbra/LICENSE share/doc/umbra/README.md share/doc/umbra/docs/check.md
+             share/man/man1/umbra.1 share/umbra/scenes/demo.scene share/umbra/scenes/meshes/torus.obj)
   if(NOT EXISTS "${prefix}/${file}")
     message(FATAL_ERROR "the install has no ${file}")
   endif()
@@ -22,6 +23,23 @@ execute_process(COMMAND "${prefix}/bin/umbra" render "${SOURCE}/scenes/demo.scen
                 WORKING_DIRECTORY "${prefix}/work" RESULT_VARIABLE status ERROR_VARIABLE err)
 if(NOT status EQUAL 0 OR NOT EXISTS "${prefix}/work/demo.png")
   message(FATAL_ERROR "the installed umbra could not render the demo (${status}): ${err}")
+endif()
+# The man page is the commands' help.
+file(READ "${prefix}/share/man/man1/umbra.1" man)
+if(NOT man MATCHES "\\.SH \"UMBRA RENDER\"" OR NOT man MATCHES "--save-scene FILE")
+  message(FATAL_ERROR "the installed man page lacks umbra render's help")
+endif()
+# The installed example scenes render from the install (their meshes too),
+# and umbra bench finds them where the current folder has none.
+execute_process(COMMAND "${prefix}/bin/umbra" render "${prefix}/share/umbra/scenes/mesh_torus.scene" -o torus.png --size 32x32
+                WORKING_DIRECTORY "${prefix}/work" RESULT_VARIABLE status ERROR_VARIABLE err)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "the installed mesh_torus.scene did not render (${status}): ${err}")
+endif()
+execute_process(COMMAND "${prefix}/bin/umbra" bench --size 16x16 --frames 1 --segments 8 --map-sizes 16
+                WORKING_DIRECTORY "${prefix}/work" RESULT_VARIABLE status OUTPUT_VARIABLE table ERROR_VARIABLE err)
+if(NOT status EQUAL 0 OR NOT table MATCHES "camera_in_shadow")
+  message(FATAL_ERROR "the installed umbra bench did not find the installed scenes (${status}): ${err}")
 endif()
 # What the loader reads (RPATH, RUNPATH, NEEDED) must not lead into the build
 # tree; the debugging information may name where it was compiled.

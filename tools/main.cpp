@@ -36,11 +36,12 @@ const Command kCommands[] = {
 std::string usage() {
   std::string text = R"(usage: umbra COMMAND [options]
 
-Exact hard shadows from stencil shadow volumes, for any mesh file
-({mesh formats}) and for scenes of spheres, triangles and meshes.
+Exact hard shadows from stencil shadow volumes, for any mesh file on its own
+and for scenes of spheres, triangles and meshes.
+Mesh files: {mesh formats}, told by their content.
 
   umbra render model.glb -o model.png    the model on a floor, with its shadow
-  umbra render models/ -o pictures/      every mesh in a folder, one picture each
+  umbra render models/ -o pictures/      a picture of every mesh in a folder
   umbra check model.stl                  is it closed and manifold? if not, why
   umbra render scene.scene -o out.png    a scene file, as written
 

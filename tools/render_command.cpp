@@ -39,9 +39,9 @@ const std::string kRenderUsage = usage_text(
        umbra render PATH... -o OUTDIR [--jobs N] [--shard K/N] [options]
        umbra render - -o OUT.png [options]   (a mesh on standard input)
 
-Renders SCENE headless (EGL or OSMesa) with exact hard shadows from stencil shadow
-volumes (Crow 1977; Heidmann 1991) and writes OUT.png. The sources cited
-here are listed in docs/references.md.
+Draws a picture with exact hard shadows from stencil shadow volumes (Crow
+1977; Heidmann 1991), headless (EGL or OSMesa), and writes OUT.png. The
+sources cited here are listed in docs/references.md.
 
 A mesh file ({mesh formats}, told by its content) is staged
 on its own: stood on a floor in its up axis, lit by one light above and to
@@ -135,10 +135,10 @@ options:
                         the command line (the model's own, for a file named
                         on its own), so that a model from anywhere cannot
                         put another image you can read into its picture
-  --save-scene FILE     for a MESH: also write the scene umbra stages for it, the
-                        options' camera, light, floor and background included,
-                        naming the mesh by its path from FILE's folder: umbra
-                        render FILE then draws the same picture from anywhere
+  --save-scene FILE     for a MESH: also write the scene umbra stages for it,
+                        the options' camera, light, floor and background
+                        included, naming the mesh by its path from FILE's
+                        folder: umbra render FILE then draws the same picture
   --explain             print the render plan (camera, lights, each caster's
                         volume, how each light's volumes are counted and how
                         far they reach, the GL, the pages malloc takes) to

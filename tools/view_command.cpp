@@ -69,7 +69,8 @@ options:
   --eye X,Y,Z, --target X,Y,Z, --light-azimuth DEG, --light-elevation DEG,
   --light X,Y,Z, --floor COLOR, --color COLOR
                        for a MESH: where the camera and light start, the
-                       floor's and the model's colours (see umbra render --help)
+                       floor's and the model's colours (see umbra render
+                       --help)
   --background COLOR   the colour where no surface is (see umbra render --help)
   --any-texture-path   read texture maps from any folder, not only the
                        model's own (see umbra render --help)

@@ -21,8 +21,9 @@ const std::string kVolumeUsage = usage_text(
 
 Writes the shadow volumes of one light as an OBJ file, to look at in any mesh
 viewer: one group per caster, named for its kind and line, and faces
-oriented outward. A mesh file ({mesh formats}) is staged as umbra render
-stages it, and only its own volume is written (not the floor's). A volume reaches infinity; here its vertices at infinity
+oriented outward. A mesh file ({mesh formats}) is
+staged as umbra render stages it, and only its own volume is written (not
+the floor's). A volume reaches infinity; here its vertices at infinity
 (P - L, 0) are put at P + D (P - L) / |P - L|, a finite distance D beyond
 the caster.
 
@@ -31,7 +32,8 @@ options:
   --light N             which light, counting from 1 (default 1)
   --light-angle DEG     rotate every light about the z axis by DEG degrees
   --segments N          sides of a sphere's tangent-circle N-gon (default 64)
-  --far D               distance of the far vertices beyond the caster (default 3)
+  --far D               distance of the far vertices beyond the caster
+                        (default 3)
   --up AXIS             for a MESH: its axis that points up (see umbra render
                         --help)
   -h, --help            show this help
