@@ -22,3 +22,5 @@ picture floor "$engine" --floor '#3c5a78' --background white
 picture transparent "$engine" --floor none --background transparent
 picture color "$models/OBJ/WusonOBJ.obj" --color orange
 picture light-angle "$engine" --light-angle 180
+picture catcher "$engine" --floor shadow-catcher --background transparent
+picture catcher-opaque "$engine" --floor shadow-catcher

@@ -7,6 +7,8 @@
 // the coverage a (Porter and Duff 1984), kept as alpha beside the straight
 // colour.
 
+#include <algorithm>
+
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -17,6 +19,17 @@ namespace umbra {
 // The sample that sees no surface, for a background `color` or a transparent one.
 inline glm::dvec4 background_sample(const glm::dvec3& color, bool transparent) {
   return transparent ? glm::dvec4(0.0) : glm::dvec4(color, 0.0);
+}
+
+// A sample that sees a shadow catcher is drawn as (lit, unlit, 0, -1): the
+// light that reaches it, and the light that would without shadows (white
+// light's mean over the channels). It shows the background darkened by the
+// share of light the shadows take, or where the background is transparent,
+// black with that share as its coverage. Any other sample is as drawn.
+inline glm::dvec4 resolved_sample(const glm::dvec4& drawn, const glm::dvec3& background, bool transparent) {
+  if (drawn.a >= 0.0) return drawn;
+  const double lost = drawn.g > 0.0 ? std::clamp(1.0 - drawn.r / drawn.g, 0.0, 1.0) : 0.0;
+  return transparent ? glm::dvec4(0.0, 0.0, 0.0, lost) : glm::dvec4(background * (1.0 - lost), 0.0);
 }
 
 inline void put_pixel_mean(Image& image, int x, int y, const glm::dvec4& mean) {

@@ -63,9 +63,10 @@ glm::dvec3 surface_colour(const Scene& scene, const Surface& s, const glm::dvec3
 }
 
 // The shader's shade() for one sample, in double precision (shaders.hpp),
-// unclamped as the GL's float frame keeps it; with `masks`, each light's
+// unclamped as the GL's float frame keeps it, with its coverage: (colour, 1),
+// or for a shadow catcher (lit, unlit, 0, -1); with `masks`, each light's
 // mask at (x, y) too.
-glm::dvec3 shade(const Scene& scene, const RayCaster& caster, const glm::dvec3& ambient_sum, const RayHit& hit,
+glm::dvec4 shade(const Scene& scene, const RayCaster& caster, const glm::dvec3& ambient_sum, const RayHit& hit,
                  std::vector<Image>* masks, int x, int y) {
   const Surface surface = surface_of(scene, hit.object);
   const Material& m = scene.materials[size_t(surface.material)];
@@ -74,21 +75,24 @@ glm::dvec3 shade(const Scene& scene, const RayCaster& caster, const glm::dvec3& 
   glm::dvec3 n = hit.normal;
   if (glm::dot(n, eye - hit.point) < 0.0) n = -n;
   glm::dvec3 colour = ambient_sum * m.ambient * tint;
+  const auto mean = [](const glm::dvec3& rgb) { return (rgb.r + rgb.g + rgb.b) / 3.0; };
+  glm::dvec2 caught(mean(ambient_sum));  // a shadow catcher's lit and unlit light
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& light = scene.lights[i];
     const glm::dvec3 l = glm::normalize(light.position - hit.point);
-    const bool lit = seen_side_faces_light(hit, eye, light.position) &&
-                     !caster.shadow_ray_blocked(hit.point, hit.object, light.position);
+    const bool faces = seen_side_faces_light(hit, eye, light.position);
+    const bool lit = faces && !caster.shadow_ray_blocked(hit.point, hit.object, light.position);
     if (masks) (*masks)[i].at(x, y) = lit ? kMaskLit : kMaskUnlit;
-    if (!lit) continue;
     // A face lit at a grazing angle may round to n . l just below 0: none.
     const double n_dot_l = std::max(glm::dot(n, l), 0.0);
+    if (m.shadow_catcher && faces) caught += glm::dvec2(lit ? 1.0 : 0.0, 1.0) * (mean(light.color) * n_dot_l);
+    if (!lit) continue;
     const glm::dvec3 v = glm::normalize(eye - hit.point);
     const glm::dvec3 r = 2.0 * n_dot_l * n - l;  // reflect(-l, n)
     const double s = m.shininess > 0.0 ? std::pow(std::max(glm::dot(r, v), 0.0), m.shininess) : 1.0;
     colour += light.color * (m.diffuse * tint * n_dot_l + m.specular * s);
   }
-  return colour;
+  return m.shadow_catcher ? glm::dvec4(caught, 0.0, -1.0) : glm::dvec4(colour, 1.0);
 }
 
 }  // namespace
@@ -106,7 +110,8 @@ RayCastFrame ray_cast_frame(const Scene& scene, int width, int height, int sampl
   // clears its frame (pixel_mean.hpp).
   const auto sample = [&](double px, double py, std::vector<Image>* masks, int x, int y) {
     const auto hit = caster.nearest_hit(scene.camera.eye, pixel_ray_direction(scene.camera, width, height, px - 0.5, py - 0.5));
-    return hit ? glm::dvec4(shade(scene, caster, ambient_sum, *hit, masks, x, y), 1.0) : nothing;
+    return hit ? resolved_sample(shade(scene, caster, ambient_sum, *hit, masks, x, y), background.color, background.transparent)
+               : nothing;
   };
   const auto rows = [&](int first, int step) {
     for (int y = first; y < height; y += step)

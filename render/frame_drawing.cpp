@@ -111,6 +111,7 @@ void FrameDrawing::draw_surfaces(int pass, size_t light, shaders::ShadowTest tes
     p.set("material_diffuse", f(m.diffuse));
     p.set("material_specular", f(m.specular));
     p.set("material_shininess", float(m.shininess));
+    p.set("material_catcher", int(m.shadow_catcher));
   };
   for (ShaderProgram* p : {triangle_program_.get(), sphere_program_.get()}) {
     p->use();

@@ -86,7 +86,8 @@ void FrameTarget::show(int width, int height) const {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
 }
 
-void FrameTarget::for_each_pixel_mean(int samples, const std::function<void(int, int, const glm::dvec4&)>& pixel) const {
+void FrameTarget::for_each_pixel_mean(int samples, const std::function<void(int, int, const glm::dvec4&)>& pixel,
+                                      const std::function<glm::dvec4(const glm::dvec4&)>& resolve) const {
   // In strips of 32 output rows: the floats of a whole 800x800 frame would
   // be 10 MB, and nine times that supersampled.
   constexpr int kStripRows = 32;
@@ -103,8 +104,11 @@ void FrameTarget::for_each_pixel_mean(int samples, const std::function<void(int,
       for (int x = 0; x < width; ++x) {
         glm::dvec4 sum(0.0);
         for (int j = 0; j < samples; ++j)
-          for (int i = 0; i < samples; ++i)
-            for (int c = 0; c < 4; ++c) sum[c] += strip[size_t(r * samples + j) * row_values + size_t(x * samples + i) * 4 + size_t(c)];
+          for (int i = 0; i < samples; ++i) {
+            const float* drawn = &strip[size_t(r * samples + j) * row_values + size_t(x * samples + i) * 4];
+            const glm::dvec4 sample(drawn[0], drawn[1], drawn[2], drawn[3]);
+            sum += resolve ? resolve(sample) : sample;
+          }
         pixel(x, height - 1 - (y + r), sum * per_sample);  // the GL's row 0 is the bottom
       }
   }

@@ -48,7 +48,10 @@ class FrameTarget {
   // into one: `pixel` gets each mean with its column and its row counted
   // from the top, to round once (pixel_mean.hpp, as the ray-cast reference
   // rounds).
-  void for_each_pixel_mean(int samples, const std::function<void(int x, int y, const glm::dvec4& mean)>& pixel) const;
+  // Each sample is first passed through `resolve` (pixel_mean.hpp's
+  // resolved_sample), where given.
+  void for_each_pixel_mean(int samples, const std::function<void(int x, int y, const glm::dvec4& mean)>& pixel,
+                           const std::function<glm::dvec4(const glm::dvec4&)>& resolve = {}) const;
   // Per pixel, 1 where a surface was drawn (its depth is under the cleared
   // 1.0, which no fragment can equal and pass GL_LESS), 0 elsewhere; rows
   // from the bottom. For one sample a pixel.

@@ -56,6 +56,8 @@ BenchSweep method_bench_sweep(RenderMethod method) { return row_of(method).bench
 
 bool counts_volumes(RenderMethod method) { return method_pass(method) == ShadowPass::kCountedVolumes; }
 
+bool keeps_caught_shadows(RenderMethod method) { return method_pass(method) != ShadowPass::kPlanar; }
+
 bool is_interactive(RenderMethod method) { return row_of(method).interactive; }
 
 RenderMethod next_interactive_method(RenderMethod method) {

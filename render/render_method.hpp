@@ -39,6 +39,10 @@ ShadowPass method_pass(RenderMethod method);
 const char* method_technique(RenderMethod method);
 // It counts shadow volumes (z-pass or z-fail): its pass is kCountedVolumes.
 bool counts_volumes(RenderMethod method);
+// Whether a shadow catcher keeps the method's shadows: all but planar, which
+// marks shadows in the stencil, so that no shadowed fragment reaches the
+// shader to be counted.
+bool keeps_caught_shadows(RenderMethod method);
 // umbra view draws it; the next such method in the table's order, after the last the first.
 bool is_interactive(RenderMethod method);
 RenderMethod next_interactive_method(RenderMethod method);

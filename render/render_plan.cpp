@@ -228,6 +228,14 @@ std::vector<MeshCaster> prepare_mesh_casters(const Scene& scene) {
   return casters;
 }
 
+void require_caught_shadows_kept(const Scene& scene, RenderMethod method) {
+  if (keeps_caught_shadows(method)) return;
+  for (const Material& m : scene.materials)
+    if (m.shadow_catcher)
+      throw InputError({scene.path}, "material \"" + m.name + "\" is a shadow catcher, whose shadows --method " + method_name(method) +
+                                         " cannot keep (it marks them in the stencil): use another method");
+}
+
 RenderPlan make_render_plan(const Scene& scene, const RenderSettings& settings) {
   RenderPlan plan;
   plan.settings = settings;

@@ -123,6 +123,9 @@ std::vector<MeshCaster> prepare_mesh_casters(const Scene& scene);
 RenderPlan make_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshes, const RenderSettings& settings);
 // The same for one frame: prepares the mesh casters itself.
 RenderPlan make_render_plan(const Scene& scene, const RenderSettings& settings);
+// An InputError when `scene` has a shadow catcher that `method` cannot keep
+// the shadows of (keeps_caught_shadows).
+void require_caught_shadows_kept(const Scene& scene, RenderMethod method);
 // The next frame of an animation: recomputes every light's volumes for the
 // scene as it is now (its lights moved), keeping the plan's settings and
 // reusing its buffers, so that mesh volumes cost only classification and

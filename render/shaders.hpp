@@ -36,6 +36,11 @@ uniform vec3 material_diffuse;
 uniform vec3 material_specular;
 uniform float material_shininess;
 uniform bool specular_used;  // false when no material and light have a specular term
+// A shadow catcher (Material::shadow_catcher) is drawn as (lit, unlit, 0, -1):
+// the white light that reaches it and the light that would without shadows,
+// each the mean over the channels, for the read-back to turn into the share
+// the shadows take (pixel_mean.hpp's resolved_sample).
+uniform bool material_catcher;
 uniform int shadow_test;  // ShadowTest
 // Shadow mapping (Williams 1978): a point is in shadow when it lies further
 // from the light than the map's nearest surface in its direction, by more
@@ -88,9 +93,15 @@ void shade(vec3 p, vec3 n, bool faces_light) {
   vec3 l = normalize(light_position - p);
   float n_dot_l = max(dot(n, l), 0.0);  // may round below 0 where the face meets the light at a grazing angle
   if (pass == 0) {
-    frag_color = vec4(ambient_sum * material_ambient * surface_color, 1.0);
+    float ambient = dot(ambient_sum, vec3(1.0 / 3.0));
+    frag_color = material_catcher ? vec4(ambient, ambient, 0.0, -1.0) : vec4(ambient_sum * material_ambient * surface_color, 1.0);
   } else if (pass == 1) {
     if (!faces_light) discard;
+    if (material_catcher) {
+      float direct = dot(light_color, vec3(1.0 / 3.0)) * n_dot_l;
+      frag_color = vec4(in_shadow(p, n_dot_l) ? 0.0 : direct, direct, 0.0, 0.0);
+      return;
+    }
     if (in_shadow(p, n_dot_l)) discard;
     vec3 colour = material_diffuse * surface_color * n_dot_l;
     if (specular_used) {

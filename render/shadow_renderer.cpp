@@ -78,9 +78,9 @@ Image ShadowRenderer::render_image(bool show_volumes) {
 Image ShadowRenderer::read_image() const {
   const Background& background = drawing_->scene().background;
   Image image(plan_.settings.width, plan_.settings.height, background.transparent ? 4 : 3);
-  drawing_->target().for_each_pixel_mean(drawing_->samples_per_side(), [&](int x, int y, const glm::dvec4& mean) {
-    put_pixel_mean(image, x, y, mean);
-  });
+  drawing_->target().for_each_pixel_mean(
+      drawing_->samples_per_side(), [&](int x, int y, const glm::dvec4& mean) { put_pixel_mean(image, x, y, mean); },
+      [&](const glm::dvec4& sample) { return resolved_sample(sample, background.color, background.transparent); });
   return image;
 }
 

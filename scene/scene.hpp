@@ -42,6 +42,10 @@ struct Material {
   // as the GL samples it, without mipmaps. Colours are used as written, as
   // every other colour is (no colour management). None for scene materials.
   std::shared_ptr<const TextureImage> texture;
+  // Not drawn: its surfaces show what is behind them (the background),
+  // darkened by the share of light that shadows take from them, so that a
+  // model and its shadow can be laid over any picture (a shadow catcher).
+  bool shadow_catcher = false;
 };
 
 struct Sphere {

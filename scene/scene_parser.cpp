@@ -187,8 +187,9 @@ class SceneBuilder {
     if (const auto it = materials_.find(m.name); it != materials_.end())
       throw InputError(name_at, "material " + in_quotes(m.name) + " is already defined at line " +
                                     std::to_string(it->second.line));
-    while (auto k = r.keyword_of("material", {"ambient", "diffuse", "specular", "shininess"})) {
-      if (*k == "ambient") m.ambient = r.color("material ambient");
+    while (auto k = r.keyword_of("material", {"ambient", "diffuse", "specular", "shininess", "shadow-catcher"})) {
+      if (*k == "shadow-catcher") m.shadow_catcher = true;
+      else if (*k == "ambient") m.ambient = r.color("material ambient");
       else if (*k == "diffuse") m.diffuse = r.color("material diffuse");
       else if (*k == "specular") m.specular = r.color("material specular");
       else {

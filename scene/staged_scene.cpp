@@ -255,8 +255,9 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
   std::string rest = "light " + vec(stage.light) + " ambient 0.35 0.35 0.35\n";
   if (staging.model_color) rest += "material default ambient " + vec(*staging.model_color) + " diffuse " + vec(*staging.model_color) + "\n";
   if (!staging.no_floor)
-    rest += (staging.floor_color ? "material floor ambient " + vec(*staging.floor_color) + " diffuse " + vec(*staging.floor_color) + "\n"
-                                 : std::string("material floor diffuse 0.7 0.7 0.72\n")) +
+    rest += (staging.floor_catches_shadow ? std::string("material floor shadow-catcher\n")
+             : staging.floor_color ? "material floor ambient " + vec(*staging.floor_color) + " diffuse " + vec(*staging.floor_color) + "\n"
+                                   : std::string("material floor diffuse 0.7 0.7 0.72\n")) +
             "floor " + num(f.z) + " centre " + num(f.x) + " " + num(f.y) + " size " + num(stage.floor_half_size) + " material floor\n";
   rest += "camera eye " + vec(c.eye) + " target " + vec(c.target) + " up 0 0 1 fovy " + num(c.fovy_deg) + "\n";
   // A studio's pale grey, behind the floor's horizon where a low camera sees it.

@@ -98,6 +98,7 @@ struct StagingOptions {
   // The stage's floor: its colour (diffuse and ambient), or none at all.
   std::optional<glm::dvec3> floor_color;
   bool no_floor = false;
+  bool floor_catches_shadow = false;  // a shadow catcher (Material::shadow_catcher)
   // The model's colour where its file gives none (the scene's default material).
   std::optional<glm::dvec3> model_color;
   // The background, for a mesh file's stage and a scene file alike (a

@@ -71,6 +71,7 @@ void render_one(const std::string& path, const std::string& root, const std::str
     Scene scene = parse_scene_or_mesh_file(path, {}, nullptr, staging_for(o.staging, o.settings), TextureMaps{true, root, o.any_texture_path});
     for (const Warning& w : scene.warnings) record.messages += w.where.str() + ": warning: " + w.message + "\n";
     require_lights_off_casters(scene);
+    require_caught_shadows_kept(scene, o.settings.method);
     RenderSettings settings = o.settings;
     settings.supersampling = supersampling_for(o.antialias, scene);
     require_drawable_size(settings.width, settings.height, settings.supersampling);

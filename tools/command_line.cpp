@@ -321,7 +321,8 @@ void add_staging_options(CommandOptions& options, StagingOptions& staging, std::
   add("--light", [&](const std::string& o, const std::string& t) { v.light = parse_point(o, t); });
   add("--floor", [&](const std::string& o, const std::string& t) {
     staging.no_floor = t == "none";
-    if (!staging.no_floor) staging.floor_color = parse_color(o, t);
+    staging.floor_catches_shadow = t == "shadow-catcher";
+    if (!staging.no_floor && !staging.floor_catches_shadow) staging.floor_color = parse_color(o, t);
   });
   add("--color", [&](const std::string& o, const std::string& t) { staging.model_color = parse_color(o, t); });
   // Not a staging option only: a scene's own background gives way to it.

@@ -104,7 +104,10 @@ options:
   --light-elevation DEG the light's elevation, -90 to 90 (default about 53.4);
                         it stands 4 half-sizes of the model from its centre
   --light X,Y,Z         put the light there
-  --floor COLOR         the floor's colour, or none: no floor (default grey)
+  --floor COLOR         the floor's colour; none: no floor; or shadow-catcher:
+                        the floor unseen but for its shadow, which darkens
+                        the background (with --background transparent, the
+                        shadow alone, as alpha) (default grey)
   --color COLOR         the model's colour where its file gives it none
                         (default light grey)
 
@@ -349,6 +352,7 @@ int run_render_command(const std::vector<std::string>& argv) {
     for (const Warning& w : scene.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
     progress->update(1, "planning shadow volumes");
     require_lights_off_casters(scene);
+    require_caught_shadows_kept(scene, options.settings.method);
 
     Image image;
     std::optional<Image> mask;

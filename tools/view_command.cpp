@@ -217,6 +217,12 @@ int run_view_command(const std::vector<std::string>& argv) {
     Scene check = parsed;
     rotate_lights_about_z(check, angle);
     require_lights_off_casters(check);
+    // The window shows the frame as drawn, which a catcher's share of light
+    // is not: only a picture's read-back resolves it (pixel_mean.hpp).
+    for (const Material& m : parsed.materials)
+      if (m.shadow_catcher)
+        throw InputError({parsed.path}, "material \"" + m.name + "\" is a shadow catcher, which umbra view's window cannot "
+                                        "show: use umbra render");
     scene.file = std::move(parsed);
     scene.frame = scene.file;
     if (orbited) scene.frame.camera = *orbited;  // a reload keeps the user's view

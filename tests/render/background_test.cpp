@@ -77,5 +77,47 @@ TEST(Background, AColourFillsWhatNoSurfaceCoversAndBlendsAtEdges) {
   }
 }
 
+// A shadow catcher is unseen but for its shadow: over a transparent
+// background, the floor's alpha is above 0 exactly where its mask says
+// unlit, the share of light the shadow takes, and 0 where it is lit; the GL
+// draws it as the ray-cast reference does, at one sample and at three.
+TEST(Background, AShadowCatchersAlphaIsItsShadow) {
+  const Scene scene = parse_scene_text("light 0.6 0.8 1.6 ambient 0.3 0.3 0.3\nmaterial catch shadow-catcher\n"
+                                       "floor -1 size 3 material catch\nsphere 0 0 -0.3 0.35\nsphere 0.5 0.4 0.2 0.15\n"
+                                       "camera eye 0 -2.5 1.2 target 0 0 -0.4 up 0 0 1 fovy 50\nbackground transparent\n",
+                                       "catcher.scene");
+  const int size = 100;
+  RenderSettings settings;
+  settings.width = settings.height = size;
+  const RenderPlan plan = make_render_plan(scene, settings);
+  HeadlessContext context(size, size);
+  ShadowRenderer renderer(scene, plan);
+  const Image mask = renderer.render_mask(0);
+  const Image image = renderer.render_image(false);
+  int shadowed = 0, lit = 0;
+  // The share a shadow takes from the floor: the light's term over all of it.
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, size, size, x, y));
+      if (!hit || hit->object != 2 || coverage(scene, size, x, y) != 1) continue;  // the floor's own pixels
+      if (mask.at(x, y) == kMaskUnlit) {
+        ++shadowed;
+        const glm::dvec3 l = glm::normalize(scene.lights[0].position - hit->point);
+        const double direct = l.z;  // the floor's normal is +z, the light white
+        EXPECT_NEAR(image.at(x, y, 3), 255.0 * direct / (0.3 + direct), 1.0) << x << ", " << y;
+        EXPECT_EQ(image.at(x, y, 0), 0);  // black: a shadow
+      } else if (mask.at(x, y) == kMaskLit) {
+        ++lit;
+        EXPECT_EQ(image.at(x, y, 3), 0) << x << ", " << y;
+      }
+    }
+  EXPECT_GT(shadowed, 100);
+  EXPECT_GT(lit, 1000);
+  for (const int samples : {1, 3}) {
+    SCOPED_TRACE(samples);
+    test::expect_images_agree(scene, test::render_gl_and_ray_cast(scene, size, RenderMethod::kAuto, samples));
+  }
+}
+
 }  // namespace
 }  // namespace umbra

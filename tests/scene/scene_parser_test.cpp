@@ -125,6 +125,13 @@ TEST(SceneParser, AFloorIsTwoTrianglesThatMayReachPastTheCube) {
   EXPECT_EQ(error_of(kLight + "floor\n"), "t.scene:2:6: expected a number for the floor height, got end of line");
 }
 
+TEST(SceneParser, AMaterialMayCatchShadows) {
+  const Scene s = parse_scene_text(kLight + "material catch shadow-catcher diffuse 1 1 1\nmaterial plain\n", "t");
+  EXPECT_TRUE(s.materials[1].shadow_catcher);
+  EXPECT_FALSE(s.materials[2].shadow_catcher);
+  EXPECT_FALSE(s.materials[0].shadow_catcher);
+}
+
 TEST(SceneParser, AntialiasSaysTheSamplesASceneIsDrawnWith) {
   EXPECT_FALSE(parse_scene_text(kLight, "t").antialias);
   EXPECT_EQ(parse_scene_text(kLight + "antialias 3\n", "t").antialias, 3);

@@ -178,6 +178,14 @@ TEST_F(RenderCommand, FloorColorAndBackgroundOptions) {
   const Image alone = read_png(path("n.png"));
   EXPECT_EQ(alone.channels, 4);
   EXPECT_EQ(alone.at(0, 0, 3), 0);  // no floor: the corner sees nothing
+  // A shadow catcher for a floor: said in the text; planar cannot keep its shadows.
+  r = run(base + "-o " + path("s.png") + " --floor shadow-catcher --background transparent --explain");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\nmaterial floor shadow-catcher\nfloor "), std::string::npos) << r.out;
+  r = run(base + "-o " + path("x.png") + " --floor shadow-catcher --method planar");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, tet + " (staged): material \"floor\" is a shadow catcher, whose shadows --method planar cannot keep (it marks "
+                   "them in the stencil): use another method\n");
   // Mistakes: a colour that is none, a transparent JPEG, a floor for a scene.
   const std::string demo = std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene";
   r = run(base + "-o " + path("x.png") + " --background whte");
