@@ -123,11 +123,13 @@ std::string box_text(const glm::dvec3& lo, const glm::dvec3& hi) {
 }
 
 // The file's own materials join the scene's, named "FILE:NAME", unless the
-// statement names a material, which then covers every face. A face the
+// statement names a material, which then covers every face, or says `plain`,
+// which drops its vertex colours too. A face the
 // file gives no material takes the statement's (or the default).
 void place_file_materials(LoadedMesh& loaded, const std::string& written, Scene& scene) {
   Mesh& m = loaded.mesh;
-  if (m.material_given || loaded.file_materials.empty()) {
+  if (m.plain) std::vector<std::array<glm::vec3, 3>>().swap(m.triangle_colors);
+  if (m.material_given || m.plain || loaded.file_materials.empty()) {
     m.triangle_materials.clear();
     std::vector<std::array<glm::vec2, 3>>().swap(m.triangle_uvs);  // no texture maps to look up
     return;

@@ -70,6 +70,7 @@ struct Mesh {
   std::string path;  // as resolved against the scene file's folder
   int material = 0;  // the statement's (or the default), for faces the file gives no material
   bool material_given = false;  // the statement names one: it overrides the file's own
+  bool plain = false;  // `plain`: its material alone, not the file's materials, maps or vertex colours
   // Per triangle, an index into Scene::materials, where the file gives its
   // faces materials (OBJ's usemtl, glTF, 3MF); empty when every face takes `material`.
   std::vector<int> triangle_materials;

@@ -254,9 +254,11 @@ class SceneBuilder {
     m.where = r.statement_loc();
     const FileLoc path_at = r.next_loc();
     m.path = r.word("a mesh file path");
-    while (auto k = r.keyword_of("mesh", {"material", "fit", "scale", "rotate", "translate"})) {
+    while (auto k = r.keyword_of("mesh", {"material", "fit", "scale", "rotate", "translate", "plain"})) {
       if (*k == "fit") {
         m.fit = true;
+      } else if (*k == "plain") {
+        m.plain = true;
       } else if (*k == "material") {
         m.material = material_named(r);
         m.material_given = true;

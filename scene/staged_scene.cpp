@@ -222,12 +222,14 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
   const int mesh_line = 4;
   std::string mesh_statement = "mesh \"" + written_name + "\" fit";
   if (turn.degrees != 0) mesh_statement += " rotate " + vec(turn.axis) + " " + num(turn.degrees);
+  if (staging.plain_model) mesh_statement += " plain";
   if (!nameable) mesh_statement += "  # a scene cannot name this file (a double quote or a line break in its name): rename it";
   MeshStatement statement;
   statement.mesh.path = file_name;
   statement.mesh.fit = true;
   statement.mesh.rotation_axis = turn.axis;
   statement.mesh.rotation_deg = turn.degrees;
+  statement.mesh.plain = staging.plain_model;
   statement.mesh.where = {name, mesh_line, 1};
   statement.path_at = {name, mesh_line, 6};
   Scene loaded;

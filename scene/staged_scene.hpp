@@ -101,6 +101,7 @@ struct StagingOptions {
   bool floor_catches_shadow = false;  // a shadow catcher (Material::shadow_catcher)
   // The model's colour where its file gives none (the scene's default material).
   std::optional<glm::dvec3> model_color;
+  bool plain_model = false;  // that colour alone: not the file's materials, maps or vertex colours
   // The background, for a mesh file's stage and a scene file alike (a
   // scene's own then gives way).
   std::optional<Background> background;

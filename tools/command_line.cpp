@@ -325,6 +325,7 @@ void add_staging_options(CommandOptions& options, StagingOptions& staging, std::
     if (!staging.no_floor && !staging.floor_catches_shadow) staging.floor_color = parse_color(o, t);
   });
   add("--color", [&](const std::string& o, const std::string& t) { staging.model_color = parse_color(o, t); });
+  options.flag("--plain", staging.plain_model);
   // Not a staging option only: a scene's own background gives way to it.
   options.value("--background", [&](const std::string& o, const std::string& t) {
     staging.background = t == "transparent" ? Background{glm::dvec3(0.0), true} : Background{parse_color(o, t), false};

@@ -112,8 +112,9 @@ glm::dvec3 parse_color(const std::string& option, const std::string& text);
 // How a mesh file on its own is staged: --up AXIS; the camera's
 // --camera-azimuth, --camera-elevation, --camera-zoom, --fov, --eye and
 // --target; the light's --light-azimuth, --light-elevation and --light;
-// --floor COLOR|none and --color COLOR. The names of those given are added
-// to `given`, for a command to refuse them where nothing is staged. Also
+// --floor COLOR|none|shadow-catcher, --color COLOR and --plain. The names of
+// those given (--plain aside: require_consistent_staging asks) are added to
+// `given`, for a command to refuse them where nothing is staged. Also
 // --background COLOR|transparent, which a scene file takes too.
 void add_staging_options(CommandOptions& options, StagingOptions& staging, std::vector<std::string>& given);
 // `staging` for a picture of `settings`' size: framed for its shape.

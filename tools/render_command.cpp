@@ -110,6 +110,8 @@ options:
                         shadow alone, as alpha) (default grey)
   --color COLOR         the model's colour where its file gives it none
                         (default light grey)
+  --plain               draw the model in --color alone: not its file's
+                        materials, texture maps or vertex colours
 
   --jobs N              with several files: draw N at a time, each in its own
                         GL context, using at most N threads in all (default:
@@ -229,6 +231,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   if (o.help) return o;
   o.gl = gl_with_environment(o.gl);
   require_consistent_staging(o.staging);
+  if (o.staging.plain_model) o.staging_given.push_back("--plain");
   o.staging.view.light_turn_deg = o.light_angle_deg;
   if (o.scene_path.empty()) throw UsageError("no scene or mesh file given");
   std::error_code ec;

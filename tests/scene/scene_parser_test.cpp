@@ -248,6 +248,15 @@ class SceneMeshes : public test::ScratchFolder {
 
 const char* const kTetrahedronObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
 
+// `plain`: the statement's material alone, without the file's vertex colours.
+TEST_F(SceneMeshes, APlainMeshIsDrawnInItsStatementsMaterialAlone) {
+  write("coloured.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                        "property uchar red\nproperty uchar green\nproperty uchar blue\nelement face 1\n"
+                        "property list uchar int vertex_indices\nend_header\n0 0 0 255 0 0\n1 0 0 0 255 0\n0 1 0 0 0 255\n3 0 1 2\n");
+  EXPECT_EQ(parse("light 0 0 5\nmesh coloured.ply\n").meshes[0].triangle_colors.size(), 1u);
+  EXPECT_TRUE(parse("light 0 0 5\nmesh coloured.ply plain\n").meshes[0].triangle_colors.empty());
+}
+
 TEST_F(SceneMeshes, MeshIsLoadedRelativeToTheSceneAndTransformedScaleRotateTranslate) {
   write("parts/tet.obj", kTetrahedronObj);
   const Scene scene = parse("light 0 0 5\nmaterial red diffuse 1 0 0\n"

@@ -168,6 +168,11 @@ TEST_F(RenderCommand, FloorColorAndBackgroundOptions) {
   ASSERT_EQ(run("render " + coloured + " --size 48x48 --antialias 1 -o " + path("c1.png")).status, 0);
   ASSERT_EQ(run("render " + coloured + " --size 48x48 --antialias 1 -o " + path("c2.png") + " --color red").status, 0);
   EXPECT_EQ(read_png(path("c1.png")).pixels, read_png(path("c2.png")).pixels);
+  // --plain draws it in --color alone, as the untextured model is drawn.
+  r = run("render " + coloured + " --size 48x48 --antialias 1 -o " + path("c3.png") + " --color red --plain --explain");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\nmesh \"c.obj\" fit rotate 1 0 0 90 plain\n"), std::string::npos) << r.out;
+  EXPECT_EQ(read_png(path("c3.png")).pixels, read_png(path("red.png")).pixels);  // the same tetrahedron, red
   // The floor: a colour, or none at all.
   r = run(base + "-o " + path("f.png") + " --floor '#ff8000' --explain");
   EXPECT_NE(r.out.find("\nmaterial floor ambient 1 0.501961 0 diffuse 1 0.501961 0\n"), std::string::npos) << r.out;
