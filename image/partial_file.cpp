@@ -117,6 +117,11 @@ void PartialFile::commit() {
   slot_ = -1;
 }
 
+void remove_written_output(const std::string& path) {
+  struct stat there {};
+  if (path != "-" && ::lstat(path.c_str(), &there) == 0 && S_ISREG(there.st_mode)) std::remove(path.c_str());
+}
+
 void remove_partial_files_on_signals() {
   struct sigaction action {};
   action.sa_handler = remove_listed_and_die;

@@ -36,6 +36,11 @@ class PartialFile {
   bool in_place_ = false;  // a FIFO or device, written as it is
 };
 
+// Takes back an output written whole, when a later one of the same command
+// fails: removes `path` if it is a regular file, never a device or FIFO
+// written in place (-o /dev/null), nor standard output ("-").
+void remove_written_output(const std::string& path);
+
 // Makes SIGINT and SIGTERM remove every PartialFile's temporary file before
 // the process ends as the signal would end it. Called once, by main.
 void remove_partial_files_on_signals();

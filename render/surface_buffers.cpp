@@ -54,8 +54,8 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
   // Sorted as runs (a scene triangle, a whole mesh, or a mesh's triangles of
   // one material) rather than triangle by triangle: a million-triangle mesh
   // is one run, copied once.
-  // (A mesh's subset lists its triangles of one material, when the file
-  // gives its faces materials.)
+  // Kept (runs_, with the meshes' per-material subsets they point into), for
+  // use_light to walk the triangles in the buffer's order.
   std::vector<Run>& runs = runs_;
   std::vector<std::map<int, std::vector<uint32_t>>>& by_material = mesh_subsets_;
   by_material.resize(scene.meshes.size());

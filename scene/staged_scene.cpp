@@ -53,11 +53,13 @@ const double kLightAzimuthDeg = glm::degrees(std::atan2(kToLight.x, -kToLight.y)
 const double kLightElevationDeg = glm::degrees(std::asin(kToLight.z));
 constexpr double kLightDistance = 4.0;  // from the model's centre; the fitted model's longest side is 2
 constexpr double kMargin = 1.2;         // the frame's half-size over the framed points'
+// Behind the floor's horizon, where a low camera sees past it: a studio's pale grey.
 const glm::dvec3 kStageBackground(0.8, 0.8, 0.82);
 // How far from the model's centre a shadow is framed: a point little below
 // a low light casts its shadow toward the horizon, which no frame holds.
 constexpr double kShadowReach = 8.0;
 
+// Where StageView puts the light round a model centred at `centre`.
 glm::dvec3 light_position(const glm::dvec3& centre, const StageView& view) {
   const glm::dvec3 light = view.light.value_or(
       centre + kLightDistance * (view.light_azimuth_deg || view.light_elevation_deg
@@ -262,7 +264,6 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
                                    : std::string("material floor diffuse 0.7 0.7 0.72\n")) +
             "floor " + num(f.z) + " centre " + num(f.x) + " " + num(f.y) + " size " + num(stage.floor_half_size) + " material floor\n";
   rest += "camera eye " + vec(c.eye) + " target " + vec(c.target) + " up 0 0 1 fovy " + num(c.fovy_deg) + "\n";
-  // A studio's pale grey, behind the floor's horizon where a low camera sees it.
   const Background background = staging.background.value_or(Background{kStageBackground, false});
   rest += background.transparent ? std::string("background transparent\n") : "background " + vec(background.color) + "\n";
   rest += "antialias " + std::to_string(kStagedAntialias) + "\n";

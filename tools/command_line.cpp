@@ -70,7 +70,6 @@ std::string bench_sweeps() {
   return text;
 }
 
-
 }  // namespace
 
 std::string value_rows(const std::vector<std::pair<std::string, std::string>>& rows) {
@@ -249,13 +248,13 @@ glm::dvec3 parse_point(const std::string& option, const std::string& text) {
   return p;
 }
 
-// A number of degrees above `lowest` (or from it, when `from_lowest`) and up to `highest`.
-double parse_degrees_in(const std::string& option, const std::string& text, double lowest, double highest, bool from_lowest) {
+// A number of degrees from `lowest` to `highest`.
+double parse_degrees_in(const std::string& option, const std::string& text, double lowest, double highest) {
   const double v = parse_finite_number(option, text);
-  if (v > highest || v < lowest || (!from_lowest && v == lowest)) {
+  if (v > highest || v < lowest) {
     std::ostringstream range;
-    range << (from_lowest ? "from " : "above ") << lowest << " to " << highest;
-    throw UsageError(option + " expects degrees " + range.str() + ", got \"" + text + "\"");
+    range << lowest << " to " << highest;
+    throw UsageError(option + " expects degrees from " + range.str() + ", got \"" + text + "\"");
   }
   return v;
 }
@@ -305,18 +304,18 @@ void add_staging_options(CommandOptions& options, StagingOptions& staging, std::
   add("--camera-azimuth", [&](const std::string& o, const std::string& t) { v.camera_azimuth_deg = parse_finite_number(o, t); });
   // Short of the poles, where the floor's up would be the view's direction.
   add("--camera-elevation", [&](const std::string& o, const std::string& t) {
-    v.camera_elevation_deg = parse_degrees_in(o, t, -89.9, 89.9, true);
+    v.camera_elevation_deg = parse_degrees_in(o, t, -89.9, 89.9);
   });
   add("--camera-zoom", [&](const std::string& o, const std::string& t) {
     v.camera_zoom = parse_finite_number(o, t);
     if (!(v.camera_zoom > 0.0)) throw UsageError(o + " expects a factor above 0, got \"" + t + "\"");
   });
-  add("--fov", [&](const std::string& o, const std::string& t) { v.fov_deg = parse_degrees_in(o, t, 1.0, 170.0, true); });
+  add("--fov", [&](const std::string& o, const std::string& t) { v.fov_deg = parse_degrees_in(o, t, 1.0, 170.0); });
   add("--eye", [&](const std::string& o, const std::string& t) { v.eye = parse_point(o, t); });
   add("--target", [&](const std::string& o, const std::string& t) { v.target = parse_point(o, t); });
   add("--light-azimuth", [&](const std::string& o, const std::string& t) { v.light_azimuth_deg = parse_finite_number(o, t); });
   add("--light-elevation", [&](const std::string& o, const std::string& t) {
-    v.light_elevation_deg = parse_degrees_in(o, t, -90.0, 90.0, true);
+    v.light_elevation_deg = parse_degrees_in(o, t, -90.0, 90.0);
   });
   add("--light", [&](const std::string& o, const std::string& t) { v.light = parse_point(o, t); });
   add("--floor", [&](const std::string& o, const std::string& t) {

@@ -397,8 +397,8 @@ int run_render_command(const std::vector<std::string>& argv) {
       if (mask) write_png(*mask, *options.mask);
       if (options.save_scene) save_staged_scene(staged, options.scene_path, *options.save_scene);
     } catch (...) {  // all outputs or none
-      if (options.output != "-") std::remove(options.output.c_str());
-      if (mask) std::remove(options.mask->c_str());
+      remove_written_output(options.output);
+      if (mask) remove_written_output(*options.mask);
       throw;
     }
     // With -o -, standard output holds the picture alone.

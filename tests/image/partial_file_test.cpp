@@ -71,6 +71,18 @@ TEST_F(PartialFiles, AFifoOrDeviceIsWrittenInPlaceNeverReplaced) {
   EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
 }
 
+// Taking back a written output removes a file, never a FIFO or a device.
+TEST_F(PartialFiles, TakingBackAnOutputRemovesOnlyAFile) {
+  const std::string file = (folder_ / "x.png").string(), fifo = (folder_ / "pipe").string();
+  std::ofstream(file) << "x";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  remove_written_output(file);
+  remove_written_output(fifo);
+  remove_written_output("-");
+  EXPECT_FALSE(std::filesystem::exists(file));
+  EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+}
+
 TEST_F(PartialFiles, AFolderOrABlockDeviceIsNoPlaceForAFile) {
   try {
     PartialFile out(folder_.string(), "the image");
