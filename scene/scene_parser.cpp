@@ -341,6 +341,9 @@ class SceneBuilder {
     }
     const glm::dvec3 a(centre.x - half, centre.y - half, z), b(centre.x + half, centre.y - half, z),
         c(centre.x + half, centre.y + half, z), d(centre.x - half, centre.y + half, z);
+    for (const glm::dvec3& corner : {a, c})
+      if (!std::isfinite(corner.x) || !std::isfinite(corner.y))
+        throw InputError(where, "the floor's corners overflow double precision: make it smaller");
     scene_.triangles.push_back({a, b, c, material, where});
     scene_.triangles.push_back({a, c, d, material, where});
   }

@@ -122,6 +122,8 @@ TEST(SceneParser, AFloorIsTwoTrianglesThatMayReachPastTheCube) {
   EXPECT_EQ(wide.triangles[0].c, glm::dvec3(52, 53, -0.5));
   EXPECT_TRUE(wide.warnings.empty());
   EXPECT_EQ(error_of(kLight + "floor -1 size 0\n"), "t.scene:2:15: the floor size must be positive, got 0");
+  EXPECT_EQ(error_of(kLight + "floor -1 centre 1e308 0 size 1e308\n"),
+            "t.scene:2:1: the floor's corners overflow double precision: make it smaller");
   EXPECT_EQ(error_of(kLight + "floor\n"), "t.scene:2:6: expected a number for the floor height, got end of line");
 }
 
