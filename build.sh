@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # umbra's whole set-up on a fresh Debian 12 machine: installs the Debian
-# packages it needs (only those missing), configures and builds, then
+# packages it needs (only those missing: for a plain build or the demo, what
+# building and rendering need; for the tests, the rest too), configures and
+# builds, then
 #   ./build.sh demo   renders scenes/demo.scene to build/demo.png
 #   ./build.sh test   runs the whole test suite (CTest)
 #   ./build.sh sanitize   builds into build-sanitize/ with AddressSanitizer and
@@ -11,19 +13,32 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
+# What building umbra and rendering with it need: all that ./build.sh and
+# ./build.sh demo install, so that a first run is quick.
 packages=(
   cmake make g++ pkg-config          # toolchain
   python3-glad                       # generates the OpenGL loader at build time
   libglm-dev libpng-dev              # vectors and matrices, PNG output
+  libjpeg62-turbo-dev                # pictures written as JPEG (libjpeg-turbo); the texture benchmark
   libosmesa6-dev                     # headless OpenGL (Mesa llvmpipe) through OSMesa
   libegl-dev libegl-mesa0            # headless OpenGL through EGL: a GPU, or Mesa's software device
   libglfw3-dev libgl1-mesa-dri       # umbra view: a window with an OpenGL context
   libimgui-dev                       # umbra view's overlay (Dear ImGui)
   libstb-dev                         # texture maps (stb_image), the contact sheet's label font (stb_easy_font)
-  libjpeg62-turbo-dev                # pictures written as JPEG (libjpeg-turbo); the texture benchmark
-  xvfb xauth                         # tests run umbra view in a virtual display
   libcgal-dev libgmp-dev libmpfr-dev # exact predicates, mesh checks and repair
   libopenmesh-dev                    # half-edge meshes for silhouettes
+  libembree-dev                      # the ray-cast reference's hierarchy (Embree 3)
+  libtbb-dev                         # the self-intersection search on every core
+  libfast-float-dev                  # fast, exact number parsing in the mesh readers
+  libcli11-dev                       # every command's options (CLI11)
+  nlohmann-json3-dev                 # umbra check --json (nlohmann/json)
+  libtinygltf-dev                    # glTF 2.0 and GLB meshes (tinygltf)
+  lib3mf-dev libzip-dev              # 3MF meshes (lib3mf; its pkg-config names libzip)
+)
+# What the tests, benchmarks, sanitizers and fuzzers need besides: installed
+# by ./build.sh test, sanitize and fuzz.
+test_packages=(
+  xvfb xauth                         # tests run umbra view in a virtual display
   libgtest-dev python3               # tests (python3 reads the JSON that umbra check writes)
   libbenchmark-dev                   # bench/silhouette_benchmark (Google Benchmark)
   libcgal-demo                       # CGAL's data meshes, for the tests
@@ -32,15 +47,11 @@ packages=(
   admesh time bc                     # bench/check_benchmark.sh: the checker it compares with, timing
   clang libclang-rt-14-dev           # ./build.sh fuzz: libFuzzer
   gnuplot-nox                        # umbra bench --plot
-  libembree-dev                      # the ray-cast reference's hierarchy (Embree 3)
-  libtbb-dev                         # the self-intersection search on every core
-  libfast-float-dev                  # fast, exact number parsing in the mesh readers
   parallel                           # docs/batch-checks.md: sharded checks with GNU parallel (tested)
-  libcli11-dev                       # every command's options (CLI11)
-  nlohmann-json3-dev                 # umbra check --json (nlohmann/json)
-  libtinygltf-dev                    # glTF 2.0 and GLB meshes (tinygltf)
-  lib3mf-dev libzip-dev              # 3MF meshes (lib3mf; its pkg-config names libzip)
 )
+case "${1:-}" in
+  test|sanitize|fuzz) packages+=("${test_packages[@]}") ;;
+esac
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -95,7 +106,10 @@ case "${1:-}" in
     ;;
 esac
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo
+# The tests and benchmarks only for ./build.sh test, whose packages they need.
+tests=OFF
+[ "${1:-}" = test ] && tests=ON
+cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DUMBRA_BUILD_TESTS=$tests
 cmake --build build -j"$(nproc)"
 
 case "${1:-}" in
