@@ -33,9 +33,9 @@ zfail's at the same N, or for raycast and shadowmap at the largest N) and a
 progress bar on stderr.
 
 With no SCENES, every scenes/*.scene under the current folder, or where
-none is, every example scene installed with umbra (share/umbra/scenes). All
-of them at the defaults take several minutes on a CPU: --segments 32,64
---map-sizes 1024 --frames 5 measures a few points quickly.
+none is, every example scene installed with umbra (share/umbra/scenes).
+The defaults measure a few points of each curve, in well under a minute on
+a CPU for the bundled scenes; --full sweeps them all (about 2 minutes).
 
 Methods, measured in the order umbra render --help lists them:
 {bench methods}.
@@ -44,11 +44,14 @@ whose first frame takes over 250 ms is timed over 3 frames after that one.
 
 options:
   --size WxH          image size (default 400x400)
-  --frames K          timed frames per measurement (default 21, 1 to 1000)
-  --segments LIST     the sphere N to try, comma-separated
-                      (default 8,16,32,64,128,256; each 3 to 4096)
-  --map-sizes LIST    the shadow map sizes to try, comma-separated
-                      (default 256,512,1024,2048,4096; each 16 to 8192)
+  --frames K          timed frames per measurement (default 5; 21 with
+                      --full; 1 to 1000)
+  --segments LIST     the sphere N to try, comma-separated (default 16,64,256;
+                      8,16,32,64,128,256 with --full; each 3 to 4096)
+  --map-sizes LIST    the shadow map sizes to try, comma-separated (default
+                      512,2048; 256,512,1024,2048,4096 with --full; each 16 to
+                      8192)
+  --full              the whole sweep, with more frames each
   --gl G              the headless OpenGL to draw with (default auto, or
                       the UMBRA_GL environment variable's):
 {gl platforms}
@@ -68,9 +71,10 @@ namespace {
 struct BenchOptions {
   std::vector<std::string> scenes;
   int width = 400, height = 400;
-  int frames = 21;
-  std::vector<int> segments = {8, 16, 32, 64, 128, 256};
-  std::vector<int> map_sizes = {256, 512, 1024, 2048, 4096};
+  // A few points of each curve by default; with --full, the whole sweep.
+  int frames = 5;
+  std::vector<int> segments = {16, 64, 256};
+  std::vector<int> map_sizes = {512, 2048};
   std::optional<std::string> csv, plot;
   HeadlessGl gl = HeadlessGl::kAuto;
   bool help = false;
@@ -96,14 +100,22 @@ BenchOptions parse_bench_options(const std::vector<std::string>& argv) {
   CommandOptions options;
   add_help_option(options, o.help);
   add_size_option(options, o.width, o.height);
-  options.value("--frames", [&](const std::string& n, const std::string& t) { o.frames = parse_int_in(n, t, 1, 1000); });
-  options.value("--segments", [&](const std::string& n, const std::string& t) { o.segments = parse_int_list(n, t, 3, 4096); });
-  options.value("--map-sizes", [&](const std::string& n, const std::string& t) { o.map_sizes = parse_int_list(n, t, 16, 8192); });
+  std::optional<int> frames;
+  std::optional<std::vector<int>> segments, map_sizes;
+  bool full = false;
+  options.flag("--full", full);
+  options.value("--frames", [&](const std::string& n, const std::string& t) { frames = parse_int_in(n, t, 1, 1000); });
+  options.value("--segments", [&](const std::string& n, const std::string& t) { segments = parse_int_list(n, t, 3, 4096); });
+  options.value("--map-sizes", [&](const std::string& n, const std::string& t) { map_sizes = parse_int_list(n, t, 16, 8192); });
   add_gl_option(options, o.gl);
   options.value("--csv", [&](const std::string&, const std::string& t) { o.csv = t; });
   options.value("--plot", [&](const std::string&, const std::string& t) { o.plot = t; });
   options.positionals(o.scenes);
   options.parse(argv);
+  if (full) o.frames = 21, o.segments = {8, 16, 32, 64, 128, 256}, o.map_sizes = {256, 512, 1024, 2048, 4096};
+  o.frames = frames.value_or(o.frames);
+  o.segments = segments.value_or(o.segments);
+  o.map_sizes = map_sizes.value_or(o.map_sizes);
   if (o.help) return o;
   o.gl = gl_with_environment(o.gl);
   if (o.scenes.empty()) {

@@ -104,13 +104,15 @@ void write_plot(const std::vector<BenchRow>& rows, const std::string& path) {
   const int panels_down = (int(scenes.size()) + columns - 1) / columns;
   std::ostringstream g;
   if (text) g << "set terminal dumb size 100," << 28 * panels_down << "\n";
-  else g << "set terminal pngcairo size " << 520 * columns << "," << 400 * panels_down << " font \",10\"\n";
+  else g << "set terminal pngcairo size " << 520 * columns << "," << 440 * panels_down << " font \",10\"\n";
   const std::string partial = path + ".part";  // renamed into place: never a partial plot
   g << "set termoption noenhanced\n"  // scene names keep their underscores
     << "set output " << quoted_for_gnuplot(partial) << "\n"
     << "set multiplot layout " << panels_down << "," << columns << "\n"
     << "set logscale x\nset xlabel \"median frame time (ms, log)\"\nset ylabel \"wrong pixels (%)\"\n"
-    << "set key top right\nset grid\nset offsets 0, 0, graph 0.05, graph 0.05\n";
+    // The legend below each panel, never over its points; errors from 0 up,
+    // as none is below it, with room above the highest.
+    << "set key below horizontal maxcols 3\nset grid\nset yrange [0:*]\nset offsets 0, 0, graph 0.05, 0\n";
   // Each method keeps its colour and symbol in every panel, whichever
   // methods a panel has.
   std::vector<std::string> all_methods;
@@ -128,7 +130,7 @@ void write_plot(const std::vector<BenchRow>& rows, const std::string& path) {
         return r.scene == scene && r.method == methods[i] && r.reference;
       });
       g << (i ? ", " : "") << "'-' using 1:2 with linespoints linetype " << style_of(methods[i]) << " title "
-        << quoted_for_gnuplot(reference ? methods[i] + " (the reference: 0 by definition)" : methods[i]);
+        << quoted_for_gnuplot(reference ? methods[i] + " (reference)" : methods[i]);
     }
     g << "\n";
     for (const std::string& method : methods) {

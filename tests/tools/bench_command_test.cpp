@@ -66,6 +66,23 @@ TEST_F(BenchCommand, WritesATableAndACsvRowPerMethodAndN) {
   EXPECT_EQ(rows.back()[11], "1");
 }
 
+// Without options, a few points of each curve; --full, the whole sweep;
+// an option given beside --full still says its own.
+TEST_F(BenchCommand, TheDefaultMeasuresAFewPointsAndFullTheWholeSweep) {
+  const auto parameters = [&](const std::string& options, const std::string& method) {
+    const CommandResult r = run("bench " + kTwoSpheres + " --size 16x16 --frames 1 " + options + " --csv " + path("p.csv"));
+    EXPECT_EQ(r.status, 0) << r.err;
+    std::vector<std::string> found;
+    for (const auto& row : read_csv(path("p.csv")))
+      if (row[1] == method) found.push_back(method == "shadowmap" ? row[3] : row[2]);
+    return found;
+  };
+  EXPECT_EQ(parameters("", "zfail"), (std::vector<std::string>{"16", "64", "256"}));
+  EXPECT_EQ(parameters("", "shadowmap"), (std::vector<std::string>{"512", "2048"}));
+  EXPECT_EQ(parameters("--full --map-sizes 16", "zfail"), (std::vector<std::string>{"8", "16", "32", "64", "128", "256"}));
+  EXPECT_EQ(parameters("--full --map-sizes 16", "shadowmap"), (std::vector<std::string>{"16"}));
+}
+
 TEST_F(BenchCommand, PlotsAsText) {
   if (std::system("gnuplot --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "gnuplot is not installed";
   const CommandResult r =
