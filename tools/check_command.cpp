@@ -54,6 +54,9 @@ summary line follows on stderr.
 options:
   --json            one JSON object per mesh per line, JSON Lines (keys in
                     docs/check.md)
+  --brief           one line per mesh on stdout, its path, what it holds and
+                    its verdict (an unreadable one, its path and why), for
+                    grep and sort
   --jobs N          check N meshes at a time, using at most N threads in all
                     (default: the number of cores)
   --                end of options: every argument after it is a PATH
@@ -84,6 +87,7 @@ namespace {
 struct CheckCommandOptions {
   std::vector<std::string> meshes;  // as given: files and folders
   bool json = false;
+  bool brief = false;
   size_t jobs = std::max(1u, std::thread::hardware_concurrency());
   std::optional<Shard> shard;
   std::optional<std::string> repair_output;
@@ -97,6 +101,7 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
   CommandOptions options;
   add_help_option(options, o.help);
   options.flag("--json", o.json);
+  options.flag("--brief", o.brief);
   options.value("--repair", [&](const std::string&, const std::string& t) { o.repair_output = t; });
   options.value("--jobs", [&](const std::string& n, const std::string& t) { o.jobs = size_t(parse_int_in(n, t, 1, 4096)); });
   options.value("--shard", [&](const std::string& n, const std::string& t) { o.shard = parse_shard(n, t); });
@@ -112,6 +117,7 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
   options.parse(argv);
   if (o.help) return o;
   if (o.meshes.empty()) throw UsageError("no mesh file given");
+  if (o.json && o.brief) throw UsageError("--json and --brief are two forms of the same report: give one");
   if (o.repair_output) {
     if (o.meshes.size() != 1 || std::filesystem::is_directory(o.meshes[0])) throw UsageError("--repair takes one mesh file at a time");
     if (o.shard) throw UsageError("--repair checks one mesh: --shard does not apply");
@@ -136,7 +142,15 @@ struct CheckOutcome {
 // A mesh that could not be checked: said on stderr, and still its line of
 // JSON (every mesh gets one).
 CheckOutcome unchecked(const std::string& path, const std::string& message, const CheckCommandOptions& options) {
+  if (options.brief) return {message + "\n", "", 2};  // its line in the list, which starts with its path
   return {options.json ? json_error_line(path, message) : "", message + "\n", 2};
+}
+
+// The report in the form the options ask for.
+void print_report(const MeshReport& report, const CheckCommandOptions& options, std::ostream& out) {
+  if (options.json) report.print_json(out);
+  else if (options.brief) report.print_brief(out);
+  else report.print_text(out);
 }
 
 CheckOutcome check_one(const std::string& path, const CheckCommandOptions& options) {
@@ -144,7 +158,7 @@ CheckOutcome check_one(const std::string& path, const CheckCommandOptions& optio
     inject_fault(path);
     const MeshReport report = check_mesh(read_polygon_soup(path, TextureMaps::skip()), options.check);
     std::ostringstream out;
-    options.json ? report.print_json(out) : report.print_text(out);
+    print_report(report, options, out);
     return {out.str(), "", report.is_closed_manifold() ? 0 : 1};
   } catch (const InputError& e) {
     return unchecked(path, e.what(), options);
@@ -181,8 +195,8 @@ int repair_one(const std::string& path, const std::string& output, const CheckCo
     const RepairSummary summary = repair_mesh(soup, output, partial.temporary_path());
     partial.commit();
     const MeshReport after = check_mesh(read_polygon_soup(output, TextureMaps::skip()), options.check);
-    if (options.json) {
-      after.print_json(std::cout);
+    if (options.json || options.brief) {
+      print_report(after, options, std::cout);
     } else {
       std::cout << "repaired " << path << " into " << output << ":\n";
       for (const std::string& change : summary.changes) std::cout << "  " << change << "\n";

@@ -312,6 +312,11 @@ void MeshReport::print_json(std::ostream& out) const {
   out << json_line(report);
 }
 
+void MeshReport::print_brief(std::ostream& out) const {
+  out << path << ": " << format << ", " << plural(triangles, "triangle", "triangles") << ", "
+      << plural(components.size(), "component", "components") << ": " << verdict() << "\n";
+}
+
 std::string json_error_line(const std::string& path, const std::string& error) {
   return json_line(nlohmann::ordered_json{{"path", path}, {"error", error}});
 }

@@ -142,6 +142,8 @@ struct MeshReport {
 
   void print_text(std::ostream& out) const;
   void print_json(std::ostream& out) const;  // one line, keys documented in docs/check.md
+  // One line: "PATH: FORMAT, T triangles, C components: VERDICT".
+  void print_brief(std::ostream& out) const;
 };
 
 }  // namespace umbra

@@ -52,6 +52,24 @@ TEST_F(CheckCommand, UnreadableMeshExitsTwoWithItsLocatedError) {
   EXPECT_NE(r.out.find(good + ": OBJ"), std::string::npos);
 }
 
+// --brief: one line per mesh, its path first, so that grep keeps which
+// file each verdict is about; an unreadable mesh has its line too.
+TEST_F(CheckCommand, BriefIsOneLinePerMeshWithItsPathAndVerdict) {
+  const std::string meshes = std::string(UMBRA_SOURCE_DIR) + "/scenes/meshes/";
+  const std::string missing = path("missing.obj");
+  const CommandResult r = run("check --brief " + meshes + "open_box.obj " + meshes + "pair.off " + missing);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, meshes + "open_box.obj: OBJ, 10 triangles, 1 component: not a closed 2-manifold (4 border edges in 1 hole): "
+                            "shadow from an edge-multiplicity volume (exact for any triangles)\n" +
+                   meshes + "pair.off: OFF, 16 triangles, 2 components: closed 2-manifold: casts its shadow from silhouette edges\n" +
+                   missing + ": cannot open: No such file or directory\n");
+  EXPECT_NE(r.err.find(" s: 1 closed 2-manifold, 1 not, 1 unreadable\n"), std::string::npos) << r.err;  // only the summary on stderr
+  EXPECT_EQ(r.err.rfind("umbra check: 3 meshes in ", 0), 0u) << r.err;
+  const CommandResult both = run("check --brief --json " + meshes + "pair.off");
+  EXPECT_EQ(both.status, 2);
+  EXPECT_EQ(both.err, "umbra check: --json and --brief are two forms of the same report: give one\n(see umbra check --help)\n");
+}
+
 TEST_F(CheckCommand, JsonIsOneValidObjectPerMeshPerLine) {
   const std::string bad = write("bad \"name\".off", "OFF\n1 0 0\n");
   const std::string good = write("good.obj", obj_text(test::unit_cube()));
