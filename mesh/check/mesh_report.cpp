@@ -108,6 +108,7 @@ std::vector<std::string> MeshReport::problems() const {
 }
 
 std::string MeshReport::verdict() const {
+  if (triangles == 0) return "no faces: nothing to check, and nothing to cast a shadow";
   const std::vector<std::string> why = problems();
   std::string s;
   if (why.empty() && volume_kind() != VolumeKind::kSilhouette)  // only overlapping diagonals keep it from the silhouette

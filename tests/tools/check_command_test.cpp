@@ -70,6 +70,16 @@ TEST_F(CheckCommand, BriefIsOneLinePerMeshWithItsPathAndVerdict) {
   EXPECT_EQ(both.err, "umbra check: --json and --brief are two forms of the same report: give one\n(see umbra check --help)\n");
 }
 
+// A file with points and no faces is no mesh to shadow: its verdict says so,
+// not which shadow volume it would get.
+TEST_F(CheckCommand, AFileWithNoFacesHasNothingToShadow) {
+  const std::string points = write("points.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                                 "property float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n");
+  const CommandResult r = run("check --brief " + points);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.out, points + ": PLY (ascii), 0 triangles, 0 components: no faces: nothing to check, and nothing to cast a shadow\n");
+}
+
 TEST_F(CheckCommand, JsonIsOneValidObjectPerMeshPerLine) {
   const std::string bad = write("bad \"name\".off", "OFF\n1 0 0\n");
   const std::string good = write("good.obj", obj_text(test::unit_cube()));
