@@ -1,13 +1,9 @@
 #include "image/image.hpp"
 
-#include <cerrno>
-#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 
 #include <png.h>
-
-#include "image/partial_file.hpp"
 
 namespace umbra {
 
@@ -15,23 +11,6 @@ namespace umbra {
 
 unsigned png_format_of(int channels) {
   return channels == 1 ? PNG_FORMAT_GRAY : channels == 4 ? PNG_FORMAT_RGBA : PNG_FORMAT_RGB;
-}
-
-void write_png(const Image& image, const std::string& path) {
-  if (image.channels != 1 && image.channels != 3 && image.channels != 4) throw std::runtime_error("write_png: 1, 3 or 4 channels only");
-  png_image png;
-  std::memset(&png, 0, sizeof png);
-  png.version = PNG_IMAGE_VERSION;
-  png.width = png_uint_32(image.width);
-  png.height = png_uint_32(image.height);
-  png.format = png_format_of(image.channels);
-
-  PartialFile partial(path, "the image");
-  const bool written = png_image_write_to_file(&png, partial.temporary_path().c_str(), 0, image.pixels.data(), 0, nullptr) != 0;
-  const std::string reason = written ? "" : png.message;
-  png_image_free(&png);
-  if (!written) throw std::runtime_error(path + ": cannot write the image: " + reason);
-  partial.commit();
 }
 
 Image read_png(const std::string& path) {

@@ -30,8 +30,9 @@ constexpr uint8_t kMaskNoSurface = 128;
 constexpr uint8_t kMaskLit = 255;
 constexpr uint8_t kMaskUnlit = 0;
 
-// Writes `image` as PNG to `path` through a temporary file renamed into place,
-// so a failure never leaves a partial file. Throws std::runtime_error.
+// Writes `image` as PNG to `path`, whatever its name, through a temporary
+// file renamed into place, so a failure never leaves a partial file
+// (picture_file.cpp, which writes every picture). Throws std::runtime_error.
 void write_png(const Image& image, const std::string& path);
 
 // libpng's simplified format for an image of `channels` (1, 3 or 4).

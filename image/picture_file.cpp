@@ -115,13 +115,17 @@ std::string picture_extensions() {
   return word_list(all);
 }
 
-void write_picture(const Image& image, const std::string& path, const PictureOptions& options) {
-  const std::optional<PictureFormat> format = picture_format_of(path);
-  if (!format) throw std::runtime_error(path + ": umbra writes pictures as " + picture_extensions() + " only");
-  if (image.channels == 4 && !picture_format_keeps_alpha(*format))
-    throw std::runtime_error(path + ": a " + std::string(format_row(*format).name) + " picture has no alpha channel for a transparent background");
+namespace {
+
+// `image` in `format` to `path`: "-" for standard output, else through a
+// temporary file renamed into place (PartialFile).
+void write_as(PictureFormat format, const Image& image, const std::string& path, const PictureOptions& options) {
+  if (image.channels != 1 && image.channels != 3 && image.channels != 4)
+    throw std::runtime_error(path + ": cannot write an image of " + std::to_string(image.channels) + " channels");
+  if (image.channels == 4 && !picture_format_keeps_alpha(format))
+    throw std::runtime_error(path + ": a " + std::string(format_row(format).name) + " picture has no alpha channel for a transparent background");
   if (path == "-") {
-    const std::string reason = write_in(*format, image, stdout, options);
+    const std::string reason = write_in(format, image, stdout, options);
     if (!reason.empty() || std::fflush(stdout) != 0)
       throw std::runtime_error("cannot write the image to standard output: " + (reason.empty() ? std::strerror(errno) : reason));
     return;
@@ -129,10 +133,20 @@ void write_picture(const Image& image, const std::string& path, const PictureOpt
   PartialFile partial(path, "the image");
   std::FILE* file = std::fopen(partial.temporary_path().c_str(), "wb");
   if (!file) throw std::runtime_error(path + ": cannot write the image: " + std::strerror(errno));
-  std::string reason = write_in(*format, image, file, options);
+  std::string reason = write_in(format, image, file, options);
   if (std::fclose(file) != 0 && reason.empty()) reason = std::strerror(errno);
   if (!reason.empty()) throw std::runtime_error(path + ": cannot write the image: " + reason);
   partial.commit();
 }
+
+}  // namespace
+
+void write_picture(const Image& image, const std::string& path, const PictureOptions& options) {
+  const std::optional<PictureFormat> format = picture_format_of(path);
+  if (!format) throw std::runtime_error(path + ": umbra writes pictures as " + picture_extensions() + " only");
+  write_as(*format, image, path, options);
+}
+
+void write_png(const Image& image, const std::string& path) { write_as(PictureFormat::kPng, image, path, {}); }
 
 }  // namespace umbra
