@@ -13,6 +13,7 @@
 #include <glm/vec4.hpp>
 
 #include "image/image.hpp"
+#include "image/tone_curve.hpp"
 
 namespace umbra {
 
@@ -32,10 +33,23 @@ inline glm::dvec4 resolved_sample(const glm::dvec4& drawn, const glm::dvec3& bac
   return transparent ? glm::dvec4(0.0, 0.0, 0.0, lost) : glm::dvec4(background * (1.0 - lost), 0.0);
 }
 
-inline void put_pixel_mean(Image& image, int x, int y, const glm::dvec4& mean) {
+// Writes the pixel whose samples' mean is `mean`. The curve applies to the
+// surfaces' part of the mean: the background (and a shadow catcher, which
+// shows it) keeps the colour it was given. The mean's coverage a splits the
+// two, as every surface sample has coverage 1 and every other 0.
+inline void put_pixel_mean(Image& image, int x, int y, const glm::dvec4& mean, const glm::dvec3& background,
+                           ToneCurve curve = ToneCurve::kClip) {
   const bool alpha = image.channels == 4;
   const double a = mean.a;
-  for (int c = 0; c < 3; ++c) image.at(x, y, c) = channel_byte(!alpha ? mean[c] : a > 0.0 ? mean[c] / a : 0.0);
+  for (int c = 0; c < 3; ++c) {
+    if (curve == ToneCurve::kClip) {  // the mean as it is: no split to round
+      image.at(x, y, c) = channel_byte(!alpha ? mean[c] : a > 0.0 ? mean[c] / a : 0.0);
+      continue;
+    }
+    const double behind = alpha ? 0.0 : (1.0 - a) * background[c];  // premultiplied: none behind a transparent one
+    const double surface = a > 0.0 ? toned((mean[c] - behind) / a, curve) : 0.0;
+    image.at(x, y, c) = channel_byte(alpha ? surface : a * surface + behind);
+  }
   if (alpha) image.at(x, y, 3) = channel_byte(a);
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <thread>
 
 #include <glm/geometric.hpp>
@@ -35,31 +36,54 @@ Surface surface_of(const Scene& scene, int object) {
   return {};
 }
 
+// A mesh triangle's per-corner values at `p`, blended by p's barycentric
+// weights as the GL interpolates them across the triangle (perspective-correct).
+struct CornerBlend {
+  double wa = 1.0, wb = 0.0, wc = 0.0;
+  CornerBlend(const Surface& s, const glm::dvec3& p) {
+    const auto& t = s.mesh->triangles[s.triangle];
+    const glm::dvec3 a = s.mesh->positions[t[0]], b = s.mesh->positions[t[1]], c = s.mesh->positions[t[2]];
+    const glm::dvec3 n = glm::cross(b - a, c - a);
+    const double area = glm::dot(n, n);
+    wb = area > 0.0 ? glm::dot(glm::cross(p - a, c - a), n) / area : 0.0;
+    wc = area > 0.0 ? glm::dot(glm::cross(b - a, p - a), n) / area : 0.0;
+    wa = 1.0 - wb - wc;
+  }
+  glm::dvec2 operator()(const std::array<glm::vec2, 3>& v) const {
+    return wa * glm::dvec2(v[0]) + wb * glm::dvec2(v[1]) + wc * glm::dvec2(v[2]);
+  }
+  glm::dvec3 operator()(const std::array<glm::vec3, 3>& v) const {
+    return wa * glm::dvec3(v[0]) + wb * glm::dvec3(v[1]) + wc * glm::dvec3(v[2]);
+  }
+};
+
 // The colour the surface's material is multiplied by at `p`: its corners'
 // colours, and its texture map at its corners' texture coordinates, blended
-// by p's barycentric weights as the GL interpolates them across the triangle
-// (perspective-correct); white where the file gives neither.
+// across the triangle; white where the file gives neither.
 glm::dvec3 surface_colour(const Scene& scene, const Surface& s, const glm::dvec3& p) {
   if (!s.mesh) return glm::dvec3(1.0);
   const TextureImage* texture = s.mesh->triangle_uvs.empty() ? nullptr : scene.materials[size_t(s.material)].texture.get();
   if (s.mesh->triangle_colors.empty() && !texture) return glm::dvec3(1.0);
-  const auto& t = s.mesh->triangles[s.triangle];
-  const glm::dvec3 a = s.mesh->positions[t[0]], b = s.mesh->positions[t[1]], c = s.mesh->positions[t[2]];
-  const glm::dvec3 n = glm::cross(b - a, c - a);
-  const double area = glm::dot(n, n);
-  const double wb = area > 0.0 ? glm::dot(glm::cross(p - a, c - a), n) / area : 0.0;  // weight of b
-  const double wc = area > 0.0 ? glm::dot(glm::cross(b - a, p - a), n) / area : 0.0;  // weight of c
+  const CornerBlend blend(s, p);
   glm::dvec3 colour(1.0);
-  if (!s.mesh->triangle_colors.empty()) {
-    const auto& rgb = s.mesh->triangle_colors[s.triangle];
-    colour = (1.0 - wb - wc) * glm::dvec3(rgb[0]) + wb * glm::dvec3(rgb[1]) + wc * glm::dvec3(rgb[2]);
-  }
-  if (texture) {
-    const auto& uv = s.mesh->triangle_uvs[s.triangle];
-    const glm::dvec2 at = (1.0 - wb - wc) * glm::dvec2(uv[0]) + wb * glm::dvec2(uv[1]) + wc * glm::dvec2(uv[2]);
-    colour *= sample_bilinear(*texture, at);
-  }
+  if (!s.mesh->triangle_colors.empty()) colour = blend(s.mesh->triangle_colors[s.triangle]);
+  if (texture) colour *= sample_bilinear(*texture, blend(s.mesh->triangle_uvs[s.triangle]));
   return colour;
+}
+
+// The normal a smooth mesh face is shaded with at `p` (its corners' blended,
+// of unit length), or none for a flat face, as the triangle shader decides.
+std::optional<glm::dvec3> shading_normal(const Surface& s, const glm::dvec3& p) {
+  if (!s.mesh || s.mesh->triangle_normals.empty()) return std::nullopt;
+  const auto& corners = s.mesh->triangle_normals[s.triangle];
+  if (corners[0] == glm::vec3(0.0f)) return std::nullopt;  // a flat face's corners are all 0
+  return glm::normalize(CornerBlend(s, p)(corners));
+}
+
+// shaders.hpp's terminator_dimming, in double.
+double terminator_dimming(const glm::dvec3& n, const glm::dvec3& s, const glm::dvec3& l) {
+  const double g = std::clamp(glm::dot(n, l) / std::max(glm::dot(s, l) * glm::dot(n, s), 1e-20), 0.0, 1.0);
+  return -g * g * g + g * g + g;
 }
 
 // The shader's shade() for one sample, in double precision (shaders.hpp),
@@ -74,9 +98,15 @@ glm::dvec4 shade(const Scene& scene, const RayCaster& caster, const glm::dvec3& 
   const glm::dvec3 eye = scene.camera.eye;
   glm::dvec3 n = hit.normal;
   if (glm::dot(n, eye - hit.point) < 0.0) n = -n;
-  glm::dvec3 colour = ambient_sum * m.ambient * tint;
+  const std::optional<glm::dvec3> smooth = shading_normal(surface, hit.point);
+  const glm::dvec3 s = !smooth ? n : glm::dot(*smooth, n) < 0.0 ? -*smooth : *smooth;
+  // The ambient pass: the lights' ambient, the hemisphere and the headlight.
+  const FillLight& fill = scene.fill;
+  const glm::dvec3 ambient = ambient_sum + glm::mix(fill.ground, fill.sky, 0.5 + 0.5 * glm::dot(s, fill.up));
+  const glm::dvec3 head = fill.headlight * std::max(glm::dot(s, glm::normalize(eye - hit.point)), 0.0);
+  glm::dvec3 colour = (ambient * m.ambient + head * m.diffuse) * tint;
   const auto mean = [](const glm::dvec3& rgb) { return (rgb.r + rgb.g + rgb.b) / 3.0; };
-  glm::dvec2 caught(mean(ambient_sum));  // a shadow catcher's lit and unlit light
+  glm::dvec2 caught(mean(ambient + head));  // a shadow catcher's lit and unlit light
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& light = scene.lights[i];
     const glm::dvec3 l = glm::normalize(light.position - hit.point);
@@ -87,10 +117,12 @@ glm::dvec4 shade(const Scene& scene, const RayCaster& caster, const glm::dvec3& 
     const double n_dot_l = std::max(glm::dot(n, l), 0.0);
     if (m.shadow_catcher && faces) caught += glm::dvec2(lit ? 1.0 : 0.0, 1.0) * (mean(light.color) * n_dot_l);
     if (!lit) continue;
+    const double dimming = smooth ? terminator_dimming(n, s, l) : 1.0;
+    const double s_dot_l = smooth ? std::max(glm::dot(s, l), 0.0) * dimming : n_dot_l;
     const glm::dvec3 v = glm::normalize(eye - hit.point);
-    const glm::dvec3 r = 2.0 * n_dot_l * n - l;  // reflect(-l, n)
-    const double s = m.shininess > 0.0 ? std::pow(std::max(glm::dot(r, v), 0.0), m.shininess) : 1.0;
-    colour += light.color * (m.diffuse * tint * n_dot_l + m.specular * s);
+    const glm::dvec3 r = 2.0 * (smooth ? glm::dot(s, l) : n_dot_l) * s - l;  // reflect(-l, s)
+    const double highlight = m.shininess > 0.0 ? std::pow(std::max(glm::dot(r, v), 0.0), m.shininess) : 1.0;
+    colour += light.color * (m.diffuse * tint * s_dot_l + m.specular * highlight * dimming);
   }
   return m.shadow_catcher ? glm::dvec4(caught, 0.0, -1.0) : glm::dvec4(colour, 1.0);
 }
@@ -125,7 +157,7 @@ RayCastFrame ray_cast_frame(const Scene& scene, int width, int height, int sampl
           for (int i = 0; i < samples; ++i)
             if (samples % 2 == 0 || i != samples / 2 || j != samples / 2)
               sum += sample(x + (i + 0.5) / samples, y + (j + 0.5) / samples, nullptr, x, y);
-        put_pixel_mean(frame.image, x, y, sum / double(samples * samples));
+        put_pixel_mean(frame.image, x, y, sum / double(samples * samples), background.color, scene.tone);
       }
   };
   const int threads = int(std::max(1u, std::thread::hardware_concurrency()));

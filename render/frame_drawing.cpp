@@ -67,6 +67,10 @@ FrameDrawing::FrameDrawing(const Scene& scene, const RenderPlan& plan, DrawSendi
   for (ShaderProgram* p : {triangle_program_.get(), sphere_program_.get()}) {
     p->use();
     p->set("ambient_sum", f(ambient_sum));
+    p->set("headlight", f(scene.fill.headlight));
+    p->set("sky", f(scene.fill.sky));
+    p->set("ground", f(scene.fill.ground));
+    p->set("sky_up", f(scene.fill.up));
     p->set("shadow_map", int(shaders::kShadowMapUnit));
     p->set("material_texture", int(shaders::kMaterialTextureUnit));  // triangles only
     p->set("volume_count", int(shaders::kVolumeCountUnit));

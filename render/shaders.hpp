@@ -20,15 +20,24 @@ enum ShadowTest { kNoShadowTest = 0, kShadowMapTest = 1, kVolumeCountTest = 2 };
 // the cube shadow map, the volumes' count. Unit 0 is the one left active.
 enum TextureUnit { kMaterialTextureUnit = 0, kShadowMapUnit = 1, kVolumeCountUnit = 2 };
 
-// Phong shading shared by triangles and spheres; `n` is a unit normal, turned
-// here to the side facing the camera. `faces_light` says whether that side
-// faces the light: for a triangle, from the exact side of the light that its
-// vertices carry (kTriangleVertex), never from n . l, whose rounding varies
-// across a face in the light's plane and would speckle it.
+// Phong shading shared by triangles and spheres; `n` is the surface's unit
+// normal, turned here to the side facing the camera, and `s` the one it is
+// shaded with: `n` itself, or where `smoothed`, a mesh's interpolated normal
+// (Mesh::triangle_normals), turned to n's side. `faces_light` says whether
+// the seen side faces the light: for a triangle, from the exact side of the
+// light that its vertices carry (kTriangleVertex), never from n . l, whose
+// rounding varies across a face in the light's plane and would speckle it.
 inline constexpr const char* kShading = R"(
 uniform int pass;
 uniform vec3 eye;
 uniform vec3 ambient_sum;      // sum over lights of their ambient intensity
+// The scene's FillLight: a headlight at the eye, and a hemisphere's sky and
+// ground (weighted by the seen side's turn to `sky_up`), added in the
+// ambient pass, as they cast no shadow in view.
+uniform vec3 headlight;
+uniform vec3 sky;
+uniform vec3 ground;
+uniform vec3 sky_up;
 uniform vec3 light_position;
 uniform vec3 light_color;
 uniform vec3 material_ambient;
@@ -78,7 +87,18 @@ bool seen_side_faces_light(vec3 p, vec3 n) {
   return dot(n, light_position - p) > 0.0;
 }
 
-void shade(vec3 p, vec3 n, bool faces_light) {
+// A smooth face's light is dimmed where its own plane turns from the light
+// faster than its shading normal does, to nothing at its plane's terminator,
+// where the shadow volume's exact edge begins: else the lit side's last
+// faces end in a saw-tooth of bright triangles against the shadow (Chiang,
+// Li and Burley, "Taming the Shadow Terminator", SIGGRAPH 2019 Talks). The
+// reference's shade() does the same in double.
+float terminator_dimming(vec3 n, vec3 s, vec3 l) {
+  float g = clamp(dot(n, l) / max(dot(s, l) * dot(n, s), 1e-20), 0.0, 1.0);
+  return -g * g * g + g * g + g;
+}
+
+void shade(vec3 p, vec3 n, vec3 s, bool smoothed, bool faces_light) {
   if (pass == 4) {
     frag_color = vec4(length(p - light_position));
     return;
@@ -90,11 +110,18 @@ void shade(vec3 p, vec3 n, bool faces_light) {
     return;
   }
   if (dot(n, eye - p) < 0.0) n = -n;
+  if (!smoothed) s = n;
+  else if (dot(s, n) < 0.0) s = -s;
   vec3 l = normalize(light_position - p);
   float n_dot_l = max(dot(n, l), 0.0);  // may round below 0 where the face meets the light at a grazing angle
+  // What the shading takes: n . l, or for a smooth face, s . l dimmed at the terminator.
+  float s_dot_l = smoothed ? max(dot(s, l), 0.0) * terminator_dimming(n, s, l) : n_dot_l;
   if (pass == 0) {
-    float ambient = dot(ambient_sum, vec3(1.0 / 3.0));
-    frag_color = material_catcher ? vec4(ambient, ambient, 0.0, -1.0) : vec4(ambient_sum * material_ambient * surface_color, 1.0);
+    vec3 ambient = ambient_sum + mix(ground, sky, 0.5 + 0.5 * dot(s, sky_up));
+    vec3 head = headlight * max(dot(s, normalize(eye - p)), 0.0);
+    float unshadowed = dot(ambient + head, vec3(1.0 / 3.0));
+    frag_color = material_catcher ? vec4(unshadowed, unshadowed, 0.0, -1.0)
+                                  : vec4((ambient * material_ambient + head * material_diffuse) * surface_color, 1.0);
   } else if (pass == 1) {
     if (!faces_light) discard;
     if (material_catcher) {
@@ -103,12 +130,12 @@ void shade(vec3 p, vec3 n, bool faces_light) {
       return;
     }
     if (in_shadow(p, n_dot_l)) discard;
-    vec3 colour = material_diffuse * surface_color * n_dot_l;
+    vec3 colour = material_diffuse * surface_color * s_dot_l;
     if (specular_used) {
       vec3 v = normalize(eye - p);
-      vec3 r = reflect(-l, n);
-      float s = material_shininess > 0.0 ? pow(max(dot(r, v), 0.0), material_shininess) : 1.0;
-      colour += material_specular * s;
+      vec3 r = reflect(-l, s);
+      float highlight = material_shininess > 0.0 ? pow(max(dot(r, v), 0.0), material_shininess) : 1.0;
+      colour += material_specular * highlight * (smoothed ? terminator_dimming(n, s, l) : 1.0);
     }
     frag_color = vec4(light_color * colour, 0.0);  // alpha, coverage, is the ambient pass's
   } else {
@@ -127,9 +154,11 @@ layout(location = 3) in vec2 uv;     // texture coordinates, v down the image; (
 // The light's side of the triangle's plane, exactly (SurfaceBuffers::use_light):
 // +1 where `normal` points, -1 the other side, 0 in the plane.
 layout(location = 4) in int light_side;
+layout(location = 5) in vec3 shading_normal;  // (0, 0, 0): flat (a constant attribute when no mesh is smooth)
 uniform mat4 view_projection;
 out vec3 world_position;
 out vec3 world_normal;
+out vec3 world_shading_normal;
 out vec3 vertex_color;
 out vec2 texture_uv;
 flat out int triangle_light_side;
@@ -137,6 +166,7 @@ invariant gl_Position;
 void main() {
   world_position = position;
   world_normal = normal;
+  world_shading_normal = shading_normal;
   triangle_light_side = light_side;
   vertex_color = color;
   texture_uv = uv;
@@ -158,6 +188,7 @@ enum TextureWrap { kWrapRepeat = 0, kWrapClampToEdge = 1, kWrapMirroredRepeat = 
 inline constexpr const char* kTriangleFragmentMain = R"(
 in vec3 world_position;
 in vec3 world_normal;
+in vec3 world_shading_normal;
 in vec3 vertex_color;
 in vec2 texture_uv;
 flat in int triangle_light_side;
@@ -197,7 +228,10 @@ void main() {
   // The camera's side of the plane, by the interpolated point: it can round
   // only where the plane nearly holds the eye, and the face is seen edge-on.
   int eye_side = dot(world_normal, eye - world_position) < 0.0 ? -1 : 1;
-  shade(world_position, normalize(world_normal), triangle_light_side != 0 && triangle_light_side == eye_side);
+  // A smooth face's corners all have normals; a flat one's are all 0, and so is what is blended of them.
+  bool smoothed = world_shading_normal != vec3(0.0);
+  shade(world_position, normalize(world_normal), smoothed ? normalize(world_shading_normal) : vec3(0.0), smoothed,
+        triangle_light_side != 0 && triangle_light_side == eye_side);
 }
 )";
 
@@ -243,7 +277,7 @@ void main() {
   vec4 clip = view_projection * vec4(p, 1.0);
   gl_FragDepth = 0.5 * (clip.z / clip.w) + 0.5;
   vec3 n = (p - sphere_center) / sphere_radius;
-  shade(p, n, seen_side_faces_light(p, n));
+  shade(p, n, n, false, seen_side_faces_light(p, n));
 }
 )";
 

@@ -78,7 +78,8 @@ Image ShadowRenderer::render_image(bool show_volumes) {
 }
 
 Image ShadowRenderer::read_image() const {
-  const Background& background = drawing_->scene().background;
+  const Scene& scene = drawing_->scene();
+  const Background& background = scene.background;
   Image image(plan_.settings.width, plan_.settings.height, background.transparent ? 4 : 3);
   // Only a shadow catcher's samples need resolving: without one, none is spent per sample.
   const auto& materials = drawing_->scene().materials;
@@ -86,7 +87,7 @@ Image ShadowRenderer::read_image() const {
   std::function<glm::dvec4(const glm::dvec4&)> resolve;
   if (catches) resolve = [&](const glm::dvec4& sample) { return resolved_sample(sample, background.color, background.transparent); };
   drawing_->target().for_each_pixel_mean(
-      drawing_->samples_per_side(), [&](int x, int y, const glm::dvec4& mean) { put_pixel_mean(image, x, y, mean); }, resolve);
+      drawing_->samples_per_side(), [&](int x, int y, const glm::dvec4& mean) { put_pixel_mean(image, x, y, mean, background.color, scene.tone); }, resolve);
   return image;
 }
 

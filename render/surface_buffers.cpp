@@ -107,6 +107,9 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
   // where no texture is sampled.
   const bool textured = std::any_of(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return !m.triangle_uvs.empty(); });
   std::vector<float> uvs(textured ? triangle_count * 6 : 0, 0.0f);
+  // Shading normals likewise, when some mesh is smooth; (0, 0, 0), flat, elsewhere.
+  const bool smooth = std::any_of(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return !m.triangle_normals.empty(); });
+  std::vector<float> normals(smooth ? triangle_count * 9 : 0, 0.0f);
   size_t placed = 0;  // triangles laid out so far
   for (Run& run : runs) {
     run.first = placed;
@@ -136,6 +139,7 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
           put(first + i, p[t[0]], p[t[1]], p[t[2]]);
           if (coloured) put_corners(colours, first + i, run.mesh->triangle_colors, k);
           if (textured) put_corners(uvs, first + i, run.mesh->triangle_uvs, k);
+          if (smooth) put_corners(normals, first + i, run.mesh->triangle_normals, k);
         }
       });
     });
@@ -150,6 +154,7 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
   glEnableVertexAttribArray(1);
   per_vertex_attribute(2, 3, colours, 1.0f, color_vbo_);
   per_vertex_attribute(3, 2, uvs, 0.0f, uv_vbo_);
+  per_vertex_attribute(5, 3, normals, 0.0f, normal_vbo_);
   upload_textures(scene);
 
   const float corners[] = {-1, -1, -1, 1, -1, -1, 1, 1, -1, -1, 1, -1, -1, -1, 1, 1, -1, 1, 1, 1, 1, -1, 1, 1};
@@ -169,8 +174,8 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
 }
 
 SurfaceBuffers::~SurfaceBuffers() {
-  const GLuint buffers[] = {triangle_vbo_, box_vbo_, box_ibo_, color_vbo_, uv_vbo_};
-  glDeleteBuffers(5, buffers);
+  const GLuint buffers[] = {triangle_vbo_, box_vbo_, box_ibo_, color_vbo_, uv_vbo_, normal_vbo_};
+  glDeleteBuffers(6, buffers);
   for (const LightSides& sides : light_sides_) glDeleteBuffers(1, &sides.vbo);
   const GLuint arrays[] = {triangle_vao_, box_vao_};
   glDeleteVertexArrays(2, arrays);

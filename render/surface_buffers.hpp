@@ -74,6 +74,7 @@ class SurfaceBuffers {
   unsigned triangle_vao_ = 0, triangle_vbo_ = 0;
   unsigned color_vbo_ = 0;  // per vertex, parallel to triangle_vbo_; only when some mesh has vertex colours
   unsigned uv_vbo_ = 0;     // likewise, texture coordinates; only when some mesh has them
+  unsigned normal_vbo_ = 0;  // likewise, shading normals; only when some mesh is smooth
   std::vector<unsigned> textures_;  // per material: its texture map, or 0
   unsigned box_vao_ = 0, box_vbo_ = 0, box_ibo_ = 0;
 };

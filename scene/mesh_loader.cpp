@@ -18,6 +18,7 @@
 #include "mesh/check/mesh_check.hpp"
 #include "mesh/io/mesh_file.hpp"
 #include "mesh/predicates/orientation.hpp"
+#include "mesh/topology/crease_normals.hpp"
 #include "scene/scene_text.hpp"
 
 namespace umbra {
@@ -75,6 +76,26 @@ std::vector<glm::dvec3> placed_points(const Mesh& m, const FileLoc& path_at, con
   return points;
 }
 
+// The mesh's shading normals for `smooth`: the file's, turned as its points
+// were (a scale is uniform and positive, so turns none), else its creases'.
+void smooth_normals(Mesh& m, std::vector<std::array<glm::vec3, 3>>& file_normals) {
+  if (file_normals.empty()) {
+    m.triangle_normals = crease_normals(m.positions, m.triangles, *m.smooth_deg);
+    return;
+  }
+  const glm::mat3 rotation(glm::rotate(glm::dmat4(1.0), glm::radians(m.rotation_deg), glm::normalize(m.rotation_axis)));
+  for (auto& corners : file_normals) {
+    bool whole = true;  // every corner has one: else the face is drawn flat
+    for (glm::vec3& n : corners) {
+      const float length = glm::length(n);
+      whole = whole && length > 0.0f && std::isfinite(length);
+      if (whole) n = rotation * (n / length);
+    }
+    if (!whole) corners.fill(glm::vec3(0.0f));
+  }
+  m.triangle_normals = std::move(file_normals);
+}
+
 // Reads, checks and places one mesh; throws its located InputError.
 LoadedMesh load_mesh(MeshStatement statement, const TextureMaps& maps) {
   LoadedMesh loaded{std::move(statement.mesh), {}, {}};
@@ -103,6 +124,7 @@ LoadedMesh load_mesh(MeshStatement statement, const TextureMaps& maps) {
   m.triangle_materials = std::move(analysis.triangle_materials);
   m.triangle_colors = std::move(analysis.triangle_colors);
   m.triangle_uvs = std::move(analysis.triangle_uvs);
+  if (m.smooth_deg) smooth_normals(m, analysis.triangle_normals);
   m.edges = std::move(analysis.topology->edges);  // asked for above: always given
   m.components = std::move(analysis.topology->components);
   loaded.warnings = std::move(analysis.report.warnings);

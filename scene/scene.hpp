@@ -15,6 +15,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "image/tone_curve.hpp"
 #include "mesh/input_error.hpp"
 #include "mesh/shared_positions.hpp"
 #include "mesh/texture_image.hpp"
@@ -81,6 +82,14 @@ struct Mesh {
   // Per triangle, its corners' texture coordinates (v down the image), where
   // some of the file's materials has a texture map. Empty: none.
   std::vector<std::array<glm::vec2, 3>> triangle_uvs;
+  // `smooth DEG`: shaded smooth, in the file's normals where it gives them
+  // (OBJ vn, PLY nx ny nz, glTF NORMAL), else in normals averaged over the
+  // faces round each point that meet at no more than DEG degrees
+  // (crease_normals.hpp). Unset: flat faces. Shadows are the faces' either way.
+  std::optional<double> smooth_deg;
+  // Per triangle, its corners' unit normals for shading, in scene
+  // coordinates; (0, 0, 0) at a corner drawn flat. Empty: every face flat.
+  std::vector<std::array<glm::vec3, 3>> triangle_normals;
   bool fit = false;  // centred and scaled so that its box's longest side spans the cube, before the rest
   double scale = 1.0;
   glm::dvec3 rotation_axis{0.0, 0.0, 1.0};
@@ -126,6 +135,23 @@ struct Background {
   bool transparent = false;
 };
 
+// Light that reaches every surface the camera sees without a shadow, beside
+// the lights, which cast exact ones: a studio's fill, for a picture whose
+// shaded sides keep their shape (a staged mesh has it; a spec scene none).
+// - The headlight is a light at the eye. It lights only what the eye sees,
+//   so every point it could shadow is hidden: it casts no shadow in view.
+//   Diffuse only, by the seen side's n . v.
+// - The hemisphere (sky and ground) replaces a constant ambient term with
+//   one that depends on a face's turn: sky where the seen side faces `up`,
+//   ground where it faces down, blended by (1 + n . up) / 2 between
+//   (a hemisphere light; Akenine-Moller, Haines and Hoffman, "Real-Time
+//   Rendering", 4th ed., 2018, 10.3). It multiplies the ambient colour.
+struct FillLight {
+  glm::dvec3 headlight{0.0};
+  glm::dvec3 sky{0.0}, ground{0.0};
+  glm::dvec3 up{0.0, 0.0, 1.0};  // unit
+};
+
 struct Warning {
   FileLoc where;
   std::string message;
@@ -141,6 +167,8 @@ struct Scene {
   Camera camera = spec_camera();
   std::optional<FileLoc> camera_from;  // where the camera statement was; none: the default view
   Background background;
+  FillLight fill;
+  ToneCurve tone = ToneCurve::kClip;  // how light becomes a channel's value (tone_curve.hpp)
   std::optional<int> antialias;  // samples per side it is drawn with, unless told (none: 1)
   std::vector<Warning> warnings;
 };

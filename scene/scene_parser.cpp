@@ -144,7 +144,8 @@ class SceneBuilder {
         {"light", &SceneBuilder::light},       {"material", &SceneBuilder::material}, {"sphere", &SceneBuilder::sphere},
         {"triangle", &SceneBuilder::triangle}, {"mesh", &SceneBuilder::mesh},         {"camera", &SceneBuilder::camera},
         {"background", &SceneBuilder::background}, {"floor", &SceneBuilder::floor},
-        {"antialias", &SceneBuilder::antialias},
+        {"antialias", &SceneBuilder::antialias}, {"headlight", &SceneBuilder::headlight},
+        {"hemisphere", &SceneBuilder::hemisphere}, {"tone", &SceneBuilder::tone},
     };
     const std::string& k = r.keyword();
     std::vector<std::string> keywords;
@@ -254,9 +255,14 @@ class SceneBuilder {
     m.where = r.statement_loc();
     const FileLoc path_at = r.next_loc();
     m.path = r.word("a mesh file path");
-    while (auto k = r.keyword_of("mesh", {"material", "fit", "scale", "rotate", "translate", "plain"})) {
+    while (auto k = r.keyword_of("mesh", {"material", "fit", "scale", "rotate", "translate", "plain", "smooth"})) {
       if (*k == "fit") {
         m.fit = true;
+      } else if (*k == "smooth") {
+        const FileLoc at = r.next_loc();
+        m.smooth_deg = r.number("crease angle");
+        if (!(*m.smooth_deg >= 0 && *m.smooth_deg <= 180))
+          throw InputError(at, "the crease angle must be from 0 to 180 degrees, got " + number_text(*m.smooth_deg));
       } else if (*k == "plain") {
         m.plain = true;
       } else if (*k == "material") {
@@ -357,12 +363,48 @@ class SceneBuilder {
     scene_.antialias = int(n);
   }
 
+  // Each said once: a second is an error, never a silent replacement.
+  void once(StatementReader& r) {
+    const auto [it, first] = said_once_.emplace(r.keyword(), r.statement_loc().line);
+    if (!first)
+      throw InputError(r.statement_loc(), "a second " + r.keyword() + " statement (the first is at line " + std::to_string(it->second) + ")");
+  }
+
+  void headlight(StatementReader& r) {
+    once(r);
+    scene_.fill.headlight = r.color("headlight intensity");
+  }
+
+  void hemisphere(StatementReader& r) {
+    once(r);
+    while (auto k = r.keyword_of("hemisphere", {"sky", "ground", "up"})) {
+      if (*k == "sky") scene_.fill.sky = r.color("sky intensity");
+      else if (*k == "ground") scene_.fill.ground = r.color("ground intensity");
+      else {
+        const FileLoc at = r.next_loc();
+        const glm::dvec3 up = r.vec3("hemisphere up");
+        if (up == glm::dvec3(0.0)) throw InputError(at, "the hemisphere's up must not be (0, 0, 0)");
+        scene_.fill.up = glm::normalize(up);
+      }
+    }
+  }
+
+  void tone(StatementReader& r) {
+    once(r);
+    const FileLoc at = r.next_loc();
+    const std::string curve = r.word("a tone curve (clip or soft)");
+    if (curve == "clip") scene_.tone = ToneCurve::kClip;
+    else if (curve == "soft") scene_.tone = ToneCurve::kSoft;
+    else throw InputError(at, "unknown tone curve " + in_quotes(curve) + " (expected clip or soft)");
+  }
+
   void warn(const FileLoc& where, const std::string& message) { scene_.warnings.push_back({where, message}); }
 
   Scene scene_;
   std::map<std::string, FileLoc> materials_;
   std::vector<MeshStatement> pending_meshes_;
   std::optional<FileLoc> background_from_;
+  std::map<std::string, int> said_once_;  // statement keyword: its line
 };
 
 }  // namespace

@@ -51,6 +51,10 @@ glm::dvec3 toward(double azimuth_deg, double elevation_deg) {
 const glm::dvec3 kToLight = glm::normalize(glm::dvec3(-0.55, -0.5, 1.0));
 const double kLightAzimuthDeg = glm::degrees(std::atan2(kToLight.x, -kToLight.y));
 const double kLightElevationDeg = glm::degrees(std::asin(kToLight.z));
+// The studio's light (FillLight) and floor, chosen so that a face turned from
+// the key light is lighter than its shadow on the floor, and a pale model
+// stands out from the floor.
+const glm::dvec3 kKeyLight(0.85), kHeadlight(0.35), kSky(0.3), kGround(0.1), kFloor(0.65, 0.65, 0.68);
 constexpr double kLightDistance = 4.0;  // from the model's centre; the fitted model's longest side is 2
 constexpr double kMargin = 1.2;         // the frame's half-size over the framed points'
 // Behind the floor's horizon, where a low camera sees past it: a studio's pale grey.
@@ -225,6 +229,7 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
   std::string mesh_statement = "mesh \"" + written_name + "\" fit";
   if (turn.degrees != 0) mesh_statement += " rotate " + vec(turn.axis) + " " + num(turn.degrees);
   if (staging.plain_model) mesh_statement += " plain";
+  if (!staging.flat) mesh_statement += " smooth " + num(staging.crease_deg);
   if (!nameable) mesh_statement += "  # a scene cannot name this file (a double quote or a line break in its name): rename it";
   MeshStatement statement;
   statement.mesh.path = file_name;
@@ -232,6 +237,7 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
   statement.mesh.rotation_axis = turn.axis;
   statement.mesh.rotation_deg = turn.degrees;
   statement.mesh.plain = staging.plain_model;
+  if (!staging.flat) statement.mesh.smooth_deg = staging.crease_deg;
   statement.mesh.where = {name, mesh_line, 1};
   statement.path_at = {name, mesh_line, 6};
   Scene loaded;
@@ -256,12 +262,18 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
   const Stage stage = stage_for(mesh.bounds_min, mesh.bounds_max, framing_points(mesh), staging.frame_aspect, view);
   const glm::dvec3 f = stage.floor_centre;
   const Camera& c = stage.camera;
-  std::string rest = "light " + vec(stage.light) + " ambient 0.35 0.35 0.35\n";
+  // A studio's light: the key light casts the one shadow; a headlight and a
+  // sky fill the shaded sides so that they keep their shape and stay lighter
+  // than the shadow on the floor, and a soft tone curve keeps highlights
+  // from flattening at white.
+  std::string rest = "light " + vec(stage.light) + " color " + vec(kKeyLight) + " ambient 0 0 0\n"
+                     "headlight " + vec(kHeadlight) + "\nhemisphere sky " + vec(kSky) + " ground " + vec(kGround) + " up 0 0 1\n"
+                     "tone soft\n";
   if (staging.model_color) rest += "material default ambient " + vec(*staging.model_color) + " diffuse " + vec(*staging.model_color) + "\n";
   if (!staging.no_floor)
     rest += (staging.floor_catches_shadow ? std::string("material floor shadow-catcher\n")
              : staging.floor_color ? "material floor ambient " + vec(*staging.floor_color) + " diffuse " + vec(*staging.floor_color) + "\n"
-                                   : std::string("material floor diffuse 0.7 0.7 0.72\n")) +
+                                   : "material floor ambient " + vec(kFloor) + " diffuse " + vec(kFloor) + "\n") +
             "floor " + num(f.z) + " centre " + num(f.x) + " " + num(f.y) + " size " + num(stage.floor_half_size) + " material floor\n";
   rest += "camera eye " + vec(c.eye) + " target " + vec(c.target) + " up 0 0 1 fovy " + num(c.fovy_deg) + "\n";
   const Background background = staging.background.value_or(Background{kStageBackground, false});

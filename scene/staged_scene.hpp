@@ -102,6 +102,10 @@ struct StagingOptions {
   // The model's colour where its file gives none (the scene's default material).
   std::optional<glm::dvec3> model_color;
   bool plain_model = false;  // that colour alone: not the file's materials, maps or vertex colours
+  // Shaded smooth (the mesh statement's `smooth`) across edges whose faces
+  // meet at no more than this, where the file gives no normals; or flat.
+  double crease_deg = 30.0;
+  bool flat = false;
   // The background, for a mesh file's stage and a scene file alike (a
   // scene's own then gives way).
   std::optional<Background> background;

@@ -325,10 +325,17 @@ void add_staging_options(CommandOptions& options, StagingOptions& staging, std::
   });
   add("--color", [&](const std::string& o, const std::string& t) { staging.model_color = parse_color(o, t); });
   options.flag("--plain", staging.plain_model);
+  options.flag("--flat", staging.flat);
+  add("--crease-angle", [&](const std::string& o, const std::string& t) { staging.crease_deg = parse_degrees_in(o, t, 0.0, 180.0); });
   // Not a staging option only: a scene's own background gives way to it.
   options.value("--background", [&](const std::string& o, const std::string& t) {
     staging.background = t == "transparent" ? Background{glm::dvec3(0.0), true} : Background{parse_color(o, t), false};
   });
+}
+
+void note_staging_flags(const StagingOptions& staging, std::vector<std::string>& given) {
+  if (staging.plain_model) given.push_back("--plain");
+  if (staging.flat) given.push_back("--flat");
 }
 
 StagingOptions staging_for(StagingOptions staging, const RenderSettings& settings) {

@@ -112,11 +112,14 @@ glm::dvec3 parse_color(const std::string& option, const std::string& text);
 // How a mesh file on its own is staged: --up AXIS; the camera's
 // --camera-azimuth, --camera-elevation, --camera-zoom, --fov, --eye and
 // --target; the light's --light-azimuth, --light-elevation and --light;
-// --floor COLOR|none|shadow-catcher, --color COLOR and --plain. The names of
-// those given (--plain aside: require_consistent_staging asks) are added to
-// `given`, for a command to refuse them where nothing is staged. Also
+// --floor COLOR|none|shadow-catcher, --color COLOR, --plain; the model's
+// shading, --flat or --crease-angle DEG. The names of those given (the flags
+// aside: note_staging_flags adds them once parsed) are added to `given`, for
+// a command to refuse them where nothing is staged. Also
 // --background COLOR|transparent, which a scene file takes too.
 void add_staging_options(CommandOptions& options, StagingOptions& staging, std::vector<std::string>& given);
+// Adds the staging flags that were given (--plain, --flat) to `given`.
+void note_staging_flags(const StagingOptions& staging, std::vector<std::string>& given);
 // `staging` for a picture of `settings`' size: framed for its shape.
 StagingOptions staging_for(StagingOptions staging, const RenderSettings& settings);
 // A UsageError for staging options that contradict each other: --light with

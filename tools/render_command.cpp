@@ -112,6 +112,11 @@ options:
                         (default light grey)
   --plain               draw the model in --color alone: not its file's
                         materials, texture maps or vertex colours
+  --flat                shade every face flat (default: smooth, in the file's
+                        normals, else across edges whose faces meet at no
+                        more than --crease-angle)
+  --crease-angle DEG    where the file gives no normals, faces that meet at
+                        more than DEG degrees keep a sharp edge (default 30)
 
   --jobs N              with several files: draw N at a time, each in its own
                         GL context, using at most N threads in all (default:
@@ -231,7 +236,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   if (o.help) return o;
   o.gl = gl_with_environment(o.gl);
   require_consistent_staging(o.staging);
-  if (o.staging.plain_model) o.staging_given.push_back("--plain");
+  note_staging_flags(o.staging, o.staging_given);
   o.staging.view.light_turn_deg = o.light_angle_deg;
   if (o.scene_path.empty()) throw UsageError("no scene or mesh file given");
   std::error_code ec;

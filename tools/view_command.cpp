@@ -67,10 +67,10 @@ options:
                        --help)
   --camera-azimuth DEG, --camera-elevation DEG, --camera-zoom F, --fov DEG,
   --eye X,Y,Z, --target X,Y,Z, --light-azimuth DEG, --light-elevation DEG,
-  --light X,Y,Z, --floor COLOR, --color COLOR, --plain
-                       for a MESH: where the camera and light start, the
-                       floor's and the model's colours (see umbra render
-                       --help)
+  --light X,Y,Z, --floor COLOR, --color COLOR, --plain, --flat,
+  --crease-angle DEG   for a MESH: where the camera and light start, the
+                       floor's and the model's colours, its shading (see
+                       umbra render --help)
   --background COLOR   the colour where no surface is (see umbra render --help)
   --any-texture-path   read texture maps from any folder, not only the
                        model's own (see umbra render --help)
@@ -126,7 +126,7 @@ ViewOptions parse_view_options(const std::vector<std::string>& argv) {
   if (o.screenshot && o.frames == 0) throw UsageError("--screenshot needs --frames N");
   if (o.screenshot) require_picture_name("--screenshot", *o.screenshot);
   require_consistent_staging(o.staging);
-  if (o.staging.plain_model) o.staging_given.push_back("--plain");
+  note_staging_flags(o.staging, o.staging_given);
   require_staged(o.staging_given, o.scene_path);
   if (!is_interactive(o.settings.method))
     throw UsageError(std::string("--method ") + method_name(o.settings.method) + " is not interactive; use umbra render --method " +

@@ -129,6 +129,7 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   // vertex, to find each triangle's once the triangles are final.
   const bool coloured = !soup.point_colors.empty() && soup.point_colors.size() == report.file_vertices;  // the points may be freed by now
   const bool textured = !soup.corner_uvs.empty() && soup.corner_uvs.size() == soup.corners.size();
+  const bool normals = !soup.corner_normals.empty() && soup.corner_normals.size() == soup.corners.size();
   std::vector<glm::vec3> corner_colors;
   if (coloured) {
     corner_colors.resize(soup.corners.size());
@@ -143,7 +144,7 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
     for (size_t c = 0; c < soup.corners.size(); ++c) corners[c] = merged.vertex_of_point[soup.corners[c]];
   }
   std::vector<uint32_t>().swap(merged.vertex_of_point);
-  const std::vector<uint32_t> merged_corners = coloured || textured ? corners : std::vector<uint32_t>();
+  const std::vector<uint32_t> merged_corners = coloured || textured || normals ? corners : std::vector<uint32_t>();
 
   // The topological stages; what only they need is freed at the end of the block.
   FaceTriangles triangles;
@@ -282,7 +283,8 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   analysis.triangle_face = std::move(triangles.face);
   if (coloured) analysis.triangle_colors.resize(analysis.triangles.size());
   if (textured) analysis.triangle_uvs.resize(analysis.triangles.size());
-  if (coloured || textured) {
+  if (normals) analysis.triangle_normals.resize(analysis.triangles.size());
+  if (coloured || textured || normals) {
     // Each triangle corner's file corner: the first of its face's at that vertex.
     for (size_t t = 0; t < analysis.triangles.size(); ++t) {
       const uint32_t f = analysis.triangle_face[t];
@@ -291,6 +293,7 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
           if (merged_corners[c] == analysis.triangles[t][k]) {
             if (coloured) analysis.triangle_colors[t][k] = corner_colors[c];
             if (textured) analysis.triangle_uvs[t][k] = soup.corner_uvs[c];
+            if (normals) analysis.triangle_normals[t][k] = soup.corner_normals[c];
             break;
           }
     }

@@ -47,6 +47,9 @@ struct MeshAnalysis {
   // Per triangle, its corners' texture coordinates (PolygonSoup::corner_uvs),
   // when some material has a texture map; empty otherwise.
   std::vector<std::array<glm::vec2, 3>> triangle_uvs;
+  // Per triangle, its corners' normals as the file gives them
+  // (PolygonSoup::corner_normals), (0, 0, 0) where it gives none. Empty: none.
+  std::vector<std::array<glm::vec3, 3>> triangle_normals;
   std::optional<TriangleTopology> topology;  // of `triangles`, with CheckOptions::triangle_topology
 };
 

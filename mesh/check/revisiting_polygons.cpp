@@ -57,6 +57,7 @@ PolygonSoup split_revisiting_polygons(const PolygonSoup& soup) {
   split.materials = soup.materials;
   const bool has_materials = !soup.polygon_materials.empty();
   const bool has_uvs = !soup.corner_uvs.empty();
+  const bool has_normals = !soup.corner_normals.empty();
   split.corners.reserve(soup.corners.size());
   std::vector<std::array<uint32_t, 3>> triangles;
   std::vector<uint32_t> same_place;
@@ -69,6 +70,10 @@ PolygonSoup split_revisiting_polygons(const PolygonSoup& soup) {
       if (has_uvs) {
         const auto first = soup.corner_uvs.begin() + std::ptrdiff_t(soup.polygon_starts[p]);
         split.corner_uvs.insert(split.corner_uvs.end(), first, first + count);
+      }
+      if (has_normals) {
+        const auto first = soup.corner_normals.begin() + std::ptrdiff_t(soup.polygon_starts[p]);
+        split.corner_normals.insert(split.corner_normals.end(), first, first + count);
       }
       split.end_polygon(line);
       if (has_materials) split.polygon_materials.push_back(soup.polygon_materials[p]);
@@ -101,9 +106,12 @@ PolygonSoup split_revisiting_polygons(const PolygonSoup& soup) {
         continue;
       }
       split.corners.insert(split.corners.end(), {a, b, c});
-      if (has_uvs)  // each point's texture coordinates at its first corner in the polygon
-        for (const uint32_t point : {a, b, c})
-          split.corner_uvs.push_back(soup.corner_uvs[soup.polygon_starts[p] + uint32_t(std::find(corners, corners + count, point) - corners)]);
+      // Each point's texture coordinates and normal at its first corner in the polygon.
+      for (const uint32_t point : {a, b, c}) {
+        const uint32_t corner = soup.polygon_starts[p] + uint32_t(std::find(corners, corners + count, point) - corners);
+        if (has_uvs) split.corner_uvs.push_back(soup.corner_uvs[corner]);
+        if (has_normals) split.corner_normals.push_back(soup.corner_normals[corner]);
+      }
       split.end_polygon(line);
       if (has_materials) split.polygon_materials.push_back(soup.polygon_materials[p]);
     }

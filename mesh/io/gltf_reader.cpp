@@ -18,7 +18,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
 #include <nlohmann/json.hpp>
 
 #include <tiny_gltf.h>
@@ -157,18 +159,29 @@ class GltfReader {
       soup_.materials.push_back(phong_of(m));
       if (encoded_) soup_.materials.back().texture = base_colour_texture(m);
       textured_ = textured_ || soup_.materials.back().texture;
+      uv_transforms_.push_back(soup_.materials.back().texture ? texture_transform(m.pbrMetallicRoughness.baseColorTexture)
+                                                              : glm::dmat3(1.0));
     }
     if (model_.scenes.empty()) {
       // No scene: every mesh, as it is, once.
       for (size_t m = 0; m < model_.meshes.size(); ++m) add_mesh(int(m), glm::dmat4(1.0));
+      keep_normals();
       return;
     }
     const size_t scene = model_.defaultScene >= 0 && size_t(model_.defaultScene) < model_.scenes.size() ? size_t(model_.defaultScene) : 0;
     require_trees(model_.scenes[scene], scene);
     for (int node : model_.scenes[scene].nodes) add_node(node, glm::dmat4(1.0));
+    keep_normals();
   }
 
  private:
+  // The points' normals as their corners', when some primitive has them.
+  void keep_normals() {
+    if (!any_normals_) return;
+    point_normals_.resize(soup_.points.size(), glm::vec3(0.0f));
+    soup_.set_corner_normals_of_points(point_normals_);
+  }
+
   [[noreturn]] void fail(const std::string& message) const { throw InputError({soup_.path, 0, 0}, message); }
 
   // A material's baseColorTexture as a texture map, made once per glTF
@@ -185,7 +198,10 @@ class GltfReader {
       return nullptr;
     };
     if (info.texCoord != 0) return refuse("uses TEXCOORD_" + std::to_string(info.texCoord) + ", and umbra reads TEXCOORD_0 only");
-    if (info.extensions.count("KHR_texture_transform")) return refuse("has KHR_texture_transform, which umbra does not apply");
+    if (const auto t = info.extensions.find("KHR_texture_transform"); t != info.extensions.end() && t->second.Has("texCoord") &&
+                                                                      t->second.Get("texCoord").GetNumberAsInt() != 0)
+      return refuse("has KHR_texture_transform on TEXCOORD_" + std::to_string(t->second.Get("texCoord").GetNumberAsInt()) +
+                    ", and umbra reads TEXCOORD_0 only");
     if (size_t(info.index) >= model_.textures.size()) return refuse("does not exist");
     const tinygltf::Texture& texture = model_.textures[size_t(info.index)];
     if (texture.source < 0 || size_t(texture.source) >= model_.images.size()) return refuse("has no image");
@@ -210,6 +226,37 @@ class GltfReader {
     }
     if (!decoded.image) return refuse("(" + name + ") " + decoded.error);
     return cached->second = decoded.image;
+  }
+
+  // A texture's KHR_texture_transform as the affine map of its texture
+  // coordinates, translation * rotation * scale, as the extension writes it
+  // (Khronos, "KHR_texture_transform", 2018): the UVs turned by `rotation`
+  // radians about the origin. The identity without one. An affine map commutes with the
+  // blending of corners across a triangle, so it is applied to each
+  // corner's coordinates once, on reading, for the GL and the reference alike.
+  static glm::dmat3 texture_transform(const tinygltf::TextureInfo& info) {
+    const auto found = info.extensions.find("KHR_texture_transform");
+    if (found == info.extensions.end() || !found->second.IsObject()) return glm::dmat3(1.0);
+    const tinygltf::Value& t = found->second;
+    const auto pair = [&](const char* key, double fallback) {
+      glm::dvec2 v(fallback);
+      if (t.Has(key) && t.Get(key).IsArray() && t.Get(key).ArrayLen() == 2)
+        for (int k = 0; k < 2; ++k)
+          if (t.Get(key).Get(k).IsNumber()) v[k] = t.Get(key).Get(k).GetNumberAsDouble();
+      return std::isfinite(v.x) && std::isfinite(v.y) ? v : glm::dvec2(fallback);
+    };
+    const glm::dvec2 offset = pair("offset", 0.0), scale = pair("scale", 1.0);
+    double rotation = t.Has("rotation") && t.Get("rotation").IsNumber() ? t.Get("rotation").GetNumberAsDouble() : 0.0;
+    if (!std::isfinite(rotation)) rotation = 0.0;
+    const double c = std::cos(rotation), s = std::sin(rotation);
+    // glm's matrices are column-major: these are the columns. The turn is
+    // u' = c u + s v, v' = -s u + c v, as the extension's sample model
+    // (TextureTransformTest) checks it: the extension's GLSL, read as
+    // columns, would turn the other way.
+    const glm::dmat3 translation(1, 0, 0, 0, 1, 0, offset.x, offset.y, 1);
+    const glm::dmat3 turn(c, -s, 0, s, c, 0, 0, 0, 1);
+    const glm::dmat3 scaling(scale.x, 0, 0, 0, scale.y, 0, 0, 0, 1);
+    return translation * turn * scaling;
   }
 
   // Why the image file `uri` names was not read.
@@ -289,7 +336,8 @@ class GltfReader {
 
   // One position: float, or (as KHR_mesh_quantization allows, which mesh
   // optimisers such as gltfpack write) integers, normalised or not.
-  glm::dvec3 position_at(const tinygltf::Accessor& accessor, const unsigned char* p, const std::string& what) const {
+  glm::dvec3 position_at(const tinygltf::Accessor& accessor, const unsigned char* p, const std::string& what,
+                         const char* attribute = "POSITION") const {
     glm::dvec3 xyz;
     for (int k = 0; k < 3; ++k) {
       switch (accessor.componentType) {
@@ -298,7 +346,7 @@ class GltfReader {
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: xyz[k] = normalised(read_as<uint8_t>(p, k), 255.0, accessor.normalized); break;
         case TINYGLTF_COMPONENT_TYPE_SHORT: xyz[k] = normalised(read_as<int16_t>(p, k), 32767.0, accessor.normalized); break;
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: xyz[k] = normalised(read_as<uint16_t>(p, k), 65535.0, accessor.normalized); break;
-        default: fail(what + "'s POSITION must be floats, or bytes or shorts (KHR_mesh_quantization)");
+        default: fail(what + "'s " + attribute + " must be floats, or bytes or shorts (KHR_mesh_quantization)");
       }
     }
     return xyz;
@@ -332,6 +380,31 @@ class GltfReader {
         rgb[k] = std::isfinite(rgb[k]) ? std::clamp(rgb[k], 0.0f, 1.0f) : 0.0f;
       }
       soup_.point_colors.push_back(rgb);
+    }
+  }
+
+  // The primitive's NORMAL, one per point, into point_normals_ from `first`
+  // on, turned by the node's `world` transform (by its inverse transpose, as
+  // normals turn); (0, 0, 0), drawn flat, for points of primitives without.
+  void add_normals(const tinygltf::Primitive& primitive, uint32_t first, size_t count, const glm::dmat4& world,
+                   const std::string& what) {
+    point_normals_.resize(first, glm::vec3(0.0f));
+    const auto normal = primitive.attributes.find("NORMAL");
+    if (normal == primitive.attributes.end()) {
+      point_normals_.resize(first + count, glm::vec3(0.0f));
+      return;
+    }
+    if (normal->second < 0 || size_t(normal->second) >= model_.accessors.size()) fail(what + "'s NORMAL accessor does not exist");
+    const tinygltf::Accessor& accessor = model_.accessors[size_t(normal->second)];
+    if (accessor.type != TINYGLTF_TYPE_VEC3) fail(what + "'s NORMAL must be VEC3");
+    if (accessor.count != count) fail(what + "'s NORMAL has " + std::to_string(accessor.count) + " normals for " +
+                                      std::to_string(count) + " vertices");
+    const Elements normals = elements(accessor, what + "'s NORMAL");
+    const glm::dmat3 turn = glm::transpose(glm::inverse(glm::dmat3(world)));
+    for (size_t i = 0; i < normals.count; ++i) {
+      const glm::dvec3 n = turn * position_at(accessor, normals.at(i), what, "NORMAL");
+      point_normals_.push_back(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z) ? glm::vec3(n) : glm::vec3(0.0f));
+      any_normals_ = true;
     }
   }
 
@@ -434,6 +507,7 @@ class GltfReader {
       }
       add_colours(primitive, first, xyzs.count, what);
       if (textured_) add_texture_coordinates(primitive, first, xyzs.count, what);
+      if (encoded_) add_normals(primitive, first, xyzs.count, world, what);
       std::vector<uint32_t> indices;
       if (primitive.indices >= 0) {
         if (size_t(primitive.indices) >= model_.accessors.size()) fail(what + "'s index accessor does not exist");
@@ -458,7 +532,10 @@ class GltfReader {
       const auto triangle = [&](uint32_t a, uint32_t b, uint32_t c) {
         if (mirrored) std::swap(b, c);
         soup_.corners.insert(soup_.corners.end(), {first + a, first + b, first + c});
-        if (textured_) soup_.corner_uvs.insert(soup_.corner_uvs.end(), {point_uvs_[first + a], point_uvs_[first + b], point_uvs_[first + c]});
+        if (textured_) {
+          const glm::dmat3& transform = material >= 0 ? uv_transforms_[size_t(material)] : glm::dmat3(1.0);
+          for (const uint32_t k : {a, b, c}) soup_.corner_uvs.push_back(glm::vec2(transform * glm::dvec3(point_uvs_[first + k], 1.0)));
+        }
         soup_.end_polygon(0);
         soup_.polygon_materials.push_back(material);
       };
@@ -486,6 +563,9 @@ class GltfReader {
   std::map<std::tuple<int, TextureImage::Wrap, TextureImage::Wrap>, Decoded> decoded_;  // by image and wrapping
   bool textured_ = false;              // some material has a texture map: corners get texture coordinates
   std::vector<glm::vec2> point_uvs_;   // TEXCOORD_0 per point, while textured_
+  std::vector<glm::vec3> point_normals_;  // NORMAL per point, for a picture (when maps are read)
+  bool any_normals_ = false;
+  std::vector<glm::dmat3> uv_transforms_;  // per material: its base colour texture's KHR_texture_transform
   std::set<int> on_path_;  // the nodes from the scene's root to the one being read
 };
 

@@ -2,8 +2,9 @@
 // are `v`, `v/vt`, `v//vn` or `v/vt/vn`, counted from 1, or from the end when
 // negative; `usemtl` gives the faces after it a material of the `mtllib`
 // files beside the OBJ (Kd, Ks, Ns, and map_Kd with the faces' `vt` texture
-// coordinates). Normals, groups and other texture maps are skipped. Large
-// files are read in stretches of lines on every core.
+// coordinates); the corners' `vn` normals are kept for a picture. Groups and
+// other texture maps are skipped. Large files are read in stretches of lines
+// on every core.
 #include <algorithm>
 #include <charconv>
 #include <exception>
@@ -46,23 +47,37 @@ uint32_t corner_index(TextScanner& scanner, std::string_view corner, size_t poin
   return uint32_t(index);
 }
 
-constexpr uint32_t kNoUv = std::numeric_limits<uint32_t>::max();
+constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
 
-// The texture coordinate index (from 0) of a corner such as "7/3/2" or
-// "-1/-1"; kNoUv for "7" and "7//2", and (with `unreadable` set) for an
-// index that is no number or points before the first `vt`. Texture
-// coordinates are no reason to refuse a mesh: the reader says so once.
-uint32_t corner_uv_index(std::string_view corner, size_t uvs_so_far, bool& unreadable) {
-  const size_t slash = corner.find('/');
-  if (slash == std::string_view::npos) return kNoUv;
-  const std::string_view rest = corner.substr(slash + 1);
-  const std::string_view uv = rest.substr(0, rest.find('/'));
-  if (uv.empty()) return kNoUv;
+// What a face corner may name besides its point, by its place after the
+// point's index: its texture coordinates (`vt`, "7/3") and its normal
+// (`vn`, "7/3/2" or "7//2").
+struct CornerAttribute {
+  const char* keyword;
+  int field;  // 1 or 2: after the first or the second slash
+  const char* what;
+};
+constexpr CornerAttribute kTextureCoordinates{"vt", 1, "texture coordinates"};
+constexpr CornerAttribute kNormals{"vn", 2, "normals"};
+
+// The attribute's index (from 0) in a corner such as "7/3/2" or "-1/-1";
+// kNone when the corner names none ("7", "7//2" for `vt`), and (with
+// `unreadable` set) for an index that is no number or points before the
+// first. They are no reason to refuse a mesh: the reader says so once.
+uint32_t corner_attribute_index(std::string_view corner, const CornerAttribute& attribute, size_t so_far, bool& unreadable) {
+  std::string_view rest = corner;
+  for (int k = 0; k < attribute.field; ++k) {
+    const size_t slash = rest.find('/');
+    if (slash == std::string_view::npos) return kNone;
+    rest = rest.substr(slash + 1);
+  }
+  const std::string_view text = rest.substr(0, rest.find('/'));
+  if (text.empty()) return kNone;
   int64_t value = 0;
-  const auto [ptr, ec] = std::from_chars(uv.data(), uv.data() + uv.size(), value);
-  const int64_t index = value > 0 ? value - 1 : int64_t(uvs_so_far) + value;
-  unreadable = ec != std::errc() || ptr != uv.data() + uv.size() || value == 0 || index < 0 || index >= int64_t(kNoUv);
-  return unreadable ? kNoUv : uint32_t(index);
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  const int64_t index = value > 0 ? value - 1 : int64_t(so_far) + value;
+  unreadable = ec != std::errc() || ptr != text.data() + text.size() || value == 0 || index < 0 || index >= int64_t(kNone);
+  return unreadable ? kNone : uint32_t(index);
 }
 
 // The file a map statement names ("map_Kd -s 1 1 1 wood.png", "map_Kd my
@@ -98,6 +113,7 @@ void read_material_library(const std::string& path, int line, PolygonSoup& soup,
   const MappedFile file(path);
   TextScanner scanner(file.bytes(), path);
   SoupMaterial* current = nullptr;
+  const size_t first_material = soup.materials.size();
   bool noted_maps = false;
   // A statement that cannot be read (a decimal comma, say) is passed over:
   // colours are no reason to refuse a mesh, but the warning says so.
@@ -138,6 +154,12 @@ void read_material_library(const std::string& path, int line, PolygonSoup& soup,
       if (unread++ == 0) first_unread = "line " + std::to_string(e.where().line) + ": " + e.message();
     }
   }
+  // Ns 0 is a matte surface, as exporters write it (3ds Max's, for one) and
+  // Blender's importer reads it (roughness 1 - sqrt(Ns / 1000), fully
+  // rough): no highlight, not Phong's cos^0, which would light the whole
+  // face with Ks.
+  for (size_t m = first_material; m < soup.materials.size(); ++m)
+    if (soup.materials[m].shininess == 0.0) soup.materials[m].specular = glm::dvec3(0.0);
   if (unread > 0)
     soup.warn(line, "material library \"" + path + "\": " +
                         (unread == 1 ? std::string("1 statement it could not read was") : std::to_string(unread) + " statements it could not read were") +
@@ -152,12 +174,16 @@ struct ObjStretch {
   int lines = 0, lines_before = 0;
   size_t points = 0, points_before = 0;
   size_t faces = 0, faces_before = 0;
-  size_t uvs = 0, uvs_before = 0;  // `vt` statements
   std::vector<uint32_t> corners, polygon_ends;  // polygon_ends: into `corners`
-  std::vector<uint32_t> corner_uvs;  // each corner's `vt` (kNoUv for none), once some corner has one
-  bool has_uvs = false;
-  size_t unread_uvs = 0;     // `vt` statements and corners' `vt` indices that could not be read
-  std::string first_unread_uv;  // where the first was, and why
+  // A corner attribute's statements (`vt` or `vn`) and the corners' indices of them.
+  struct CornerRefs {
+    size_t statements = 0, before = 0;  // in the stretch, and in the stretches before it
+    std::vector<uint32_t> indices;  // each corner's (kNone for none), once some corner has one
+    bool any = false;
+    size_t unread = 0;         // statements and corners' indices that could not be read
+    std::string first_unread;  // where the first was, and why
+  };
+  CornerRefs uvs, normals;
   std::vector<int> polygon_lines;
   // The material statements, replayed in order once every stretch is read:
   // what they do depends on the statements before them.
@@ -198,14 +224,31 @@ void count_stretch(ObjStretch& stretch, const std::string& path) {
     const std::string_view keyword = scanner.field();
     stretch.points += keyword == "v";
     stretch.faces += keyword == "f";
-    stretch.uvs += keyword == "vt";
+    stretch.uvs.statements += keyword == "vt";
+    stretch.normals.statements += keyword == "vn";
   }
   stretch.lines = scanner.line_number();
 }
 
-void read_stretch(ObjStretch& stretch, const std::string& path, PolygonSoup& soup, std::vector<glm::vec2>& uvs) {
+// A corner's reference to one of its attributes, kept in `refs`.
+void add_corner_ref(ObjStretch::CornerRefs& refs, const CornerAttribute& attribute, std::string_view corner, size_t so_far,
+                    size_t corners_before, const TextScanner& scanner) {
+  bool unreadable = false;
+  const uint32_t index = corner_attribute_index(corner, attribute, so_far, unreadable);
+  if (unreadable && refs.unread++ == 0)
+    refs.first_unread = "line " + std::to_string(scanner.line_number()) + ": the corner " + quote_field(corner) + " has no " +
+                        attribute.keyword + " index that umbra can read";
+  if (index != kNone && !refs.any) {  // the corners before it have none
+    refs.indices.assign(corners_before, kNone);
+    refs.any = true;
+  }
+  if (refs.any) refs.indices.push_back(index);
+}
+
+void read_stretch(ObjStretch& stretch, const std::string& path, PolygonSoup& soup, std::vector<glm::vec2>& uvs,
+                  std::vector<glm::vec3>* normals) {
   TextScanner scanner(stretch.text, path, stretch.lines_before);
-  size_t point = stretch.points_before, uv = stretch.uvs_before;
+  size_t point = stretch.points_before, uv = stretch.uvs.before, normal = stretch.normals.before;
   stretch.corners.reserve(3 * stretch.faces);
   stretch.polygon_ends.reserve(stretch.faces);
   stretch.polygon_lines.reserve(stretch.faces);
@@ -234,23 +277,22 @@ void read_stretch(ObjStretch& stretch, const std::string& path, PolygonSoup& sou
         const double v = scanner.at_line_end() ? 0.0 : scanner.number("texture coordinate v");
         uvs[uv] = glm::vec2(float(u), float(1.0 - v));  // OBJ's v runs up the image
       } catch (const InputError& e) {
-        if (stretch.unread_uvs++ == 0) stretch.first_unread_uv = "line " + std::to_string(e.where().line) + ": " + e.message();
+        if (stretch.uvs.unread++ == 0) stretch.uvs.first_unread = "line " + std::to_string(e.where().line) + ": " + e.message();
       }
       ++uv;
+    } else if (keyword == "vn" && normals) {
+      try {
+        (*normals)[normal] = glm::vec3(scanner.vertex());
+      } catch (const InputError& e) {
+        if (stretch.normals.unread++ == 0) stretch.normals.first_unread = "line " + std::to_string(e.where().line) + ": " + e.message();
+      }
+      ++normal;
     } else if (keyword == "f") {
       const size_t first = stretch.corners.size();
       for (std::string_view corner = scanner.field(); !corner.empty(); corner = scanner.field()) {
         stretch.corners.push_back(corner_index(scanner, corner, point));
-        bool unreadable = false;
-        const uint32_t corner_uv = corner_uv_index(corner, uv, unreadable);
-        if (unreadable && stretch.unread_uvs++ == 0)
-          stretch.first_unread_uv = "line " + std::to_string(scanner.line_number()) + ": the corner " + quote_field(corner) +
-                                    " has no texture coordinate index that umbra can read";
-        if (corner_uv != kNoUv && !stretch.has_uvs) {  // the corners before it have none
-          stretch.corner_uvs.assign(stretch.corners.size() - 1, kNoUv);
-          stretch.has_uvs = true;
-        }
-        if (stretch.has_uvs) stretch.corner_uvs.push_back(corner_uv);
+        add_corner_ref(stretch.uvs, kTextureCoordinates, corner, uv, stretch.corners.size() - 1, scanner);
+        if (normals) add_corner_ref(stretch.normals, kNormals, corner, normal, stretch.corners.size() - 1, scanner);
       }
       if (stretch.corners.size() - first < 3)
         scanner.fail_at_line("a face needs at least 3 vertices, this one has " + std::to_string(stretch.corners.size() - first));
@@ -314,34 +356,41 @@ void replay_material_statements(const std::vector<ObjStretch>& stretches, size_t
   if (any) soup.polygon_materials = std::move(face_materials);
 }
 
-// Each corner's texture coordinates, (0, 0) for a corner without a `vt` or
-// with one past the file's last (said once).
-void set_corner_uvs(const std::vector<ObjStretch>& stretches, const std::vector<glm::vec2>& uvs, PolygonSoup& soup) {
-  soup.corner_uvs.assign(soup.corners.size(), glm::vec2(0.0f));
+// Each corner's value of an attribute (`vt` or `vn`, kept in `refs` of
+// each stretch), `none` for a corner that names none or one past the file's
+// last (said once, as are those that could not be read).
+template <typename Value>
+std::vector<Value> corner_values(const std::vector<ObjStretch>& stretches, ObjStretch::CornerRefs ObjStretch::*refs,
+                                 const CornerAttribute& attribute, const std::vector<Value>& values, size_t corner_count,
+                                 Value none, const std::string& none_text, PolygonSoup& soup) {
+  std::vector<Value> out(corner_count, none);
   size_t corner = 0, past_the_end = 0;
   uint32_t first_past = 0;
   for (const ObjStretch& stretch : stretches) {
     const size_t corners = stretch.polygon_ends.empty() ? 0 : stretch.polygon_ends.back();
-    for (size_t c = 0; c < stretch.corner_uvs.size() && c < corners; ++c) {
-      const uint32_t index = stretch.corner_uvs[c];
-      if (index == kNoUv) continue;
-      if (index < uvs.size()) soup.corner_uvs[corner + c] = uvs[index];
+    const std::vector<uint32_t>& indices = (stretch.*refs).indices;
+    for (size_t c = 0; c < indices.size() && c < corners; ++c) {
+      const uint32_t index = indices[c];
+      if (index == kNone) continue;
+      if (index < values.size()) out[corner + c] = values[index];
       else if (past_the_end++ == 0) first_past = index;
     }
     corner += corners;
   }
+  const std::string keyword = attribute.keyword;
   if (past_the_end > 0)
-    soup.warn(0, std::to_string(past_the_end) + " face corners name a texture coordinate past the file's last (vt " +
-                     std::to_string(size_t(first_past) + 1) + " of " + std::to_string(uvs.size()) + ", the first): they take (0, 0)");
+    soup.warn(0, std::to_string(past_the_end) + " face corners name " + attribute.what + " past the file's last (" + keyword + " " +
+                     std::to_string(size_t(first_past) + 1) + " of " + std::to_string(values.size()) + ", the first): " + none_text);
   size_t unread = 0;
   std::string first;
   for (const ObjStretch& stretch : stretches) {
-    if (stretch.unread_uvs && first.empty()) first = stretch.first_unread_uv;
-    unread += stretch.unread_uvs;
+    if ((stretch.*refs).unread && first.empty()) first = (stretch.*refs).first_unread;
+    unread += (stretch.*refs).unread;
   }
   if (unread > 0)
-    soup.warn(0, std::to_string(unread) + " texture coordinates (vt) or corners' indices of them could not be read, the first at " +
-                     first + ": they take (0, 0)");
+    soup.warn(0, std::to_string(unread) + " " + attribute.what + " (" + keyword + ") or corners' indices of them could not be read, the first at " +
+                     first + ": " + none_text);
+  return out;
 }
 
 }  // namespace
@@ -364,11 +413,16 @@ PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chun
   soup.points.resize(last.points_before + last.points);
   soup.point_lines.resize(soup.points.size());
   soup.point_colors.assign(soup.points.size(), glm::vec3(1.0f));  // kept only if some vertex has a colour
-  for (size_t k = 1; k < stretches.size(); ++k) stretches[k].uvs_before = stretches[k - 1].uvs_before + stretches[k - 1].uvs;
-  std::vector<glm::vec2> uvs(last.uvs_before + last.uvs);
+  for (size_t k = 1; k < stretches.size(); ++k) {
+    stretches[k].uvs.before = stretches[k - 1].uvs.before + stretches[k - 1].uvs.statements;
+    stretches[k].normals.before = stretches[k - 1].normals.before + stretches[k - 1].normals.statements;
+  }
+  std::vector<glm::vec2> uvs(last.uvs.before + last.uvs.statements);
+  // Normals only for a picture (maps are read for one), where it smooths the faces.
+  std::vector<glm::vec3> normals(maps.read ? last.normals.before + last.normals.statements : 0);
   tbb::parallel_for(size_t(0), stretches.size(), [&](size_t k) {
     try {
-      read_stretch(stretches[k], path, soup, uvs);
+      read_stretch(stretches[k], path, soup, uvs, maps.read ? &normals : nullptr);
     } catch (...) {
       stretches[k].error = std::current_exception();
     }
@@ -399,8 +453,12 @@ PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chun
   replay_material_statements(stretches, face_count, path, soup, maps);
   if (failed != stretches.end()) std::rethrow_exception(failed->error);
   const bool textured = std::any_of(soup.materials.begin(), soup.materials.end(), [](const SoupMaterial& m) { return bool(m.texture); });
-  if (textured && std::any_of(stretches.begin(), stretches.end(), [](const ObjStretch& s) { return s.has_uvs; }))
-    set_corner_uvs(stretches, uvs, soup);
+  if (textured && std::any_of(stretches.begin(), stretches.end(), [](const ObjStretch& s) { return s.uvs.any; }))
+    soup.corner_uvs = corner_values(stretches, &ObjStretch::uvs, kTextureCoordinates, uvs, soup.corners.size(), glm::vec2(0.0f),
+                                    "they take (0, 0)", soup);
+  if (std::any_of(stretches.begin(), stretches.end(), [](const ObjStretch& s) { return s.normals.any; }))
+    soup.corner_normals = corner_values(stretches, &ObjStretch::normals, kNormals, normals, soup.corners.size(), glm::vec3(0.0f),
+                                        "their faces are drawn flat there", soup);
   return soup;
 }
 

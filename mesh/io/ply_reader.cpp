@@ -1,6 +1,7 @@
 // Stanford PLY, ascii or binary (either byte order): the "vertex" element's
 // x, y, z and the "face" element's "vertex_indices" (or "vertex_index") list.
-// Other elements and properties are read past and ignored.
+// The vertices' nx, ny and nz are kept as their corners' normals. Other
+// elements and properties are read past and ignored.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -119,8 +120,10 @@ PlyHeader read_header(TextScanner& scanner, std::vector<ReadWarning>& warnings) 
 struct PlyLayout {
   int x = -1, y = -1, z = -1;  // property indices in the vertex element
   int colour[3] = {-1, -1, -1};  // red, green and blue, when the vertex element has all three
+  int normal[3] = {-1, -1, -1};  // nx, ny and nz, likewise
   int indices = -1;            // property index of the face element's list
   bool has_colour() const { return colour[0] >= 0 && colour[1] >= 0 && colour[2] >= 0; }
+  bool has_normal() const { return normal[0] >= 0 && normal[1] >= 0 && normal[2] >= 0; }
 };
 
 // A colour channel in [0, 1]: integers over their type's largest value
@@ -153,6 +156,9 @@ PlyLayout find_layout(const PlyHeader& header, const std::string& path) {
         if (p.name == "red" || p.name == "r") layout.colour[0] = i;
         if (p.name == "green" || p.name == "g") layout.colour[1] = i;
         if (p.name == "blue" || p.name == "b") layout.colour[2] = i;
+        if (p.name == "nx") layout.normal[0] = i;
+        if (p.name == "ny") layout.normal[1] = i;
+        if (p.name == "nz") layout.normal[2] = i;
       }
       if (e.name == "face" && p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index")) {
         if (!is_integer(p.type)) throw InputError({path, 0, 0}, "the face's vertex indices must have an integer type");
@@ -228,14 +234,14 @@ class AsciiCursor {
 
 template <typename Cursor>
 void read_body(Cursor& cursor, const PlyHeader& header, const PlyLayout& layout, PolygonSoup& soup,
-               size_t byte_budget, const std::function<int()>& line_of) {
+               size_t byte_budget, const std::function<int()>& line_of, std::vector<glm::vec3>& point_normals) {
   for (const PlyElement& e : header.elements) {
     const bool is_vertex = e.name == "vertex", is_face = e.name == "face";
     if (e.properties.empty() && !is_vertex && !is_face) continue;  // nothing to read, however many
     if (is_vertex) soup.points.reserve(std::min<size_t>(e.count, byte_budget));
     for (uint64_t n = 0; n < e.count; ++n) {
       glm::dvec3 p(0.0);
-      glm::vec3 colour(1.0f);
+      glm::vec3 colour(1.0f), normal(0.0f);
       int line = 0;
       for (int i = 0; i < int(e.properties.size()); ++i) {
         const PlyProperty& prop = e.properties[size_t(i)];
@@ -249,6 +255,7 @@ void read_body(Cursor& cursor, const PlyHeader& header, const PlyLayout& layout,
           }
           for (int c = 0; c < 3; ++c)
             if (is_vertex && i == layout.colour[c]) colour[c] = colour_channel(v, prop.type);
+            else if (is_vertex && i == layout.normal[c]) normal[c] = std::isfinite(v) ? float(v) : 0.0f;
           continue;
         }
         const double count = cursor.value(prop.count_type, "a list's length");
@@ -271,6 +278,7 @@ void read_body(Cursor& cursor, const PlyHeader& header, const PlyLayout& layout,
       if (is_vertex) {
         soup.add_point(p, line);
         if (layout.has_colour()) soup.point_colors.push_back(colour);
+        if (layout.has_normal()) point_normals.push_back(normal);
       }
       if (is_face) soup.end_polygon(line);
     }
@@ -308,6 +316,7 @@ PolygonSoup read_ply(std::string_view bytes, const std::string& path) {
   const PlyHeader header = read_header(header_scanner, soup.warnings);
   const PlyLayout layout = find_layout(header, path);
 
+  std::vector<glm::vec3> point_normals;
   const size_t body_offset = body == std::string_view::npos ? bytes.size() : body + 1;
   const size_t byte_budget = bytes.size() - std::min(bytes.size(), body_offset);
   if (header.encoding == PlyEncoding::kAscii) {
@@ -316,13 +325,14 @@ PolygonSoup read_ply(std::string_view bytes, const std::string& path) {
     for (int i = 0; i < header.body_line; ++i) scanner.next_line();
     while (!scanner.at_line_end()) scanner.field();  // the rest of the "end_header" line
     AsciiCursor cursor(scanner);
-    read_body(cursor, header, layout, soup, byte_budget, [&] { return cursor.line(); });
+    read_body(cursor, header, layout, soup, byte_budget, [&] { return cursor.line(); }, point_normals);
   } else {
     const bool big = header.encoding == PlyEncoding::kBigEndian;
     soup.format = big ? "PLY (binary big endian)" : "PLY (binary little endian)";
     BinaryCursor cursor(bytes, body_offset, big, path);
-    read_body(cursor, header, layout, soup, byte_budget, [] { return 0; });
+    read_body(cursor, header, layout, soup, byte_budget, [] { return 0; }, point_normals);
   }
+  soup.set_corner_normals_of_points(point_normals);
   return soup;
 }
 

@@ -67,6 +67,12 @@ struct PolygonSoup {
   // running down the image (glTF's convention; OBJ's v is turned over on
   // reading); empty unless some material has a texture map.
   std::vector<glm::vec2> corner_uvs;
+  // Per corner (parallel to `corners`), the normal the file gives it for
+  // smooth shading (OBJ's vn, PLY's nx ny nz, glTF's NORMAL), as written,
+  // not always of unit length; (0, 0, 0) for a corner without one. Empty
+  // when the file gives none, or the soup is read for a check, which has no
+  // use for them.
+  std::vector<glm::vec3> corner_normals;
 
   size_t polygon_count() const { return polygon_starts.size() - 1; }
   uint32_t corner_count(size_t p) const { return polygon_starts[p + 1] - polygon_starts[p]; }
@@ -75,6 +81,14 @@ struct PolygonSoup {
   int polygon_line(size_t p) const { return p < polygon_lines.size() ? polygon_lines[p] : 0; }
   int polygon_material(size_t p) const { return p < polygon_materials.size() ? polygon_materials[p] : -1; }
 
+  // corner_normals from a normal per point (PLY's, glTF's): none when there
+  // are none, or not one for every point.
+  void set_corner_normals_of_points(const std::vector<glm::vec3>& point_normals) {
+    if (point_normals.empty() || point_normals.size() != points.size()) return;
+    corner_normals.resize(corners.size());
+    for (size_t c = 0; c < corners.size(); ++c)
+      corner_normals[c] = corners[c] < point_normals.size() ? point_normals[corners[c]] : glm::vec3(0.0f);
+  }
   void warn(int line, std::string message) { warnings.push_back({line, std::move(message)}); }
   void add_point(const glm::dvec3& p, int line) {
     points.push_back(p);
