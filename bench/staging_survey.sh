@@ -3,7 +3,9 @@
 # assimp-testmodels and of CGAL's data set on its own (umbra render MESH,
 # 200x200, with the shadow mask) and counts the pictures with a shadow over
 # at least 1% of the frame (mask 0: faces turned from the light, or in
-# shadow), with no black pixel over 1% of it, and with no background seen.
+# shadow), with no black pixel over 1% of it, with no background seen, with
+# under 0.5% of the frame clipped to white, and whose shadowed pixels spread
+# over 20 grey levels or more (png_stats.py says how each is measured).
 #   bench/staging_survey.sh [OUT_DIR]     (after ./build.sh; default build/staging-survey)
 # Files umbra cannot render (glTF 1.0, Draco, point clouds, broken on
 # purpose) are counted apart, with their exit status.
@@ -25,6 +27,8 @@ export -f render_one
 xargs -P "$(nproc)" -I{} bash -c 'render_one "$1" "$2"' _ {} "$out" < "$out/files.txt" > "$out/status.txt"
 python3 bench/png_stats.py $(awk '$1 == 0 {print "'"$out"'/" $2 ".png"}' "$out/status.txt") > "$out/stats.txt"
 echo "$(wc -l < "$out/files.txt") files; exit status: $(awk '{print $1}' "$out/status.txt" | sort | uniq -c | tr -s ' ' | tr '\n' ';')"
-awk '{n++; s += $2 >= 0.01; b += $3 < 0.01; g += $4 == 0}
+awk '{n++; s += $2 >= 0.01; b += $3 < 0.01; g += $4 == 0; c += $5 < 0.005; t += $6 >= 20}
      END {printf "%d rendered: %d (%.1f%%) with a shadow over >= 1%% of the frame, %d (%.1f%%) with no black frame, %d (%.1f%%) with no background\n",
-          n, s, 100 * s / n, b, 100 * b / n, g, 100 * g / n}' "$out/stats.txt"
+          n, s, 100 * s / n, b, 100 * b / n, g, 100 * g / n;
+          printf "%d (%.1f%%) with under 0.5%% of pixels clipped to white, %d (%.1f%%) whose shadowed pixels spread over 20 levels or more\n",
+          c, 100 * c / n, t, 100 * t / n}' "$out/stats.txt"

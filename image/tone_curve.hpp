@@ -10,7 +10,7 @@ namespace umbra {
 // bits: clipped at 1 (kClip, as a spec scene is drawn), or rolled off above
 // a knee so that bright areas keep their shape instead of flattening at
 // white (kSoft, a staged model's look). The shoulder is exponential, with
-// the line's slope at the knee, so the curve is smooth and never reaches 1:
+// the line's slope at the knee, so the curve is smooth and approaches 1:
 // 0.98 takes 1.26 of light.
 enum class ToneCurve { kClip, kSoft };
 

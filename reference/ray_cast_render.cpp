@@ -9,6 +9,7 @@
 
 #include "image/pixel_mean.hpp"
 #include "scene/camera_transform.hpp"
+#include "scene/terminator.hpp"
 #include "reference/ray_caster.hpp"
 #include "reference/texture_sampling.hpp"
 
@@ -80,18 +81,34 @@ std::optional<glm::dvec3> shading_normal(const Surface& s, const glm::dvec3& p) 
   return glm::normalize(CornerBlend(s, p)(corners));
 }
 
-// shaders.hpp's terminator_dimming, in double.
-double terminator_dimming(const glm::dvec3& n, const glm::dvec3& s, const glm::dvec3& l) {
-  const double g = std::clamp(glm::dot(n, l) / std::max(glm::dot(s, l) * glm::dot(n, s), 1e-20), 0.0, 1.0);
-  return -g * g * g + g * g + g;
+// Per light, per mesh, which triangle corners the light fades to nothing
+// at (empty for a flat mesh; terminator.hpp).
+using Terminators = std::vector<std::vector<std::vector<std::array<uint8_t, 3>>>>;
+
+Terminators terminators_of(const Scene& scene) {
+  Terminators all(scene.lights.size(), std::vector<std::vector<std::array<uint8_t, 3>>>(scene.meshes.size()));
+  for (size_t i = 0; i < scene.lights.size(); ++i)
+    for (size_t k = 0; k < scene.meshes.size(); ++k)
+      if (!scene.meshes[k].triangle_normals.empty())
+        all[i][k] = terminator_corners(scene.meshes[k], triangle_light_sides(scene.meshes[k], scene.lights[i].position));
+  return all;
+}
+
+// How much of a light a smooth face takes at `p`: its corners' 1, or 0
+// where it fades at the terminator, blended across it, as the GL blends them.
+double light_reach(const Surface& s, const glm::dvec3& p, const std::vector<std::array<uint8_t, 3>>& terminator) {
+  const auto& fade = terminator[s.triangle];
+  const std::array<glm::vec3, 3> reach{glm::vec3(fade[0] ? 0.0f : 1.0f), glm::vec3(fade[1] ? 0.0f : 1.0f),
+                                       glm::vec3(fade[2] ? 0.0f : 1.0f)};
+  return CornerBlend(s, p)(reach).x;
 }
 
 // The shader's shade() for one sample, in double precision (shaders.hpp),
 // unclamped as the GL's float frame keeps it, with its coverage: (colour, 1),
 // or for a shadow catcher (lit, unlit, 0, -1); with `masks`, each light's
 // mask at (x, y) too.
-glm::dvec4 shade(const Scene& scene, const RayCaster& caster, const glm::dvec3& ambient_sum, const RayHit& hit,
-                 std::vector<Image>* masks, int x, int y) {
+glm::dvec4 shade(const Scene& scene, const RayCaster& caster, const glm::dvec3& ambient_sum, const Terminators& terminators,
+                 const RayHit& hit, std::vector<Image>* masks, int x, int y) {
   const Surface surface = surface_of(scene, hit.object);
   const Material& m = scene.materials[size_t(surface.material)];
   const glm::dvec3 tint = surface_colour(scene, surface, hit.point);
@@ -117,12 +134,12 @@ glm::dvec4 shade(const Scene& scene, const RayCaster& caster, const glm::dvec3& 
     const double n_dot_l = std::max(glm::dot(n, l), 0.0);
     if (m.shadow_catcher && faces) caught += glm::dvec2(lit ? 1.0 : 0.0, 1.0) * (mean(light.color) * n_dot_l);
     if (!lit) continue;
-    const double dimming = smooth ? terminator_dimming(n, s, l) : 1.0;
-    const double s_dot_l = smooth ? std::max(glm::dot(s, l), 0.0) * dimming : n_dot_l;
+    const double reach = smooth ? light_reach(surface, hit.point, terminators[i][size_t(surface.mesh - scene.meshes.data())]) : 1.0;
+    const double s_dot_l = smooth ? std::max(glm::dot(s, l), 0.0) * reach : n_dot_l;
     const glm::dvec3 v = glm::normalize(eye - hit.point);
     const glm::dvec3 r = 2.0 * (smooth ? glm::dot(s, l) : n_dot_l) * s - l;  // reflect(-l, s)
     const double highlight = m.shininess > 0.0 ? std::pow(std::max(glm::dot(r, v), 0.0), m.shininess) : 1.0;
-    colour += light.color * (m.diffuse * tint * s_dot_l + m.specular * highlight * dimming);
+    colour += light.color * (m.diffuse * tint * s_dot_l + m.specular * highlight * reach);
   }
   return m.shadow_catcher ? glm::dvec4(caught, 0.0, -1.0) : glm::dvec4(colour, 1.0);
 }
@@ -137,12 +154,13 @@ RayCastFrame ray_cast_frame(const Scene& scene, int width, int height, int sampl
   glm::dvec3 ambient_sum(0.0);
   for (const Light& light : scene.lights) ambient_sum += light.ambient;
   const RayCaster caster(scene);
+  const Terminators terminators = terminators_of(scene);
   // A sample at (px, py) in pixels (the pixel's centre at x + 1/2): its
   // colour and coverage, the background where it sees nothing, as the GL
   // clears its frame (pixel_mean.hpp).
   const auto sample = [&](double px, double py, std::vector<Image>* masks, int x, int y) {
     const auto hit = caster.nearest_hit(scene.camera.eye, pixel_ray_direction(scene.camera, width, height, px - 0.5, py - 0.5));
-    return hit ? resolved_sample(shade(scene, caster, ambient_sum, *hit, masks, x, y), background.color, background.transparent)
+    return hit ? resolved_sample(shade(scene, caster, ambient_sum, terminators, *hit, masks, x, y), background.color, background.transparent)
                : nothing;
   };
   const auto rows = [&](int first, int step) {

@@ -87,18 +87,10 @@ bool seen_side_faces_light(vec3 p, vec3 n) {
   return dot(n, light_position - p) > 0.0;
 }
 
-// A smooth face's light is dimmed where its own plane turns from the light
-// faster than its shading normal does, to nothing at its plane's terminator,
-// where the shadow volume's exact edge begins: else the lit side's last
-// faces end in a saw-tooth of bright triangles against the shadow (Chiang,
-// Li and Burley, "Taming the Shadow Terminator", SIGGRAPH 2019 Talks). The
-// reference's shade() does the same in double.
-float terminator_dimming(vec3 n, vec3 s, vec3 l) {
-  float g = clamp(dot(n, l) / max(dot(s, l) * dot(n, s), 1e-20), 0.0, 1.0);
-  return -g * g * g + g * g + g;
-}
-
-void shade(vec3 p, vec3 n, vec3 s, bool smoothed, bool faces_light) {
+// `reach`: how much of the light a smooth face takes, fading to 0 at the
+// terminator's points (terminator.hpp), where the shadow volume's exact edge
+// begins; 1 for everything else.
+void shade(vec3 p, vec3 n, vec3 s, bool smoothed, float reach, bool faces_light) {
   if (pass == 4) {
     frag_color = vec4(length(p - light_position));
     return;
@@ -114,8 +106,8 @@ void shade(vec3 p, vec3 n, vec3 s, bool smoothed, bool faces_light) {
   else if (dot(s, n) < 0.0) s = -s;
   vec3 l = normalize(light_position - p);
   float n_dot_l = max(dot(n, l), 0.0);  // may round below 0 where the face meets the light at a grazing angle
-  // What the shading takes: n . l, or for a smooth face, s . l dimmed at the terminator.
-  float s_dot_l = smoothed ? max(dot(s, l), 0.0) * terminator_dimming(n, s, l) : n_dot_l;
+  // What the shading takes: n . l, or for a smooth face, s . l faded at the terminator.
+  float s_dot_l = smoothed ? max(dot(s, l), 0.0) * reach : n_dot_l;
   if (pass == 0) {
     vec3 ambient = ambient_sum + mix(ground, sky, 0.5 + 0.5 * dot(s, sky_up));
     vec3 head = headlight * max(dot(s, normalize(eye - p)), 0.0);
@@ -135,7 +127,7 @@ void shade(vec3 p, vec3 n, vec3 s, bool smoothed, bool faces_light) {
       vec3 v = normalize(eye - p);
       vec3 r = reflect(-l, s);
       float highlight = material_shininess > 0.0 ? pow(max(dot(r, v), 0.0), material_shininess) : 1.0;
-      colour += material_specular * highlight * (smoothed ? terminator_dimming(n, s, l) : 1.0);
+      colour += material_specular * highlight * (smoothed ? reach : 1.0);
     }
     frag_color = vec4(light_color * colour, 0.0);  // alpha, coverage, is the ambient pass's
   } else {
@@ -151,9 +143,10 @@ layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec3 color;  // white (a constant attribute) when no mesh has vertex colours
 layout(location = 3) in vec2 uv;     // texture coordinates, v down the image; (0, 0) when none
-// The light's side of the triangle's plane, exactly (SurfaceBuffers::use_light):
-// +1 where `normal` points, -1 the other side, 0 in the plane.
-layout(location = 4) in int light_side;
+// The light's side of the triangle's plane, exactly (SurfaceBuffers::use_light),
+// plus one: 2 where `normal` points, 0 the other side, 1 in the plane; and
+// 4 more where a smooth mesh's vertex is on the terminator (terminator.hpp).
+layout(location = 4) in int light_code;
 layout(location = 5) in vec3 shading_normal;  // (0, 0, 0): flat (a constant attribute when no mesh is smooth)
 uniform mat4 view_projection;
 out vec3 world_position;
@@ -162,12 +155,14 @@ out vec3 world_shading_normal;
 out vec3 vertex_color;
 out vec2 texture_uv;
 flat out int triangle_light_side;
+out float light_reach;  // 0 at a smooth mesh's terminator, 1 elsewhere, blended across the triangle
 invariant gl_Position;
 void main() {
   world_position = position;
   world_normal = normal;
   world_shading_normal = shading_normal;
-  triangle_light_side = light_side;
+  triangle_light_side = (light_code & 3) - 1;
+  light_reach = (light_code & 4) != 0 ? 0.0 : 1.0;
   vertex_color = color;
   texture_uv = uv;
   gl_Position = view_projection * vec4(position, 1.0);
@@ -192,6 +187,7 @@ in vec3 world_shading_normal;
 in vec3 vertex_color;
 in vec2 texture_uv;
 flat in int triangle_light_side;
+in float light_reach;
 uniform bool material_textured;
 uniform sampler2D material_texture;
 uniform ivec2 material_wrap;  // TextureWrap, along u and along v
@@ -231,7 +227,7 @@ void main() {
   // A smooth face's corners all have normals; a flat one's are all 0, and so is what is blended of them.
   bool smoothed = world_shading_normal != vec3(0.0);
   shade(world_position, normalize(world_normal), smoothed ? normalize(world_shading_normal) : vec3(0.0), smoothed,
-        triangle_light_side != 0 && triangle_light_side == eye_side);
+        light_reach, triangle_light_side != 0 && triangle_light_side == eye_side);
 }
 )";
 
@@ -277,7 +273,7 @@ void main() {
   vec4 clip = view_projection * vec4(p, 1.0);
   gl_FragDepth = 0.5 * (clip.z / clip.w) + 0.5;
   vec3 n = (p - sphere_center) / sphere_radius;
-  shade(p, n, n, false, seen_side_faces_light(p, n));
+  shade(p, n, n, false, 1.0, seen_side_faces_light(p, n));
 }
 )";
 

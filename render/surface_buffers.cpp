@@ -14,6 +14,7 @@
 
 #include "mesh/predicates/orientation.hpp"
 #include "render/gl.hpp"
+#include "scene/terminator.hpp"
 
 namespace umbra {
 namespace {
@@ -220,24 +221,41 @@ void SurfaceBuffers::use_light(size_t light, const glm::dvec3& position) {
   LightSides& sides = light_sides_[light];
   glBindVertexArray(triangle_vao_);
   if (sides.vbo == 0 || sides.position != position) {
-    std::vector<int8_t> side(3 * triangle_count_);
+    // Per vertex, the triangle's side of the light plus one (bits 0 and 1),
+    // and for a smooth mesh, 4 where its light fades to nothing at the
+    // terminator (terminator.hpp).
+    std::vector<int8_t> code(3 * triangle_count_);
+    const auto put = [&](size_t at, int side, int on_terminator) { code[at] = int8_t((side + 1) | (on_terminator ? 4 : 0)); };
+    struct MeshSides {
+      std::vector<int8_t> sides;
+      std::vector<std::array<uint8_t, 3>> terminator;  // empty for a flat mesh
+    };
+    std::map<const Mesh*, MeshSides> by_mesh;  // each mesh's once, however many runs (materials) it has
     for (const Run& run : runs_) {
       if (run.triangle) {
         const Triangle& t = *run.triangle;
-        std::fill_n(side.data() + 3 * run.first, 3, int8_t(orientation(t.a, t.b, t.c, position)));
+        const int side = orientation(t.a, t.b, t.c, position);
+        for (size_t c = 0; c < 3; ++c) put(3 * run.first + c, side, 0);
         continue;
       }
-      const std::vector<glm::dvec3>& p = run.mesh->positions;
+      auto [found, first_run] = by_mesh.try_emplace(run.mesh);
+      if (first_run) {
+        found->second.sides = triangle_light_sides(*run.mesh, position);
+        if (!run.mesh->triangle_normals.empty()) found->second.terminator = terminator_corners(*run.mesh, found->second.sides);
+      }
+      const std::vector<int8_t>& mesh_sides = found->second.sides;
+      const std::vector<std::array<uint8_t, 3>>& terminator = found->second.terminator;
       const size_t count = run.subset ? run.subset->size() : run.mesh->triangles.size();
       tbb::this_task_arena::isolate([&] {
         tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 16384), [&](const tbb::blocked_range<size_t>& r) {
           for (size_t i = r.begin(); i < r.end(); ++i) {
-            const auto& t = run.mesh->triangles[run.subset ? (*run.subset)[i] : i];
-            std::fill_n(side.data() + 3 * (run.first + i), 3, int8_t(orientation(p[t[0]], p[t[1]], p[t[2]], position)));
+            const size_t k = run.subset ? (*run.subset)[i] : i;
+            for (size_t c = 0; c < 3; ++c) put(3 * (run.first + i) + c, mesh_sides[k], terminator.empty() ? 0 : terminator[k][c]);
           }
         });
       });
     }
+    const std::vector<int8_t>& side = code;
     if (sides.vbo == 0) glGenBuffers(1, &sides.vbo);
     glBindBuffer(GL_ARRAY_BUFFER, sides.vbo);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(side.size()), side.data(), GL_DYNAMIC_DRAW);

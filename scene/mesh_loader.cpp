@@ -39,7 +39,7 @@ struct LoadedMesh {
 // rounding may have moved any placed point, which grows with the file's
 // coordinates over the mesh's size (a 1e-3 cube at 3e7, fitted, moves by
 // about 1e-5).
-std::vector<glm::dvec3> placed_points(const Mesh& m, const FileLoc& path_at, const MeshAnalysis& analysis, double& rounding) {
+std::vector<glm::dvec3> placed_points(Mesh& m, const FileLoc& path_at, const MeshAnalysis& analysis, double& rounding) {
   glm::dvec3 fit_centre(0.0);
   double fit_scale = 1.0;
   if (m.fit && !analysis.positions.empty()) {
@@ -59,6 +59,7 @@ std::vector<glm::dvec3> placed_points(const Mesh& m, const FileLoc& path_at, con
       throw InputError(path_at, "mesh file " + in_quotes(m.path) + " is too large to fit: its extent overflows double precision");
     if (!(longest > 0.0))
       throw InputError(path_at, "mesh file " + in_quotes(m.path) + " has no extent to fit: its faces' corners coincide");
+    m.file_bounds_min = lo, m.file_bounds_max = hi;
     fit_centre = lo / 2.0 + hi / 2.0;  // halves first: lo + hi may overflow where each does not
     fit_scale = 2.0 / longest;
   }

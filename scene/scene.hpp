@@ -100,6 +100,7 @@ struct Mesh {
   SharedPositions positions;  // the one copy of the points, which the mesh's caster shares
   std::vector<std::array<uint32_t, 3>> triangles;
   glm::dvec3 bounds_min{0.0}, bounds_max{0.0};  // of the triangles' corners, in scene coordinates
+  glm::dvec3 file_bounds_min{0.0}, file_bounds_max{0.0};  // likewise in the file's own, where `fit` measured them
   EdgeTable edges;               // of `triangles`
   ClosedComponents components;   // of `triangles`: which cast from their silhouette
   // What loading changed, as the check reports it: "2 duplicate faces

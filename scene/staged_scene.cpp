@@ -14,30 +14,12 @@
 #include "mesh/input_error.hpp"
 #include "mesh/io/mapped_file.hpp"
 #include "mesh/io/mesh_format.hpp"
+#include "scene/pose_choice.hpp"
 #include "scene/scene_parser.hpp"
+#include "scene/up_axis.hpp"
 
 namespace umbra {
 namespace {
-
-// The turn that takes each axis of the file to +z, the stage's up (as the
-// viewer's light orbits about z, and scenes are lit from z > 1), as the
-// scene's `rotate` clause writes it (about the axis, counter-clockwise).
-// The front of a +y-up model (+z) turns to -y, where the camera is.
-struct UpTurn {
-  const char* up;
-  glm::dvec3 axis;
-  double degrees;
-};
-constexpr UpTurn kUpTurns[] = {
-    {"+z", {1, 0, 0}, 0}, {"-z", {1, 0, 0}, 180}, {"+y", {1, 0, 0}, 90},
-    {"-y", {1, 0, 0}, -90}, {"+x", {0, 1, 0}, -90}, {"-x", {0, 1, 0}, 90},
-};
-
-const UpTurn& up_turn(const std::string& up) {
-  for (const UpTurn& t : kUpTurns)
-    if (up == t.up) return t;
-  throw std::invalid_argument("not an up axis: " + up);
-}
 
 // The unit vector from the model's centre toward azimuth and elevation
 // (StageView's convention).
@@ -48,15 +30,16 @@ glm::dvec3 toward(double azimuth_deg, double elevation_deg) {
 
 // The light by default (StageView's defaults for the view): from the front
 // and to the left, high up, so that the shadow falls to the back and right.
-const glm::dvec3 kToLight = glm::normalize(glm::dvec3(-0.55, -0.5, 1.0));
+const glm::dvec3 kToLight = glm::normalize(glm::dvec3(-0.55, -0.5, 1.3));
 const double kLightAzimuthDeg = glm::degrees(std::atan2(kToLight.x, -kToLight.y));
 const double kLightElevationDeg = glm::degrees(std::asin(kToLight.z));
 // The studio's light (FillLight) and floor, chosen so that a face turned from
 // the key light is lighter than its shadow on the floor, and a pale model
 // stands out from the floor.
 const glm::dvec3 kKeyLight(0.85), kHeadlight(0.35), kSky(0.3), kGround(0.1), kFloor(0.65, 0.65, 0.68);
+constexpr double kCameraAzimuthDeg = 35.0;  // StageView's default
 constexpr double kLightDistance = 4.0;  // from the model's centre; the fitted model's longest side is 2
-constexpr double kMargin = 1.2;         // the frame's half-size over the framed points'
+constexpr double kMargin = 1.1;         // the frame's half-size over the framed points'
 // Behind the floor's horizon, where a low camera sees past it: a studio's pale grey.
 const glm::dvec3 kStageBackground(0.8, 0.8, 0.82);
 // How far from the model's centre a shadow is framed: a point little below
@@ -106,10 +89,6 @@ std::string neither_scene_nor_mesh(const std::string& path) {
   return what.empty() ? "" : "neither a scene nor a mesh file (" + mesh_format_names() + "): " + what;
 }
 
-bool is_up_axis(const std::string& up) {
-  return std::any_of(std::begin(kUpTurns), std::end(kUpTurns), [&](const UpTurn& t) { return up == t.up; });
-}
-
 std::vector<glm::dvec3> framing_points(const Mesh& mesh, size_t most) {
   std::vector<glm::dvec3> points;
   if (mesh.triangles.empty()) return points;
@@ -149,7 +128,7 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
   }
   if (points.empty()) points = {lo, hi};
   const double fovy_deg = view.fov_deg;
-  const glm::dvec3 back = toward(view.camera_azimuth_deg, view.camera_elevation_deg);
+  const glm::dvec3 back = toward(view.camera_azimuth_deg.value_or(kCameraAzimuthDeg), view.camera_elevation_deg);
   const glm::dvec3 forward = -back;
   const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 0, 1)));
   const glm::dvec3 up = glm::cross(right, forward);
@@ -214,51 +193,73 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
   for (char& ch : written_name)
     if (ch == '"' || ch == '\n' || ch == '\r') ch = '?';
   const MeshFormat* format = mesh_format_by_id(detect_mesh_format_of_file(path));
-  const std::string axis = !up.empty() ? up : format ? std::string(format->up) : "+y";
-  const UpTurn& turn = up_turn(axis);
+  const std::string format_up = format ? std::string(format->up) : "+y";
   const std::string name = staged_scene_name(path);
-
-  // The mesh first, loaded once: where the floor, light and camera go
-  // depends on its box.
+  const int mesh_line = 4;
+  // The mesh stood on `axis`, and its statement's text: loaded first, as
+  // where the floor, light and camera go depends on its box.
+  std::string mesh_statement;
+  const auto load = [&](const std::string& axis) {
+    const UpTurn& turn = up_turn(axis);
+    mesh_statement = "mesh \"" + written_name + "\" fit";
+    if (turn.degrees != 0) mesh_statement += " rotate " + vec(turn.axis) + " " + num(turn.degrees);
+    if (staging.plain_model) mesh_statement += " plain";
+    if (!staging.flat) mesh_statement += " smooth " + num(staging.crease_deg);
+    if (!nameable) mesh_statement += "  # a scene cannot name this file (a double quote or a line break in its name): rename it";
+    MeshStatement statement;
+    statement.mesh.path = file_name;
+    statement.mesh.fit = true;
+    statement.mesh.rotation_axis = turn.axis;
+    statement.mesh.rotation_deg = turn.degrees;
+    statement.mesh.plain = staging.plain_model;
+    if (!staging.flat) statement.mesh.smooth_deg = staging.crease_deg;
+    statement.mesh.where = {name, mesh_line, 1};
+    statement.path_at = {name, mesh_line, 6};
+    Scene loaded;
+    loaded.path = name;
+    loaded.materials.emplace_back().name = "default";
+    // What the staged scene's mesh statement says belongs to the file: no
+    // line of a scene the user never wrote.
+    const std::string about_the_file = "mesh file \"" + path + "\"";
+    try {
+      load_scene_meshes({std::move(statement)}, loaded, progress, maps);
+    } catch (const InputError& e) {
+      if (e.where().file != name) throw;
+      std::string message = e.message();
+      if (message.rfind(about_the_file, 0) == 0) message.erase(0, about_the_file.size() + (message[about_the_file.size()] == ':' ? 2 : 1));
+      throw InputError({path}, message);
+    }
+    if (loaded.meshes.at(0).triangles.empty()) throw InputError({path}, "has no faces: there is nothing to show");
+    return loaded;
+  };
+  std::string axis = !up.empty() ? up : format_up;
+  Scene loaded = load(axis);
+  // Where the format's convention plainly does not read, a better pose, said
+  // on the line after the mesh's; --up decides outright.
+  std::string pose_note;
+  if (up.empty())
+    if (const auto better = better_pose(loaded.meshes[0], axis)) {
+      axis = better->up;
+      loaded = load(axis);
+      pose_note = "# up is " + axis + ", not " + format_up + " as its format has it: " + better->why + "\n";
+    }
+  Mesh& mesh = loaded.meshes.at(0);
   const std::string header = "# " + written_name + " on its own, as umbra stages a mesh file: fitted into the\n"
                              "# cube [-1,1]^3 with its " + axis + " axis up" + (up.empty() ? " (--up changes it)" : "") +
                              (staging.no_floor ? ", in the air,\n" : ", standing on a floor,\n") +
                              std::string(staging.view == StageView{} ? "# lit from above and to the left, seen from a raised three-quarter view.\n"
                                                           : "# lit and seen from where the command line's options put the light and camera.\n");
-  const int mesh_line = 4;
-  std::string mesh_statement = "mesh \"" + written_name + "\" fit";
-  if (turn.degrees != 0) mesh_statement += " rotate " + vec(turn.axis) + " " + num(turn.degrees);
-  if (staging.plain_model) mesh_statement += " plain";
-  if (!staging.flat) mesh_statement += " smooth " + num(staging.crease_deg);
-  if (!nameable) mesh_statement += "  # a scene cannot name this file (a double quote or a line break in its name): rename it";
-  MeshStatement statement;
-  statement.mesh.path = file_name;
-  statement.mesh.fit = true;
-  statement.mesh.rotation_axis = turn.axis;
-  statement.mesh.rotation_deg = turn.degrees;
-  statement.mesh.plain = staging.plain_model;
-  if (!staging.flat) statement.mesh.smooth_deg = staging.crease_deg;
-  statement.mesh.where = {name, mesh_line, 1};
-  statement.path_at = {name, mesh_line, 6};
-  Scene loaded;
-  loaded.path = name;
-  loaded.materials.emplace_back().name = "default";
-  // What the staged scene's mesh statement says belongs to the file: no
-  // line of a scene the user never wrote.
-  const std::string about_the_file = "mesh file \"" + path + "\"";
-  try {
-    load_scene_meshes({std::move(statement)}, loaded, progress, maps);
-  } catch (const InputError& e) {
-    if (e.where().file != name) throw;
-    std::string message = e.message();
-    if (message.rfind(about_the_file, 0) == 0) message.erase(0, about_the_file.size() + (message[about_the_file.size()] == ':' ? 2 : 1));
-    throw InputError({path}, message);
-  }
-  Mesh& mesh = loaded.meshes.at(0);
-  if (mesh.triangles.empty()) throw InputError({path}, "has no faces: there is nothing to show");
 
   StageView view = staging.view;
   view.frame_shadow = !staging.no_floor;
+  // A flat part is seen by its face, lit on the side the camera sees, not by its edge.
+  const bool default_view = !view.camera_azimuth_deg && !view.eye && !view.target && !view.light && !view.light_azimuth_deg &&
+                            !view.light_elevation_deg;
+  if (const auto turn = view_turn_facing(mesh); turn && default_view) {
+    view.camera_azimuth_deg = kCameraAzimuthDeg + *turn;
+    view.light_azimuth_deg = kLightAzimuthDeg + *turn;
+    view.light_elevation_deg = kLightElevationDeg;
+  }
   const Stage stage = stage_for(mesh.bounds_min, mesh.bounds_max, framing_points(mesh), staging.frame_aspect, view);
   const glm::dvec3 f = stage.floor_centre;
   const Camera& c = stage.camera;
@@ -279,11 +280,11 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
   const Background background = staging.background.value_or(Background{kStageBackground, false});
   rest += background.transparent ? std::string("background transparent\n") : "background " + vec(background.color) + "\n";
   rest += "antialias " + std::to_string(kStagedAntialias) + "\n";
-  if (staged) *staged = header + mesh_statement + "\n" + rest;
+  if (staged) *staged = header + mesh_statement + "\n" + pose_note + rest;
   // The rest of the stage from the same text, the mesh's line left blank
   // (its mesh is the one loaded above), so that lines number alike. Its
   // warnings (a floor beyond the cube) are about umbra's stage, not the file.
-  Scene scene = parse_scene_text(header + "\n" + rest, name);
+  Scene scene = parse_scene_text(header + "\n" + pose_note + rest, name);
   scene.warnings.clear();
   // The file's own materials follow the stage's; the mesh's indices move with them.
   const int moved = int(scene.materials.size()) - 1;

@@ -34,9 +34,6 @@ bool is_mesh_file(const std::string& path);
 // says why).
 std::string neither_scene_nor_mesh(const std::string& path);
 
-// "+x", "-x", "+y", "-y", "+z" or "-z": the axis of the file that points up.
-bool is_up_axis(const std::string& up);
-
 // Where the stage's camera and light go, in the staged scene's coordinates
 // (the model fitted into the cube [-1,1]^3, its up axis turned to +z).
 // Angles are in degrees round the model's centre: azimuth 0 looks at the
@@ -45,14 +42,15 @@ bool is_up_axis(const std::string& up);
 // shadow in frame wherever it or the light is, unless `eye` or `target`
 // place it outright.
 struct StageView {
-  double camera_azimuth_deg = 35.0;
+  // Unset: 35, or for a flat model standing upright, 35 degrees off its face (azimuth_facing).
+  std::optional<double> camera_azimuth_deg;
   double camera_elevation_deg = 30.0;
   double camera_zoom = 1.0;  // over the framing distance: 2 shows the model twice as large
   double fov_deg = 30.0;     // the lens's vertical field of view
   std::optional<glm::dvec3> eye, target;
   // The light: `light` outright, or 4 model half-sizes from its centre in
   // the direction these give; unset, above and to the left of the front
-  // (azimuth about -47.7, elevation about 53.4), so that the shadow falls
+  // (azimuth about -47.7, elevation about 60.2), so that the shadow falls
   // beside the model rather than behind it.
   std::optional<double> light_azimuth_deg, light_elevation_deg;
   std::optional<glm::dvec3> light;

@@ -16,6 +16,7 @@
 #include "render/headless_context.hpp"
 #include "render/render_method.hpp"
 #include "scene/staged_scene.hpp"
+#include "scene/up_axis.hpp"
 #include "tools/nearest_word.hpp"
 
 namespace umbra {

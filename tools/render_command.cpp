@@ -101,7 +101,7 @@ options:
   --eye X,Y,Z           put the camera there (aimed at the framing's target)
   --target X,Y,Z        aim the camera there (from the framing's direction)
   --light-azimuth DEG   the light's azimuth (default about -47.7: front left)
-  --light-elevation DEG the light's elevation, -90 to 90 (default about 53.4);
+  --light-elevation DEG the light's elevation, -90 to 90 (default about 60.2);
                         it stands 4 half-sizes of the model from its centre
   --light X,Y,Z         put the light there
   --floor COLOR         the floor's colour; none: no floor; or shadow-catcher:

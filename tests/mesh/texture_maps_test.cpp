@@ -33,7 +33,7 @@ class TextureMapReading : public test::ScratchFolder {
 };
 
 const std::string TextureMapReading::kTriangleWithUvs =
-    "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.25 0.75\nvt 1 1\nvt 0 0\nusemtl painted\nf 1/1 2/-2 3/-1/1\n";
+    "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.25 0.75\nvt 1 1\nvt 0 0\nvn 0 0 1\nusemtl painted\nf 1/1 2/-2 3/-1/1\n";
 
 TEST_F(TextureMapReading, ObjCornersTakeTheirVtWithVTurnedOver) {
   write_png_map("red blue.png");
@@ -88,7 +88,7 @@ TEST_F(TextureMapReading, AVtPastTheLastIsSaidAndTakesZero) {
   write("m.mtl", "newmtl painted\nmap_Kd red blue.png\n");
   const PolygonSoup soup = read_polygon_soup(write("t.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.5 0.5\nusemtl painted\nf 1/1 2/9 3\n"));
   ASSERT_EQ(soup.warnings.size(), 1u);
-  EXPECT_EQ(soup.warnings[0].message, "1 face corners name a texture coordinate past the file's last (vt 9 of 1, the first): they take (0, 0)");
+  EXPECT_EQ(soup.warnings[0].message, "1 face corners name texture coordinates past the file's last (vt 9 of 1, the first): they take (0, 0)");
   EXPECT_EQ(soup.corner_uvs, (std::vector<glm::vec2>{{0.5f, 0.5f}, {0.0f, 0.0f}, {0.0f, 0.0f}}));
 }
 
@@ -131,6 +131,48 @@ TEST(TextureMapsInGltf, TheTexturedBoxReadsAlikeInEachPackaging) {
     EXPECT_EQ(soup.materials[0].texture->rgba, soups[0].materials[0].texture->rgba);
   }
   EXPECT_EQ(soups[0].corners.size(), 36u);
+}
+
+// KHR_texture_transform, on the extension's own sample model: each quad's
+// corners take their TEXCOORD_0 through translation * rotation * scale, the
+// turn u' = c u + s v, v' = -s u + c v (which puts the sample's arrows on
+// its green markers). The untransformed marker quads share the quads'
+// TEXCOORD_0 (accessor "UV0") corner by corner, so they give the input.
+TEST(TextureMapsInGltf, KhrTextureTransformMapsEachCornersCoordinates) {
+  const std::string path = "/usr/share/assimp/models/glTF2/textureTransform/TextureTransformTest.gltf";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "needs Debian's assimp-testmodels (build.sh installs it)";
+  const PolygonSoup soup = read_polygon_soup(path);
+  EXPECT_TRUE(soup.warnings.empty()) << soup.warnings[0].message;
+  ASSERT_EQ(soup.corner_uvs.size(), soup.corners.size());
+  // The first quad's six corners in each material, by name.
+  const auto corners_of = [&](const std::string& name) {
+    std::vector<glm::vec2> uvs;
+    for (size_t p = 0; p < soup.polygon_count() && uvs.size() < 6; ++p)
+      if (soup.materials[size_t(soup.polygon_material(p))].name == name)
+        for (uint32_t c = soup.polygon_starts[p]; c < soup.polygon_starts[p + 1]; ++c) uvs.push_back(soup.corner_uvs[c]);
+    return uvs;
+  };
+  const std::vector<glm::vec2> marker = corners_of("Correct"), offset_u = corners_of("Offset U"), offset_v = corners_of("Offset V"),
+                               offset_uv = corners_of("Offset UV"), rotation = corners_of("Rotation"), scale = corners_of("Scale"),
+                               all = corners_of("All");
+  ASSERT_EQ(marker.size(), 6u);
+  const auto expect_near = [](glm::vec2 got, glm::vec2 want) {
+    EXPECT_NEAR(got.x, want.x, 1e-6);
+    EXPECT_NEAR(got.y, want.y, 1e-6);
+  };
+  for (size_t k = 0; k < 6; ++k) {
+    SCOPED_TRACE(k);
+    // The offsets (0.5, 0), (0, 0.5), (0.5, 0.5) of the same UV1.
+    expect_near(offset_uv[k] - offset_u[k], {0.0f, 0.5f});
+    expect_near(offset_v[k] - offset_u[k], {-0.5f, 0.5f});
+    const glm::vec2 uv = marker[k];
+    const auto turned = [](glm::vec2 q, double r) {
+      return glm::vec2(float(std::cos(r) * q.x + std::sin(r) * q.y), float(-std::sin(r) * q.x + std::cos(r) * q.y));
+    };
+    expect_near(rotation[k], turned(uv, 0.39269908169872414));
+    expect_near(scale[k], 1.5f * uv);
+    expect_near(all[k], turned(1.5f * uv, 0.3) + glm::vec2(-0.2f, -0.1f));
+  }
 }
 
 TEST_F(TextureMapReading, AGltfWhoseImageIsMissingStillLoadsAndSaysSo) {

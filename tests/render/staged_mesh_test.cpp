@@ -4,6 +4,7 @@
 // exact shadow rays, for meshes the tests write and a real exported model.
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 
 #include <gtest/gtest.h>
 
@@ -283,6 +284,106 @@ TEST(StagedMesh, CameraAndLightAnglesPlaceThemRoundTheModel) {
   EXPECT_EQ(there.camera.eye, glm::dvec3(3, -4, 2));
   EXPECT_EQ(there.camera.target, glm::dvec3(0, 0, 0.5));
   EXPECT_EQ(there.lights[0].position, glm::dvec3(-2, 1, 3));
+}
+
+// `soup` (triangles) as ASCII STL.
+std::string stl_text(const PolygonSoup& soup) {
+  std::string text = "solid s\n";
+  for (size_t p = 0; p < soup.polygon_count(); ++p) {
+    text += "facet normal 0 0 0\nouter loop\n";
+    for (uint32_t c = 0; c < 3; ++c) {
+      const glm::dvec3& q = soup.points[soup.polygon(p)[c]];
+      text += "vertex " + std::to_string(q.x) + " " + std::to_string(q.y) + " " + std::to_string(q.z) + "\n";
+    }
+    text += "endloop\nendfacet\n";
+  }
+  return text + "endsolid s\n";
+}
+
+// The staged text's line that says why the pose is not the format's ("" when none).
+std::string pose_note(const std::string& text) {
+  const size_t at = text.find("\n# up is ");
+  return at == std::string::npos ? "" : text.substr(at + 1, text.find('\n', at + 1) - at - 1);
+}
+
+// A model built standing on another axis than its format's: a Y-up "animal"
+// (long in z, its feet at y = 0) saved as STL, whose convention (+z up)
+// would stand it on its tail, stands on its feet; so does Debian's real
+// one, assimp's Wuson.stl, and a Z-up house plan saved as OBJ (+y up),
+// assimp's regr01.obj, on its floor. A figure standing on its format's
+// axis, and a model centred on the origin, keep the convention.
+TEST(StagedMesh, AModelBuiltStandingOnAnotherAxisStandsOnIt) {
+  const PolygonSoup animal = test::box_triangles({-0.5, 0.0, -1.5}, {0.5, 1.5, 1.5});
+  std::string text;
+  const Scene scene = parse_scene_or_mesh_file(test::write_mesh("animal.stl", stl_text(animal)), {}, &text);
+  EXPECT_EQ(pose_note(text), "# up is +y, not +z as its format has it: it was built standing on that axis (its base is at 0 along it, "
+                             "not along +z), on a footprint at least 1.5 times as large");
+  EXPECT_NE(text.find("mesh \"animal.stl\" fit rotate 1 0 0 90 "), std::string::npos) << text;
+  const glm::dvec3 size = scene.meshes[0].bounds_max - scene.meshes[0].bounds_min;
+  EXPECT_NEAR(size.z, 1.0, 1e-12);  // 1.5 of its 3 fitted to 2: standing on its feet
+  // Its text reads back as the same scene, the note a comment.
+  const std::string saved = (std::filesystem::path(scene.meshes[0].path).parent_path() / "animal.scene").string();
+  std::ofstream(saved) << text;
+  EXPECT_EQ(parse_scene_file(saved).meshes[0].positions.points(), scene.meshes[0].positions.points());
+
+  const PolygonSoup figure = test::box_triangles({-0.25, 0.0, -0.15}, {0.25, 1.8, 0.15});  // Y-up, as OBJ has it
+  parse_scene_or_mesh_file(test::write_mesh("figure.obj", test::obj_text(figure)), {}, &text);
+  EXPECT_EQ(pose_note(text), "");
+  parse_scene_or_mesh_file(write_torus_glb(), {}, &text);
+  EXPECT_EQ(pose_note(text), "");
+
+  const std::string models = "/usr/share/assimp/models/";
+  if (!std::filesystem::exists(models + "STL/Wuson.stl")) GTEST_SKIP() << "needs Debian's assimp-testmodels (build.sh installs it)";
+  parse_scene_or_mesh_file(models + "STL/Wuson.stl", {}, &text);
+  EXPECT_EQ(pose_note(text).substr(0, 16), "# up is +y, not ");
+  parse_scene_or_mesh_file(models + "OBJ/regr01.obj", {}, &text);
+  EXPECT_EQ(pose_note(text).substr(0, 16), "# up is +z, not ");
+  // --up decides outright.
+  StagingOptions up;
+  up.up = "+z";
+  parse_scene_or_mesh_file(models + "STL/Wuson.stl", {}, &text, up);
+  EXPECT_EQ(pose_note(text), "");
+}
+
+// Whether the camera sees the model (in at least 2% of a 60x60 frame) and the
+// light reaches nearly all of what it sees of it.
+bool seen_and_lit(const Scene& scene) {
+  const int size = 60;
+  int seen = 0, lit = 0;
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, size, size, x, y));
+      if (!hit || hit->object < int(scene.triangles.size())) continue;  // the floor's triangles come first
+      ++seen;
+      lit += reference_mask_value(scene, size, size, x, y, 0) == kMaskLit;
+    }
+  return seen >= size * size / 50 && lit >= seen * 9 / 10;
+}
+
+// A flat part is seen by its face, lit, never by its edge or lying flat on
+// the floor: a quad lying flat in a Y-up OBJ is stood up (its top as seen
+// from above up), a panel standing across the stage's x axis has the camera
+// and light turned to its face, and Debian's real triangle.stl (lying flat
+// in z) stands too.
+TEST(StagedMesh, AFlatPartStandsAndShowsItsLitFace) {
+  std::string text;
+  const PolygonSoup lying = test::make_soup({{0, 0, 0}, {2, 0, 0}, {2, 0, -1}, {0, 0, -1}}, {{0, 1, 2}, {0, 2, 3}});  // facing +y
+  const Scene stood = parse_scene_or_mesh_file(test::write_mesh("lying.obj", test::obj_text(lying)), {}, &text);
+  EXPECT_EQ(pose_note(text), "# up is -z, not +y as its format has it: it is flat and would lie flat, so it stands to show its face");
+  EXPECT_NEAR(stood.meshes[0].bounds_max.z - stood.meshes[0].bounds_min.z, 1.0, 1e-12);
+  EXPECT_TRUE(seen_and_lit(stood));
+  // Standing across x (its face toward +x): seen and lit from +x.
+  const PolygonSoup across = test::make_soup({{0, 0, 0}, {0, 2, 0}, {0, 2, 1}, {0, 0, 1}}, {{0, 1, 2}, {0, 2, 3}});  // Z-up (STL)
+  const Scene turned = parse_scene_or_mesh_file(test::write_mesh("across.stl", stl_text(across)), {}, &text);
+  EXPECT_EQ(pose_note(text), "");
+  EXPECT_GT(turned.camera.eye.x, 0.5);
+  EXPECT_GT(turned.lights[0].position.x, 0.5);
+  EXPECT_TRUE(seen_and_lit(turned));
+  const std::string triangle = "/usr/share/assimp/models/STL/triangle.stl";
+  if (!std::filesystem::exists(triangle)) GTEST_SKIP() << "needs Debian's assimp-testmodels (build.sh installs it)";
+  const Scene real = parse_scene_or_mesh_file(triangle, {}, &text);
+  EXPECT_EQ(pose_note(text).substr(0, 16), "# up is +y, not ");
+  EXPECT_TRUE(seen_and_lit(real));
 }
 
 // A camera turned round the model sees it where the ray-cast reference does:

@@ -4,6 +4,7 @@
 
 #define GLM_ENABLE_EXPERIMENTAL
 #include <glm/gtx/component_wise.hpp>
+#include <glm/geometric.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -142,6 +143,28 @@ TEST(SceneParser, AntialiasSaysTheSamplesASceneIsDrawnWith) {
   EXPECT_EQ(error_of(kLight + "antialias 2\nantialias 2\n"), "t.scene:3:1: a second antialias statement");
 }
 
+// A studio's fill: a headlight, a hemisphere and a tone curve, each said
+// once; a spec scene has none, and is clipped as before.
+TEST(SceneParser, AFillLightAndAToneCurveAreSaidOnce) {
+  const Scene none = parse_scene_text(kLight, "t");
+  EXPECT_EQ(none.fill.headlight, glm::dvec3(0.0));
+  EXPECT_EQ(none.fill.sky, glm::dvec3(0.0));
+  EXPECT_EQ(none.fill.ground, glm::dvec3(0.0));
+  EXPECT_EQ(none.tone, ToneCurve::kClip);
+  const Scene s = parse_scene_text(kLight + "headlight 0.3 0.3 0.4\nhemisphere ground 0.1 0.1 0.1 sky 0.3 0.3 0.3 up 0 0 2\ntone soft\n", "t");
+  EXPECT_EQ(s.fill.headlight, glm::dvec3(0.3, 0.3, 0.4));
+  EXPECT_EQ(s.fill.sky, glm::dvec3(0.3));
+  EXPECT_EQ(s.fill.ground, glm::dvec3(0.1));
+  EXPECT_EQ(s.fill.up, glm::dvec3(0, 0, 1));  // made unit
+  EXPECT_EQ(s.tone, ToneCurve::kSoft);
+  EXPECT_EQ(parse_scene_text(kLight + "hemisphere sky 1 1 1\n", "t").fill.up, glm::dvec3(0, 0, 1));  // +z unless told
+  EXPECT_EQ(error_of(kLight + "headlight 1 1 1\nheadlight 1 1 1\n"), "t.scene:3:1: a second headlight statement (the first is at line 2)");
+  EXPECT_EQ(error_of(kLight + "headlight -1 1 1\n"), "t.scene:2:11: the headlight intensity must not be negative");
+  EXPECT_EQ(error_of(kLight + "hemisphere sky 1 1 1 up 0 0 0\n"), "t.scene:2:25: the hemisphere's up must not be (0, 0, 0)");
+  EXPECT_EQ(error_of(kLight + "tone filmic\n"), "t.scene:2:6: unknown tone curve \"filmic\" (expected clip or soft)");
+  EXPECT_EQ(error_of(kLight + "tone soft\ntone clip\n"), "t.scene:3:1: a second tone statement (the first is at line 2)");
+}
+
 TEST(SceneParser, NumbersInCLocaleWithExponentsAndSigns) {
   const Scene s = parse_scene_text("light +1e-3 -0.5 2.5E0\n", "t");
   EXPECT_EQ(s.lights[0].position, glm::dvec3(1e-3, -0.5, 2.5));
@@ -164,12 +187,14 @@ TEST(SceneParserErrors, NanAndInfAreNotNumbers) {
 
 TEST(SceneParserErrors, UnknownStatement) {
   EXPECT_EQ(error_of(kLight + "  cube 0 0 0 1\n"),
-            "t.scene:2:3: unknown statement \"cube\" (expected light, material, sphere, triangle, mesh, camera, background, floor or antialias)");
+            "t.scene:2:3: unknown statement \"cube\" (expected light, material, sphere, triangle, mesh, camera, background, floor, "
+            "antialias, headlight, hemisphere or tone)");
 }
 
 TEST(SceneParserErrors, KeywordsAreLowerCase) {
   EXPECT_EQ(error_of("Light 0 0 2\n"),
-            "t.scene:1:1: unknown statement \"Light\" (expected light, material, sphere, triangle, mesh, camera, background, floor or antialias)");
+            "t.scene:1:1: unknown statement \"Light\" (expected light, material, sphere, triangle, mesh, camera, background, floor, "
+            "antialias, headlight, hemisphere or tone)");
 }
 
 TEST(SceneParserErrors, UnknownKeyword) {
@@ -257,6 +282,62 @@ TEST_F(SceneMeshes, APlainMeshIsDrawnInItsStatementsMaterialAlone) {
                         "property list uchar int vertex_indices\nend_header\n0 0 0 255 0 0\n1 0 0 0 255 0\n0 1 0 0 0 255\n3 0 1 2\n");
   EXPECT_EQ(parse("light 0 0 5\nmesh coloured.ply\n").meshes[0].triangle_colors.size(), 1u);
   EXPECT_TRUE(parse("light 0 0 5\nmesh coloured.ply plain\n").meshes[0].triangle_colors.empty());
+}
+
+// `smooth`: the file's normals, made unit and turned with the mesh (a
+// scale turns none), where it gives them: OBJ vn and PLY nx ny nz. A face
+// with a corner the file gives none is drawn flat. Without `smooth`, none.
+TEST_F(SceneMeshes, ASmoothMeshIsShadedInItsFilesNormalsTurnedWithIt) {
+  write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 2\nvn 1 0 1\n"
+                   "f 1//1 2//2 3//1\nf 2//2 4 3//1\n");
+  EXPECT_TRUE(parse("light 0 0 5\nmesh tri.obj\n").meshes[0].triangle_normals.empty());
+  const Mesh m = parse("light 0 0 5\nmesh tri.obj smooth 30 scale 3 rotate 0 0 1 90\n").meshes[0];
+  ASSERT_EQ(m.triangle_normals.size(), 2u);
+  const float h = float(std::sqrt(0.5));
+  // (1, 0, 1) made unit and turned 90 degrees about z: (0, h, h).
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(m.triangle_normals[0][0][k], glm::vec3(0, 0, 1)[k], 1e-6);
+    EXPECT_NEAR(m.triangle_normals[0][1][k], glm::vec3(0, h, h)[k], 1e-6);
+    EXPECT_NEAR(m.triangle_normals[0][2][k], glm::vec3(0, 0, 1)[k], 1e-6);
+  }
+  for (const glm::vec3& n : m.triangle_normals[1]) EXPECT_EQ(n, glm::vec3(0.0f));  // corner 4 has no vn
+  write("tri.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                   "property float nx\nproperty float ny\nproperty float nz\nelement face 1\n"
+                   "property list uchar int vertex_indices\nend_header\n0 0 0 0 0 1\n1 0 0 0 3 4\n0 1 0 0 0 -1\n3 0 1 2\n");
+  const Mesh ply = parse("light 0 0 5\nmesh tri.ply smooth 30\n").meshes[0];
+  ASSERT_EQ(ply.triangle_normals.size(), 1u);
+  EXPECT_EQ(ply.triangle_normals[0][0], glm::vec3(0, 0, 1));
+  EXPECT_NEAR(ply.triangle_normals[0][1].y, 0.6f, 1e-6);
+  EXPECT_NEAR(ply.triangle_normals[0][1].z, 0.8f, 1e-6);
+  EXPECT_EQ(ply.triangle_normals[0][2], glm::vec3(0, 0, -1));  // as written: the shader turns it to the seen side
+}
+
+// Without normals in the file, `smooth DEG` makes them from the faces
+// (crease_normals.hpp): a cube's stay its faces' under 30 degrees.
+TEST_F(SceneMeshes, ASmoothMeshWithoutNormalsHasItsCreases) {
+  write("cube.obj", test::obj_text(test::unit_cube()));
+  const Mesh m = parse("light 0 0 5\nmesh cube.obj smooth 30\n").meshes[0];
+  ASSERT_EQ(m.triangle_normals.size(), 12u);
+  for (size_t t = 0; t < 12; ++t) {
+    const auto& [a, b, c] = m.triangles[t];
+    const glm::dvec3 face = glm::normalize(glm::cross(m.positions[b] - m.positions[a], m.positions[c] - m.positions[a]));
+    for (const glm::vec3& n : m.triangle_normals[t])
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(n[k], face[k], 1e-6);
+  }
+  EXPECT_EQ(error("light 0 0 5\nmesh cube.obj smooth 200\n"), dir() + "s.scene:2:22: the crease angle must be from 0 to 180 degrees, got 200");
+}
+
+// OBJ's Ns 0 is a matte surface, as exporters write it: no highlight, not
+// Phong's cos^0 that would light the whole face with Ks.
+TEST_F(SceneMeshes, AnObjMaterialOfShininessZeroIsMatte) {
+  write("box.mtl", "newmtl matte\nKd 0.2 0.2 0.2\nKs 0.9 0.9 0.9\nNs 0\nnewmtl shiny\nKd 0.2 0.2 0.2\nKs 0.9 0.9 0.9\nNs 40\n");
+  write("box.obj", "mtllib box.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl matte\nf 1 2 3\nusemtl shiny\nf 1 3 2\n");
+  const Scene scene = parse("light 0 0 5\nmesh box.obj\n");
+  ASSERT_EQ(scene.materials.size(), 3u);
+  EXPECT_EQ(scene.materials[1].name, "box.obj:matte");
+  EXPECT_EQ(scene.materials[1].specular, glm::dvec3(0.0));
+  EXPECT_EQ(scene.materials[2].specular, glm::dvec3(0.9));
+  EXPECT_EQ(scene.materials[2].shininess, 40.0);
 }
 
 TEST_F(SceneMeshes, MeshIsLoadedRelativeToTheSceneAndTransformedScaleRotateTranslate) {

@@ -46,7 +46,7 @@ TEST_F(RenderCommand, AMeshFileOnItsOwnIsStagedAndExplainPrintsTheSceneToSave) {
   const std::string header = "staged scene for " + mesh + " (--save-scene FILE saves it to render or edit):\n";
   ASSERT_EQ(r.out.substr(0, header.size()), header);
   const std::string text = r.out.substr(header.size(), r.out.find("\nrender plan for ") - header.size());
-  EXPECT_NE(text.find("\nmesh \"tet\" fit rotate 1 0 0 90\n"), std::string::npos) << text;  // OBJ: +y up, turned to +z
+  EXPECT_NE(text.find("\nmesh \"tet\" fit rotate 1 0 0 90 smooth 30\n"), std::string::npos) << text;  // OBJ: +y up, turned to +z
   EXPECT_NE(r.out.find("render plan for " + mesh + " (staged)\n"), std::string::npos);
   EXPECT_EQ(read_png(path("a.png")).width, 32);
   // Saved beside the mesh, the text renders the same image, antialiased as
@@ -58,17 +58,18 @@ TEST_F(RenderCommand, AMeshFileOnItsOwnIsStagedAndExplainPrintsTheSceneToSave) {
   const std::string neither = write("notes.txt", "hello\n");
   const CommandResult bad = run("render " + neither + " -o " + path("c.png"));
   EXPECT_EQ(bad.status, 1);
-  EXPECT_EQ(bad.err, neither + ":1:1: unknown statement \"hello\" (expected light, material, sphere, triangle, mesh, camera, background, floor or antialias)\n");
+  EXPECT_EQ(bad.err, neither + ":1:1: unknown statement \"hello\" (expected light, material, sphere, triangle, mesh, camera, background, floor, "
+                     "antialias, headlight, hemisphere or tone)\n");
 }
 
 // --up names the file's axis that points up; the staged scene turns it to +z.
 TEST_F(RenderCommand, UpPicksTheAxisAMeshStandsOn) {
   const std::string mesh = write("tet.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 3\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
   const std::vector<std::pair<std::string, std::string>> turns = {
-      {"+z", "mesh \"tet.obj\" fit\n"},
-      {"-z", "mesh \"tet.obj\" fit rotate 1 0 0 180\n"},
-      {"+y", "mesh \"tet.obj\" fit rotate 1 0 0 90\n"},
-      {"+x", "mesh \"tet.obj\" fit rotate 0 1 0 -90\n"}};
+      {"+z", "mesh \"tet.obj\" fit smooth 30\n"},
+      {"-z", "mesh \"tet.obj\" fit rotate 1 0 0 180 smooth 30\n"},
+      {"+y", "mesh \"tet.obj\" fit rotate 1 0 0 90 smooth 30\n"},
+      {"+x", "mesh \"tet.obj\" fit rotate 0 1 0 -90 smooth 30\n"}};
   for (const auto& [axis, statement] : turns) {
     const CommandResult r = run("render " + mesh + " -o " + path("a.png") + " --size 16x16 --explain --up " + axis);
     EXPECT_EQ(r.status, 0) << r.err;
@@ -171,8 +172,14 @@ TEST_F(RenderCommand, FloorColorAndBackgroundOptions) {
   // --plain draws it in --color alone, as the untextured model is drawn.
   r = run("render " + coloured + " --size 48x48 --antialias 1 -o " + path("c3.png") + " --color red --plain --explain");
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.out.find("\nmesh \"c.obj\" fit rotate 1 0 0 90 plain\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\nmesh \"c.obj\" fit rotate 1 0 0 90 plain smooth 30\n"), std::string::npos) << r.out;
   EXPECT_EQ(read_png(path("c3.png")).pixels, read_png(path("red.png")).pixels);  // the same tetrahedron, red
+  // Smooth across edges under --crease-angle (30 by default), or --flat.
+  r = run(base + "-o " + path("s.png") + " --crease-angle 75 --explain");
+  EXPECT_NE(r.out.find("\nmesh \"t.off\" fit rotate 1 0 0 90 smooth 75\n"), std::string::npos) << r.out;
+  r = run(base + "-o " + path("s.png") + " --flat --explain");
+  EXPECT_NE(r.out.find("\nmesh \"t.off\" fit rotate 1 0 0 90\n"), std::string::npos) << r.out;
+  EXPECT_EQ(run(base + "-o " + path("s.png") + " --crease-angle 200").status, 2);
   // The floor: a colour, or none at all.
   r = run(base + "-o " + path("f.png") + " --floor '#ff8000' --explain");
   EXPECT_NE(r.out.find("\nmaterial floor ambient 1 0.501961 0 diffuse 1 0.501961 0\n"), std::string::npos) << r.out;

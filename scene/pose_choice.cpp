@@ -1,0 +1,76 @@
+#include "scene/pose_choice.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "scene/up_axis.hpp"
+
+namespace umbra {
+namespace {
+
+// A model is flat when its thinnest side is under this share of its longest.
+constexpr double kFlat = 0.02;
+// A base "at 0" is within this share of the model's longest side of it.
+constexpr double kAtZero = 1e-3;
+// How much larger a footprint the axis it was built on must give.
+constexpr double kBroader = 1.5;
+
+int thinnest(const glm::dvec3& extent) {
+  int t = 0;
+  for (int k = 1; k < 3; ++k)
+    if (extent[k] < extent[t]) t = k;
+  return t;
+}
+
+bool is_flat(const glm::dvec3& extent) {
+  return extent[thinnest(extent)] < kFlat * std::max({extent.x, extent.y, extent.z});
+}
+
+}  // namespace
+
+std::optional<PoseChoice> better_pose(const Mesh& mesh, const std::string& format_up) {
+  if (mesh.triangles.empty()) return std::nullopt;
+  const glm::dmat3 turn = up_rotation(format_up);
+  const glm::dvec3 extent = mesh.bounds_max - mesh.bounds_min;  // on the stage
+  if (is_flat(extent) && thinnest(extent) == 2) {
+    // The stage's +y (away from the camera) is the top of the file as seen from above.
+    const std::string up = axis_name(glm::transpose(turn) * glm::dvec3(0, 1, 0));
+    return PoseChoice{up, "it is flat and would lie flat, so it stands to show its face"};
+  }
+  // Where the file was built standing: its base at 0 along an axis.
+  const glm::dvec3 lo = mesh.file_bounds_min, hi = mesh.file_bounds_max, size = hi - lo;
+  const double longest = std::max({size.x, size.y, size.z});
+  if (!(longest > 0.0)) return std::nullopt;
+  const auto base_at_zero = [&](int axis, bool positive) { return std::abs(positive ? lo[axis] : hi[axis]) <= kAtZero * longest; };
+  const auto footprint = [&](int axis) { return size[(axis + 1) % 3] * size[(axis + 2) % 3]; };
+  const int format_axis = format_up[1] - 'x';
+  if (base_at_zero(format_axis, format_up[0] == '+')) return std::nullopt;
+  std::optional<std::string> built_on;
+  for (int axis = 0; axis < 3; ++axis)
+    for (const bool positive : {true, false}) {
+      if (axis == format_axis || !base_at_zero(axis, positive) || footprint(axis) < kBroader * footprint(format_axis)) continue;
+      if (built_on) return std::nullopt;  // more than one: no plain answer
+      built_on = std::string(positive ? "+" : "-") + "xyz"[axis];
+    }
+  if (!built_on) return std::nullopt;
+  return PoseChoice{*built_on, "it was built standing on that axis (its base is at 0 along it, not along " + format_up +
+                                   "), on a footprint at least 1.5 times as large"};
+}
+
+std::optional<double> view_turn_facing(const Mesh& mesh) {
+  const glm::dvec3 extent = mesh.bounds_max - mesh.bounds_min;
+  const int thin = thinnest(extent);
+  if (mesh.triangles.empty() || !is_flat(extent) || thin == 2) return std::nullopt;
+  // The side its faces turn to, by their area: the front of a one-sided panel.
+  double facing = 0.0;
+  for (const auto& [a, b, c] : mesh.triangles)
+    facing += glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a])[thin];
+  // Azimuth 0 looks from -y, 90 from +x.
+  if (thin == 1) return facing > 0.0 ? 180.0 : 0.0;
+  return facing < 0.0 ? -90.0 : 90.0;
+}
+
+}  // namespace umbra

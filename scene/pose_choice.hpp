@@ -1,0 +1,40 @@
+#pragma once
+// Which way up a staged mesh stands. Each format has its convention (+z up
+// for STL and 3MF, +y for the others), but files often break it: a Y-up
+// model exported to STL stands on its tail, a Z-up plan saved as OBJ on its
+// side, and a flat part lies flat or shows its edge. Where the convention
+// plainly gives a pose that does not read, a better one is chosen from the
+// geometry, and said.
+
+#include <optional>
+#include <string>
+
+#include "scene/scene.hpp"
+
+namespace umbra {
+
+struct PoseChoice {
+  std::string up;   // the file's axis to stand up: "+x" ... "-z"
+  std::string why;  // why, for the staged scene's text (--explain): "it is flat and would lie flat, ..."
+};
+
+// For `mesh`, loaded fitted with its file's axis `format_up` turned to +z
+// (the stage's up), a better up axis, or none when the convention's pose
+// reads. It reads unless:
+// - the model is flat (its thinnest side under 2% of its longest) and lies
+//   flat: it is stood up, the file's top as seen from above up, so that the
+//   camera sees its face and its shadow falls on the floor;
+// - the model was plainly built standing on another axis: its lowest point
+//   is at 0 along that axis and not along the convention's (a plan drawn on
+//   z = 0, a figure on y = 0), and it stands there on a footprint at least
+//   twice as large.
+std::optional<PoseChoice> better_pose(const Mesh& mesh, const std::string& format_up);
+
+// For a flat model standing upright, the turn about the stage's up (in
+// degrees) of the default camera and light that puts both on the side its
+// faces turn to (by area; the stage's front, -y, when they turn neither
+// way), the camera seeing its face as it sees a model's front: none for a
+// model that is not flat and upright, whose front is the stage's.
+std::optional<double> view_turn_facing(const Mesh& mesh);
+
+}  // namespace umbra
