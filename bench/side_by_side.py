@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Pairs of pictures side by side, one pair a row, in one PNG: to look at
+"""Pairs of pictures side by side, two pairs a row, in one PNG: to look at
 umbra's staged pictures next to another tool's of the same files.
 
   side_by_side.py OUT.png LEFT.png RIGHT.png [LEFT.png RIGHT.png ...]
@@ -70,8 +70,9 @@ def write_png(path, width, height, pixels):
 
 
 out, pictures = sys.argv[1], sys.argv[2:]
-rows = (len(pictures) + 1) // 2
-width, height = 2 * CELL + 12, rows * (CELL + 6) + 6
+PAIRS_A_ROW = 2
+rows = -(-len(pictures) // (2 * PAIRS_A_ROW))
+width, height = 2 * PAIRS_A_ROW * (CELL + 4) + 4 * PAIRS_A_ROW, rows * (CELL + 6) + 6
 pixels = bytearray([128] * (width * height * 3))
 for k, path in enumerate(pictures):
     try:
@@ -79,7 +80,9 @@ for k, path in enumerate(pictures):
     except (OSError, ValueError, zlib.error):
         continue
     step = max(1, -(-max(w, h) // CELL))
-    x0, y0 = 4 + (k % 2) * (CELL + 4), 6 + (k // 2) * (CELL + 6)
+    pair, column = k // 2, k % 2  # a pair's left and right
+    x0 = 4 + (pair % PAIRS_A_ROW) * (2 * CELL + 12) + column * (CELL + 4)
+    y0 = 6 + (pair // PAIRS_A_ROW) * (CELL + 6)
     for y in range(h // step):
         for x in range(w // step):
             at = ((y0 + y) * width + x0 + x) * 3

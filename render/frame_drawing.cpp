@@ -1,5 +1,6 @@
 #include "render/frame_drawing.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -17,6 +18,14 @@ namespace umbra {
 namespace {
 
 glm::vec3 f(const glm::dvec3& v) { return glm::vec3(v); }
+
+// A triangle shader's source, its smooth shading compiled in where `smooth`
+// (some mesh has shading normals).
+std::string with_smoothing(const std::string& source, bool smooth) {
+  if (!smooth) return source;
+  const size_t version_end = source.find('\n') + 1;  // #define goes after #version
+  return source.substr(0, version_end) + "#define UMBRA_SMOOTH\n" + source.substr(version_end);
+}
 
 std::string fragment_source(const char* main) { return std::string("#version 330 core\n") + shaders::kShading + main; }
 
@@ -51,8 +60,9 @@ void add_light_once_state() {
 
 FrameDrawing::FrameDrawing(const Scene& scene, const RenderPlan& plan, DrawSending sending)
     : scene_(scene), plan_(plan), pacing_(sending == DrawSending::kPaced ? draw_piece_limit_for_current_gl() : 0) {
-  triangle_program_ = std::make_unique<ShaderProgram>("triangle", shaders::kTriangleVertex,
-                                                      fragment_source(shaders::kTriangleFragmentMain));
+  const bool smooth = std::any_of(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return !m.triangle_normals.empty(); });
+  triangle_program_ = std::make_unique<ShaderProgram>("triangle", with_smoothing(shaders::kTriangleVertex, smooth),
+                                                      with_smoothing(fragment_source(shaders::kTriangleFragmentMain), smooth));
   sphere_program_ = std::make_unique<ShaderProgram>("sphere", shaders::kSphereVertex,
                                                     fragment_source(shaders::kSphereFragmentMain));
   volume_program_ = std::make_unique<ShaderProgram>("volume", shaders::kVolumeVertex, shaders::kVolumeFragment);

@@ -147,22 +147,26 @@ layout(location = 3) in vec2 uv;     // texture coordinates, v down the image; (
 // plus one: 2 where `normal` points, 0 the other side, 1 in the plane; and
 // 4 more where a smooth mesh's vertex is on the terminator (terminator.hpp).
 layout(location = 4) in int light_code;
-layout(location = 5) in vec3 shading_normal;  // (0, 0, 0): flat (a constant attribute when no mesh is smooth)
+#ifdef UMBRA_SMOOTH  // defined where some mesh is smooth: a flat scene interpolates nothing more
+layout(location = 5) in vec3 shading_normal;  // (0, 0, 0): flat
+out vec3 world_shading_normal;
+out float light_reach;  // 0 at a smooth mesh's terminator, 1 elsewhere, blended across the triangle
+#endif
 uniform mat4 view_projection;
 out vec3 world_position;
 out vec3 world_normal;
-out vec3 world_shading_normal;
 out vec3 vertex_color;
 out vec2 texture_uv;
 flat out int triangle_light_side;
-out float light_reach;  // 0 at a smooth mesh's terminator, 1 elsewhere, blended across the triangle
 invariant gl_Position;
 void main() {
   world_position = position;
   world_normal = normal;
-  world_shading_normal = shading_normal;
   triangle_light_side = (light_code & 3) - 1;
+#ifdef UMBRA_SMOOTH
+  world_shading_normal = shading_normal;
   light_reach = (light_code & 4) != 0 ? 0.0 : 1.0;
+#endif
   vertex_color = color;
   texture_uv = uv;
   gl_Position = view_projection * vec4(position, 1.0);
@@ -183,11 +187,13 @@ enum TextureWrap { kWrapRepeat = 0, kWrapClampToEdge = 1, kWrapMirroredRepeat = 
 inline constexpr const char* kTriangleFragmentMain = R"(
 in vec3 world_position;
 in vec3 world_normal;
-in vec3 world_shading_normal;
 in vec3 vertex_color;
 in vec2 texture_uv;
 flat in int triangle_light_side;
+#ifdef UMBRA_SMOOTH
+in vec3 world_shading_normal;
 in float light_reach;
+#endif
 uniform bool material_textured;
 uniform sampler2D material_texture;
 uniform ivec2 material_wrap;  // TextureWrap, along u and along v
@@ -224,10 +230,15 @@ void main() {
   // The camera's side of the plane, by the interpolated point: it can round
   // only where the plane nearly holds the eye, and the face is seen edge-on.
   int eye_side = dot(world_normal, eye - world_position) < 0.0 ? -1 : 1;
+  bool faces_light = triangle_light_side != 0 && triangle_light_side == eye_side;
+  vec3 n = normalize(world_normal);
+#ifdef UMBRA_SMOOTH
   // A smooth face's corners all have normals; a flat one's are all 0, and so is what is blended of them.
   bool smoothed = world_shading_normal != vec3(0.0);
-  shade(world_position, normalize(world_normal), smoothed ? normalize(world_shading_normal) : vec3(0.0), smoothed,
-        light_reach, triangle_light_side != 0 && triangle_light_side == eye_side);
+  shade(world_position, n, smoothed ? normalize(world_shading_normal) : n, smoothed, light_reach, faces_light);
+#else
+  shade(world_position, n, n, false, 1.0, faces_light);
+#endif
 }
 )";
 

@@ -125,6 +125,7 @@ LoadedMesh load_mesh(MeshStatement statement, const TextureMaps& maps) {
   m.triangle_materials = std::move(analysis.triangle_materials);
   m.triangle_colors = std::move(analysis.triangle_colors);
   m.triangle_uvs = std::move(analysis.triangle_uvs);
+  if (m.smooth_deg && m.triangles.size() >= m.smooth_triangle_limit) m.smooth_deg.reset();
   if (m.smooth_deg) smooth_normals(m, analysis.triangle_normals);
   m.edges = std::move(analysis.topology->edges);  // asked for above: always given
   m.components = std::move(analysis.topology->components);

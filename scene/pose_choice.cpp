@@ -35,7 +35,8 @@ std::optional<PoseChoice> better_pose(const Mesh& mesh, const std::string& forma
   if (mesh.triangles.empty()) return std::nullopt;
   const glm::dmat3 turn = up_rotation(format_up);
   const glm::dvec3 extent = mesh.bounds_max - mesh.bounds_min;  // on the stage
-  if (is_flat(extent) && thinnest(extent) == 2) {
+  if (is_flat(extent)) {
+    if (thinnest(extent) != 2) return std::nullopt;  // standing: it shows its face (view_turn_facing)
     // The stage's +y (away from the camera) is the top of the file as seen from above.
     const std::string up = axis_name(glm::transpose(turn) * glm::dvec3(0, 1, 0));
     return PoseChoice{up, "it is flat and would lie flat, so it stands to show its face"};

@@ -23,7 +23,8 @@ struct PoseChoice {
 // reads. It reads unless:
 // - the model is flat (its thinnest side under 2% of its longest) and lies
 //   flat: it is stood up, the file's top as seen from above up, so that the
-//   camera sees its face and its shadow falls on the floor;
+//   camera sees its face and its shadow falls on the floor (a flat model
+//   that stands keeps its pose, whatever else it might stand on);
 // - the model was plainly built standing on another axis: its lowest point
 //   is at 0 along that axis and not along the convention's (a plan drawn on
 //   z = 0, a figure on y = 0), and it stands there on a footprint at least

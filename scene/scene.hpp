@@ -87,6 +87,11 @@ struct Mesh {
   // faces round each point that meet at no more than DEG degrees
   // (crease_normals.hpp). Unset: flat faces. Shadows are the faces' either way.
   std::optional<double> smooth_deg;
+  // Not in the scene's text: smooth only a mesh of fewer triangles than
+  // this, else flat (smooth_deg unset once loaded). A staged mesh finer than
+  // its picture's pixels has no facet to show, so none to hide, and is
+  // spared the normals' time and memory.
+  size_t smooth_triangle_limit = SIZE_MAX;
   // Per triangle, its corners' unit normals for shading, in scene
   // coordinates; (0, 0, 0) at a corner drawn flat. Empty: every face flat.
   std::vector<std::array<glm::vec3, 3>> triangle_normals;

@@ -36,10 +36,10 @@ const double kLightElevationDeg = glm::degrees(std::asin(kToLight.z));
 // The studio's light (FillLight) and floor, chosen so that a face turned from
 // the key light is lighter than its shadow on the floor, and a pale model
 // stands out from the floor.
-const glm::dvec3 kKeyLight(0.85), kHeadlight(0.35), kSky(0.3), kGround(0.1), kFloor(0.65, 0.65, 0.68);
+const glm::dvec3 kKeyLight(0.85), kHeadlight(0.5), kSky(0.25), kGround(0.1), kFloor(0.5, 0.5, 0.53);
 constexpr double kCameraAzimuthDeg = 35.0;  // StageView's default
 constexpr double kLightDistance = 4.0;  // from the model's centre; the fitted model's longest side is 2
-constexpr double kMargin = 1.1;         // the frame's half-size over the framed points'
+constexpr double kMargin = 1.2;         // the frame's half-size over the framed points'
 // Behind the floor's horizon, where a low camera sees past it: a studio's pale grey.
 const glm::dvec3 kStageBackground(0.8, 0.8, 0.82);
 // How far from the model's centre a shadow is framed: a point little below
@@ -204,7 +204,6 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
     mesh_statement = "mesh \"" + written_name + "\" fit";
     if (turn.degrees != 0) mesh_statement += " rotate " + vec(turn.axis) + " " + num(turn.degrees);
     if (staging.plain_model) mesh_statement += " plain";
-    if (!staging.flat) mesh_statement += " smooth " + num(staging.crease_deg);
     if (!nameable) mesh_statement += "  # a scene cannot name this file (a double quote or a line break in its name): rename it";
     MeshStatement statement;
     statement.mesh.path = file_name;
@@ -213,6 +212,7 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
     statement.mesh.rotation_deg = turn.degrees;
     statement.mesh.plain = staging.plain_model;
     if (!staging.flat) statement.mesh.smooth_deg = staging.crease_deg;
+    if (!staging.crease_given && staging.frame_pixels > 0) statement.mesh.smooth_triangle_limit = staging.frame_pixels;
     statement.mesh.where = {name, mesh_line, 1};
     statement.path_at = {name, mesh_line, 6};
     Scene loaded;
@@ -229,21 +229,30 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
       if (message.rfind(about_the_file, 0) == 0) message.erase(0, about_the_file.size() + (message[about_the_file.size()] == ':' ? 2 : 1));
       throw InputError({path}, message);
     }
-    if (loaded.meshes.at(0).triangles.empty()) throw InputError({path}, "has no faces: there is nothing to show");
+    const Mesh& m = loaded.meshes.at(0);
+    if (m.triangles.empty()) throw InputError({path}, "has no faces: there is nothing to show");
+    if (m.smooth_deg) {
+      const size_t comment = mesh_statement.find("  #");  // the statement's words come before its comment
+      mesh_statement.insert(comment == std::string::npos ? mesh_statement.size() : comment, " smooth " + num(*m.smooth_deg));
+    }
     return loaded;
   };
   std::string axis = !up.empty() ? up : format_up;
   Scene loaded = load(axis);
   // Where the format's convention plainly does not read, a better pose, said
-  // on the line after the mesh's; --up decides outright.
-  std::string pose_note;
+  // on the line after the mesh's, as is a mesh drawn flat for its fineness;
+  // --up decides outright.
+  std::string notes;
   if (up.empty())
     if (const auto better = better_pose(loaded.meshes[0], axis)) {
       axis = better->up;
       loaded = load(axis);
-      pose_note = "# up is " + axis + ", not " + format_up + " as its format has it: " + better->why + "\n";
+      notes = "# up is " + axis + ", not " + format_up + " as its format has it: " + better->why + "\n";
     }
   Mesh& mesh = loaded.meshes.at(0);
+  if (!staging.flat && !mesh.smooth_deg)
+    notes += "# shaded flat: " + std::to_string(mesh.triangles.size()) + " triangles for " + std::to_string(staging.frame_pixels) +
+             " pixels are finer than the picture and show no facets (--crease-angle smooths them all the same)\n";
   const std::string header = "# " + written_name + " on its own, as umbra stages a mesh file: fitted into the\n"
                              "# cube [-1,1]^3 with its " + axis + " axis up" + (up.empty() ? " (--up changes it)" : "") +
                              (staging.no_floor ? ", in the air,\n" : ", standing on a floor,\n") +
@@ -280,11 +289,11 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
   const Background background = staging.background.value_or(Background{kStageBackground, false});
   rest += background.transparent ? std::string("background transparent\n") : "background " + vec(background.color) + "\n";
   rest += "antialias " + std::to_string(kStagedAntialias) + "\n";
-  if (staged) *staged = header + mesh_statement + "\n" + pose_note + rest;
+  if (staged) *staged = header + mesh_statement + "\n" + notes + rest;
   // The rest of the stage from the same text, the mesh's line left blank
   // (its mesh is the one loaded above), so that lines number alike. Its
   // warnings (a floor beyond the cube) are about umbra's stage, not the file.
-  Scene scene = parse_scene_text(header + "\n" + pose_note + rest, name);
+  Scene scene = parse_scene_text(header + "\n" + notes + rest, name);
   scene.warnings.clear();
   // The file's own materials follow the stage's; the mesh's indices move with them.
   const int moved = int(scene.materials.size()) - 1;

@@ -102,8 +102,13 @@ struct StagingOptions {
   bool plain_model = false;  // that colour alone: not the file's materials, maps or vertex colours
   // Shaded smooth (the mesh statement's `smooth`) across edges whose faces
   // meet at no more than this, where the file gives no normals; or flat.
+  // Unless the crease angle is given, a mesh with as many triangles as the
+  // picture has pixels (`frame_pixels`; 0: unknown) is drawn flat: no facet
+  // of it shows.
   double crease_deg = 30.0;
+  bool crease_given = false;
   bool flat = false;
+  size_t frame_pixels = 0;
   // The background, for a mesh file's stage and a scene file alike (a
   // scene's own then gives way).
   std::optional<Background> background;

@@ -327,7 +327,10 @@ void add_staging_options(CommandOptions& options, StagingOptions& staging, std::
   add("--color", [&](const std::string& o, const std::string& t) { staging.model_color = parse_color(o, t); });
   options.flag("--plain", staging.plain_model);
   options.flag("--flat", staging.flat);
-  add("--crease-angle", [&](const std::string& o, const std::string& t) { staging.crease_deg = parse_degrees_in(o, t, 0.0, 180.0); });
+  add("--crease-angle", [&](const std::string& o, const std::string& t) {
+    staging.crease_deg = parse_degrees_in(o, t, 0.0, 180.0);
+    staging.crease_given = true;
+  });
   // Not a staging option only: a scene's own background gives way to it.
   options.value("--background", [&](const std::string& o, const std::string& t) {
     staging.background = t == "transparent" ? Background{glm::dvec3(0.0), true} : Background{parse_color(o, t), false};
@@ -341,6 +344,7 @@ void note_staging_flags(const StagingOptions& staging, std::vector<std::string>&
 
 StagingOptions staging_for(StagingOptions staging, const RenderSettings& settings) {
   staging.frame_aspect = double(settings.width) / settings.height;
+  staging.frame_pixels = size_t(settings.width) * size_t(settings.height);
   return staging;
 }
 

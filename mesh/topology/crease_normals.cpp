@@ -21,18 +21,21 @@ double corner_angle(const glm::dvec3& at, const glm::dvec3& next, const glm::dve
 std::vector<std::array<glm::vec3, 3>> crease_normals(const std::vector<glm::dvec3>& points,
                                                      const std::vector<std::array<uint32_t, 3>>& triangles, double crease_deg) {
   const size_t count = triangles.size();
-  std::vector<glm::dvec3> face(count, glm::dvec3(0.0));
-  std::vector<std::array<double, 3>> angle(count, {0.0, 0.0, 0.0});
+  // Each triangle's unit normal and its angles at its corners, worked out in
+  // double and kept in float: they are read round every point, and the
+  // halved memory is most of what this costs.
+  std::vector<glm::vec3> face(count, glm::vec3(0.0f));
+  std::vector<std::array<float, 3>> angle(count, {0.0f, 0.0f, 0.0f});
   tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 4096), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t t = r.begin(); t < r.end(); ++t) {
       const auto& [a, b, c] = triangles[t];
       const glm::dvec3 n = glm::cross(points[b] - points[a], points[c] - points[a]);
       const double length = glm::length(n);
       if (!(length > 0.0) || !std::isfinite(length)) continue;  // degenerate: no normal, no weight
-      face[t] = n / length;
+      face[t] = glm::vec3(n / length);
       for (int k = 0; k < 3; ++k)
-        angle[t][size_t(k)] = corner_angle(points[triangles[t][size_t(k)]], points[triangles[t][size_t((k + 1) % 3)]],
-                                           points[triangles[t][size_t((k + 2) % 3)]]);
+        angle[t][size_t(k)] = float(corner_angle(points[triangles[t][size_t(k)]], points[triangles[t][size_t((k + 1) % 3)]],
+                                           points[triangles[t][size_t((k + 2) % 3)]]));
     }
   });
   // The triangles round each point, as (triangle, corner) pairs in one array.
@@ -46,22 +49,39 @@ std::vector<std::array<glm::vec3, 3>> crease_normals(const std::vector<glm::dvec
     for (uint32_t k = 0; k < 3; ++k) round[filled[triangles[t][k]]++] = 3 * t + k;
 
   const double min_cos = std::cos(glm::radians(crease_deg));
+  // Within half the crease angle of the point's mean normal, every two
+  // faces are within the crease angle of each other: then every corner at
+  // the point takes that mean, and the point costs its faces once, not
+  // their square (the common case: a scan is smooth all over).
+  const double half_cos = std::cos(glm::radians(crease_deg / 2.0));
   std::vector<std::array<glm::vec3, 3>> normals(count);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 4096), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t t = r.begin(); t < r.end(); ++t) {
-      for (size_t k = 0; k < 3; ++k) {
-        if (face[t] == glm::dvec3(0.0)) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t v = r.begin(); v < r.end(); ++v) {
+      glm::dvec3 all(0.0);
+      for (uint32_t i = first[v]; i < first[v + 1]; ++i) all += double(angle[round[i] / 3][round[i] % 3]) * glm::dvec3(face[round[i] / 3]);
+      const double all_length = glm::length(all);
+      bool one_mean = all_length > 0.0;
+      for (uint32_t i = first[v]; i < first[v + 1] && one_mean; ++i) {
+        const glm::dvec3 f(face[round[i] / 3]);
+        one_mean = f == glm::dvec3(0.0) || glm::dot(f, all) >= half_cos * all_length;
+      }
+      for (uint32_t i = first[v]; i < first[v + 1]; ++i) {
+        const uint32_t t = round[i] / 3, k = round[i] % 3;
+        if (face[t] == glm::vec3(0.0f)) {
           normals[t][k] = glm::vec3(0.0f);
           continue;
         }
-        const uint32_t v = triangles[t][k];
+        if (one_mean) {
+          normals[t][k] = glm::vec3(all / all_length);
+          continue;
+        }
         glm::dvec3 sum(0.0);
-        for (uint32_t i = first[v]; i < first[v + 1]; ++i) {
-          const uint32_t u = round[i] / 3, j = round[i] % 3;
-          if (glm::dot(face[t], face[u]) >= min_cos) sum += angle[u][j] * face[u];
+        for (uint32_t j = first[v]; j < first[v + 1]; ++j) {
+          const uint32_t u = round[j] / 3;
+          if (glm::dot(glm::dvec3(face[t]), glm::dvec3(face[u])) >= min_cos) sum += double(angle[u][round[j] % 3]) * glm::dvec3(face[u]);
         }
         const double length = glm::length(sum);
-        normals[t][k] = glm::vec3(length > 0.0 ? sum / length : face[t]);
+        normals[t][k] = length > 0.0 ? glm::vec3(sum / length) : face[t];
       }
     }
   });

@@ -345,6 +345,28 @@ TEST(StagedMesh, AModelBuiltStandingOnAnotherAxisStandsOnIt) {
   EXPECT_EQ(pose_note(text), "");
 }
 
+// A staged mesh is shaded smooth, unless it has as many triangles as the
+// picture has pixels: then no facet of it shows, and it is drawn flat, said
+// in a comment, unless the crease angle is given.
+TEST(StagedMesh, AMeshFinerThanThePictureIsDrawnFlat) {
+  const std::string torus = write_torus_glb();  // 24 x 12 quads: 576 triangles
+  StagingOptions staging;
+  std::string text;
+  staging.frame_pixels = 577;
+  EXPECT_EQ(parse_scene_or_mesh_file(torus, {}, &text, staging).meshes[0].triangle_normals.size(), 576u);
+  EXPECT_NE(text.find(" smooth 30\n"), std::string::npos) << text;
+  staging.frame_pixels = 576;
+  const Scene flat = parse_scene_or_mesh_file(torus, {}, &text, staging);
+  EXPECT_TRUE(flat.meshes[0].triangle_normals.empty());
+  EXPECT_EQ(text.find(" smooth "), std::string::npos) << text;
+  EXPECT_NE(text.find("\n# shaded flat: 576 triangles for 576 pixels are finer than the picture and show no facets "
+                      "(--crease-angle smooths them all the same)\n"),
+            std::string::npos)
+      << text;
+  staging.crease_given = true;
+  EXPECT_EQ(parse_scene_or_mesh_file(torus, {}, &text, staging).meshes[0].triangle_normals.size(), 576u);
+}
+
 // Whether the camera sees the model (in at least 2% of a 60x60 frame) and the
 // light reaches nearly all of what it sees of it.
 bool seen_and_lit(const Scene& scene) {
@@ -379,6 +401,12 @@ TEST(StagedMesh, AFlatPartStandsAndShowsItsLitFace) {
   EXPECT_GT(turned.camera.eye.x, 0.5);
   EXPECT_GT(turned.lights[0].position.x, 0.5);
   EXPECT_TRUE(seen_and_lit(turned));
+  // Standing in a Y-up OBJ, its face toward +z at z = 0 (as glTF's texture
+  // transform sample is): it stays standing, though it lies "at 0" on z.
+  const PolygonSoup upright = test::make_soup({{0, -0.5, 0}, {2, -0.5, 0}, {2, 0.5, 0}, {0, 0.5, 0}}, {{0, 1, 2}, {0, 2, 3}});
+  const Scene kept = parse_scene_or_mesh_file(test::write_mesh("upright.obj", test::obj_text(upright)), {}, &text);
+  EXPECT_EQ(pose_note(text), "");
+  EXPECT_TRUE(seen_and_lit(kept));
   const std::string triangle = "/usr/share/assimp/models/STL/triangle.stl";
   if (!std::filesystem::exists(triangle)) GTEST_SKIP() << "needs Debian's assimp-testmodels (build.sh installs it)";
   const Scene real = parse_scene_or_mesh_file(triangle, {}, &text);
