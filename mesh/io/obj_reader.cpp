@@ -114,6 +114,7 @@ void read_material_library(const std::string& path, int line, PolygonSoup& soup,
   TextScanner scanner(file.bytes(), path);
   SoupMaterial* current = nullptr;
   const size_t first_material = soup.materials.size();
+  std::set<std::string> matte;  // materials whose illumination model (illum 0 or 1) has no highlight
   bool noted_maps = false;
   // A statement that cannot be read (a decimal comma, say) is passed over:
   // colours are no reason to refuse a mesh, but the warning says so.
@@ -137,6 +138,8 @@ void read_material_library(const std::string& path, int line, PolygonSoup& soup,
         (keyword == "Kd" ? current->diffuse : current->specular) = glm::clamp(rgb, 0.0, 1.0);
       } else if (current && keyword == "Ns") {
         current->shininess = std::max(0.0, scanner.number("shininess"));
+      } else if (current && keyword == "illum") {
+        if (scanner.number("illumination model") < 2.0) matte.insert(current->name);
       } else if (keyword == "map_Kd" && !maps) {
         continue;
       } else if (current && keyword == "map_Kd") {
@@ -157,9 +160,10 @@ void read_material_library(const std::string& path, int line, PolygonSoup& soup,
   // Ns 0 is a matte surface, as exporters write it (3ds Max's, for one) and
   // Blender's importer reads it (roughness 1 - sqrt(Ns / 1000), fully
   // rough): no highlight, not Phong's cos^0, which would light the whole
-  // face with Ks.
+  // face with Ks. So are illumination models 0 and 1 (colour alone, and
+  // diffuse alone: Wavefront's MTL specification), whatever Ks says.
   for (size_t m = first_material; m < soup.materials.size(); ++m)
-    if (soup.materials[m].shininess == 0.0) soup.materials[m].specular = glm::dvec3(0.0);
+    if (soup.materials[m].shininess == 0.0 || matte.count(soup.materials[m].name)) soup.materials[m].specular = glm::dvec3(0.0);
   if (unread > 0)
     soup.warn(line, "material library \"" + path + "\": " +
                         (unread == 1 ? std::string("1 statement it could not read was") : std::to_string(unread) + " statements it could not read were") +

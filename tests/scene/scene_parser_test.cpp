@@ -328,12 +328,14 @@ TEST_F(SceneMeshes, ASmoothMeshWithoutNormalsHasItsCreases) {
 }
 
 // OBJ's Ns 0 is a matte surface, as exporters write it: no highlight, not
-// Phong's cos^0 that would light the whole face with Ks.
+// Phong's cos^0 that would light the whole face with Ks; so is illum 1.
 TEST_F(SceneMeshes, AnObjMaterialOfShininessZeroIsMatte) {
-  write("box.mtl", "newmtl matte\nKd 0.2 0.2 0.2\nKs 0.9 0.9 0.9\nNs 0\nnewmtl shiny\nKd 0.2 0.2 0.2\nKs 0.9 0.9 0.9\nNs 40\n");
-  write("box.obj", "mtllib box.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl matte\nf 1 2 3\nusemtl shiny\nf 1 3 2\n");
+  write("box.mtl", "newmtl matte\nKd 0.2 0.2 0.2\nKs 0.9 0.9 0.9\nNs 0\nnewmtl shiny\nKd 0.2 0.2 0.2\nKs 0.9 0.9 0.9\nNs 40\n"
+                   "newmtl diffuse\nKs 0.9 0.9 0.9\nNs 40\nillum 1\n");
+  write("box.obj", "mtllib box.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nusemtl matte\nf 1 2 3\nusemtl shiny\nf 1 3 2\nusemtl diffuse\nf 2 4 3\n");
   const Scene scene = parse("light 0 0 5\nmesh box.obj\n");
-  ASSERT_EQ(scene.materials.size(), 3u);
+  ASSERT_EQ(scene.materials.size(), 4u);
+  EXPECT_EQ(scene.materials[3].specular, glm::dvec3(0.0));  // illum 1: diffuse alone
   EXPECT_EQ(scene.materials[1].name, "box.obj:matte");
   EXPECT_EQ(scene.materials[1].specular, glm::dvec3(0.0));
   EXPECT_EQ(scene.materials[2].specular, glm::dvec3(0.9));
