@@ -5,6 +5,7 @@
 #include <limits>
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <tbb/task_group.h>
 
 #include "mesh/check/components.hpp"
@@ -63,6 +64,8 @@ void decide_facing(const std::vector<glm::dvec3>& positions, const FaceTriangles
                                                                comps.size(), shells, tangled, &flipped);
   for (size_t i = 0; i < comps.size(); ++i) {
     if (!shells[i]) continue;
+    comps[i].volume = shell_facing.volume[i];
+    report.volume = report.volume.value_or(0.0) + shell_facing.volume[i];
     const Facing facing = shell_facing.facing[i];
     const bool turned = facing == Facing::kWrong;  // the renderer turns it round
     comps[i].hides_back_faces = !crosses_itself[i] && (shell_facing.volume[i] > 0.0) != turned;
@@ -226,6 +229,8 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   }
   report.components = labels.reports;
   report.triangles = triangles.triangles.size();
+  for (const auto& [a, b, c] : triangles.triangles)
+    report.area += 0.5 * glm::length(glm::cross(merged.positions[b] - merged.positions[a], merged.positions[c] - merged.positions[a]));
   std::vector<uint32_t> component_of_triangle(triangles.triangles.size());
   for (size_t t = 0; t < triangles.triangles.size(); ++t) component_of_triangle[t] = labels.of_face[triangles.face[t]];
   summarise_components(labels, report);

@@ -47,6 +47,10 @@ struct ComponentReport {
   // solid it bounds? Outward for a shell round solid; into the cavity for a
   // hollow solid's inner shell, whose volume is then negative.
   std::optional<bool> outward;
+  // Closed and orientable: the volume its triangles enclose once their faces
+  // agree, negative where they face into it (an inverted solid, or the inner
+  // shell of a hollow one).
+  std::optional<double> volume;
   // Closed and orientable, crossing none of its own faces, and enclosing
   // positive volume once turned as the renderer turns it (only where
   // `outward` is false): from outside its box its back faces are hidden
@@ -103,6 +107,10 @@ struct MeshReport {
   int64_t euler_characteristic = 0;
   SelfIntersectionReport self_intersections;
   glm::dvec3 bbox_min{0.0}, bbox_max{0.0};
+  double area = 0.0;  // of the triangles
+  // The sum of the closed, orientable components' volumes (a hollow solid's
+  // cavity takes its own away); none when no component is closed.
+  std::optional<double> volume;
   std::vector<ComponentReport> components;
   std::vector<ReadWarning> warnings;  // the reader's, for quirks it read past
 

@@ -166,7 +166,9 @@ TEST_F(CheckCommand, RepairTurnsAnInwardMeshOutward) {
   const CommandResult r = run("check " + input + " --repair " + path("out.stl"));
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("  turned 1 closed component outward\n"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("component 0        4 faces, closed, chi 2, genus 0, outward; silhouette volume\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("component 0        4 faces, closed, chi 2, genus 0, outward, encloses 0.166667; silhouette volume\n"),
+            std::string::npos)
+      << r.out;
 }
 
 TEST_F(CheckCommand, RepairKeepsAHollowSolidsCavityFacingTheCavity) {
@@ -182,10 +184,10 @@ TEST_F(CheckCommand, RepairKeepsASmallBoxFarFromTheOriginOutward) {
   // the origin, its volume's terms (about 1e27 each) cancel to noise.
   PolygonSoup box = test::box_quads({9e8, 1.1e9, 7e8}, {9e8 + 1.5, 1.1e9 + 0.5, 7e8 + 1.0});
   const std::string input = write("far.obj", obj_text(box));
-  ASSERT_NE(run("check " + input).out.find("genus 0, outward; silhouette volume\n"), std::string::npos);
+  ASSERT_NE(run("check " + input).out.find("genus 0, outward, encloses 0.75; silhouette volume\n"), std::string::npos);
   const CommandResult r = run("check " + input + " --repair " + path("out.obj"));
   EXPECT_EQ(r.status, 0) << r.out << r.err;
-  EXPECT_NE(r.out.find("closed, chi 2, genus 0, outward; silhouette volume\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("closed, chi 2, genus 0, outward, encloses 0.75; silhouette volume\n"), std::string::npos) << r.out;
   EXPECT_NEAR(test::signed_volume(read_polygon_soup(path("out.obj")), {9e8, 1.1e9, 7e8}), 0.75, 1e-9);
 }
 
