@@ -114,9 +114,12 @@ options:
                         materials, texture maps or vertex colours
   --flat                shade every face flat (default: smooth, in the file's
                         normals, else across edges whose faces meet at no
-                        more than --crease-angle)
+                        more than --crease-angle; flat for a mesh with as
+                        many triangles as the picture has pixels, whose
+                        facets do not show)
   --crease-angle DEG    where the file gives no normals, faces that meet at
-                        more than DEG degrees keep a sharp edge (default 30)
+                        more than DEG degrees keep a sharp edge (default 30);
+                        given, a mesh of any size is shaded smooth
 
   --jobs N              with several files: draw N at a time, each in its own
                         GL context, using at most N threads in all (default:
