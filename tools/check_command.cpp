@@ -57,6 +57,10 @@ options:
   --brief           one line per mesh on stdout, its path, what it holds and
                     its verdict (an unreadable one, its path and why), for
                     grep and sort
+  --solid           the exit status says whether every mesh is a solid, as a
+                    printer needs one (closed, manifold, oriented alike,
+                    facing outward, crossing no face of its own), not a
+                    closed 2-manifold: the report's "solid" line says why not
   --jobs N          check N meshes at a time, using at most N threads in all
                     (default: the number of cores)
   --                end of options: every argument after it is a PATH
@@ -77,8 +81,8 @@ options:
                     the rest go on
   -h, --help        show this help
 
-exit status: 0 every mesh is a closed 2-manifold; 1 one is not (after the
-repair, with --repair); 2 one could not be read (every other mesh is still
+exit status: 0 every mesh is a closed 2-manifold (a solid, with --solid); 1
+one is not (after the repair, with --repair); 2 one could not be read (every other mesh is still
 reported), the repaired mesh could not be written, or a usage error.
 )");
 
@@ -88,6 +92,7 @@ struct CheckCommandOptions {
   std::vector<std::string> meshes;  // as given: files and folders
   bool json = false;
   bool brief = false;
+  bool solid = false;  // the exit status gates on is_solid, not is_closed_manifold
   size_t jobs = std::max(1u, std::thread::hardware_concurrency());
   std::optional<Shard> shard;
   std::optional<std::string> repair_output;
@@ -102,6 +107,7 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
   add_help_option(options, o.help);
   options.flag("--json", o.json);
   options.flag("--brief", o.brief);
+  options.flag("--solid", o.solid);
   options.value("--repair", [&](const std::string&, const std::string& t) { o.repair_output = t; });
   options.value("--jobs", [&](const std::string& n, const std::string& t) { o.jobs = size_t(parse_int_in(n, t, 1, 4096)); });
   options.value("--shard", [&](const std::string& n, const std::string& t) { o.shard = parse_shard(n, t); });
@@ -159,7 +165,7 @@ CheckOutcome check_one(const std::string& path, const CheckCommandOptions& optio
     const MeshReport report = check_mesh(read_polygon_soup(path, TextureMaps::skip()), options.check);
     std::ostringstream out;
     print_report(report, options, out);
-    return {out.str(), "", report.is_closed_manifold() ? 0 : 1};
+    return {out.str(), "", (options.solid ? report.is_solid() : report.is_closed_manifold()) ? 0 : 1};
   } catch (const InputError& e) {
     return unchecked(path, e.what(), options);
   } catch (const std::bad_alloc&) {
@@ -203,7 +209,7 @@ int repair_one(const std::string& path, const std::string& output, const CheckCo
       if (summary.changes.empty()) std::cout << "  nothing to change\n";
       after.print_text(std::cout);
     }
-    return after.is_closed_manifold() ? 0 : 1;
+    return (options.solid ? after.is_solid() : after.is_closed_manifold()) ? 0 : 1;
   } catch (const InputError& e) {
     std::cerr << e.what() << "\n";
     return 2;

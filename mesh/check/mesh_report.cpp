@@ -107,6 +107,22 @@ std::vector<std::string> MeshReport::problems() const {
   return out;
 }
 
+std::vector<std::string> MeshReport::solid_problems() const {
+  std::vector<std::string> out;
+  if (components.empty()) return {"no faces"};
+  if (border_edges > 0) out.push_back("open (" + plural(border_loops, "hole", "holes") + ")");
+  if (non_manifold_edges > 0 || non_manifold_vertices > 0)
+    out.push_back("non-manifold (" + plural(non_manifold_edges, "edge", "edges") + ", " + plural(non_manifold_vertices, "vertex", "vertices") + ")");
+  if (non_orientable_components > 0) out.push_back("non-orientable");
+  else if (inconsistent_edges > 0) out.push_back("faces disagree (" + plural(faces_to_flip, "face", "faces") + " to flip)");
+  if (inward_components > 0) out.push_back("inside out (" + plural(inward_components, "closed component faces", "closed components face") + " inward)");
+  if (undecided_components > 0) out.push_back("which way " + plural(undecided_components, "closed component faces", "closed components face") + " is undecided");
+  if (!self_intersections.checked || !self_intersections.complete) out.push_back("self-intersections not searched in full");
+  else if (self_intersections.face_pairs > 0)
+    out.push_back("self-intersecting (" + plural(self_intersections.face_pairs, "face pair", "face pairs") + ")");
+  return out;
+}
+
 std::string MeshReport::verdict() const {
   if (triangles == 0) return "no faces: nothing to check, and nothing to cast a shadow";
   const std::vector<std::string> why = problems();
@@ -227,6 +243,10 @@ void MeshReport::print_text(std::ostream& out) const {
     out << "; " << (c.casts_from_silhouette() ? "silhouette" : "edge-multiplicity") << " volume\n";
   }
   if (components.size() > kListed) out << "  ... and " << components.size() - kListed << " more components\n";
+  const std::vector<std::string> not_solid = solid_problems();
+  std::string solid = not_solid.empty() ? "yes" : "no: ";
+  for (size_t i = 0; i < not_solid.size(); ++i) solid += (i ? ", " : "") + not_solid[i];
+  out << "  solid              " << solid << "\n";
   out << "  verdict            " << verdict() << "\n";
 }
 
@@ -313,6 +333,16 @@ void MeshReport::print_json(std::ostream& out) const {
         {"faces_to_flip", refs("face", examples.faces_to_flip)},
         {"self_intersections", pairs("face", examples.self_intersections)}}},
       {"closed_manifold", is_closed_manifold()},
+      // The flags of printing and of mesh corpora (Zhou and Jacobson,
+      // "Thingi10K: A Dataset of 10,000 3D-Printing Models", 2016).
+      {"closed", !components.empty() && border_edges == 0},
+      {"edge_manifold", non_manifold_edges == 0},
+      {"vertex_manifold", non_manifold_vertices == 0},
+      {"oriented", non_orientable_components == 0 && inconsistent_edges == 0},
+      {"self_intersecting", self_intersections.checked && self_intersections.complete ? Json(self_intersections.face_pairs > 0)
+                                                                                      : Json(nullptr)},
+      {"solid", is_solid()},
+      {"solid_problems", solid_problems()},
       {"shadow_method", volume_kind_name(volume_kind())},
       {"problems", problems()},
       {"verdict", verdict()}};

@@ -147,6 +147,12 @@ struct MeshReport {
   std::string loading_changes() const;
   // "closed 2-manifold: ..." or "not a closed 2-manifold (...): ..."
   std::string verdict() const;
+  // Why it is not a solid, as a printer or a simulation needs one: faces,
+  // closed, manifold at every edge and vertex, consistently oriented, every
+  // closed component facing outward, and no face crossing another (a
+  // complete search). One plain phrase per reason; empty for a solid.
+  std::vector<std::string> solid_problems() const;
+  bool is_solid() const { return solid_problems().empty(); }
 
   void print_text(std::ostream& out) const;
   void print_json(std::ostream& out) const;  // one line, keys documented in docs/check.md

@@ -96,6 +96,29 @@ TEST(MeshCheck, VolumeEqualsAdmeshsOnItsExampleBlock) {
   EXPECT_NEAR(*r.volume / admesh_volume, 1.0, 1e-6);
 }
 
+// A solid, as a printer needs one, and why each of these is not: a clean
+// tetrahedron is; turned inside out it is a closed 2-manifold but not a
+// solid; an open box, two boxes sharing an edge, a prism whose walls cross,
+// and a mesh with no faces each fail for their own reason.
+TEST(MeshCheck, ASolidIsClosedManifoldOrientedOutwardAndUncrossed) {
+  EXPECT_TRUE(check_mesh(tetrahedron()).is_solid());
+  const MeshReport inward = check_mesh(all_reversed(tetrahedron()));
+  EXPECT_TRUE(inward.is_closed_manifold());
+  EXPECT_EQ(inward.solid_problems(), std::vector<std::string>{"inside out (1 closed component faces inward)"});
+  EXPECT_EQ(check_mesh(without_faces(unit_cube(), {0, 1})).solid_problems(), std::vector<std::string>{"open (1 hole)"});
+  // Walls that cross: which way it faces is undecided, and its face pairs cross.
+  const MeshReport bow_tie = check_mesh(bow_tie_prism());
+  EXPECT_EQ(bow_tie.solid_problems(),
+            (std::vector<std::string>{"which way 1 closed component faces is undecided",
+                                      "self-intersecting (" + std::to_string(bow_tie.self_intersections.face_pairs) + " face pairs)"}));
+  EXPECT_EQ(check_mesh(make_soup({{0, 0, 0}}, {})).solid_problems(), std::vector<std::string>{"no faces"});
+  CheckOptions unsearched;
+  unsearched.self_intersection_seconds = 0.0;
+  // Unsearched, nothing shows it uncrossed, nor so which way it faces.
+  EXPECT_EQ(check_mesh(tetrahedron(), unsearched).solid_problems(),
+            (std::vector<std::string>{"which way 1 closed component faces is undecided", "self-intersections not searched in full"}));
+}
+
 TEST(MeshCheck, CubeOfTrianglesAndCubeOfQuadsHaveTheSameTopology) {
   const MeshReport triangles = check_mesh(unit_cube());
   const MeshReport quads = check_mesh(box_quads(glm::dvec3(0.0), glm::dvec3(1.0)));

@@ -54,6 +54,23 @@ TEST_F(CheckCommand, UnreadableMeshExitsTwoWithItsLocatedError) {
 
 // --brief: one line per mesh, its path first, so that grep keeps which
 // file each verdict is about; an unreadable mesh has its line too.
+// --solid gates the exit status on a printer's solid: an inward tetrahedron
+// is a closed 2-manifold (exit 0) but no solid (exit 1, and the report says
+// why); the JSON carries the corpus flags.
+TEST_F(CheckCommand, SolidGatesTheExitStatusOnAPrintersSolid) {
+  const std::string inward = write("inward.obj", obj_text(test::all_reversed(test::tetrahedron())));
+  EXPECT_EQ(run("check " + inward).status, 0);
+  const CommandResult r = run("check --solid " + inward);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.out.find("\n  solid              no: inside out (1 closed component faces inward)\n"), std::string::npos) << r.out;
+  const std::string clean = write("clean.obj", obj_text(test::tetrahedron()));
+  EXPECT_EQ(run("check --solid " + clean).status, 0);
+  const CommandResult json = run("check --json " + inward);
+  for (const char* flag : {"\"closed\":true", "\"edge_manifold\":true", "\"vertex_manifold\":true", "\"oriented\":true",
+                           "\"self_intersecting\":false", "\"solid\":false", "\"solid_problems\":[\"inside out (1 closed component faces inward)\"]"})
+    EXPECT_NE(json.out.find(flag), std::string::npos) << flag << "\n" << json.out;
+}
+
 TEST_F(CheckCommand, BriefIsOneLinePerMeshWithItsPathAndVerdict) {
   const std::string meshes = std::string(UMBRA_SOURCE_DIR) + "/scenes/meshes/";
   const std::string missing = path("missing.obj");
