@@ -2,7 +2,7 @@
 """Per picture that umbra render wrote with --mask: how much of the frame is
 in shadow (mask 0: faces turned from the light or in shadow), how much is
 pure black, and how much sees no surface (mask 128). Reads 8-bit RGB and grey
-PNGs, as umbra writes them, with the standard library alone.
+PNGs, as umbra writes them (png_pixels.py).
 
   png_stats.py IMAGE.png...   (each IMAGE.png beside its IMAGE.mask.png)
 prints "NAME SHADOW BLACK BACKGROUND CLIPPED SPREAD": the first four as
@@ -11,49 +11,14 @@ SPREAD, in grey levels, how far the pixels in shadow (mask 0) spread: from
 the 5th to the 95th percentile of their grey (the mean of the channels), 0
 when under 1% of the frame is in shadow.
 """
-import struct
 import sys
-import zlib
 
-
-def read_png(path):
-    data = open(path, "rb").read()
-    assert data[:8] == b"\x89PNG\r\n\x1a\n", path
-    pos, idat, width = 8, b"", 0
-    while pos < len(data):
-        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
-        body = data[pos + 8:pos + 8 + length]
-        if kind == b"IHDR":
-            width, height, depth, colour = struct.unpack(">IIBB", body[:10])
-            assert depth == 8 and colour in (0, 2), f"{path}: only 8-bit grey or RGB"
-            channels = 1 if colour == 0 else 3
-        elif kind == b"IDAT":
-            idat += body
-        pos += 12 + length
-    raw = zlib.decompress(idat)
-    stride = width * channels
-    rows, previous = [], bytearray(stride)
-    for y in range(height):
-        start = y * (stride + 1)
-        kind, line = raw[start], bytearray(raw[start + 1:start + 1 + stride])
-        for i in range(stride):
-            a = line[i - channels] if i >= channels else 0
-            b = previous[i]
-            c = previous[i - channels] if i >= channels else 0
-            if kind == 1: line[i] = (line[i] + a) & 255
-            elif kind == 2: line[i] = (line[i] + b) & 255
-            elif kind == 3: line[i] = (line[i] + (a + b) // 2) & 255
-            elif kind == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        rows.append(bytes(line))
-        previous = line
-    return width, height, channels, b"".join(rows)
+from png_pixels import read_png
 
 
 for image in sys.argv[1:]:
     w, h, ch, rgb = read_png(image)
+    assert ch == 3, f"{image}: umbra writes RGB pictures unless the background is transparent"
     _, _, _, mask = read_png(image[:-len(".png")] + ".mask.png")
     n = w * h
     black = sum(1 for i in range(n) if rgb[3 * i] == 0 and rgb[3 * i + 1] == 0 and rgb[3 * i + 2] == 0)

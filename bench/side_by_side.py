@@ -7,52 +7,22 @@ umbra's staged pictures next to another tool's of the same files.
 Each picture is shrunk by a whole factor to at most 240 pixels a side
 (nearest pixel) and laid on grey; a missing or unreadable one leaves its
 place grey. 8-bit grey, RGB or RGBA PNGs (alpha over white), with the
-standard library alone.
+standard library alone (png_pixels.py reads them).
 """
 import struct
 import sys
 import zlib
 
+from png_pixels import read_png
+
 CELL = 240
 
 
-def read_png(path):
-    data = open(path, "rb").read()
-    if data[:8] != b"\x89PNG\r\n\x1a\n":
-        raise ValueError("not a PNG")
-    pos, idat = 8, b""
-    while pos < len(data):
-        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
-        body = data[pos + 8:pos + 8 + length]
-        if kind == b"IHDR":
-            width, height, depth, colour, _, _, interlace = struct.unpack(">IIBBBBB", body[:13])
-            if depth != 8 or colour not in (0, 2, 6) or interlace:
-                raise ValueError("only 8-bit grey, RGB or RGBA, not interlaced")
-            channels = {0: 1, 2: 3, 6: 4}[colour]
-        elif kind == b"IDAT":
-            idat += body
-        pos += 12 + length
-    raw = zlib.decompress(idat)
-    stride = width * channels
-    rows, previous = [], bytearray(stride)
-    for y in range(height):
-        start = y * (stride + 1)
-        kind, line = raw[start], bytearray(raw[start + 1:start + 1 + stride])
-        for i in range(stride):
-            a = line[i - channels] if i >= channels else 0
-            b = previous[i]
-            c = previous[i - channels] if i >= channels else 0
-            if kind == 1: line[i] = (line[i] + a) & 255
-            elif kind == 2: line[i] = (line[i] + b) & 255
-            elif kind == 3: line[i] = (line[i] + (a + b) // 2) & 255
-            elif kind == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        rows.append(line)
-        previous = line
+def pixel_reader(path):
+    """(width, height, rgb(x, y)): alpha laid over white."""
+    width, height, channels, pixels = read_png(path)
     def rgb(x, y):
-        px = rows[y][x * channels:(x + 1) * channels]
+        px = pixels[(y * width + x) * channels:(y * width + x + 1) * channels]
         if channels == 1: return (px[0],) * 3
         if channels == 3: return tuple(px)
         alpha = px[3] / 255
@@ -76,7 +46,7 @@ width, height = 2 * PAIRS_A_ROW * (CELL + 4) + 4 * PAIRS_A_ROW, rows * (CELL + 6
 pixels = bytearray([128] * (width * height * 3))
 for k, path in enumerate(pictures):
     try:
-        w, h, rgb = read_png(path)
+        w, h, rgb = pixel_reader(path)
     except (OSError, ValueError, zlib.error):
         continue
     step = max(1, -(-max(w, h) // CELL))

@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
 #include <limits>
 #include <filesystem>
 #include <map>
@@ -352,20 +353,33 @@ class GltfReader {
     return xyz;
   }
 
+  // The primitive's attribute `name`, one per point: checked to exist, to be
+  // of one of `types` (`types_text` in the message) and to give `count` of
+  // them (`noun`); null when the primitive has none.
+  const tinygltf::Accessor* point_attribute(const tinygltf::Primitive& primitive, const char* name, std::initializer_list<int> types,
+                                           const char* types_text, size_t count, const char* noun, const std::string& what) const {
+    const auto found = primitive.attributes.find(name);
+    if (found == primitive.attributes.end()) return nullptr;
+    const std::string named = what + "'s " + name;
+    if (found->second < 0 || size_t(found->second) >= model_.accessors.size()) fail(named + " accessor does not exist");
+    const tinygltf::Accessor& accessor = model_.accessors[size_t(found->second)];
+    if (std::find(types.begin(), types.end(), accessor.type) == types.end()) fail(named + " must be " + types_text);
+    if (accessor.count != count)
+      fail(named + " has " + std::to_string(accessor.count) + " " + noun + " for " + std::to_string(count) + " vertices");
+    return &accessor;
+  }
+
   // The primitive's COLOR_0 (RGB, or RGBA read as RGB), one per point, into
   // soup_.point_colors from `first` on; floats or normalised unsigned bytes
   // or shorts, as glTF 2.0 allows. Points of primitives without colours are white.
   void add_colours(const tinygltf::Primitive& primitive, uint32_t first, size_t count, const std::string& what) {
-    const auto colour = primitive.attributes.find("COLOR_0");
-    if (colour == primitive.attributes.end()) {
+    const tinygltf::Accessor* const found =
+        point_attribute(primitive, "COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, "VEC3 or VEC4", count, "colours", what);
+    if (!found) {
       if (!soup_.point_colors.empty()) soup_.point_colors.resize(soup_.points.size(), glm::vec3(1.0f));
       return;
     }
-    if (colour->second < 0 || size_t(colour->second) >= model_.accessors.size()) fail(what + "'s COLOR_0 accessor does not exist");
-    const tinygltf::Accessor& accessor = model_.accessors[size_t(colour->second)];
-    if (accessor.type != TINYGLTF_TYPE_VEC3 && accessor.type != TINYGLTF_TYPE_VEC4) fail(what + "'s COLOR_0 must be VEC3 or VEC4");
-    if (accessor.count != count) fail(what + "'s COLOR_0 has " + std::to_string(accessor.count) + " colours for " +
-                                      std::to_string(count) + " vertices");
+    const tinygltf::Accessor& accessor = *found;
     const Elements rgbs = elements(accessor, what + "'s COLOR_0");
     soup_.point_colors.resize(first, glm::vec3(1.0f));
     for (size_t i = 0; i < rgbs.count; ++i) {
@@ -389,16 +403,12 @@ class GltfReader {
   void add_normals(const tinygltf::Primitive& primitive, uint32_t first, size_t count, const glm::dmat4& world,
                    const std::string& what) {
     point_normals_.resize(first, glm::vec3(0.0f));
-    const auto normal = primitive.attributes.find("NORMAL");
-    if (normal == primitive.attributes.end()) {
+    const tinygltf::Accessor* const found = point_attribute(primitive, "NORMAL", {TINYGLTF_TYPE_VEC3}, "VEC3", count, "normals", what);
+    if (!found) {
       point_normals_.resize(first + count, glm::vec3(0.0f));
       return;
     }
-    if (normal->second < 0 || size_t(normal->second) >= model_.accessors.size()) fail(what + "'s NORMAL accessor does not exist");
-    const tinygltf::Accessor& accessor = model_.accessors[size_t(normal->second)];
-    if (accessor.type != TINYGLTF_TYPE_VEC3) fail(what + "'s NORMAL must be VEC3");
-    if (accessor.count != count) fail(what + "'s NORMAL has " + std::to_string(accessor.count) + " normals for " +
-                                      std::to_string(count) + " vertices");
+    const tinygltf::Accessor& accessor = *found;
     const Elements normals = elements(accessor, what + "'s NORMAL");
     const glm::dmat3 turn = glm::transpose(glm::inverse(glm::dmat3(world)));
     for (size_t i = 0; i < normals.count; ++i) {
@@ -413,16 +423,13 @@ class GltfReader {
   // Points of primitives without it take (0, 0).
   void add_texture_coordinates(const tinygltf::Primitive& primitive, uint32_t first, size_t count, const std::string& what) {
     point_uvs_.resize(first, glm::vec2(0.0f));
-    const auto uv = primitive.attributes.find("TEXCOORD_0");
-    if (uv == primitive.attributes.end()) {
+    const tinygltf::Accessor* const found =
+        point_attribute(primitive, "TEXCOORD_0", {TINYGLTF_TYPE_VEC2}, "VEC2", count, "coordinates", what);
+    if (!found) {
       point_uvs_.resize(first + count, glm::vec2(0.0f));
       return;
     }
-    if (uv->second < 0 || size_t(uv->second) >= model_.accessors.size()) fail(what + "'s TEXCOORD_0 accessor does not exist");
-    const tinygltf::Accessor& accessor = model_.accessors[size_t(uv->second)];
-    if (accessor.type != TINYGLTF_TYPE_VEC2) fail(what + "'s TEXCOORD_0 must be VEC2");
-    if (accessor.count != count) fail(what + "'s TEXCOORD_0 has " + std::to_string(accessor.count) + " coordinates for " +
-                                      std::to_string(count) + " vertices");
+    const tinygltf::Accessor& accessor = *found;
     const Elements uvs = elements(accessor, what + "'s TEXCOORD_0");
     for (size_t i = 0; i < uvs.count; ++i) {
       glm::vec2 st;
