@@ -13,9 +13,7 @@ runs=${1:-3}
 build=build
 data=$build/bench-data
 . bench/timing.sh
-require_engine
-require_built $build make_subdivided_mesh
-subdivided_bunny "$data" 1M
+require_engine_and_bunny $build
 subdivided_bunny "$data" 4M
 $build/umbra --version | grep '^memory: malloc takes transparent huge pages' >/dev/null ||
   { echo "bench: umbra does not restart with huge pages here: $($build/umbra --version | grep '^memory')" >&2; exit 2; }

@@ -16,9 +16,7 @@ runs=${1:-5}
 build=build
 data=$build/bench-data
 . bench/timing.sh
-require_engine
-require_built $build make_subdivided_mesh
-subdivided_bunny "$data" 1M
+require_engine_and_bunny $build
 
 compared_builds $build
 rows=()

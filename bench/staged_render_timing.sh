@@ -14,9 +14,7 @@ runs=${1:-15}
 build=build
 data=$build/bench-data
 . bench/timing.sh
-require_engine
-require_built $build make_subdivided_mesh
-subdivided_bunny "$data" 1M
+require_engine_and_bunny $build
 [ -x "${BEFORE:-}" ] || { echo "bench: BEFORE must name an earlier build's umbra" >&2; exit 2; }
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT

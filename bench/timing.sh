@@ -75,3 +75,11 @@ subdivided_bunny() {
   build/bench/make_subdivided_mesh "$data/data/meshes/bunny00.off" "$data/bunny-$size.stl" "$data/bunny-$size.obj" \
     "$data/bunny-$size.glb" "$level"
 }
+
+# require_engine_and_bunny BUILD: `engine` set (require_engine), BUILD's
+# bench tools there, and BUILD/bench-data/bunny-1M.* made unless there
+require_engine_and_bunny() {
+  require_engine
+  require_built "$1" make_subdivided_mesh
+  subdivided_bunny "$1/bench-data" 1M
+}

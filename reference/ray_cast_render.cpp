@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "image/edge_pixels.hpp"
 #include "image/pixel_mean.hpp"
 #include "scene/camera_transform.hpp"
 #include "scene/terminator.hpp"
@@ -144,46 +145,93 @@ glm::dvec4 shade(const Scene& scene, const RayCaster& caster, const glm::dvec3& 
   return m.shadow_catcher ? glm::dvec4(caught, 0.0, -1.0) : glm::dvec4(colour, 1.0);
 }
 
-}  // namespace
+// Samples of one view of a scene: an eye ray's colour and coverage, and a
+// pixel's mean over a grid of them, as the GL's frame puts its samples.
+class FrameSampler {
+ public:
+  FrameSampler(const Scene& scene, const RayCaster& caster, int width, int height)
+      : scene_(scene), caster_(caster), rays_(scene.camera, width, height), terminators_(terminators_of(scene)),
+        nothing_(background_sample(scene.background.color, scene.background.transparent)) {
+    for (const Light& light : scene.lights) ambient_sum_ += light.ambient;
+  }
 
-RayCastFrame ray_cast_frame(const Scene& scene, int width, int height, int samples) {
-  const Background& background = scene.background;
-  RayCastFrame frame{Image(width, height, background.transparent ? 4 : 3),
-                     std::vector<Image>(scene.lights.size(), Image(width, height, 1, kMaskNoSurface))};
-  const glm::dvec4 nothing = background_sample(background.color, background.transparent);
-  glm::dvec3 ambient_sum(0.0);
-  for (const Light& light : scene.lights) ambient_sum += light.ambient;
-  const RayCaster caster(scene);
-  const Terminators terminators = terminators_of(scene);
+  // The pixel (x, y)'s samples x samples points at the centres of its
+  // sub-pixels, as the GL's frame drawn that many times larger puts them,
+  // averaged; with `masks`, each light's mask at the pixel's centre too.
+  glm::dvec4 pixel_mean(int x, int y, int samples, std::vector<Image>* masks) const {
+    const glm::dvec4 centre = masks || samples % 2 ? sample(x + 0.5, y + 0.5, masks, x, y) : glm::dvec4(0.0);
+    glm::dvec4 sum = samples % 2 ? centre : glm::dvec4(0.0);  // an odd grid's middle sample is the centre
+    for (int j = 0; j < samples; ++j)
+      for (int i = 0; i < samples; ++i)
+        if (samples % 2 == 0 || i != samples / 2 || j != samples / 2)
+          sum += sample(x + (i + 0.5) / samples, y + (j + 0.5) / samples, nullptr, x, y);
+    return sum / double(samples * samples);
+  }
+
+ private:
   // A sample at (px, py) in pixels (the pixel's centre at x + 1/2): its
   // colour and coverage, the background where it sees nothing, as the GL
   // clears its frame (pixel_mean.hpp).
-  const auto sample = [&](double px, double py, std::vector<Image>* masks, int x, int y) {
-    const auto hit = caster.nearest_hit(scene.camera.eye, pixel_ray_direction(scene.camera, width, height, px - 0.5, py - 0.5));
-    return hit ? resolved_sample(shade(scene, caster, ambient_sum, terminators, *hit, masks, x, y), background.color, background.transparent)
-               : nothing;
+  glm::dvec4 sample(double px, double py, std::vector<Image>* masks, int x, int y) const {
+    const auto hit = caster_.nearest_hit(scene_.camera.eye, rays_.direction(px - 0.5, py - 0.5));
+    return hit ? resolved_sample(shade(scene_, caster_, ambient_sum_, terminators_, *hit, masks, x, y), scene_.background.color,
+                                 scene_.background.transparent)
+               : nothing_;
+  }
+
+  const Scene& scene_;
+  const RayCaster& caster_;
+  PixelRays rays_;
+  glm::dvec3 ambient_sum_{0.0};
+  Terminators terminators_;
+  glm::dvec4 nothing_;
+};
+
+// Calls job(k) for k in [0, count), shared among the machine's cores.
+template <typename Job>
+void on_every_core(size_t count, const Job& job) {
+  const size_t threads = std::max(1u, std::thread::hardware_concurrency());
+  const auto share = [&](size_t first) {
+    for (size_t k = first; k < count; k += threads) job(k);
   };
-  const auto rows = [&](int first, int step) {
-    for (int y = first; y < height; y += step)
-      for (int x = 0; x < width; ++x) {
-        // The masks from the pixel's centre; the image from samples x
-        // samples points at the centres of its sub-pixels, as the GL's
-        // frame drawn that many times larger puts them, averaged.
-        const glm::dvec4 centre = sample(x + 0.5, y + 0.5, &frame.masks, x, y);
-        glm::dvec4 sum = samples % 2 ? centre : glm::dvec4(0.0);  // an odd grid's middle sample is the centre
-        for (int j = 0; j < samples; ++j)
-          for (int i = 0; i < samples; ++i)
-            if (samples % 2 == 0 || i != samples / 2 || j != samples / 2)
-              sum += sample(x + (i + 0.5) / samples, y + (j + 0.5) / samples, nullptr, x, y);
-        put_pixel_mean(frame.image, x, y, sum / double(samples * samples), background.color, scene.tone);
-      }
-  };
-  const int threads = int(std::max(1u, std::thread::hardware_concurrency()));
   std::vector<std::thread> workers;
-  for (int t = 1; t < threads; ++t) workers.emplace_back(rows, t, threads);
-  rows(0, threads);
+  for (size_t t = 1; t < threads; ++t) workers.emplace_back(share, t);
+  share(0);
   for (std::thread& w : workers) w.join();
+}
+
+}  // namespace
+
+RayCastFrame ray_cast_frame(const Scene& scene, int width, int height, int samples, AntialiasedPixels where) {
+  RayCastFrame frame{Image(width, height, scene.background.transparent ? 4 : 3),
+                     std::vector<Image>(scene.lights.size(), Image(width, height, 1, kMaskNoSurface))};
+  const RayCaster caster(scene);
+  const FrameSampler sampler(scene, caster, width, height);
+  const int first_samples = where == AntialiasedPixels::kAll ? samples : 1;
+  on_every_core(size_t(height), [&](size_t row) {
+    const int y = int(row);
+    for (int x = 0; x < width; ++x)
+      put_pixel_mean(frame.image, x, y, sampler.pixel_mean(x, y, first_samples, &frame.masks), scene.background.color, scene.tone);
+  });
+  if (first_samples != samples) ray_cast_edge_pixels(scene, caster, frame.image, samples);
   return frame;
+}
+
+size_t ray_cast_edge_pixels(const Scene& scene, const RayCaster& caster, Image& image, int samples) {
+  const std::vector<uint8_t> edge = edge_pixels(image);
+  std::vector<size_t> redrawn;
+  for (size_t k = 0; k < edge.size(); ++k)
+    if (edge[k]) redrawn.push_back(k);
+  const FrameSampler sampler(scene, caster, image.width, image.height);
+  // Each worker takes a run of pixels, so that neighbours share its cache.
+  constexpr size_t kRun = 64;
+  on_every_core((redrawn.size() + kRun - 1) / kRun, [&](size_t run) {
+    for (size_t k = run * kRun; k < std::min(redrawn.size(), (run + 1) * kRun); ++k) {
+      const int x = int(redrawn[k] % size_t(image.width)), y = int(redrawn[k] / size_t(image.width));
+      put_pixel_mean(image, x, y, sampler.pixel_mean(x, y, samples, nullptr), scene.background.color, scene.tone);
+    }
+  });
+  return redrawn.size();
 }
 
 }  // namespace umbra

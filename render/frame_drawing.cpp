@@ -91,7 +91,8 @@ FrameDrawing::FrameDrawing(const Scene& scene, const RenderPlan& plan, DrawSendi
 
 FrameDrawing::~FrameDrawing() = default;
 
-void FrameDrawing::apply_view() {
+void FrameDrawing::apply_view(int samples) {
+  samples_per_side_ = samples;
   const RenderSettings& s = plan_.settings;
   const glm::dmat4 view_projection =
       infinite_perspective(plan_.camera.fovy_deg, double(s.width) / s.height, plan_.near_plane) *

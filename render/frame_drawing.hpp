@@ -43,11 +43,11 @@ class FrameDrawing {
 
   // The plan's camera and image size, read every frame (a viewer moves the
   // camera and resizes the window), with the frame target bound at that size
-  // times the samples per side.
-  void apply_view();
-  // Samples per pixel along each side that apply_view draws with: the
-  // settings' supersampling for an image, 1 for a mask.
-  void set_samples_per_side(int samples) { samples_per_side_ = samples; }
+  // times `samples` per side: the settings' frame_samples for an image, 1
+  // for a mask.
+  void apply_view(int samples);
+  // The samples per side the last apply_view drew with (for a shadow map,
+  // which draws elsewhere and comes back, and for reading the frame).
   int samples_per_side() const { return samples_per_side_; }
   // Where apply_view draws: the frame, kept in floating point.
   const FrameTarget& target() const { return target_; }

@@ -27,6 +27,11 @@ enum class ShadowPass {
   kRayCast,
 };
 
+// How a method counts its shadow volumes, per light: not at all (its pass
+// is not kCountedVolumes), z-pass or z-fail by whether the near plane may be
+// in shadow (auto), or always one of the two.
+enum class VolumeCounting { kNone, kPerLight, kZPass, kZFail };
+
 // How umbra bench sweeps a method: at each sphere N (--segments), at each N
 // but only in scenes with meshes, at each shadow map size (--map-sizes), or
 // once, as the reference every other method is measured against.
@@ -39,6 +44,17 @@ ShadowPass method_pass(RenderMethod method);
 const char* method_technique(RenderMethod method);
 // It counts shadow volumes (z-pass or z-fail): its pass is kCountedVolumes.
 bool counts_volumes(RenderMethod method);
+VolumeCounting method_counting(RenderMethod method);
+// It leaves out the casters whose volumes cannot reach the view (auto).
+bool culls_casters(RenderMethod method);
+// It casts every mesh per triangle, not from its silhouette or by edge
+// multiplicity (the slow reference).
+bool casts_per_triangle(RenderMethod method);
+// Whether its shadows are the ray-cast reference's in every view (exact
+// shadow volumes, and the reference itself; not z-pass, wrong where the eye
+// is in a volume, nor the shadow map or planar projection): only then may a
+// picture's edge pixels be drawn again from exact rays (AntialiasedPixels).
+bool draws_exact_shadows(RenderMethod method);
 // Whether a shadow catcher keeps the method's shadows: all but planar, which
 // marks shadows in the stencil, so that no shadowed fragment reaches the
 // shader to be counted.

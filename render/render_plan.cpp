@@ -66,7 +66,7 @@ CasterEntry mesh_entry(const Scene& scene, size_t index, const MeshCaster& caste
   MeshVolumePlan& volume = light_plan.mesh_volumes[slot];
   volume.mesh = index;
   e.mesh_volume = int(slot++);
-  mesh_caster_volume_indices(caster, light.position, scratch, volume.volume, !light_plan.z_pass);
+  mesh_caster_volume_indices(caster, light.position, scratch, volume.volume, light_plan.capped());
   e.volume_phrase = caster.phrase() + " (" + triangles + ")";
   return e;
 }
@@ -75,7 +75,7 @@ CasterEntry mesh_entry(const Scene& scene, size_t index, const MeshCaster& caste
 // draw call (the meshes' volumes are drawn from their own buffers).
 void gather_volumes(LightPlan& lp) {
   for (const CasterEntry& e : lp.casters)
-    if (e.mesh_volume < 0) append_volume(lp.all_volumes, e.volume, !lp.z_pass);
+    if (e.mesh_volume < 0) append_volume(lp.all_volumes, e.volume, lp.capped());
 }
 
 CasterEntry culled_entry(const char* kind, const FileLoc& where) {
@@ -93,9 +93,10 @@ struct LightCulling {
 LightCulling cull_for_light(const Scene& scene, const RenderPlan& plan, const NearRectangle& near, const glm::dvec3& light) {
   LightCulling c;
   const RenderMethod method = plan.settings.method;
-  const bool cull = method == RenderMethod::kAuto;
+  const bool cull = culls_casters(method);
   // Only auto's choice and forced z-pass's warning need the near plane.
-  const bool test_near_plane = method == RenderMethod::kAuto || method == RenderMethod::kZPass;
+  const VolumeCounting counting = method_counting(method);
+  const bool test_near_plane = counting == VolumeCounting::kPerLight || counting == VolumeCounting::kZPass;
   // `near_test` decides more closely than the ball where a caster can (a triangle's plane).
   const auto visit = [&](const BoundingSphere& ball, const FileLoc& where, std::vector<uint8_t>& out, const auto& near_test) {
     const bool left_out = cull && !volume_may_reach_view(plan.camera, near, light, ball);
@@ -129,18 +130,19 @@ void choose_count(RenderMethod method, const LightCulling& c, LightPlan& lp) {
   const std::string near_plane_hit =
       c.shadows_near_plane ? "the caster at line " + std::to_string(c.shadows_near_plane->line) + " may shadow the near plane"
                            : "the near plane is outside every volume";
-  switch (method) {
-    case RenderMethod::kZPass:
-      lp.z_pass = true;
-      lp.count_reason = "z-pass without caps (--method zpass)";
+  switch (method_counting(method)) {
+    case VolumeCounting::kZPass:
+      lp.count = DepthCount::kWhereDepthPasses;
+      lp.count_reason = std::string("z-pass without caps (--method ") + method_name(method) + ")";
       if (c.shadows_near_plane) lp.count_reason += "; may be wrong here: " + near_plane_hit;
       return;
-    case RenderMethod::kAuto:
-      lp.z_pass = !c.shadows_near_plane;
-      lp.count_reason = lp.z_pass ? "z-pass without caps: " + near_plane_hit : "z-fail with caps: " + near_plane_hit;
+    case VolumeCounting::kPerLight:
+      lp.count = c.shadows_near_plane ? DepthCount::kWhereDepthFails : DepthCount::kWhereDepthPasses;
+      lp.count_reason = lp.capped() ? "z-fail with caps: " + near_plane_hit : "z-pass without caps: " + near_plane_hit;
       return;
-    default:
-      lp.z_pass = false;
+    case VolumeCounting::kZFail:
+    case VolumeCounting::kNone:  // not reached: such a method's pass counts nothing
+      lp.count = DepthCount::kWhereDepthFails;
       lp.count_reason = std::string("z-fail with caps (--method ") + method_name(method) + ")";
   }
 }
@@ -158,7 +160,7 @@ void plan_planar_light(const Scene& scene, const std::vector<ReceiverPlane>& rec
                        LightPlan& lp) {
   clear_volumes(lp);
   lp.mesh_volumes.clear();
-  lp.z_pass = false;
+  lp.count = DepthCount::kWhereDepthFails;  // nothing is counted: the volumes' defaults
   lp.culled_casters = 0;
   std::string lines;
   int planes = 0;
@@ -264,8 +266,8 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
   }
   MeshCasterScratch& scratch = plan.mesh_scratch;
   // The same for every light.
-  const std::vector<ReceiverPlane> receivers =
-      plan.settings.method == RenderMethod::kPlanar ? receiver_planes(scene) : std::vector<ReceiverPlane>{};
+  const ShadowPass pass = method_pass(plan.settings.method);
+  const std::vector<ReceiverPlane> receivers = pass == ShadowPass::kPlanar ? receiver_planes(scene) : std::vector<ReceiverPlane>{};
   const NearRectangle near = near_rectangle(plan.camera, double(plan.settings.width) / plan.settings.height, plan.near_plane);
   // What the volumes must be exact in: every surface and the near plane.
   SceneBounds region = surface_bounds(scene);
@@ -278,16 +280,16 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
     lp.made_for = inputs;
     lp.casters.clear();
     lp.planar = {};
-    if (plan.settings.method == RenderMethod::kShadowMap) {  // no volumes at all
+    if (pass == ShadowPass::kShadowMap) {  // no volumes at all
       clear_volumes(lp);
       lp.mesh_volumes.clear();
-      lp.z_pass = false;
+      lp.count = DepthCount::kWhereDepthFails;  // nothing is counted: the volumes' defaults
       lp.culled_casters = 0;
       lp.count_reason = "no volume count: a cube shadow map of 6 x " + std::to_string(plan.settings.shadow_map_size) + "^2 " +
                         "distances (Williams 1978), biased by two texels";
       continue;
     }
-    if (plan.settings.method == RenderMethod::kPlanar) {
+    if (pass == ShadowPass::kPlanar) {
       plan_planar_light(scene, receivers, plan.settings.sphere_segments, light, lp);
       continue;
     }
@@ -295,7 +297,7 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
     lp.culled_casters = culling.culled;
     choose_count(plan.settings.method, culling, lp);
     lp.volume_reach = volume_reach(light.position, kept_casters_box(scene, culling), region);
-    const bool per_triangle = plan.settings.method == RenderMethod::kTriangles;
+    const bool per_triangle = casts_per_triangle(plan.settings.method);
     size_t slot = 0;
     for (size_t k = 0; k < scene.spheres.size(); ++k) {
       const Sphere& s = scene.spheres[k];
@@ -319,7 +321,7 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
     lp.dark_cap_triangles = lp.all_volumes.dark_cap_triangles;
     for (const MeshVolumePlan& m : lp.mesh_volumes) {
       lp.side_quads += m.volume.side_quads;
-      if (lp.z_pass) continue;
+      if (!lp.capped()) continue;
       lp.light_cap_triangles += m.volume.light_cap_triangles;
       lp.dark_cap_triangles += m.volume.dark_cap_triangles;
     }
@@ -327,11 +329,13 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
 }
 
 std::string image_phrase(const RenderSettings& settings) {
-  const int n = settings.supersampling;
+  const int n = settings.antialias;
+  const std::string grid = std::to_string(n) + " x " + std::to_string(n);
   return std::to_string(settings.width) + "x" + std::to_string(settings.height) + ", " +
-         (n == 1 ? std::string("one sample per pixel, at its centre")
-                 : std::to_string(n) + " x " + std::to_string(n) + " samples per pixel, averaged") +
-         " (--antialias)";
+         (n == 1 ? "one sample per pixel, at its centre (--antialias)"
+          : settings.antialiased == AntialiasedPixels::kAll
+              ? grid + " samples per pixel, averaged (--antialias)"
+              : "one sample per pixel, and " + grid + " exact rays averaged at each that differs from a neighbour (--antialias)");
 }
 
 void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& plan) {
@@ -352,7 +356,7 @@ void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& 
         << " side quads, " << lp.light_cap_triangles << " light-cap and " << lp.dark_cap_triangles << " dark-cap triangles\n";
     if (!plan.light_adds_direct[i]) out << "    no colour: ambient only, so a frame draws neither its shadows nor its direct light\n";
     else out << "    shadows: " << lp.count_reason << "\n";
-    if (!lp.casters.empty() && plan.settings.method != RenderMethod::kShadowMap && plan.settings.method != RenderMethod::kPlanar)
+    if (!lp.casters.empty() && counts_volumes(plan.settings.method))
       out << "    volumes reach " << reach_phrase(lp.volume_reach) << "\n";
     if (lp.culled_casters > 0)
       out << "    " << lp.culled_casters << " of " << lp.casters.size() << " casters left out: their volumes cannot reach the view\n";
@@ -361,11 +365,11 @@ void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& 
       if (e.mesh_volume >= 0) {
         const MeshVolumeIndices& v = lp.mesh_volumes[size_t(e.mesh_volume)].volume;
         out << ", " << v.side_quads << " quads";
-        if (!lp.z_pass) out << " + " << v.light_cap_triangles + v.dark_cap_triangles << " cap triangles";
+        if (lp.capped()) out << " + " << v.light_cap_triangles + v.dark_cap_triangles << " cap triangles";
         out << " (static vertices, indices per frame)";
       } else if (!e.volume.triangles.empty()) {
         out << ", " << e.volume.side_quads << " quads";
-        if (!lp.z_pass) out << " + " << e.volume.light_cap_triangles + e.volume.dark_cap_triangles << " cap triangles";
+        if (lp.capped()) out << " + " << e.volume.light_cap_triangles + e.volume.dark_cap_triangles << " cap triangles";
       }
       out << "\n";
     }

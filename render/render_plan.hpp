@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "render/render_method.hpp"
+#include "render/render_settings.hpp"
 #include "scene/scene.hpp"
 
 #include "silhouette/mesh_caster.hpp"
@@ -19,25 +20,6 @@
 #include "silhouette/shadow_volume.hpp"
 
 namespace umbra {
-
-struct RenderSettings {
-  int width = 800;
-  int height = 800;
-  int sphere_segments = 64;  // N of the tangent circle's inscribed N-gon (docs/geometry.md)
-  RenderMethod method = RenderMethod::kAuto;  // the plan is for every method but kRaycast
-  int shadow_map_size = 1024;                 // texels along a cube face's side, for kShadowMap
-  // The image's samples per pixel along each side (supersampling): drawn
-  // at that many times the size and averaged, box-filtered, then rounded.
-  // Masks are always one sample, at the pixel's centre.
-  int supersampling = 1;
-
-  bool operator==(const RenderSettings& o) const {
-    return width == o.width && height == o.height && sphere_segments == o.sphere_segments && method == o.method &&
-           shadow_map_size == o.shadow_map_size && supersampling == o.supersampling;
-  }
-};
-// A setting added here must join operator==, or a plan made for the old value would be kept.
-static_assert(sizeof(RenderSettings) == 6 * sizeof(int), "compare the new member of RenderSettings in operator==");
 
 // What a light's plan is made from besides the scene's casters: a frame
 // whose inputs compare equal to the plan's (a paused viewer, or a light that
@@ -78,14 +60,21 @@ struct PlanarProjection {
   ShadowVolume casters;  // light caps only: every vertex finite
 };
 
+enum class DepthCount { kWhereDepthPasses, kWhereDepthFails };
+
 struct LightPlan {
   std::vector<CasterEntry> casters;
   ShadowVolume all_volumes;                  // every other caster's volume, one draw call
   std::vector<MeshVolumePlan> mesh_volumes;  // one draw call each
-  // z-pass counts where the depth test passes and needs no caps, but only
-  // where the near-plane rectangle is outside every volume; z-fail is right
-  // everywhere. The volumes above have caps only for z-fail.
-  bool z_pass = false;
+  // Where the light's volumes are counted: where the depth test passes
+  // (z-pass, Heidmann 1991), right only where the near-plane rectangle is
+  // outside every volume, or where it fails (z-fail, Everitt and Kilgard
+  // 2002), right everywhere.
+  DepthCount count = DepthCount::kWhereDepthFails;
+  // Whether the volumes above are closed by caps: z-fail counts them where
+  // a volume passes behind a surface, and needs them; z-pass never meets
+  // them in front of one, and goes without.
+  bool capped() const { return count == DepthCount::kWhereDepthFails; }
   std::string count_reason;  // why this light is counted as it is
   // The volumes run from each caster point P to L + volume_reach (P - L),
   // past every surface they can shadow (volume_reach.hpp); infinity: to

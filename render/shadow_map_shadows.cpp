@@ -31,7 +31,7 @@ void ShadowMapShadows::cast(size_t light) {
     drawing_.draw_surfaces(shaders::kDistance, light, shaders::kNoShadowTest);
   }
   map_->end();
-  drawing_.apply_view();
+  drawing_.apply_view(drawing_.samples_per_side());  // back to the frame
   map_->bind(shaders::kShadowMapUnit);
 }
 

@@ -24,8 +24,8 @@ ShadowTechnique& ShadowRenderer::technique() {
   return *technique_;
 }
 
-void ShadowRenderer::depth_and_ambient_pass() {
-  drawing_->apply_view();
+void ShadowRenderer::depth_and_ambient_pass(int samples) {
+  drawing_->apply_view(samples);
   baseline_state();
   // The background, alpha 0, where nothing is drawn; alpha 1 where a surface
   // is (the ambient pass writes it, the others add none): pixel_mean.hpp.
@@ -59,8 +59,7 @@ void ShadowRenderer::show_volumes_pass() {
 }
 
 void ShadowRenderer::draw(bool show_volumes) {
-  drawing_->set_samples_per_side(plan_.settings.supersampling);
-  depth_and_ambient_pass();
+  depth_and_ambient_pass(plan_.settings.frame_samples());
   for (size_t i = 0; i < plan_.lights.size(); ++i) {
     if (!plan_.light_adds_direct[i]) continue;  // adds nothing but its ambient term, already drawn
     technique().cast(i);
@@ -96,8 +95,7 @@ std::vector<float> ShadowRenderer::read_depth() const { return drawing_->target(
 void ShadowRenderer::finish() const { glFinish(); }
 
 Image ShadowRenderer::render_mask(size_t light) {
-  drawing_->set_samples_per_side(1);  // one sample, at the pixel's centre
-  depth_and_ambient_pass();
+  depth_and_ambient_pass(1);  // one sample, at the pixel's centre
   technique().cast(light);
   mask_passes(light);
   return read_mask();

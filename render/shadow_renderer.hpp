@@ -61,7 +61,7 @@ class ShadowRenderer {
 
  private:
   ShadowTechnique& technique();  // the plan's method's, made anew when the method changes
-  void depth_and_ambient_pass();
+  void depth_and_ambient_pass(int samples);  // per side
   void direct_light_pass(size_t light);
   void show_volumes_pass();
   void mask_passes(size_t light);

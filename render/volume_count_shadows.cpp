@@ -27,7 +27,7 @@ void VolumeCountShadows::cast(size_t light) {
   // z-pass counts the faces in front of the surface (the depth test passes
   // with GL_LESS: front faces +1, back faces -1); z-fail those behind it or
   // level with it (where GL_LESS would fail: back faces +1, front faces -1).
-  glDepthFunc(lp.z_pass ? GL_LESS : GL_GEQUAL);
+  glDepthFunc(lp.count == DepthCount::kWhereDepthPasses ? GL_LESS : GL_GEQUAL);
   // A triangle's light cap is the triangle itself: push volumes a few depth
   // units back so the cap reliably counts as behind its own surface, which
   // leaves the surface lit, whatever the rasteriser's rounding.
@@ -41,7 +41,7 @@ void VolumeCountShadows::cast(size_t light) {
   // offer NV_depth_clamp for the same purpose); what lies in front of the
   // near plane clamps to depth 0, in front of every surface, as it is.
   glEnable(GL_DEPTH_CLAMP);
-  drawing_.count_volumes(light, lp.z_pass ? 1.0f : -1.0f);
+  drawing_.count_volumes(light, lp.count == DepthCount::kWhereDepthPasses ? 1.0f : -1.0f);
   glDisable(GL_DEPTH_CLAMP);
   baseline_state();
   drawing_.target().bind_colour();

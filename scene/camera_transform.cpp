@@ -38,15 +38,22 @@ glm::dmat4 infinite_perspective(double fovy_deg, double aspect, double near) {
 }
 
 glm::dvec3 pixel_ray_direction(const Camera& camera, int width, int height, double px, double py) {
-  const double t = std::tan(glm::radians(camera.fovy_deg) / 2.0);
-  const double x = (2.0 * (px + 0.5) / width - 1.0) * t * double(width) / height;
-  const double y = (1.0 - 2.0 * (py + 0.5) / height) * t;
+  return PixelRays(camera, width, height).direction(px, py);
+}
+
+PixelRays::PixelRays(const Camera& camera, int width, int height)
+    : width_(width), height_(height), scale_(std::tan(glm::radians(camera.fovy_deg) / 2.0)) {
   // The rows of the view matrix's rotation are the camera's axes in world space.
   const glm::dmat4 view = view_matrix(camera);
-  const glm::dvec3 right{view[0][0], view[1][0], view[2][0]};
-  const glm::dvec3 up{view[0][1], view[1][1], view[2][1]};
-  const glm::dvec3 back{view[0][2], view[1][2], view[2][2]};
-  return glm::normalize(x * right + y * up - back);
+  right_ = {view[0][0], view[1][0], view[2][0]};
+  up_ = {view[0][1], view[1][1], view[2][1]};
+  back_ = {view[0][2], view[1][2], view[2][2]};
+}
+
+glm::dvec3 PixelRays::direction(double px, double py) const {
+  const double x = (2.0 * (px + 0.5) / width_ - 1.0) * scale_ * width_ / height_;
+  const double y = (1.0 - 2.0 * (py + 0.5) / height_) * scale_;
+  return glm::normalize(x * right_ + y * up_ - back_);
 }
 
 glm::dmat3 window_ray_directions(const glm::dmat4& view_projection, const glm::dvec3& eye, int width, int height) {

@@ -45,6 +45,18 @@ glm::dmat4 infinite_perspective(double fovy_deg, double aspect, double near);
 // image whose row 0 is the top row. Returns the unit direction; it starts at the eye.
 glm::dvec3 pixel_ray_direction(const Camera& camera, int width, int height, double px, double py);
 
+// The same for many rays of one view: the camera's axes and the lens's
+// scale worked out once (the ray caster's samples).
+class PixelRays {
+ public:
+  PixelRays(const Camera& camera, int width, int height);
+  glm::dvec3 direction(double px, double py) const;
+
+ private:
+  double width_, height_, scale_;  // scale_: tan(fovy / 2)
+  glm::dvec3 right_, up_, back_;
+};
+
 // The matrix M for which M (x, y, 1) is the direction (not unit) of the ray
 // from `eye` through the point (x, y) of a width x height viewport, in GL
 // window coordinates (pixel centres at half-integers, row 0 at the bottom),

@@ -40,11 +40,11 @@ MeshAdjacency edges_of(const HalfEdgeMesh& mesh, size_t faces, size_t points) {
 }
 
 // The faces and their planes, made once the half-edge structure is gone
-// (made beside it, they raised a 4.8M-triangle render's peak from 0.96 to
-// 1.13 GB): the faces are the structure's, in order (OpenMesh keeps the order faces are
-// added in; vertex v is positions[v]), their planes computed in that order
-// rather than by three jumps per face across the half-edge array, on every
-// core.
+// (made beside it, they raise a large mesh's peak: docs/performance.md, "A
+// closed mesh's half-edge structure, freed first"): the faces are the
+// structure's, in order (OpenMesh keeps the order faces are added in;
+// vertex v is positions[v]), their planes computed in that order rather
+// than by three jumps per face across the half-edge array, on every core.
 void add_faces(MeshAdjacency& adjacency, const SharedPositions& positions, std::vector<std::array<uint32_t, 3>> faces) {
   adjacency.positions = positions;
   adjacency.triangles = std::move(faces);

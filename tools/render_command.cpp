@@ -26,6 +26,7 @@
 #include "render/render_plan.hpp"
 #include "render/shadow_renderer.hpp"
 #include "tools/command_line.hpp"
+#include "tools/edge_rays.hpp"
 #include "tools/freed_memory_reuse.hpp"
 #include "tools/huge_page_malloc.hpp"
 #include "tools/progress_bar.hpp"
@@ -75,10 +76,16 @@ options:
   --gl G                the headless OpenGL to draw with (default auto, or
                         the UMBRA_GL environment variable's):
 {gl platforms}
-  --antialias N         N x N samples per pixel, averaged (supersampling;
-                        1 to 4). Default 3 for a MESH on its own, 1 for a
-                        SCENE, whose pictures stay as they were; masks are
-                        one sample at each pixel's centre either way
+  --antialias N         N x N samples per pixel, averaged (1 to 4), where the
+                        picture has an edge: the GL draws one sample a pixel,
+                        and each pixel that differs from a neighbour is drawn
+                        again from N x N exact rays. Default 3 for a MESH on
+                        its own, 1 for a SCENE, whose pictures stay as they
+                        were; masks are one sample at each pixel's centre
+  --antialias-all       take the N x N samples at every pixel, the GL's frame
+                        drawn N times larger, as it always is for shadowmap,
+                        planar and zpass, --show-volumes, a scene with a
+                        sphere, or more triangles than the picture has pixels
   --show-volumes        draw the shadow volumes translucently over the image
   --mask MASK.png       also write light 1's shadow mask: 8-bit grey, 128 where
                         no surface is seen, 255 where the visible point faces
@@ -188,7 +195,8 @@ struct RenderOptions {
   RenderSettings settings;
   double light_angle_deg = 0.0;
   HeadlessGl gl = HeadlessGl::kAuto;
-  std::optional<int> antialias;  // unset: by what is rendered (staged_supersampling)
+  std::optional<int> antialias;  // unset: by what is rendered (default_antialias)
+  bool antialias_all = false;
   bool show_volumes = false;
   bool explain = false;
   std::optional<std::string> save_scene;  // for a mesh file: where to write the staged scene
@@ -214,6 +222,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   add_map_size_option(options, o.settings.shadow_map_size);
   add_gl_option(options, o.gl);
   options.value("--antialias", [&](const std::string& n, const std::string& t) { o.antialias = parse_int_in(n, t, 1, 4); });
+  options.flag("--antialias-all", o.antialias_all);
   options.flag("--show-volumes", o.show_volumes);
   options.flag("--explain", o.explain);
   options.value("--save-scene", [&](const std::string&, const std::string& t) { o.save_scene = t; });
@@ -259,7 +268,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     if (o.mask) throw UsageError("--mask writes one scene's mask; with several files there is none to choose");
     if (o.explain) throw UsageError("--explain prints one scene's plan; with several files, ask for one of them");
     if (o.save_scene) throw UsageError("--save-scene saves one mesh file's staged scene; with several files, ask for one of them");
-    o.batch = BatchRenderOptions{scenes, o.output, o.settings, o.staging, o.gl, o.antialias, o.show_volumes,
+    o.batch = BatchRenderOptions{scenes, o.output, o.settings, o.staging, o.gl, o.antialias, o.antialias_all, o.show_volumes,
                                  jobs.value_or(std::max(1u, std::thread::hardware_concurrency())), shard, sheet,
                                  o.any_texture_path, timeout_s, skip_existing, json};
   } else {
@@ -285,9 +294,11 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     }
   }
   if (o.mask && same_file(*o.mask, o.output)) throw UsageError("--mask and -o name the same file");
-  // A folder's files may differ in their default; each is checked as drawn.
-  if (!o.batch) require_drawable_size(o.settings.width, o.settings.height, o.antialias.value_or(default_supersampling(o.scene_path)));
-  else if (o.antialias) require_drawable_size(o.settings.width, o.settings.height, *o.antialias);
+  // A folder's files may differ in their default, and a file in its spheres
+  // and triangles (antialiased_pixels); each is checked again as drawn.
+  const std::optional<int> samples = !o.batch ? o.antialias.value_or(default_antialias(o.scene_path)) : o.antialias;
+  if (samples && antialiased_pixels(o.antialias_all, o.show_volumes, o.settings) == AntialiasedPixels::kAll)
+    require_drawable_size(o.settings.width, o.settings.height, *samples);
   if (!o.batch) require_staged(o.staging_given, o.scene_path);
   if (o.save_scene && !o.batch) {
     require_staged({"--save-scene"}, o.scene_path);
@@ -355,8 +366,8 @@ int run_render_command(const std::vector<std::string>& argv) {
       progress->update(0, "loading mesh " + std::to_string(loaded + 1) + " of " + std::to_string(total) + ": " + path);
     }, &staged, staging_for(options.staging, options.settings), TextureMaps{true, "", options.any_texture_path});
     progress->clear();
-    options.settings.supersampling = supersampling_for(options.antialias, scene);
-    require_drawable_size(options.settings.width, options.settings.height, options.settings.supersampling);
+    set_picture_samples(options.settings, options.antialias, options.antialias_all, options.show_volumes, scene);
+    require_drawable_size(options.settings.width, options.settings.height, options.settings.frame_samples());
     if (options.explain && !staged.empty())
       std::cout << "staged scene for " << options.scene_path << " (--save-scene FILE saves it to render or edit):\n"
                 << staged << "\n";
@@ -372,19 +383,22 @@ int run_render_command(const std::vector<std::string>& argv) {
         progress->clear(), std::cout << "render plan for " << scene.path << "\n  method: raycast, eye rays and an exact "
                   << "shadow ray per light (CPU, double precision)\n  image: " << image_phrase(options.settings)
                   << "\n  memory: " << malloc_pages_description(current_malloc_environment()) << "\n";
-      RayCastFrame frame = ray_cast_frame(scene, options.settings.width, options.settings.height, options.settings.supersampling);
+      RayCastFrame frame = ray_cast_frame(scene, options.settings.width, options.settings.height, options.settings.antialias,
+                                          options.settings.antialiased);
       image = std::move(frame.image);
       if (options.mask) mask = std::move(frame.masks[0]);
     } else {
       // The plan is made on the other cores while the GL context is set up
       // here; the surfaces' buffers only after it, since the casters' and
-      // the buffers' transients together raised a 4.8M-triangle render's
-      // peak from 1.52 to 1.83 GB. (The plan outlives the task making it.)
+      // the buffers' transients together raise a large mesh's peak
+      // (docs/performance.md, "Render memory"). (The plan outlives the
+      // task making it.)
       RenderPlan plan;
       tbb::task_group planning;
       planning.run([&] { plan = make_render_plan(scene, options.settings); });
       HeadlessContext context(options.settings.width, options.settings.height, options.gl);
       planning.wait();
+      EdgeRays edge_rays(scene, options.settings);  // its hierarchy built while the GL draws
       ShadowRenderer renderer(scene, plan);
       progress->update(2, "drawing");
       if (options.explain) {
@@ -397,6 +411,7 @@ int run_render_command(const std::vector<std::string>& argv) {
         std::tie(image, mask) = renderer.render_image_and_mask(options.show_volumes, 0);
       else
         image = renderer.render_image(options.show_volumes);
+      edge_rays.antialias(image);
     }
 
     progress.reset();
@@ -417,6 +432,9 @@ int run_render_command(const std::vector<std::string>& argv) {
     if (options.save_scene) said << ", and saved its scene to " << *options.save_scene;
     said << "\n";
     return 0;
+  } catch (const UsageError& e) {  // an option that the file's content rules out (require_drawable_size)
+    std::cerr << "umbra render: " << e.what() << "\n(see umbra render --help)\n";
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << e.what() << "\n";
     return 1;

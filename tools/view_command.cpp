@@ -179,7 +179,7 @@ std::vector<std::string> status_lines(const std::string& path, const RenderPlan&
   const int segments = plan.settings.sphere_segments;
   const RenderMethod method = plan.settings.method;
   std::snprintf(line, sizeof line, "method %s (light 1 %s)   frame time %.1f ms", method_name(method),
-                !counts_volumes(method) ? method_technique(method) : light.z_pass ? "z-pass" : "z-fail", frame_ms);
+                !counts_volumes(method) ? method_technique(method) : light.count == DepthCount::kWhereDepthPasses ? "z-pass" : "z-fail", frame_ms);
   lines.push_back(line);
   std::snprintf(line, sizeof line, "light 1 at %.1f deg, %s%.3g deg/s   sphere N = %d", std::fmod(angle, 360.0),
                 paused ? "paused, " : "", speed, segments);

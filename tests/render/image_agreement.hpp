@@ -29,7 +29,7 @@ inline RenderedImages render_gl_and_ray_cast(const Scene& scene, int size, Rende
   RenderSettings settings;
   settings.method = method;
   settings.width = settings.height = size;
-  settings.supersampling = supersampling;
+  settings.antialias = supersampling;
   const RenderPlan plan = make_render_plan(scene, settings);
   HeadlessContext context(settings.width, settings.height);
   ShadowRenderer renderer(scene, plan);

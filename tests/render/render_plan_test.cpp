@@ -85,11 +85,11 @@ TEST(RenderPlan, AFrameThatChangesNothingForALightKeepsItsPlanAndAnyChangeRemake
 TEST(RenderPlan, AutoDecidesByATrianglesPlaneWhetherItsVolumeCanReachTheNearPlane) {
   const std::string light_and_floor = "light 0 0 3\ntriangle -1000 -1000 -1  1000 -1000 -1  1000 1000 -1\n";
   const RenderPlan floor = make_render_plan(parse_scene_text(light_and_floor, "floor.scene"), RenderSettings{});
-  EXPECT_TRUE(floor.lights[0].z_pass) << floor.lights[0].count_reason;
+  EXPECT_EQ(floor.lights[0].count, DepthCount::kWhereDepthPasses) << floor.lights[0].count_reason;
   const RenderPlan ceiling =
       make_render_plan(parse_scene_text(light_and_floor + "triangle -1000 -1000 3.2  1000 -1000 3.2  1000 1000 3.2\n", "ceiling.scene"),
                        RenderSettings{});
-  EXPECT_FALSE(ceiling.lights[0].z_pass);
+  EXPECT_EQ(ceiling.lights[0].count, DepthCount::kWhereDepthFails);
   EXPECT_EQ(ceiling.lights[0].count_reason, "z-fail with caps: the caster at line 3 may shadow the near plane");
 }
 

@@ -80,7 +80,7 @@ TEST_P(BundledScene, ZPassAndZFailAgreeWhereverAutoChoosesZPass) {
     HeadlessContext context(settings.width, settings.height);
     ShadowRenderer pass_renderer(scene, zpass), fail_renderer(scene, zfail);
     for (size_t light = 0; light < scene.lights.size(); ++light) {
-      if (!automatic.lights[light].z_pass) continue;
+      if (automatic.lights[light].count != DepthCount::kWhereDepthPasses) continue;
       const Image a = pass_renderer.render_mask(light), b = fail_renderer.render_mask(light);
       int differing = 0;
       for (size_t i = 0; i < a.pixels.size(); ++i) differing += a.pixels[i] != b.pixels[i];
@@ -102,7 +102,7 @@ TEST_P(BundledScene, MaskAfterTheImageIsTheMaskDrawnAlone) {
       settings.width = 96;
       settings.height = 72;
       settings.method = method;
-      settings.supersampling = samples;
+      settings.antialias = samples;
       const RenderPlan plan = make_render_plan(scene, settings);
       HeadlessContext context(settings.width, settings.height);
       ShadowRenderer after_image(scene, plan), alone(scene, plan);
@@ -247,7 +247,7 @@ TEST(Auto, ChoosesZFailWhereTheEyeIsInAVolumeAndZPassWouldBeWrong) {
   RenderSettings settings;
   settings.width = settings.height = 120;
   const RenderPlan automatic = make_render_plan(scene, settings);
-  EXPECT_FALSE(automatic.lights[0].z_pass);
+  EXPECT_EQ(automatic.lights[0].count, DepthCount::kWhereDepthFails);
   EXPECT_EQ(automatic.lights[0].count_reason, "z-fail with caps: the caster at line 9 may shadow the near plane");
   // Forced z-pass is wrong here: the test above would fail with it.
   settings.method = RenderMethod::kZPass;
@@ -272,7 +272,7 @@ TEST(Auto, LeavesOutCastersWhoseVolumesCannotReachTheView) {
   const RenderPlan automatic = make_render_plan(scene, settings);
   ASSERT_EQ(automatic.lights[0].casters.size(), 3u);
   EXPECT_EQ(automatic.lights[0].culled_casters, 0) << "the sphere at z = 6 shadows the eye's side of the scene";
-  EXPECT_FALSE(automatic.lights[0].z_pass) << "the sphere at z = 6 puts the eye in its shadow";
+  EXPECT_EQ(automatic.lights[0].count, DepthCount::kWhereDepthFails) << "the sphere at z = 6 puts the eye in its shadow";
   // Light moved below the floor: the sphere at z = 6 casts upwards, away.
   Scene below = scene;
   below.lights[0].position = {0.0, 0.0, 3.0};

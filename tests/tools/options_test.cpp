@@ -87,9 +87,17 @@ TEST_F(Options, AntialiasingIsOnForAStagedMeshAndOffForASceneUnlessAsked) {
     const size_t at = r.out.find("  image: ");
     return at == std::string::npos ? r.out : r.out.substr(at, r.out.find('\n', at) - at);
   };
-  EXPECT_EQ(image_line(mesh), "  image: 40x40, 3 x 3 samples per pixel, averaged (--antialias)");
+  EXPECT_EQ(image_line(mesh), "  image: 40x40, one sample per pixel, and 3 x 3 exact rays averaged at each that differs from a "
+                              "neighbour (--antialias)");
+  EXPECT_EQ(image_line(mesh + " --antialias-all"), "  image: 40x40, 3 x 3 samples per pixel, averaged (--antialias)");
+  EXPECT_EQ(image_line(mesh + " --method shadowmap"), "  image: 40x40, 3 x 3 samples per pixel, averaged (--antialias)");
+  // More triangles (the torus's 576 and the floor's 2) than pixels: the larger frame costs less than the rays.
+  const CommandResult small = run("render " + mesh + " -o " + path("a.png") + " --size 20x20 --explain");
+  EXPECT_NE(small.out.find("  image: 20x20, 3 x 3 samples per pixel, averaged (--antialias)\n"), std::string::npos) << small.out;
   EXPECT_EQ(image_line(scene), "  image: 40x40, one sample per pixel, at its centre (--antialias)");
   EXPECT_EQ(image_line(scene + " --antialias 2"), "  image: 40x40, 2 x 2 samples per pixel, averaged (--antialias)");
+  EXPECT_EQ(image_line(mesh + " --method raycast"), "  image: 40x40, one sample per pixel, and 3 x 3 exact rays averaged at "
+                                                    "each that differs from a neighbour (--antialias)");
   EXPECT_EQ(image_line(mesh + " --antialias=1 --method raycast"), "  image: 40x40, one sample per pixel, at its centre (--antialias)");
   EXPECT_EQ(run("render " + scene + " -o x.png --antialias 5").err,
             "umbra render: --antialias expects a whole number from 1 to 4, got \"5\"\n(see umbra render --help)\n");

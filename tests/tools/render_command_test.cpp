@@ -385,7 +385,7 @@ TEST_F(RenderCommand, UsageErrorsExitWithTwo) {
 }
 
 // A frame past the GL's limit once supersampled is refused before any work,
-// naming the supersampled size; a mesh on its own is drawn at 3 x 3 unless told.
+// naming the supersampled size (a scene's spheres take samples at every pixel).
 TEST_F(RenderCommand, AFrameTooLargeOnceSupersampledIsAUsageError) {
   const std::string demo = std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene";
   CommandResult r = run("render " + demo + " -o " + path("x.png") + " --size 5000x5000 --antialias 4");
@@ -393,10 +393,13 @@ TEST_F(RenderCommand, AFrameTooLargeOnceSupersampledIsAUsageError) {
   EXPECT_EQ(r.err, "umbra render: --size 5000x5000 at 4 x 4 samples (--antialias 4) is a frame of 20000x20000, more than the "
                    "16384 along a side umbra draws: make --size or --antialias smaller\n(see umbra render --help)\n");
   const std::string tet = write("t.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
-  r = run("render " + tet + " -o " + path("x.png") + " --size 6000x100");
+  r = run("render " + tet + " -o " + path("x.png") + " --size 6000x100 --antialias-all");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("is a frame of 18000x300, more than the 16384"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(path("x.png")));
+  // At edges alone, the GL's frame is the picture's size, and the rays need no frame.
+  r = run("render " + tet + " -o " + path("x.png") + " --size 6000x100");
+  EXPECT_EQ(r.status, 0) << r.err;
 }
 
 TEST_F(RenderCommand, HelpListsEveryOption) {

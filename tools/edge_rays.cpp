@@ -1,0 +1,21 @@
+#include "tools/edge_rays.hpp"
+
+#include "reference/ray_cast_render.hpp"
+#include "reference/ray_caster.hpp"
+
+namespace umbra {
+
+EdgeRays::EdgeRays(const Scene& scene, const RenderSettings& settings) : scene_(scene) {
+  if (settings.antialias == settings.frame_samples()) return;  // the GL's frame takes them all
+  samples_ = settings.antialias;
+  building_.run([this] { caster_ = std::make_unique<RayCaster>(scene_); });
+}
+
+EdgeRays::~EdgeRays() { building_.wait(); }
+
+void EdgeRays::antialias(Image& image) {
+  building_.wait();  // rethrows what the build threw
+  if (caster_) ray_cast_edge_pixels(scene_, *caster_, image, samples_);
+}
+
+}  // namespace umbra
