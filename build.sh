@@ -26,6 +26,7 @@ packages=(
   libimgui-dev                       # umbra view's overlay (Dear ImGui)
   libstb-dev                         # texture maps (stb_image), the contact sheet's label font (stb_easy_font)
   libcgal-dev libgmp-dev libmpfr-dev # exact predicates, mesh checks and repair
+  libeigen3-dev                      # the repair's hole filling: CGAL's fairing solves with Eigen
   libopenmesh-dev                    # half-edge meshes for silhouettes
   libembree-dev                      # the ray-cast reference's hierarchy (Embree 3)
   libtbb-dev                         # the self-intersection search on every core
@@ -43,6 +44,7 @@ test_packages=(
   libbenchmark-dev                   # bench/silhouette_benchmark (Google Benchmark)
   libcgal-demo                       # CGAL's data meshes, for the tests
   assimp-testmodels                  # exporters' real files (glTF, 3MF, OBJ, PLY, STL), for the tests
+  occt-misc                          # Open CASCADE's CAD parts as STL (the repair fills their holes)
   gltfpack                           # the tests read its quantised glTF output
   admesh time bc                     # bench/check_benchmark.sh: the checker it compares with, timing
   clang libclang-rt-14-dev           # ./build.sh fuzz: libFuzzer

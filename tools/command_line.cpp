@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "image/picture_file.hpp"
+#include "mesh/check/mesh_repair.hpp"
 #include "mesh/io/mesh_format.hpp"
 #include "mesh/word_list.hpp"
 #include "render/headless_context.hpp"
@@ -103,6 +104,7 @@ std::string usage_text(std::string text) {
   replace_all(text, "{picture extensions}", picture_extensions());
   replace_all(text, "{mesh extensions}", mesh_format_extensions());
   replace_all(text, "{repair extensions}", mesh_format_extensions(true));
+  replace_all(text, "{max hole edges}", std::to_string(kDefaultMaxHoleEdges));
   return text;
 }
 

@@ -7,7 +7,6 @@
 #include <limits>
 #include <map>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -16,10 +15,11 @@
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include "mesh/check/hole_filling.hpp"
+#include "mesh/check/repair_mesh_type.hpp"
 #include "mesh/check/self_intersections.hpp"
 #include "mesh/check/solid_orientation.hpp"
 #include "mesh/input_error.hpp"
@@ -29,9 +29,8 @@ namespace umbra {
 namespace {
 
 namespace PMP = CGAL::Polygon_mesh_processing;
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using Mesh = CGAL::Surface_mesh<Point>;
+using repair::Point;
+using Mesh = repair::SurfaceMesh;
 using Polygon = std::vector<std::size_t>;
 
 std::string counted(size_t n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); }
@@ -100,6 +99,26 @@ size_t orient_closed_components_outward(Mesh& mesh) {
   return reversed;
 }
 
+// What fill_holes did, in a line each.
+void say_holes(const HoleFilling& holes, size_t max_edges, std::vector<std::string>& changes) {
+  if (holes.filled > 0)
+    changes.push_back("filled " + counted(holes.filled, "hole", "holes") + " with " +
+                      counted(holes.triangles_added, "triangle", "triangles") + ", refined and faired to the surface round them" +
+                      (holes.faired_roughly ? " (" + std::to_string(holes.faired_roughly) + " refined but not faired: the solver failed)" : ""));
+  if (!holes.too_large.empty()) {
+    const size_t largest = *std::max_element(holes.too_large.begin(), holes.too_large.end());
+    changes.push_back("left " + counted(holes.too_large.size(), "hole", "holes") + " of more than " + std::to_string(max_edges) +
+                      " edges open (the largest has " + std::to_string(largest) + "; --max-hole-edges " + std::to_string(largest) +
+                      " fills " + (holes.too_large.size() == 1 ? "it" : "them") + ")");
+  }
+  if (!holes.touching.empty())
+    changes.push_back("left " + counted(holes.touching.size(), "hole", "holes") +
+                      " open whose border passes twice through a point: a patch would meet itself there");
+  if (!holes.failed.empty())
+    changes.push_back("left " + counted(holes.failed.size(), "hole", "holes") +
+                      " open that no triangulation without a degenerate or crossing triangle fills");
+}
+
 }  // namespace
 
 bool repair_can_write(const std::string& path) {
@@ -107,7 +126,7 @@ bool repair_can_write(const std::string& path) {
   return format && format->repair_writes;
 }
 
-RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output, const std::string& write_to) {
+RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output, const std::string& write_to, size_t max_hole_edges) {
   RepairSummary summary;
   auto& changes = summary.changes;
   std::vector<Point> points;
@@ -156,6 +175,7 @@ RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output, co
     changes.push_back("collapsed degenerate triangles (" + counted(triangles_before - mesh.number_of_faces(), "triangle", "triangles") +
                       " fewer)");
   if (!all_removed) changes.push_back("could not remove every degenerate triangle");
+  say_holes(fill_holes(mesh, max_hole_edges), max_hole_edges, changes);
   if (const size_t n = orient_closed_components_outward(mesh))
     changes.push_back("turned " + counted(n, "closed component", "closed components") + " outward");
   if (mesh.number_of_faces() == 0) throw InputError({soup.path, 0, 0}, "nothing left after the repair: every face was degenerate");

@@ -1,6 +1,7 @@
 #pragma once
 // `umbra check --repair`: what CGAL's Polygon Mesh Processing can fix.
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -16,13 +17,20 @@ struct RepairSummary {
 // .off, .ply or .stl (any case), which CGAL writes; not glTF or 3MF.
 bool repair_can_write(const std::string& path);
 
+// Holes of more edges than this are left open unless --max-hole-edges says:
+// a hole that large is more often an opening the model means (a cup, a
+// scan's base) than a defect, and filling it costs time cubic in its edges.
+constexpr size_t kDefaultMaxHoleEdges = 200;
+
 // Merges repeated vertices, drops degenerate and duplicate faces and unused
 // vertices, splits non-manifold vertices, orients faces consistently, stitches
-// borders that coincide, triangulates, and turns every closed component
-// outward; writes the result to `write_to`, a file whose extension is
+// borders that coincide, triangulates, fills each hole of at most
+// `max_hole_edges` edges (hole_filling.hpp), and turns every closed
+// component outward; writes the result to `write_to`, a file whose extension is
 // `output`'s and chooses the format (the caller renames it to `output` once
 // whole). Throws InputError, located at `output`, when nothing usable is left
 // or the file cannot be written.
-RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output, const std::string& write_to);
+RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output, const std::string& write_to,
+                          size_t max_hole_edges = kDefaultMaxHoleEdges);
 
 }  // namespace umbra
