@@ -4,14 +4,55 @@
 #include <iterator>
 
 #include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/fair.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/refine.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 
 namespace umbra {
 
 namespace PMP = CGAL::Polygon_mesh_processing;
+using repair::Point;
 using repair::SurfaceMesh;
 
-HoleFilling fill_holes(SurfaceMesh& mesh, size_t max_edges) {
+namespace {
+
+// A border loop's points, in its order, cut where it comes back to a point
+// it passed: each piece between two visits is a lobe, a loop of its own.
+std::vector<std::vector<Point>> lobes_of(const std::vector<Point>& loop) {
+  std::vector<std::vector<Point>> lobes;
+  std::vector<Point> open;
+  for (const Point& p : loop) {
+    const auto again = std::find(open.begin(), open.end(), p);
+    if (again != open.end()) {
+      lobes.emplace_back(again, open.end());
+      open.erase(again + 1, open.end());
+    } else {
+      open.push_back(p);
+    }
+  }
+  lobes.push_back(open);
+  lobes.erase(std::remove_if(lobes.begin(), lobes.end(), [](const std::vector<Point>& lobe) { return lobe.size() < 3; }),
+              lobes.end());
+  return lobes;
+}
+
+// The triangles of a lobe's least-area triangulation, in the lobe's
+// orientation; none where none is found.
+std::vector<std::array<Point, 3>> triangulated_lobe(const std::vector<Point>& lobe) {
+  std::vector<CGAL::Triple<int, int, int>> triangles;
+  PMP::triangulate_hole_polyline(lobe, std::back_inserter(triangles), CGAL::parameters::use_delaunay_triangulation(true));
+  std::vector<std::array<Point, 3>> out;
+  for (const auto& t : triangles) out.push_back({lobe[size_t(t.first)], lobe[size_t(t.second)], lobe[size_t(t.third)]});
+  return out;
+}
+
+}  // namespace
+
+HoleFilling fill_holes(SurfaceMesh& mesh, size_t max_edges, std::vector<std::array<Point, 3>>& lobe_triangles) {
   HoleFilling result;
   std::vector<SurfaceMesh::Halfedge_index> holes;  // one border half-edge per cycle
   PMP::extract_boundary_cycles(mesh, std::back_inserter(holes));
@@ -20,17 +61,33 @@ HoleFilling fill_holes(SurfaceMesh& mesh, size_t max_edges) {
     // touches itself is one cycle here, walked through its pinch).
     if (!mesh.is_border(hole)) continue;
     size_t edges = 0;
-    std::vector<repair::Point> corners;
-    for (auto h = hole; edges == 0 || h != hole; h = mesh.next(h)) ++edges, corners.push_back(mesh.point(mesh.target(h)));
-    std::sort(corners.begin(), corners.end());
-    if (std::adjacent_find(corners.begin(), corners.end()) != corners.end()) {
-      // It passes twice through one point (two copies of it, split where
-      // faces met at that point alone): a patch over it would meet itself there.
-      result.touching.push_back(edges);
-      continue;
-    }
+    std::vector<Point> loop;
+    for (auto h = hole; edges == 0 || h != hole; h = mesh.next(h)) ++edges, loop.push_back(mesh.point(mesh.source(h)));
     if (edges > max_edges) {
       result.too_large.push_back(edges);
+      continue;
+    }
+    std::vector<Point> distinct = loop;
+    std::sort(distinct.begin(), distinct.end());
+    if (std::adjacent_find(distinct.begin(), distinct.end()) != distinct.end()) {
+      // A patch over the whole loop would meet itself at the point it
+      // passes twice: each lobe is filled on its own instead.
+      std::vector<std::array<Point, 3>> triangles;
+      for (const std::vector<Point>& lobe : lobes_of(loop)) {
+        const std::vector<std::array<Point, 3>> filled = triangulated_lobe(lobe);
+        if (filled.empty()) {
+          triangles.clear();
+          break;
+        }
+        triangles.insert(triangles.end(), filled.begin(), filled.end());
+        ++result.lobes;
+      }
+      if (triangles.empty()) {
+        result.failed.push_back(edges);
+        continue;
+      }
+      ++result.filled;
+      lobe_triangles.insert(lobe_triangles.end(), triangles.begin(), triangles.end());
       continue;
     }
     std::vector<SurfaceMesh::Face_index> patch;
@@ -47,6 +104,30 @@ HoleFilling fill_holes(SurfaceMesh& mesh, size_t max_edges) {
     result.faired_roughly += !faired;
   }
   return result;
+}
+
+size_t add_lobe_patches(SurfaceMesh& mesh, const std::vector<std::array<Point, 3>>& triangles) {
+  if (triangles.empty()) return 0;
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  PMP::polygon_mesh_to_polygon_soup(mesh, points, polygons);
+  const size_t first = polygons.size();
+  for (const auto& t : triangles) {
+    polygons.push_back({points.size(), points.size() + 1, points.size() + 2});
+    points.insert(points.end(), t.begin(), t.end());
+  }
+  PMP::merge_duplicate_points_in_polygon_soup(points, polygons);
+  PMP::orient_polygon_soup(points, polygons);  // splits again the points whose fans stay apart
+  SurfaceMesh rebuilt;
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, rebuilt);  // faces in the soup's order
+  mesh = std::move(rebuilt);
+  std::vector<SurfaceMesh::Face_index> patch;
+  for (size_t f = first; f < mesh.number_of_faces(); ++f) patch.push_back(SurfaceMesh::Face_index(SurfaceMesh::size_type(f)));
+  std::vector<SurfaceMesh::Face_index> refined;
+  std::vector<SurfaceMesh::Vertex_index> added;
+  PMP::refine(mesh, patch, std::back_inserter(refined), std::back_inserter(added));
+  PMP::fair(mesh, added);
+  return patch.size() + refined.size();
 }
 
 }  // namespace umbra

@@ -6,6 +6,7 @@
 // "Filling Holes in Meshes", 2003, as CGAL's Polygon Mesh Processing
 // implements it).
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -19,12 +20,20 @@ struct HoleFilling {
   size_t faired_roughly = 0;      // filled, but the fairing's solver failed: the refined patch kept as it is
   std::vector<size_t> too_large;  // the edges of each hole left for having more than the bound
   std::vector<size_t> failed;     // the edges of each hole no triangulation was found for
-  std::vector<size_t> touching;   // the edges of each hole left for passing twice through a point
+  size_t lobes = 0;               // of holes whose border passes twice through a point, filled by add_lobe_patches
 };
 
 // Fills every hole of `mesh` (a triangle mesh) with at most `max_edges`
-// edges round it, but one whose border passes twice through a point (a
-// patch would meet itself there); the others stay open.
-HoleFilling fill_holes(repair::SurfaceMesh& mesh, size_t max_edges);
+// edges round it; the others stay open. A hole whose border passes twice
+// through one point (two copies of it, split where faces met there alone)
+// is cut at that point into lobes, each triangulated on its own; their
+// triangles, which meet both copies, are left for add_lobe_patches.
+HoleFilling fill_holes(repair::SurfaceMesh& mesh, size_t max_edges, std::vector<std::array<repair::Point, 3>>& lobe_triangles);
+
+// `mesh` rebuilt with `triangles` added and each point's copies merged
+// where the new faces close the fans they had split (split again where they
+// do not); then the added faces refined and faired, as fill_holes fairs a
+// patch. Returns the triangles the patches became.
+size_t add_lobe_patches(repair::SurfaceMesh& mesh, const std::vector<std::array<repair::Point, 3>>& triangles);
 
 }  // namespace umbra

@@ -104,6 +104,7 @@ void say_holes(const HoleFilling& holes, size_t max_edges, std::vector<std::stri
   if (holes.filled > 0)
     changes.push_back("filled " + counted(holes.filled, "hole", "holes") + " with " +
                       counted(holes.triangles_added, "triangle", "triangles") + ", refined and faired to the surface round them" +
+                      (holes.lobes ? " (" + counted(holes.lobes, "lobe", "lobes") + " of holes whose border passes twice through a point, each filled on its own)" : "") +
                       (holes.faired_roughly ? " (" + std::to_string(holes.faired_roughly) + " refined but not faired: the solver failed)" : ""));
   if (!holes.too_large.empty()) {
     const size_t largest = *std::max_element(holes.too_large.begin(), holes.too_large.end());
@@ -111,9 +112,6 @@ void say_holes(const HoleFilling& holes, size_t max_edges, std::vector<std::stri
                       " edges open (the largest has " + std::to_string(largest) + "; --max-hole-edges " + std::to_string(largest) +
                       " fills " + (holes.too_large.size() == 1 ? "it" : "them") + ")");
   }
-  if (!holes.touching.empty())
-    changes.push_back("left " + counted(holes.touching.size(), "hole", "holes") +
-                      " open whose border passes twice through a point: a patch would meet itself there");
   if (!holes.failed.empty())
     changes.push_back("left " + counted(holes.failed.size(), "hole", "holes") +
                       " open that no triangulation without a degenerate or crossing triangle fills");
@@ -175,7 +173,10 @@ RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output, co
     changes.push_back("collapsed degenerate triangles (" + counted(triangles_before - mesh.number_of_faces(), "triangle", "triangles") +
                       " fewer)");
   if (!all_removed) changes.push_back("could not remove every degenerate triangle");
-  say_holes(fill_holes(mesh, max_hole_edges), max_hole_edges, changes);
+  std::vector<std::array<Point, 3>> lobe_triangles;
+  HoleFilling holes = fill_holes(mesh, max_hole_edges, lobe_triangles);
+  holes.triangles_added += add_lobe_patches(mesh, lobe_triangles);
+  say_holes(holes, max_hole_edges, changes);
   if (const size_t n = orient_closed_components_outward(mesh))
     changes.push_back("turned " + counted(n, "closed component", "closed components") + " outward");
   if (mesh.number_of_faces() == 0) throw InputError({soup.path, 0, 0}, "nothing left after the repair: every face was degenerate");

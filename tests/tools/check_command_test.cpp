@@ -279,9 +279,10 @@ TEST_F(CheckCommand, RepairLeavesAHoleLargerThanAskedAndSaysHowToFillIt) {
 }
 
 // Two triangular holes that meet at one corner of the cube: once the point's
-// two fans are split apart, one border runs through both copies of it.
-// Left, and said why.
-TEST_F(CheckCommand, RepairLeavesAHoleWhoseBorderTouchesItselfAndSaysWhy) {
+// two fans are split apart, one border runs through both copies of it. It
+// is cut there into its two lobes, each filled with its triangle, and the
+// corner's fans meet again: the whole cube, to its exact volume.
+TEST_F(CheckCommand, RepairFillsAHoleWhoseBorderTouchesItselfLobeByLobe) {
   const PolygonSoup cube = test::unit_cube();
   const auto corners = [&](size_t f) { return std::set<uint32_t>(cube.polygon(f), cube.polygon(f) + 3); };
   size_t other = 1;
@@ -294,10 +295,24 @@ TEST_F(CheckCommand, RepairLeavesAHoleWhoseBorderTouchesItselfAndSaysWhy) {
   ASSERT_LT(other, cube.polygon_count());
   const std::string input = write("in.obj", obj_text(test::without_faces(cube, {0, other})));
   const CommandResult r = run("check " + input + " --repair " + path("out.obj"));
-  EXPECT_EQ(r.status, 1);
-  EXPECT_NE(r.out.find("  left 1 hole open whose border passes twice through a point: a patch would meet itself there\n"),
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("  filled 1 hole with 2 triangles, refined and faired to the surface round them (2 lobes of holes whose "
+                       "border passes twice through a point, each filled on its own)\n"),
             std::string::npos)
       << r.out;
+  EXPECT_NE(r.out.find("  solid              yes\n"), std::string::npos) << r.out;
+  EXPECT_NEAR(test::signed_volume(read_polygon_soup(path("out.obj")), glm::dvec3(0.5)), 1.0, 1e-12);
+}
+
+// CGAL's elephant with 171 holes, many meeting at a point: every one filled,
+// and the elephant is a solid again, of the genus of CGAL's whole elephant.
+TEST_F(CheckCommand, RepairMakesCgalsElephantWithHolesASolid) {
+  const std::string input = std::string(UMBRA_CGAL_DATA) + "/meshes/elephant-with-holes.off";
+  const CommandResult r = run("check " + input + " --repair " + path("out.off") + " --solid");
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("  border             0 edges in 0 loops\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("closed, chi -4, genus 3, outward"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  solid              yes\n"), std::string::npos) << r.out;
 }
 
 // A CAD part from Debian's Open CASCADE data with two holes of 3 edges
