@@ -78,6 +78,10 @@ options:
                     (with --repair) fill only holes of at most N edges
                     (default {max hole edges}; 0 fills none): a larger one is
                     more often an opening the model means
+  --merge-tolerance D
+                    (with --repair) merge points at most D apart (in the
+                    model's units) before anything else; by default only
+                    equal ones are merged
   --time-limit SEC  stop the search for self-intersections after SEC seconds
                     per mesh and report that it stopped (default 60; 0 skips)
   --timeout SEC     check the meshes in worker processes and stop one after
@@ -102,6 +106,7 @@ struct CheckCommandOptions {
   std::optional<Shard> shard;
   std::optional<std::string> repair_output;
   std::optional<size_t> max_hole_edges;  // unset: kDefaultMaxHoleEdges
+  std::optional<double> merge_tolerance;
   CheckOptions check;
   double timeout_s = 0.0;  // >0: meshes checked in worker processes, each stopped after this long
   bool help = false;
@@ -116,6 +121,10 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
   options.flag("--solid", o.solid);
   options.value("--repair", [&](const std::string&, const std::string& t) { o.repair_output = t; });
   options.value("--max-hole-edges", [&](const std::string& n, const std::string& t) { o.max_hole_edges = size_t(parse_int_in(n, t, 0, 1000000)); });
+  options.value("--merge-tolerance", [&](const std::string& n, const std::string& t) {
+    o.merge_tolerance = parse_finite_number(n, t);
+    if (!(*o.merge_tolerance > 0.0)) throw UsageError(n + " must be a distance above 0, got \"" + t + "\"");
+  });
   options.value("--jobs", [&](const std::string& n, const std::string& t) { o.jobs = size_t(parse_int_in(n, t, 1, 4096)); });
   options.value("--shard", [&](const std::string& n, const std::string& t) { o.shard = parse_shard(n, t); });
   options.value("--timeout", [&](const std::string& n, const std::string& t) {
@@ -132,6 +141,7 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
   if (o.meshes.empty()) throw UsageError("no mesh file given");
   if (o.json && o.brief) throw UsageError("--json and --brief are two forms of the same report: give one");
   if (o.max_hole_edges && !o.repair_output) throw UsageError("--max-hole-edges says which holes --repair fills: give --repair OUT");
+  if (o.merge_tolerance && !o.repair_output) throw UsageError("--merge-tolerance says which points --repair merges: give --repair OUT");
   if (o.repair_output) {
     if (o.meshes.size() != 1 || std::filesystem::is_directory(o.meshes[0])) throw UsageError("--repair takes one mesh file at a time");
     if (o.shard) throw UsageError("--repair checks one mesh: --shard does not apply");
@@ -206,8 +216,9 @@ int repair_one(const std::string& path, const std::string& output, const CheckCo
   try {
     const PolygonSoup soup = read_polygon_soup(path, TextureMaps::skip());
     PartialFile partial(output, "the repaired mesh", PartialFile::Ending::kKeepExtension);
-    const RepairSummary summary =
-        repair_mesh(soup, output, partial.temporary_path(), options.max_hole_edges.value_or(kDefaultMaxHoleEdges));
+    const RepairSummary summary = repair_mesh(
+        soup, output, partial.temporary_path(),
+        RepairOptions{options.max_hole_edges.value_or(kDefaultMaxHoleEdges), options.merge_tolerance.value_or(0.0)});
     partial.commit();
     const MeshReport after = check_mesh(read_polygon_soup(output, TextureMaps::skip()), options.check);
     if (options.json || options.brief) {

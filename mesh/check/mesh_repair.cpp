@@ -19,6 +19,7 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include "mesh/check/hole_filling.hpp"
+#include "mesh/check/point_merging.hpp"
 #include "mesh/check/repair_mesh_type.hpp"
 #include "mesh/check/self_intersections.hpp"
 #include "mesh/check/solid_orientation.hpp"
@@ -124,7 +125,9 @@ bool repair_can_write(const std::string& path) {
   return format && format->repair_writes;
 }
 
-RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output, const std::string& write_to, size_t max_hole_edges) {
+RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output, const std::string& write_to,
+                          const RepairOptions& options) {
+  const size_t max_hole_edges = options.max_hole_edges;
   RepairSummary summary;
   auto& changes = summary.changes;
   std::vector<Point> points;
@@ -132,6 +135,19 @@ RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output, co
   for (const glm::dvec3& p : soup.points) points.emplace_back(p.x, p.y, p.z);
   std::vector<Polygon> polygons(soup.polygon_count());
   for (size_t f = 0; f < polygons.size(); ++f) polygons[f].assign(soup.polygon(f), soup.polygon(f) + soup.corner_count(f));
+  if (options.merge_tolerance > 0.0) {
+    const MergedPoints near = merge_nearby_points(soup.points, options.merge_tolerance);
+    const MergedPoints equal = merge_coincident_points(soup.points);
+    std::ostringstream within;
+    within << options.merge_tolerance;
+    if (const size_t n = equal.positions.size() - near.positions.size())
+      changes.push_back("merged " + counted(n, "vertex", "vertices") + " into another within " + within.str() +
+                        " (--merge-tolerance)");
+    points.clear();
+    for (const glm::dvec3& p : near.positions) points.emplace_back(p.x, p.y, p.z);
+    for (Polygon& polygon : polygons)
+      for (std::size_t& v : polygon) v = near.vertex_of_point[v];
+  }
 
   if (const size_t n = PMP::merge_duplicate_points_in_polygon_soup(points, polygons))
     changes.push_back("merged " + counted(n, "repeated vertex", "repeated vertices"));

@@ -22,7 +22,7 @@ bool repair_can_write(const std::string& path);
 // scan's base) than a defect, and filling it costs time cubic in its edges.
 constexpr size_t kDefaultMaxHoleEdges = 200;
 
-// Merges repeated vertices, drops degenerate and duplicate faces and unused
+// Merges repeated vertices (and, with a tolerance, nearby ones), drops degenerate and duplicate faces and unused
 // vertices, splits non-manifold vertices, orients faces consistently, stitches
 // borders that coincide, triangulates, fills each hole of at most
 // `max_hole_edges` edges (hole_filling.hpp), and turns every closed
@@ -30,7 +30,14 @@ constexpr size_t kDefaultMaxHoleEdges = 200;
 // `output`'s and chooses the format (the caller renames it to `output` once
 // whole). Throws InputError, located at `output`, when nothing usable is left
 // or the file cannot be written.
+struct RepairOptions {
+  size_t max_hole_edges = kDefaultMaxHoleEdges;
+  // Points at most this far apart (in the model's units) are one before
+  // anything else is done (merge_nearby_points); 0: only equal ones.
+  double merge_tolerance = 0.0;
+};
+
 RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output, const std::string& write_to,
-                          size_t max_hole_edges = kDefaultMaxHoleEdges);
+                          const RepairOptions& options = {});
 
 }  // namespace umbra

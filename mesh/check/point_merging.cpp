@@ -5,6 +5,10 @@
 
 #include <algorithm>
 #include <cstring>
+#include <unordered_map>
+
+#include <glm/geometric.hpp>
+#include <glm/common.hpp>
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -89,6 +93,40 @@ MergedPoints merge_coincident_points(const std::vector<glm::dvec3>& points) {
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t i = r.begin(); i < r.end(); ++i) first_of[i] = vertex_of_first[first_of[i]];
   });
+  return merged;
+}
+
+MergedPoints merge_nearby_points(const std::vector<glm::dvec3>& points, double tolerance) {
+  MergedPoints merged;
+  merged.vertex_of_point.resize(points.size());
+  std::unordered_map<uint64_t, std::vector<uint32_t>> kept_in_cell;  // cell -> its kept points' positions
+  const auto cell_of = [&](const glm::dvec3& p) { return glm::floor(p / tolerance); };
+  const auto key_of = [](const glm::dvec3& cell) {
+    return hash_of(cell);  // equal cells hash alike; a collision only adds points to look at
+  };
+  for (uint32_t i = 0; i < points.size(); ++i) {
+    const glm::dvec3& p = points[i];
+    const glm::dvec3 cell = cell_of(p);
+    uint32_t joined = ~uint32_t(0);
+    for (int dz = -1; dz <= 1 && joined == ~uint32_t(0); ++dz)
+      for (int dy = -1; dy <= 1 && joined == ~uint32_t(0); ++dy)
+        for (int dx = -1; dx <= 1 && joined == ~uint32_t(0); ++dx) {
+          const auto found = kept_in_cell.find(key_of(cell + glm::dvec3(dx, dy, dz)));
+          if (found == kept_in_cell.end()) continue;
+          for (const uint32_t k : found->second)
+            if (glm::distance(merged.positions[k], p) <= tolerance) {
+              joined = k;
+              break;
+            }
+        }
+    if (joined == ~uint32_t(0)) {
+      joined = uint32_t(merged.positions.size());
+      merged.positions.push_back(p);
+      merged.first_point.push_back(i);
+      kept_in_cell[key_of(cell)].push_back(joined);
+    }
+    merged.vertex_of_point[i] = joined;
+  }
   return merged;
 }
 

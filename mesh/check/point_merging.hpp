@@ -19,4 +19,11 @@ struct MergedPoints {
 // (and the check reports the gap as a border, which it is).
 MergedPoints merge_coincident_points(const std::vector<glm::dvec3>& points);
 
+// For --repair --merge-tolerance: each point, in file order, joins a kept
+// point within `tolerance` of it (distance at most tolerance), or is kept
+// itself. A point never moves a kept one, so merges do not chain: two
+// points 1.5 tolerances apart stay apart even with a third between them.
+// Cells of the tolerance's size make each search look at 27 cells.
+MergedPoints merge_nearby_points(const std::vector<glm::dvec3>& points, double tolerance);
+
 }  // namespace umbra

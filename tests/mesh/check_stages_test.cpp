@@ -191,6 +191,24 @@ TEST(CheckStages, MergedPointsAreNumberedByFirstAppearanceHoweverManyShareTheWor
   EXPECT_TRUE(merge_coincident_points({}).positions.empty());
 }
 
+// --merge-tolerance: a point joins a kept one within the tolerance, across
+// the cells' walls and on either side of 0; kept points never move, so
+// merges do not chain along a line of points closer than the tolerance.
+TEST(CheckStages, NearbyPointsMergeWithinTheToleranceWithoutChaining) {
+  const std::vector<glm::dvec3> points{{0, 0, 0},       {0.8, 0, 0},  {1.6, 0, 0},   {2.4, 0, 0},
+                                       {0.99, 5, 0},    {1.01, 5, 0}, {-0.01, 7, 0}, {0.01, 7, 0},
+                                       {0, 9, 1.00001}};
+  const MergedPoints merged = merge_nearby_points(points, 1.0);
+  // 0.8 joins 0; 1.6 is 1.6 from 0, kept; 2.4 joins 1.6.
+  EXPECT_EQ(merged.vertex_of_point, (std::vector<uint32_t>{0, 0, 1, 1, 2, 2, 3, 3, 4}));
+  EXPECT_EQ(merged.first_point, (std::vector<uint32_t>{0, 2, 4, 6, 8}));
+  EXPECT_EQ(merged.positions[1], glm::dvec3(1.6, 0, 0));
+  // At a tolerance below every gap, each point is its own.
+  EXPECT_EQ(merge_nearby_points(points, 1e-3).positions.size(), points.size());
+  // Equal points merge at any tolerance.
+  EXPECT_EQ(merge_nearby_points({{1e9, -3, 2}, {1e9, -3, 2}}, 1e-12).positions.size(), 1u);
+}
+
 TEST(CheckStages, ShellsReadTurnedRoundFaceAsIfTurned) {
   // The hollow cube's two shells (12 triangles each) face the right way;
   // read with every triangle of a shell turned round, that shell faces the

@@ -266,6 +266,43 @@ TEST_F(CheckCommand, RepairFillsALargePlanarHoleAndACurvedOne) {
   EXPECT_NEAR(test::signed_volume(read_polygon_soup(path("sphere-out.obj")), glm::dvec3(0.0)), whole, 0.01 * whole);
 }
 
+// The unit cube as STL writes it, each triangle with its own three points,
+// every copy of a corner off from the others by up to 1e-7: nothing merges
+// but equal points, so the check sees 12 loose triangles; within 1e-6 the
+// copies are one point and the cube is whole again.
+TEST_F(CheckCommand, RepairMergesPointsWithinTheTolerance) {
+  const PolygonSoup cube = test::unit_cube();
+  std::vector<glm::dvec3> points;
+  std::vector<test::Face> faces;
+  for (size_t f = 0; f < cube.polygon_count(); ++f) {
+    test::Face face;
+    for (size_t k = 0; k < 3; ++k) {
+      const double off = 1e-7 * double((f * 3 + k) % 5) / 4.0;  // 0 to 1e-7, differing between copies
+      face.push_back(uint32_t(points.size()));
+      points.push_back(cube.points[cube.polygon(f)[k]] + glm::dvec3(off, -off, off));
+    }
+    faces.push_back(face);
+  }
+  const std::string input = write("in.obj", obj_text(test::make_soup(points, faces)));
+  CommandResult r = run("check " + input + " --repair " + path("exact.obj"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.out.find("components         12 (0 closed)"), std::string::npos) << r.out;
+  r = run("check " + input + " --repair " + path("out.obj") + " --merge-tolerance 1e-6 --solid");
+  EXPECT_EQ(r.status, 0) << r.out;
+  // The copies that are not equal to another, less the cube's 8 corners.
+  std::set<std::array<double, 3>> distinct;
+  for (const glm::dvec3& p : points) distinct.insert({p.x, p.y, p.z});
+  EXPECT_NE(r.out.find("  merged " + std::to_string(distinct.size() - 8) + " vertices into another within 1e-06 (--merge-tolerance)\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("  solid              yes\n"), std::string::npos) << r.out;
+  EXPECT_NEAR(test::signed_volume(read_polygon_soup(path("out.obj")), glm::dvec3(0.5)), 1.0, 1e-6);
+  EXPECT_EQ(run("check " + input + " --merge-tolerance 1e-6").err,
+            "umbra check: --merge-tolerance says which points --repair merges: give --repair OUT\n(see umbra check --help)\n");
+  EXPECT_EQ(run("check " + input + " --repair " + path("x.obj") + " --merge-tolerance 0").err,
+            "umbra check: --merge-tolerance must be a distance above 0, got \"0\"\n(see umbra check --help)\n");
+}
+
 TEST_F(CheckCommand, RepairLeavesAHoleLargerThanAskedAndSaysHowToFillIt) {
   const std::string input = write("in.obj", obj_text(test::without_faces(test::unit_cube(), {4, 5})));
   const CommandResult r = run("check " + input + " --repair " + path("out.obj") + " --max-hole-edges 3");
