@@ -2,6 +2,12 @@
 
 #include <cstdlib>
 #include <limits>
+#include <utility>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "silhouette/parallel_append.hpp"
 
 namespace umbra {
 namespace {
@@ -15,16 +21,15 @@ inline int share(const std::vector<int8_t>& side, uint32_t use) {
   return EdgeTable::runs_forward(use) ? s : -s;
 }
 
-// |m| copies of edge (u, v)'s side quad: for m > 0 the oriented faces run
-// u -> v, counter-clockwise seen from the light, so the quad is (v, u, u', v')
-// as for a triangle's sides (extrude_to_infinity); for m < 0 the reverse.
-inline void append_quads(uint32_t u, uint32_t v, int m, uint32_t far, MeshVolumeIndices& volume) {
+// |m| copies of edge (u, v)'s side quad at `out`: for m > 0 the oriented
+// faces run u -> v, counter-clockwise seen from the light, so the quad is
+// (v, u, u', v') as for a triangle's sides (extrude_to_infinity); for m < 0
+// the reverse.
+inline void write_quads(uint32_t u, uint32_t v, int m, uint32_t far, uint32_t* out) {
   if (m < 0) std::swap(u, v);
-  for (int k = std::abs(m); k > 0; --k) {
-    uint32_t* out = volume.append(6);
+  for (int k = std::abs(m); k > 0; --k, out += 6) {
     out[0] = v, out[1] = u, out[2] = u + far;
     out[3] = v, out[4] = u + far, out[5] = v + far;
-    ++volume.side_quads;
   }
 }
 
@@ -66,39 +71,45 @@ void classify_light_sides(const std::vector<glm::dvec3>& positions, const Multip
                           const glm::dvec3& light, std::vector<int8_t>& side) {
   side.resize(mesh.triangles.size());
   const double light_distance = glm::length(light);
-  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const auto& tri = mesh.triangles[t];
-    side[t] = int8_t(light_side(mesh.planes[t], positions[tri[0]], positions[tri[1]], positions[tri[2]], light,
-                                light_distance));
-  }
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh.triangles.size(), kClassifyBlock), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t t = r.begin(); t < r.end(); ++t) {
+      const auto& tri = mesh.triangles[t];
+      side[t] = int8_t(light_side(mesh.planes[t], positions[tri[0]], positions[tri[1]], positions[tri[2]], light,
+                                  light_distance));
+    }
+  });
 }
 
 void append_multiplicity_caps(const MultiplicityAdjacency& mesh, const std::vector<int8_t>& side, uint32_t far,
                               MeshVolumeIndices& volume) {
-  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-    if (side[t] == 0) continue;  // its plane holds the light: no volume
-    const auto& tri = mesh.triangles[t];
-    // Oriented toward the light: counter-clockwise seen from it.
-    const uint32_t a = tri[0], b = side[t] > 0 ? tri[1] : tri[2], c = side[t] > 0 ? tri[2] : tri[1];
-    uint32_t* out = volume.append(6);
-    out[0] = a, out[1] = b, out[2] = c;                    // light cap, facing the light
-    out[3] = a + far, out[4] = c + far, out[5] = b + far;  // dark cap, facing away
-    ++volume.light_cap_triangles;
-    ++volume.dark_cap_triangles;
-  }
+  const size_t added = append_in_order(
+      volume, mesh.triangles.size(), [&](size_t t) { return side[t] == 0 ? size_t(0) : size_t(6); },  // in the light's plane: none
+      [&](size_t t, uint32_t* out) {
+        const auto& tri = mesh.triangles[t];
+        // Oriented toward the light: counter-clockwise seen from it.
+        const uint32_t a = tri[0], b = side[t] > 0 ? tri[1] : tri[2], c = side[t] > 0 ? tri[2] : tri[1];
+        out[0] = a, out[1] = b, out[2] = c;                    // light cap, facing the light
+        out[3] = a + far, out[4] = c + far, out[5] = b + far;  // dark cap, facing away
+      });
+  volume.light_cap_triangles += int(added / 6);
+  volume.dark_cap_triangles += int(added / 6);
 }
 
 void append_multiplicity_quads(const MultiplicityAdjacency& mesh, const std::vector<int8_t>& side, uint32_t far,
                                MeshVolumeIndices& volume) {
-  for (size_t e = 0; e < mesh.pair_uses.size(); ++e) {
-    const int m = share(side, mesh.pair_uses[e][0]) + share(side, mesh.pair_uses[e][1]);
-    if (m != 0) append_quads(mesh.pair_vertices[e][0], mesh.pair_vertices[e][1], m, far, volume);
-  }
-  for (size_t e = 0; e < mesh.other_vertices.size(); ++e) {
+  const auto pair_m = [&](size_t e) { return share(side, mesh.pair_uses[e][0]) + share(side, mesh.pair_uses[e][1]); };
+  const auto other_m = [&](size_t e) {
     int m = 0;
     for (uint32_t k = mesh.other_first_use[e]; k < mesh.other_first_use[e + 1]; ++k) m += share(side, mesh.other_uses[k]);
-    if (m != 0) append_quads(mesh.other_vertices[e][0], mesh.other_vertices[e][1], m, far, volume);
-  }
+    return m;
+  };
+  size_t added = append_in_order(
+      volume, mesh.pair_uses.size(), [&](size_t e) { return 6 * size_t(std::abs(pair_m(e))); },
+      [&](size_t e, uint32_t* out) { write_quads(mesh.pair_vertices[e][0], mesh.pair_vertices[e][1], pair_m(e), far, out); });
+  added += append_in_order(
+      volume, mesh.other_vertices.size(), [&](size_t e) { return 6 * size_t(std::abs(other_m(e))); },
+      [&](size_t e, uint32_t* out) { write_quads(mesh.other_vertices[e][0], mesh.other_vertices[e][1], other_m(e), far, out); });
+  volume.side_quads += int(added / 6);
 }
 
 ShadowVolume multiplicity_shadow_volume(const std::vector<glm::dvec3>& positions, const MultiplicityAdjacency& mesh,

@@ -73,20 +73,21 @@ HoleFilling fill_holes(SurfaceMesh& mesh, size_t max_edges, std::vector<std::arr
       // A patch over the whole loop would meet itself at the point it
       // passes twice: each lobe is filled on its own instead.
       std::vector<std::array<Point, 3>> triangles;
-      for (const std::vector<Point>& lobe : lobes_of(loop)) {
+      const std::vector<std::vector<Point>> lobes = lobes_of(loop);
+      for (const std::vector<Point>& lobe : lobes) {
         const std::vector<std::array<Point, 3>> filled = triangulated_lobe(lobe);
         if (filled.empty()) {
           triangles.clear();
           break;
         }
         triangles.insert(triangles.end(), filled.begin(), filled.end());
-        ++result.lobes;
       }
       if (triangles.empty()) {
         result.failed.push_back(edges);
         continue;
       }
       ++result.filled;
+      result.lobes += lobes.size();
       lobe_triangles.insert(lobe_triangles.end(), triangles.begin(), triangles.end());
       continue;
     }

@@ -9,6 +9,8 @@
 #include <random>
 #include <set>
 
+#include <tbb/task_arena.h>
+
 #include "mesh/io/mesh_file.hpp"
 #include "mesh/check/mesh_check.hpp"
 #include "mesh/predicates/orientation.hpp"
@@ -178,6 +180,40 @@ TEST(MeshVolume, TorusVolumeHasNoBoundaryWhereSilhouetteLoopsMeet) {
     loops_meet += !is_closed_and_consistently_oriented(v);
   }
   EXPECT_GT(loops_meet, 0) << "no light made two silhouette loops meet: the test lost its point";
+}
+
+// A mesh of many blocks of faces and edges: the volume, made on every core,
+// holds its caps in face order and its quads in edge order, as one loop
+// over each would make them, whatever the threads, and has no boundary.
+TEST(MeshVolume, MadeOnEveryCoreInTheOrderOfOneLoop) {
+  const MeshAdjacency torus = adjacency_of(quad_torus(300, 200));  // 120,000 triangles, 180,000 edges
+  const glm::dvec3 light(0.7, 1.9, 2.3);
+  std::vector<uint8_t> facing;
+  MeshVolumeIndices volume;
+  mesh_volume_indices(torus, light, facing, volume);
+  size_t k = 0;
+  for (size_t t = 0; t < torus.triangles.size(); ++t) {
+    if (facing[t]) continue;
+    const auto& tri = torus.triangles[t];
+    ASSERT_EQ(std::vector<uint32_t>(volume.buffer.begin() + k, volume.buffer.begin() + k + 3),
+              (std::vector<uint32_t>{tri[0], tri[2], tri[1]})) << "cap of face " << t;
+    k += 6;
+  }
+  EXPECT_EQ(k / 6, size_t(volume.light_cap_triangles));
+  const auto edges = silhouette_edges(torus, facing);
+  ASSERT_EQ(edges.size(), size_t(volume.side_quads));
+  for (const auto& [a, b] : edges) {
+    ASSERT_EQ(volume.buffer[k], b);
+    ASSERT_EQ(volume.buffer[k + 1], a);
+    k += 6;
+  }
+  EXPECT_EQ(k, volume.count);
+  for (const int threads : {1, 3}) {
+    MeshVolumeIndices again;
+    tbb::task_arena(threads).execute([&] { mesh_volume_indices(torus, light, facing, again); });
+    EXPECT_TRUE(std::equal(again.buffer.begin(), again.buffer.begin() + again.count, volume.buffer.begin())) << threads;
+  }
+  EXPECT_TRUE(has_no_boundary(mesh_shadow_volume(torus, light)));
 }
 
 TEST(MeshVolume, EveryBundledClosedMeshGivesVolumesWithoutBoundaryForManyLights) {

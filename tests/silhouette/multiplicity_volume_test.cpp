@@ -7,6 +7,8 @@
 #include <map>
 #include <random>
 
+#include <tbb/task_arena.h>
+
 #include <glm/geometric.hpp>
 
 #include "mesh/topology/closed_components.hpp"
@@ -14,6 +16,7 @@
 #include "silhouette/mesh_caster.hpp"
 #include "silhouette/mesh_volume.hpp"
 #include "silhouette/multiplicity_volume.hpp"
+#include "silhouette/parallel_append.hpp"
 #include "silhouette/volume_topology.hpp"
 #include "volume_test_util.hpp"
 
@@ -189,6 +192,32 @@ TEST(MultiplicityVolume, OfAnySubsetOfFacesIsThatSubsetsPerTriangleVolumes) {
     EXPECT_TRUE(part.triangles.empty() || has_no_boundary(part)) << "trial " << trial;
     EXPECT_EQ(chain(part), chain(per_triangle_volume(s.positions, subset, light))) << "trial " << trial;
   }
+}
+
+// A soup of many blocks of faces and edges: its volume is the same, index
+// for index, on one thread and on several, and counts what per-triangle
+// volumes count (checked above on small soups).
+TEST(MultiplicityVolume, MadeOnEveryCoreTheSameWhateverTheThreads) {
+  std::mt19937 rng(7);
+  const Soup soup = random_soup(rng, 4000, 60000);
+  const EdgeTable edges = build_edge_table(soup.triangles, soup.positions.size());
+  const MultiplicityAdjacency mesh =
+      build_multiplicity_adjacency(soup.positions, soup.triangles, edges, std::vector<uint8_t>(soup.triangles.size(), 1));
+  ASSERT_GT(mesh.pair_uses.size() + mesh.other_vertices.size(), 2 * kAppendBlock);
+  const glm::dvec3 light(0.3, 2.1, 1.7);
+  const auto volume_on = [&](int threads) {
+    MeshVolumeIndices volume;
+    tbb::task_arena(threads).execute([&] {
+      std::vector<int8_t> side;
+      classify_light_sides(soup.positions, mesh, light, side);
+      append_multiplicity_caps(mesh, side, uint32_t(soup.positions.size()), volume);
+      append_multiplicity_quads(mesh, side, uint32_t(soup.positions.size()), volume);
+    });
+    return std::vector<uint32_t>(volume.buffer.begin(), volume.buffer.begin() + volume.count);
+  };
+  const std::vector<uint32_t> one = volume_on(1);
+  EXPECT_EQ(volume_on(2), one);
+  EXPECT_EQ(volume_on(5), one);
 }
 
 TEST(MultiplicityVolume, AFaceWhosePlaneHoldsTheLightCastsNothing) {
