@@ -210,7 +210,7 @@ Scene torus_over_a_floor(int rings, int sides, bool open) {
   mesh.bounds_min = analysis.report.bbox_min;
   mesh.bounds_max = analysis.report.bbox_max;
   mesh.edges = build_edge_table(mesh.triangles, mesh.positions.size());
-  mesh.components = find_closed_components(mesh.triangles, mesh.edges, mesh.positions.size());
+  mesh.components = find_silhouette_components(mesh.triangles, mesh.edges, mesh.positions.size());
   scene.meshes.push_back(std::move(mesh));
   return scene;
 }

@@ -210,7 +210,7 @@ void load_scene_meshes(std::vector<MeshStatement> statements, Scene& scene, cons
       if (outside_the_cube(m, loaded[k].rounding))
         warn(m.where, named + " reaches outside the cube [-1,1]^3 that scenes are made for (its box is " +
                           box_text(m.bounds_min, m.bounds_max) + (m.fit ? ")" : "; \"fit\" scales it into the cube)"));
-      if (!m.components.all_closed()) warn(m.where, named + " is " + m.components.phrase() + ": " + m.components.volume_phrase());
+      if (!m.components.all_cast_from_silhouette()) warn(m.where, named + " is " + m.components.phrase() + ": " + m.components.volume_phrase());
     }
     scene.meshes.push_back(std::move(m));
   }

@@ -19,7 +19,7 @@
 #include "mesh/input_error.hpp"
 #include "mesh/shared_positions.hpp"
 #include "mesh/texture_image.hpp"
-#include "mesh/topology/closed_components.hpp"
+#include "mesh/topology/silhouette_components.hpp"
 #include "mesh/topology/edge_table.hpp"
 
 namespace umbra {
@@ -107,7 +107,7 @@ struct Mesh {
   glm::dvec3 bounds_min{0.0}, bounds_max{0.0};  // of the triangles' corners, in scene coordinates
   glm::dvec3 file_bounds_min{0.0}, file_bounds_max{0.0};  // likewise in the file's own, where `fit` measured them
   EdgeTable edges;               // of `triangles`
-  ClosedComponents components;   // of `triangles`: which cast from their silhouette
+  SilhouetteComponents components;   // of `triangles`: which cast from their silhouette
   // What loading changed, as the check reports it: "2 duplicate faces
   // dropped, 588 faces flipped to agree"; "" when nothing.
   std::string loading_changes;

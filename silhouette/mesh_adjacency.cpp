@@ -72,14 +72,14 @@ MeshAdjacency build_mesh_adjacency(const SharedPositions& positions,
 
 MeshAdjacency build_mesh_adjacency(const SharedPositions& positions,
                                    const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeTable& edges,
-                                   const std::vector<uint8_t>& closed_face) {
-  const size_t closed_count = size_t(std::count(closed_face.begin(), closed_face.end(), 1));
+                                   const std::vector<uint8_t>& silhouette_face) {
+  const size_t closed_count = size_t(std::count(silhouette_face.begin(), silhouette_face.end(), 1));
   MeshAdjacency adjacency =
-      edges_of(link_half_edge_mesh(positions, triangles, edges, closed_face), closed_count, positions.size());
+      edges_of(link_half_edge_mesh(positions, triangles, edges, silhouette_face), closed_count, positions.size());
   std::vector<std::array<uint32_t, 3>> closed;  // the linked mesh's faces, in order
   closed.reserve(closed_count);
   for (size_t t = 0; t < triangles.size(); ++t)
-    if (closed_face[t]) closed.push_back(triangles[t]);
+    if (silhouette_face[t]) closed.push_back(triangles[t]);
   add_faces(adjacency, positions, std::move(closed));
   return adjacency;
 }

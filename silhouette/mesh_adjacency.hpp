@@ -39,11 +39,11 @@ struct MeshAdjacency {
 MeshAdjacency build_mesh_adjacency(const SharedPositions& positions,
                                    const std::vector<std::array<uint32_t, 3>>& triangles);
 
-// The same for the triangles marked in closed_face, which
-// find_closed_components proved closed (link_half_edge_mesh): what the
+// The same for the triangles marked in silhouette_face, which
+// find_silhouette_components proved closed (link_half_edge_mesh): what the
 // renderer uses, in linear time from the edge table it already has.
 MeshAdjacency build_mesh_adjacency(const SharedPositions& positions,
                                    const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeTable& edges,
-                                   const std::vector<uint8_t>& closed_face);
+                                   const std::vector<uint8_t>& silhouette_face);
 
 }  // namespace umbra

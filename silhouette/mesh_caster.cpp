@@ -9,16 +9,16 @@ namespace umbra {
 
 MeshCaster prepare_mesh_caster(const SharedPositions& positions,
                                const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeTable& edges,
-                               const ClosedComponents& components) {
+                               const SilhouetteComponents& components) {
   MeshCaster caster;
   caster.positions = positions;
   caster.shape = components.phrase();
   std::vector<uint8_t> open_face(triangles.size());
-  for (size_t t = 0; t < triangles.size(); ++t) open_face[t] = !components.closed_face[t];
+  for (size_t t = 0; t < triangles.size(); ++t) open_face[t] = !components.silhouette_face[t];
   caster.volume_phrase = components.volume_phrase();
-  if (components.closed_components > 0) {
+  if (components.silhouette_components > 0) {
     try {
-      caster.closed = build_mesh_adjacency(positions, triangles, edges, components.closed_face);
+      caster.silhouette = build_mesh_adjacency(positions, triangles, edges, components.silhouette_face);
     } catch (const std::invalid_argument&) {
       // The edge table proved these components closed 2-manifolds; should
       // linking one fail, multiplicity is exact too.
@@ -32,20 +32,20 @@ MeshCaster prepare_mesh_caster(const SharedPositions& positions,
 
 MeshCaster prepare_mesh_caster(const SharedPositions& positions, const std::vector<std::array<uint32_t, 3>>& triangles) {
   const EdgeTable edges = build_edge_table(triangles, positions.size());
-  return prepare_mesh_caster(positions, triangles, edges, find_closed_components(triangles, edges, positions.size()));
+  return prepare_mesh_caster(positions, triangles, edges, find_silhouette_components(triangles, edges, positions.size()));
 }
 
 void mesh_caster_volume_indices(const MeshCaster& caster, const glm::dvec3& light, MeshCasterScratch& scratch,
                                 MeshVolumeIndices& volume, bool with_caps) {
   const uint32_t far = uint32_t(caster.positions.size());
   volume.clear();
-  if (!caster.closed.triangles.empty()) classify_light_facing(caster.closed, light, scratch.facing);
+  if (!caster.silhouette.triangles.empty()) classify_light_facing(caster.silhouette, light, scratch.facing);
   classify_light_sides(caster.positions, caster.open, light, scratch.side);
   if (with_caps) {
-    if (!caster.closed.triangles.empty()) append_silhouette_caps(caster.closed, scratch.facing, volume);
+    if (!caster.silhouette.triangles.empty()) append_silhouette_caps(caster.silhouette, scratch.facing, volume);
     append_multiplicity_caps(caster.open, scratch.side, far, volume);
   }
-  if (!caster.closed.triangles.empty()) append_silhouette_quads(caster.closed, scratch.facing, volume);
+  if (!caster.silhouette.triangles.empty()) append_silhouette_quads(caster.silhouette, scratch.facing, volume);
   append_multiplicity_quads(caster.open, scratch.side, far, volume);
 }
 

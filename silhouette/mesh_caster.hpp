@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "mesh/shared_positions.hpp"
-#include "mesh/topology/closed_components.hpp"
+#include "mesh/topology/silhouette_components.hpp"
 #include "mesh/topology/edge_table.hpp"
 #include "silhouette/mesh_adjacency.hpp"
 #include "silhouette/multiplicity_volume.hpp"
@@ -23,9 +23,9 @@ namespace umbra {
 
 struct MeshCaster {
   SharedPositions positions;   // the mesh's own array, shared, not copied
-  MeshAdjacency closed;        // the faces of closed, consistently oriented 2-manifold components
+  MeshAdjacency silhouette;        // the faces of closed, consistently oriented 2-manifold components
   MultiplicityAdjacency open;  // every other face
-  std::string shape;           // ClosedComponents::phrase(): "closed 2-manifold", "open, 3 holes", ...
+  std::string shape;           // SilhouetteComponents::phrase(): "closed 2-manifold", "open, 3 holes", ...
   std::string volume_phrase;   // "silhouette volume", "edge-multiplicity volume", or which parts get which
 
   // "open, 3 holes: edge-multiplicity volume"
@@ -36,7 +36,7 @@ struct MeshCaster {
 // silhouette arrays share `positions` rather than copy them.
 MeshCaster prepare_mesh_caster(const SharedPositions& positions,
                                const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeTable& edges,
-                               const ClosedComponents& components);
+                               const SilhouetteComponents& components);
 // The same, finding the edges and components itself.
 MeshCaster prepare_mesh_caster(const SharedPositions& positions, const std::vector<std::array<uint32_t, 3>>& triangles);
 

@@ -271,7 +271,7 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
       for (size_t t = 0; t < turned.size(); ++t) turned[t] ^= uint8_t(faces_in(t));
       edges = triangle_edges_from_face_edges(std::move(*face_edges), triangles.face, turned);
     }
-    ClosedComponents components = closed_components_of(edges, component_of_triangle, report);
+    SilhouetteComponents components = closed_components_of(edges, component_of_triangle, report);
     analysis.topology = TriangleTopology{std::move(edges), std::move(components)};
   }
 

@@ -16,11 +16,11 @@ EdgeTable triangle_edges_from_face_edges(EdgeTable face_edges, const std::vector
   return face_edges;
 }
 
-ClosedComponents closed_components_of(const EdgeTable& edges, const std::vector<uint32_t>& component_of_triangle,
+SilhouetteComponents closed_components_of(const EdgeTable& edges, const std::vector<uint32_t>& component_of_triangle,
                                       const MeshReport& report) {
-  ClosedComponents c;
+  SilhouetteComponents c;
   c.components = report.components.size();
-  c.closed_components = report.silhouette_components();
+  c.silhouette_components = report.silhouette_components();
   c.border_edges = report.border_edges;
   c.border_loops = report.border_loops;
   c.non_manifold_edges = report.non_manifold_edges;
@@ -30,9 +30,9 @@ ClosedComponents closed_components_of(const EdgeTable& edges, const std::vector<
     const uint32_t* use = edges.uses.data() + edges.first_use[e];
     c.inconsistent_edges += edges.use_count(e) == 2 && EdgeTable::runs_forward(use[0]) == EdgeTable::runs_forward(use[1]);
   }
-  c.closed_face.resize(component_of_triangle.size());
+  c.silhouette_face.resize(component_of_triangle.size());
   for (size_t t = 0; t < component_of_triangle.size(); ++t)
-    c.closed_face[t] = report.components[component_of_triangle[t]].casts_from_silhouette();
+    c.silhouette_face[t] = report.components[component_of_triangle[t]].casts_from_silhouette();
   return c;
 }
 

@@ -12,14 +12,14 @@
 #include <vector>
 
 #include "mesh/check/mesh_report.hpp"
-#include "mesh/topology/closed_components.hpp"
+#include "mesh/topology/silhouette_components.hpp"
 #include "mesh/topology/edge_table.hpp"
 
 namespace umbra {
 
 struct TriangleTopology {
   EdgeTable edges;
-  ClosedComponents components;
+  SilhouetteComponents components;
 };
 
 // `face_edges` is the check's edge table over the file's faces (each use
@@ -33,7 +33,7 @@ EdgeTable triangle_edges_from_face_edges(EdgeTable face_edges, const std::vector
 // report's components. The counts are the report's, overlapping diagonals
 // counted with the non-manifold edges, and the edges whose two triangles
 // still run the same way (in non-orientable components).
-ClosedComponents closed_components_of(const EdgeTable& edges, const std::vector<uint32_t>& component_of_triangle,
+SilhouetteComponents closed_components_of(const EdgeTable& edges, const std::vector<uint32_t>& component_of_triangle,
                                       const MeshReport& report);
 
 }  // namespace umbra

@@ -39,7 +39,7 @@ HalfEdgeMesh build_half_edge_mesh(const std::vector<glm::dvec3>& positions,
 
 HalfEdgeMesh link_half_edge_mesh(const std::vector<glm::dvec3>& positions,
                                  const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeTable& edges,
-                                 const std::vector<uint8_t>& closed_face) {
+                                 const std::vector<uint8_t>& silhouette_face) {
   // Every face, edge and vertex is numbered first, so that OpenMesh's arrays
   // are sized once (its new_edge and new_face resize every property array per
   // call) and each element is then written by the one thread that owns it.
@@ -48,9 +48,9 @@ HalfEdgeMesh link_half_edge_mesh(const std::vector<glm::dvec3>& positions,
   std::vector<uint32_t> face_of_triangle(triangles.size(), kNone);
   uint32_t face_count = 0;
   for (size_t t = 0; t < triangles.size(); ++t)
-    if (closed_face[t]) face_of_triangle[t] = face_count++;
+    if (silhouette_face[t]) face_of_triangle[t] = face_count++;
   const auto linked = [&](size_t e) {
-    return edges.use_count(e) == 2 && closed_face[EdgeTable::face_of(edges.uses[edges.first_use[e]])];
+    return edges.use_count(e) == 2 && silhouette_face[EdgeTable::face_of(edges.uses[edges.first_use[e]])];
   };
   std::vector<uint32_t> edge_of_table_edge(edges.size(), kNone);
   uint32_t edge_count = 0;

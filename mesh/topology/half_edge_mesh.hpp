@@ -37,14 +37,14 @@ using HalfEdgeMesh = OpenMesh::TriMesh_ArrayKernelT<HalfEdgeTraits>;
 HalfEdgeMesh build_half_edge_mesh(const std::vector<glm::dvec3>& positions,
                                   const std::vector<std::array<uint32_t, 3>>& triangles);
 
-// The same half-edge structure for the triangles t with closed_face[t] set,
-// which find_closed_components proved to be closed, consistently oriented
+// The same half-edge structure for the triangles t with silhouette_face[t] set,
+// which find_silhouette_components proved to be closed, consistently oriented
 // 2-manifolds, linked straight from their edge table: no search for each
 // half-edge as OpenMesh's add_face does, and no second sort of the edges.
 // Face i is the i-th marked triangle, vertex v is positions[v], and edges
 // come in the table's order.
 HalfEdgeMesh link_half_edge_mesh(const std::vector<glm::dvec3>& positions,
                                  const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeTable& edges,
-                                 const std::vector<uint8_t>& closed_face);
+                                 const std::vector<uint8_t>& silhouette_face);
 
 }  // namespace umbra

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <map>
 
-#include "mesh/topology/closed_components.hpp"
+#include "mesh/topology/silhouette_components.hpp"
 #include "mesh/topology/half_edge_mesh.hpp"
 #include "mesh/check/mesh_check.hpp"
 #include "tests/mesh/mesh_builders.hpp"
@@ -73,9 +73,9 @@ TEST(HalfEdgeMesh, LinkedFromTheEdgeTableItIsTheMeshOpenMeshBuildsFaceByFace) {
   for (const PolygonSoup& soup : {unit_cube(), quad_torus(8, 6), uv_sphere(9, 13), hollow_cube(), octahedron()}) {
     const MeshAnalysis a = analyse_mesh(soup);
     const EdgeTable edges = build_edge_table(a.triangles, a.positions.size());
-    const ClosedComponents closed = find_closed_components(a.triangles, edges, a.positions.size());
-    ASSERT_TRUE(closed.all_closed());
-    const HalfEdgeMesh linked = link_half_edge_mesh(a.positions, a.triangles, edges, closed.closed_face);
+    const SilhouetteComponents closed = find_silhouette_components(a.triangles, edges, a.positions.size());
+    ASSERT_TRUE(closed.all_cast_from_silhouette());
+    const HalfEdgeMesh linked = link_half_edge_mesh(a.positions, a.triangles, edges, closed.silhouette_face);
     const HalfEdgeMesh built = build_half_edge_mesh(a.positions, a.triangles);
     EXPECT_EQ(linked.n_faces(), built.n_faces());
     EXPECT_EQ(linked.n_edges(), built.n_edges());
@@ -95,9 +95,9 @@ TEST(HalfEdgeMesh, LinkedMeshHoldsOnlyTheClosedFacesOfAMixedMesh) {
   // A closed cube and an open one: only the closed cube's 12 triangles are linked.
   const MeshAnalysis a = analyse_mesh(combine(unit_cube(), without_faces(box_triangles(glm::dvec3(3.0), glm::dvec3(4.0)), {0})));
   const EdgeTable edges = build_edge_table(a.triangles, a.positions.size());
-  const ClosedComponents closed = find_closed_components(a.triangles, edges, a.positions.size());
-  ASSERT_EQ(closed.closed_components, 1u);
-  const HalfEdgeMesh linked = link_half_edge_mesh(a.positions, a.triangles, edges, closed.closed_face);
+  const SilhouetteComponents closed = find_silhouette_components(a.triangles, edges, a.positions.size());
+  ASSERT_EQ(closed.silhouette_components, 1u);
+  const HalfEdgeMesh linked = link_half_edge_mesh(a.positions, a.triangles, edges, closed.silhouette_face);
   EXPECT_EQ(linked.n_faces(), 12u);
   EXPECT_EQ(linked.n_edges(), 18u);
   EXPECT_EQ(boundary_halfedges(linked), 0u);

@@ -156,9 +156,9 @@ TEST(RealFilesAgreement, TheRendererCastsEveryComponentAsTheCheckDecides) {
     options.self_intersection_seconds = 0.0;
     options.triangle_topology = true;
     const MeshAnalysis a = analyse_mesh(soup, options);
-    const ClosedComponents& c = a.topology->components;
+    const SilhouetteComponents& c = a.topology->components;
     EXPECT_EQ(c.components, a.report.components.size());
-    EXPECT_EQ(c.closed_components, a.report.silhouette_components());
+    EXPECT_EQ(c.silhouette_components, a.report.silhouette_components());
     EXPECT_EQ(c.border_loops, a.report.border_loops);
     size_t overlapping_diagonals = 0;
     for (const ComponentReport& r : a.report.components) overlapping_diagonals += r.overlapping_diagonals;

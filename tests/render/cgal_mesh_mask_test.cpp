@@ -46,7 +46,7 @@ class CgalMeshScene : public testing::TestWithParam<CgalMeshCase> {};
 TEST_P(CgalMeshScene, MaskMatchesExactShadowRays) {
   const Scene scene = scene_with(GetParam().file, 0.0);
   ASSERT_EQ(scene.meshes.size(), 1u);
-  EXPECT_EQ(scene.meshes[0].components.all_closed(), GetParam().closed);
+  EXPECT_EQ(scene.meshes[0].components.all_cast_from_silhouette(), GetParam().closed);
   test::expect_masks_match_reference(scene, 160, 120, 64);
 }
 
@@ -75,7 +75,7 @@ TEST(CgalMeshVolumes, SilhouetteVolumesHaveNoBoundaryForManyLights) {
   for (const char* file : {"double-torus-example.off", "bones.off"}) {
     const Scene scene = scene_with(file, 30.0);
     const std::vector<MeshCaster> casters = prepare_mesh_casters(scene);
-    ASSERT_FALSE(casters[0].closed.triangles.empty()) << file;
+    ASSERT_FALSE(casters[0].silhouette.triangles.empty()) << file;
     for (int i = 0; i < 24; ++i) {
       const double angle = 0.2618 * i;
       const glm::dvec3 light(1.5 * std::cos(angle), 1.5 * std::sin(angle), 0.3 + 0.1 * i);

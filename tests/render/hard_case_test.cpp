@@ -156,7 +156,7 @@ TEST(HardMesh, LightInTheirFacesPlanes) {
   for (const char* light : {"light 0.9 0.2 -0.1\n", "light 0.3 0.3 1.5\n", "light 0.3 -1.2 -0.1\n"}) {
     SCOPED_TRACE(light);
     const Scene scene = mesh_scene(light, "box.obj", box);
-    ASSERT_TRUE(scene.meshes[0].components.all_closed());
+    ASSERT_TRUE(scene.meshes[0].components.all_cast_from_silhouette());
     expect_hard_case_holds(scene);
   }
 }
@@ -169,7 +169,7 @@ TEST(HardMesh, LightInAPlaneTwoBoxesShare) {
                             box_obj(glm::dvec3(0.2, 0.3, -1.0), glm::dvec3(0.6, 0.8, -0.2), 8);
   Scene scene = mesh_scene("light 0.6 0 1.2\n", "two_boxes.obj", boxes);
   scene.camera = Camera{glm::dvec3(2.2, 0.3, 1.4), glm::dvec3(0.0, 0.0, -0.6), glm::dvec3(0.0, 0.0, 1.0), 50.0};
-  ASSERT_TRUE(scene.meshes[0].components.all_closed());
+  ASSERT_TRUE(scene.meshes[0].components.all_cast_from_silhouette());
   const int first_box_triangle = 2;  // after the floor's two
   for (const int face_x_06 : {6, 7, 18, 19}) EXPECT_EQ(reference_lit_pixels_of(scene, first_box_triangle + face_x_06, 120), 0);
   expect_hard_case_holds(scene);
@@ -184,7 +184,7 @@ TEST(HardMesh, NearlyCoplanarNeighbours) {
   for (const double bump : {1e-12, -1e-12, ulp, -ulp}) {
     SCOPED_TRACE(bump);
     const Scene scene = mesh_scene("light 0.8 0.5 -0.1\n", "fan.obj", test::fan_top_box_obj(-0.3, 0.3, -0.7, -0.1, bump));
-    ASSERT_TRUE(scene.meshes[0].components.all_closed());
+    ASSERT_TRUE(scene.meshes[0].components.all_cast_from_silhouette());
     expect_hard_case_holds(scene);
   }
 }
@@ -361,7 +361,7 @@ TEST(HardView, ACameraMovedIntoAClosedMeshSeesItsInside) {
   // camera moved inside the box, as zooming in `umbra view` does. Lit from
   // inside, the walls the eye now sees are the mesh's back faces.
   Scene scene = mesh_scene("light 0.2 0.1 0.1\n", "room.obj", box_obj(-0.6, 0.6, -0.9, 0.3));
-  ASSERT_TRUE(scene.meshes[0].components.all_closed());
+  ASSERT_TRUE(scene.meshes[0].components.all_cast_from_silhouette());
   require_lights_off_casters(scene);
   RenderSettings settings;
   settings.width = settings.height = 100;
@@ -483,7 +483,7 @@ TEST(HardCount, OneOpenMeshOf256And300LayersOverVisiblePixels) {
     const Scene scene = parse_scene_text(
         "light 1.5 0 1\n" + floor_text() + "mesh \"" + write_mesh("squares.obj", squares_along_a_light_ray(count)) + "\"\n",
         "squares.scene");
-    ASSERT_FALSE(scene.meshes[0].components.all_closed());
+    ASSERT_FALSE(scene.meshes[0].components.all_cast_from_silhouette());
     ASSERT_GE(mesh_layers_over(scene, {-0.5, 0.0, -1.0}), count);
     // Never per-triangle volumes, nor the mesh cut into parts: one
     // edge-multiplicity volume, all its layers in one count.
@@ -502,7 +502,7 @@ TEST(HardCount, OneClosedMeshOf256LayersOverVisiblePixels) {
   const Scene scene = parse_scene_text(
       "light 1.5 0 1\n" + floor_text() + "mesh \"" + write_mesh("boxes.obj", boxes_along_a_light_ray(256)) + "\"\n",
       "boxes.scene");
-  ASSERT_TRUE(scene.meshes[0].components.all_closed());
+  ASSERT_TRUE(scene.meshes[0].components.all_cast_from_silhouette());
   // Each box is crossed twice on the way to the light, of which its silhouette volume counts one.
   ASSERT_GE(mesh_layers_over(scene, {-0.5, 0.0, -1.0}), 2 * 256);
   test::expect_masks_match_reference(scene, 100, 100, 64);
@@ -525,7 +525,7 @@ TEST(HardCount, AMeshVolumeOverlappingItself300Times) {
   std::ostringstream obj;
   for (int k = 0; k < 300; ++k) obj << box_obj(-0.3, 0.3, -0.6 + 0.002 * k, -0.6 + 0.002 * k + 0.001, 8 * k);
   const Scene scene = mesh_scene("light 0.05 0.1 1.8\n", "plates.obj", obj.str());
-  ASSERT_TRUE(scene.meshes[0].components.all_closed());
+  ASSERT_TRUE(scene.meshes[0].components.all_cast_from_silhouette());
   test::expect_masks_match_reference(scene, 100, 100, 64);
 }
 

@@ -64,7 +64,7 @@ PolygonSoup box_with_fins() {
 struct OpenCase {
   const char* name;
   PolygonSoup (*soup)();
-  const char* shape;  // ClosedComponents::phrase()
+  const char* shape;  // SilhouetteComponents::phrase()
 };
 
 void PrintTo(const OpenCase& c, std::ostream* out) { *out << c.name; }
@@ -119,7 +119,7 @@ TEST(MeshCasterPhrase, ComponentsTouchingAtAVertexEachCastFromTheirSilhouette) {
   EXPECT_EQ(report.volume_kind(), VolumeKind::kSilhouette);
   const MeshCaster caster = prepare_mesh_casters(scene)[0];
   EXPECT_EQ(caster.phrase(), "1 non-manifold vertex; 2 of 2 components closed: silhouette volume");
-  EXPECT_EQ(caster.closed.triangles.size(), 24u);
+  EXPECT_EQ(caster.silhouette.triangles.size(), 24u);
   EXPECT_TRUE(caster.open.empty());
   test::expect_masks_match_reference(scene, 160, 120, 64);
   test::expect_masks_match_reference(scene_with("corner_boxes_turned", soup, 110.0), 120, 120, 64, 100.0);

@@ -90,7 +90,7 @@ TEST(StagedMesh, StandsTheMeshOnAFloorUnderALightAboveItAndItsTextIsTheSameScene
   const glm::dvec3 size = m.bounds_max - m.bounds_min;
   EXPECT_NEAR(std::max({size.x, size.y, size.z}), 2.0, 1e-12);
   EXPECT_NEAR(glm::length(m.bounds_min + m.bounds_max), 0.0, 1e-12);
-  EXPECT_TRUE(m.components.all_closed());
+  EXPECT_TRUE(m.components.all_cast_from_silhouette());
   EXPECT_TRUE(scene.warnings.empty());
   // On the floor: two triangles a thousandth below the model's lowest point
   // (so that a face lying on the floor does not fight it over depth),
@@ -183,7 +183,7 @@ TEST(StagedMesh, RealEngineModelMaskMatchesExactShadowRays) {
   ASSERT_EQ(scene.meshes.size(), 1u);
   EXPECT_EQ(scene.meshes[0].triangles.size(), 110336u);
   EXPECT_EQ(scene.meshes[0].components.components, 96u);
-  EXPECT_EQ(scene.meshes[0].components.closed_components, 29u);
+  EXPECT_EQ(scene.meshes[0].components.silhouette_components, 29u);
   // Small: the reference casts every pixel's rays against every triangle.
   test::expect_masks_match_reference(scene, 64, 64, 64);
 }

@@ -357,7 +357,7 @@ TEST_F(SceneMeshes, MeshIsLoadedRelativeToTheSceneAndTransformedScaleRotateTrans
   EXPECT_NEAR(m.positions[1].y, 4.0, 1e-15);
   EXPECT_NEAR(m.positions[1].z, 3.0, 1e-15);
   EXPECT_EQ(m.triangles.size(), 4u);
-  EXPECT_TRUE(m.components.all_closed());
+  EXPECT_TRUE(m.components.all_cast_from_silhouette());
   ASSERT_EQ(scene.warnings.size(), 1u);
   EXPECT_EQ(scene.warnings[0].message,
             "mesh \"parts/tet.obj\" reaches outside the cube [-1,1]^3 that scenes are made for (its box is (-1, 2, 3) to (1, 4, 5); "
@@ -421,7 +421,7 @@ TEST_F(SceneMeshes, OpenMeshGetsAWarningThatSaysHowItCastsItsShadow) {
   EXPECT_EQ(scene.warnings[0].where.str(), dir() + "s.scene:2:1");
   EXPECT_EQ(scene.warnings[0].message,
             "mesh \"open.obj\" is open, 1 hole: edge-multiplicity volume");
-  EXPECT_FALSE(scene.meshes[0].components.all_closed());
+  EXPECT_FALSE(scene.meshes[0].components.all_cast_from_silhouette());
 }
 
 TEST_F(SceneMeshes, ErrorInsideTheMeshFileNamesThatFileAndTheStatement) {

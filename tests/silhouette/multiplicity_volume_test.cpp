@@ -11,7 +11,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "mesh/topology/closed_components.hpp"
+#include "mesh/topology/silhouette_components.hpp"
 #include "mesh/topology/edge_table.hpp"
 #include "silhouette/mesh_caster.hpp"
 #include "silhouette/mesh_volume.hpp"

@@ -1,4 +1,4 @@
-#include "mesh/topology/closed_components.hpp"
+#include "mesh/topology/silhouette_components.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -24,7 +24,7 @@ uint32_t corner_at(const std::array<uint32_t, 3>& tri, uint32_t face, uint32_t v
 
 }  // namespace
 
-std::string ClosedComponents::phrase() const {
+std::string SilhouetteComponents::phrase() const {
   if (components == 0) return "no faces";
   std::string s;
   const auto add = [&s](const std::string& part) { s += (s.empty() ? "" : ", ") + part; };
@@ -35,21 +35,21 @@ std::string ClosedComponents::phrase() const {
   if (overlapping_diagonals > 0)
     add(count_of(overlapping_diagonals, "diagonal", "diagonals") + " along another edge once triangulated");
   if (s.empty()) return "closed 2-manifold";
-  if (closed_components > 0) s += "; " + std::to_string(closed_components) + " of " + std::to_string(components) +
+  if (silhouette_components > 0) s += "; " + std::to_string(silhouette_components) + " of " + std::to_string(components) +
                                    " components closed";
   return s;
 }
 
-std::string ClosedComponents::volume_phrase() const {
-  if (closed_components == components) return "silhouette volume";
-  if (closed_components == 0) return "edge-multiplicity volume";
-  return "silhouette volume for its " + count_of(closed_components, "closed component", "closed components") +
-         ", edge multiplicity for the other " + std::to_string(components - closed_components);
+std::string SilhouetteComponents::volume_phrase() const {
+  if (silhouette_components == components) return "silhouette volume";
+  if (silhouette_components == 0) return "edge-multiplicity volume";
+  return "silhouette volume for its " + count_of(silhouette_components, "closed component", "closed components") +
+         ", edge multiplicity for the other " + std::to_string(components - silhouette_components);
 }
 
-ClosedComponents find_closed_components(const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeTable& edges,
+SilhouetteComponents find_silhouette_components(const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeTable& edges,
                                         size_t vertex_count) {
-  ClosedComponents result;
+  SilhouetteComponents result;
   const uint32_t face_count = uint32_t(triangles.size());
   // Faces join across any edge; corners round a vertex join into fans across
   // the edges with two faces, however those run (as the check joins them).
@@ -116,15 +116,15 @@ ClosedComponents find_closed_components(const std::vector<std::array<uint32_t, 3
     s.oriented = s.oriented && part.oriented;
   }
   std::vector<uint8_t> root_seen(face_count, 0);
-  result.closed_face.resize(face_count);
+  result.silhouette_face.resize(face_count);
   for (uint32_t t = 0; t < face_count; ++t) {
     const uint32_t root = components.find(t);
     const bool closed = casts_from_silhouette(shape[root]);
-    result.closed_face[t] = closed;
+    result.silhouette_face[t] = closed;
     if (root_seen[root]) continue;
     root_seen[root] = 1;
     ++result.components;
-    result.closed_components += closed;
+    result.silhouette_components += closed;
   }
   return result;
 }

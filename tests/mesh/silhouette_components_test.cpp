@@ -2,7 +2,7 @@
 // count by hand.
 #include <gtest/gtest.h>
 
-#include "mesh/topology/closed_components.hpp"
+#include "mesh/topology/silhouette_components.hpp"
 #include "mesh/topology/edge_table.hpp"
 
 namespace umbra {
@@ -16,8 +16,8 @@ Triangles tetrahedron(uint32_t first = 0) {
   return {{a, c, b}, {a, b, d}, {a, d, c}, {b, c, d}};
 }
 
-ClosedComponents components_of(const Triangles& triangles, size_t vertices) {
-  return find_closed_components(triangles, build_edge_table(triangles, vertices), vertices);
+SilhouetteComponents components_of(const Triangles& triangles, size_t vertices) {
+  return find_silhouette_components(triangles, build_edge_table(triangles, vertices), vertices);
 }
 
 Triangles operator+(Triangles a, const Triangles& b) {
@@ -43,72 +43,72 @@ TEST(EdgeTable, ListsEachEdgeOnceWithEveryFaceAndItsDirection) {
   EXPECT_EQ(t.uses[5], (1u << 1) | 0u);
 }
 
-TEST(ClosedComponents, ATetrahedronIsAClosed2Manifold) {
-  const ClosedComponents c = components_of(tetrahedron(), 4);
-  EXPECT_TRUE(c.all_closed());
-  EXPECT_EQ(c.closed_face, (std::vector<uint8_t>{1, 1, 1, 1}));
+TEST(SilhouetteComponents, ATetrahedronIsAClosed2Manifold) {
+  const SilhouetteComponents c = components_of(tetrahedron(), 4);
+  EXPECT_TRUE(c.all_cast_from_silhouette());
+  EXPECT_EQ(c.silhouette_face, (std::vector<uint8_t>{1, 1, 1, 1}));
   EXPECT_EQ(c.phrase(), "closed 2-manifold");
   EXPECT_EQ(c.volume_phrase(), "silhouette volume");
 }
 
-TEST(ClosedComponents, ATetrahedronWithoutAFaceIsOpenWithOneHole) {
+TEST(SilhouetteComponents, ATetrahedronWithoutAFaceIsOpenWithOneHole) {
   Triangles open = tetrahedron();
   open.pop_back();
-  const ClosedComponents c = components_of(open, 4);
+  const SilhouetteComponents c = components_of(open, 4);
   EXPECT_EQ(c.border_edges, 3u);
   EXPECT_EQ(c.border_loops, 1u);
-  EXPECT_EQ(c.closed_components, 0u);
+  EXPECT_EQ(c.silhouette_components, 0u);
   EXPECT_EQ(c.phrase(), "open, 1 hole");
   EXPECT_EQ(c.volume_phrase(), "edge-multiplicity volume");
 }
 
-TEST(ClosedComponents, AFinOnAClosedMeshMakesANonManifoldEdge) {
+TEST(SilhouetteComponents, AFinOnAClosedMeshMakesANonManifoldEdge) {
   // A third face on the tetrahedron's edge 0-1 (the fin reaches vertex 4).
-  const ClosedComponents c = components_of(tetrahedron() + Triangles{{0, 1, 4}}, 5);
+  const SilhouetteComponents c = components_of(tetrahedron() + Triangles{{0, 1, 4}}, 5);
   EXPECT_EQ(c.non_manifold_edges, 1u);
   EXPECT_EQ(c.border_edges, 2u);  // the fin's other two edges
   EXPECT_EQ(c.components, 1u);
-  EXPECT_EQ(c.closed_face, (std::vector<uint8_t>(5, 0)));
+  EXPECT_EQ(c.silhouette_face, (std::vector<uint8_t>(5, 0)));
   EXPECT_EQ(c.phrase(), "open, 1 hole, 1 non-manifold edge");
 }
 
-TEST(ClosedComponents, AFaceWoundTheOtherWayGivesThreeEdgesOfMixedWinding) {
+TEST(SilhouetteComponents, AFaceWoundTheOtherWayGivesThreeEdgesOfMixedWinding) {
   Triangles t = tetrahedron();
   std::swap(t[3][1], t[3][2]);
-  const ClosedComponents c = components_of(t, 4);
+  const SilhouetteComponents c = components_of(t, 4);
   EXPECT_EQ(c.inconsistent_edges, 3u);
-  EXPECT_FALSE(c.all_closed());
+  EXPECT_FALSE(c.all_cast_from_silhouette());
   EXPECT_EQ(c.phrase(), "3 edges with mixed winding");
 }
 
-TEST(ClosedComponents, TwoTetrahedraSharingAVertexHaveANonManifoldVertexAndEachIsClosed) {
+TEST(SilhouetteComponents, TwoTetrahedraSharingAVertexHaveANonManifoldVertexAndEachIsClosed) {
   // Vertex 0 is the apex of both; the second uses vertices 0, 4, 5, 6.
   Triangles second = tetrahedron(3);
   for (auto& tri : second)
     for (uint32_t& v : tri)
       if (v == 3) v = 0;
-  const ClosedComponents c = components_of(tetrahedron() + second, 7);
+  const SilhouetteComponents c = components_of(tetrahedron() + second, 7);
   EXPECT_EQ(c.components, 2u);
   EXPECT_EQ(c.non_manifold_vertices, 1u);
   // Each has one fan round the vertex: a closed 2-manifold on its own.
-  EXPECT_EQ(c.closed_components, 2u);
-  EXPECT_EQ(c.closed_face, std::vector<uint8_t>(8, 1));
+  EXPECT_EQ(c.silhouette_components, 2u);
+  EXPECT_EQ(c.silhouette_face, std::vector<uint8_t>(8, 1));
   EXPECT_EQ(c.phrase(), "1 non-manifold vertex; 2 of 2 components closed");
 }
 
-TEST(ClosedComponents, AClosedAndAnOpenComponentCastEachTheirOwnWay) {
-  const ClosedComponents c = components_of(tetrahedron() + Triangles{{4, 5, 6}}, 7);
+TEST(SilhouetteComponents, AClosedAndAnOpenComponentCastEachTheirOwnWay) {
+  const SilhouetteComponents c = components_of(tetrahedron() + Triangles{{4, 5, 6}}, 7);
   EXPECT_EQ(c.components, 2u);
-  EXPECT_EQ(c.closed_components, 1u);
-  EXPECT_EQ(c.closed_face, (std::vector<uint8_t>{1, 1, 1, 1, 0}));
+  EXPECT_EQ(c.silhouette_components, 1u);
+  EXPECT_EQ(c.silhouette_face, (std::vector<uint8_t>{1, 1, 1, 1, 0}));
   EXPECT_EQ(c.phrase(), "open, 1 hole; 1 of 2 components closed");
   EXPECT_EQ(c.volume_phrase(), "silhouette volume for its 1 closed component, edge multiplicity for the other 1");
 }
 
-TEST(ClosedComponents, NoFacesIsSaidSo) {
-  const ClosedComponents c = components_of({}, 0);
+TEST(SilhouetteComponents, NoFacesIsSaidSo) {
+  const SilhouetteComponents c = components_of({}, 0);
   EXPECT_EQ(c.phrase(), "no faces");
-  EXPECT_FALSE(c.all_closed());
+  EXPECT_FALSE(c.all_cast_from_silhouette());
 }
 
 }  // namespace
