@@ -11,7 +11,12 @@ EdgeRays::EdgeRays(const Scene& scene, const RenderSettings& settings) : scene_(
   building_.run([this] { caster_ = std::make_unique<RayCaster>(scene_); });
 }
 
-EdgeRays::~EdgeRays() { building_.wait(); }
+EdgeRays::~EdgeRays() {
+  try {
+    building_.wait();
+  } catch (...) {  // the picture failed first, and says why; a failed build adds nothing to that
+  }
+}
 
 void EdgeRays::antialias(Image& image) {
   building_.wait();  // rethrows what the build threw

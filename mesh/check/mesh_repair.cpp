@@ -102,11 +102,15 @@ size_t orient_closed_components_outward(Mesh& mesh) {
 
 // What fill_holes did, in a line each.
 void say_holes(const HoleFilling& holes, size_t max_edges, std::vector<std::string>& changes) {
-  if (holes.filled > 0)
-    changes.push_back("filled " + counted(holes.filled, "hole", "holes") + " with " +
-                      counted(holes.triangles_added, "triangle", "triangles") + ", refined and faired to the surface round them" +
-                      (holes.lobes ? " (" + counted(holes.lobes, "lobe", "lobes") + " of holes whose border passes twice through a point, each filled on its own)" : "") +
-                      (holes.faired_roughly ? " (" + std::to_string(holes.faired_roughly) + " refined but not faired: the solver failed)" : ""));
+  if (holes.filled > 0) {
+    std::string line = "filled " + counted(holes.filled, "hole", "holes") + " with " +
+                       counted(holes.triangles_added, "triangle", "triangles") + ", refined and faired to the surface round them";
+    if (holes.lobes)
+      line += " (" + counted(holes.lobes, "lobe", "lobes") + " of holes whose border passes twice through a point, each filled on its own)";
+    if (holes.faired_roughly)
+      line += " (" + std::to_string(holes.faired_roughly) + " refined but not faired: the solver failed)";
+    changes.push_back(line);
+  }
   if (!holes.too_large.empty()) {
     const size_t largest = *std::max_element(holes.too_large.begin(), holes.too_large.end());
     changes.push_back("left " + counted(holes.too_large.size(), "hole", "holes") + " of more than " + std::to_string(max_edges) +
