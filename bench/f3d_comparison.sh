@@ -22,9 +22,7 @@ for tool in f3d Xvfb /usr/bin/time; do
 done
 
 . bench/timing.sh
-require_engine
-require_built $build make_subdivided_mesh
-subdivided_bunny "$data" 1M
+require_engine_and_bunny $build
 subdivided_bunny "$data" 4M
 
 display=:$((90 + RANDOM % 100))

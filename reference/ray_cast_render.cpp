@@ -200,6 +200,24 @@ void on_every_core(size_t count, const Job& job) {
   for (std::thread& w : workers) w.join();
 }
 
+// Draws again each pixel of `image` that edge_pixels finds, from `sampler`'s
+// samples x samples rays; returns how many.
+size_t redraw_edge_pixels(const Scene& scene, const FrameSampler& sampler, Image& image, int samples) {
+  const std::vector<uint8_t> edge = edge_pixels(image);
+  std::vector<size_t> redrawn;
+  for (size_t k = 0; k < edge.size(); ++k)
+    if (edge[k]) redrawn.push_back(k);
+  // Each worker takes a run of pixels, so that neighbours share its cache.
+  constexpr size_t kRun = 64;
+  on_every_core((redrawn.size() + kRun - 1) / kRun, [&](size_t run) {
+    for (size_t k = run * kRun; k < std::min(redrawn.size(), (run + 1) * kRun); ++k) {
+      const int x = int(redrawn[k] % size_t(image.width)), y = int(redrawn[k] / size_t(image.width));
+      put_pixel_mean(image, x, y, sampler.pixel_mean(x, y, samples, nullptr), scene.background.color, scene.tone);
+    }
+  });
+  return redrawn.size();
+}
+
 }  // namespace
 
 RayCastFrame ray_cast_frame(const Scene& scene, int width, int height, int samples, AntialiasedPixels where) {
@@ -213,25 +231,12 @@ RayCastFrame ray_cast_frame(const Scene& scene, int width, int height, int sampl
     for (int x = 0; x < width; ++x)
       put_pixel_mean(frame.image, x, y, sampler.pixel_mean(x, y, first_samples, &frame.masks), scene.background.color, scene.tone);
   });
-  if (first_samples != samples) ray_cast_edge_pixels(scene, caster, frame.image, samples);
+  if (first_samples != samples) redraw_edge_pixels(scene, sampler, frame.image, samples);
   return frame;
 }
 
 size_t ray_cast_edge_pixels(const Scene& scene, const RayCaster& caster, Image& image, int samples) {
-  const std::vector<uint8_t> edge = edge_pixels(image);
-  std::vector<size_t> redrawn;
-  for (size_t k = 0; k < edge.size(); ++k)
-    if (edge[k]) redrawn.push_back(k);
-  const FrameSampler sampler(scene, caster, image.width, image.height);
-  // Each worker takes a run of pixels, so that neighbours share its cache.
-  constexpr size_t kRun = 64;
-  on_every_core((redrawn.size() + kRun - 1) / kRun, [&](size_t run) {
-    for (size_t k = run * kRun; k < std::min(redrawn.size(), (run + 1) * kRun); ++k) {
-      const int x = int(redrawn[k] % size_t(image.width)), y = int(redrawn[k] / size_t(image.width));
-      put_pixel_mean(image, x, y, sampler.pixel_mean(x, y, samples, nullptr), scene.background.color, scene.tone);
-    }
-  });
-  return redrawn.size();
+  return redraw_edge_pixels(scene, FrameSampler(scene, caster, image.width, image.height), image, samples);
 }
 
 }  // namespace umbra

@@ -56,8 +56,8 @@ void append_silhouette_quads(const MeshAdjacency& mesh, const std::vector<uint8_
   const size_t added = append_in_order(
       volume, mesh.edge_faces.size(),
       [&](size_t e) {
-        const auto& faces = mesh.edge_faces[e];
-        return facing[faces[0]] != facing[faces[1]] ? size_t(6) : size_t(0);
+        uint32_t a = 0, b = 0;
+        return oriented_silhouette_edge(mesh, facing.data(), e, a, b) ? size_t(6) : size_t(0);
       },
       [&](size_t e, uint32_t* out) {
         uint32_t a = 0, b = 0;
