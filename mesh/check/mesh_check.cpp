@@ -23,8 +23,8 @@ namespace umbra {
 namespace {
 
 template <typename List>
-bool room_for(const List& list) {
-  return list.size() < MeshReport::kMaxExamples;
+bool room_for(const List& list, size_t most) {
+  return list.size() < most;
 }
 
 // Per component, from what the stages found: closed, manifold, orientable
@@ -168,7 +168,7 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
     if (searched) {
       search.run([&] {
         found = find_self_intersections(merged.positions, triangles.triangles, triangles.face,
-                                        options.self_intersection_seconds, MeshReport::kMaxExamples);
+                                        options.self_intersection_seconds, options.max_examples);
       });
     }
     std::vector<uint8_t> used(vertex_count, 0);
@@ -178,12 +178,12 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
     for (uint32_t f = 0; f < soup.polygon_count(); ++f) {
       if (!faces.degenerate(f)) continue;
       ++report.degenerate_faces;
-      if (room_for(examples.degenerate_faces)) examples.degenerate_faces.push_back(face_ref(f));
+      if (room_for(examples.degenerate_faces, options.max_examples)) examples.degenerate_faces.push_back(face_ref(f));
     }
     for (uint32_t f = 0; f < soup.polygon_count(); ++f) {
       if (!faces.duplicate[f]) continue;
       ++report.duplicate_faces;
-      if (room_for(examples.duplicate_faces)) examples.duplicate_faces.push_back({face_ref(f), face_ref(faces.duplicate_of[f])});
+      if (room_for(examples.duplicate_faces, options.max_examples)) examples.duplicate_faces.push_back({face_ref(f), face_ref(faces.duplicate_of[f])});
     }
 
     for (uint32_t f = 0; f < soup.polygon_count() && !has_polygons; ++f)
@@ -195,17 +195,17 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
     for (const EdgeRun& e : groups.edges) {
       if (e.uses == 1) {
         ++report.border_edges;
-        if (room_for(examples.border_edges)) examples.border_edges.push_back({vertex_ref(e.a), vertex_ref(e.b)});
+        if (room_for(examples.border_edges, options.max_examples)) examples.border_edges.push_back({vertex_ref(e.a), vertex_ref(e.b)});
       } else if (e.uses > 2) {
         ++report.non_manifold_edges;
-        if (room_for(examples.non_manifold_edges)) examples.non_manifold_edges.push_back({vertex_ref(e.a), vertex_ref(e.b)});
+        if (room_for(examples.non_manifold_edges, options.max_examples)) examples.non_manifold_edges.push_back({vertex_ref(e.a), vertex_ref(e.b)});
       }
     }
 
     labels = label_components(faces, groups);
     VertexFans fans = find_vertex_fans(soup, faces, groups, labels, vertex_count);
     report.non_manifold_vertices = fans.non_manifold_vertices.size();
-    for (size_t k = 0; k < std::min(fans.non_manifold_vertices.size(), MeshReport::kMaxExamples); ++k)
+    for (size_t k = 0; k < std::min(fans.non_manifold_vertices.size(), options.max_examples); ++k)
       examples.non_manifold_vertices.push_back(vertex_ref(fans.non_manifold_vertices[k]));
     const BorderLoops loops = count_border_loops(groups, labels, vertex_count);
     report.border_loops = loops.loops;
@@ -219,7 +219,7 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
     for (uint32_t f = 0; f < soup.polygon_count(); ++f) {
       if (!flip[f]) continue;
       ++report.faces_to_flip;
-      if (room_for(examples.faces_to_flip)) examples.faces_to_flip.push_back(face_ref(f));
+      if (room_for(examples.faces_to_flip, options.max_examples)) examples.faces_to_flip.push_back(face_ref(f));
     }
 
     // V - E + F over the faces in the topology, each vertex once.
@@ -242,7 +242,7 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
                                       [](const ComponentReport& c) { return c.closed && c.orientable; });
   if (!searched && options.search_closed_meshes && all_closed && !report.components.empty()) {
     found = find_self_intersections(merged.positions, triangles.triangles, triangles.face,
-                                    std::numeric_limits<double>::infinity(), MeshReport::kMaxExamples);
+                                    std::numeric_limits<double>::infinity(), options.max_examples);
     searched = true;
   }
   // The flips are read, not yet made.

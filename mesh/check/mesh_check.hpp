@@ -25,6 +25,10 @@ struct CheckOptions {
   // which way its shells face is decided and the renderer may cull their
   // back faces (MeshReport::back_faces_hidden).
   bool search_closed_meshes = false;
+  // How many offending elements of each kind the report lists
+  // (MeshReport::examples): a few to find in the file, or every one for a
+  // caller that marks them all (the Python module's defect arrays).
+  size_t max_examples = MeshReport::kMaxExamples;
 };
 
 // The report, and the mesh as the renderer takes it: coincident points

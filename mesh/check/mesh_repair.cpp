@@ -122,18 +122,10 @@ void say_holes(const HoleFilling& holes, size_t max_edges, std::vector<std::stri
                       " open that no triangulation without a degenerate or crossing triangle fills");
 }
 
-}  // namespace
-
-bool repair_can_write(const std::string& path) {
-  const MeshFormat* format = mesh_format_by_id(mesh_format_of(path));
-  return format && format->repair_writes;
-}
-
-RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output, const std::string& write_to,
-                          const RepairOptions& options) {
+// The repair itself, as repair_mesh documents it: the repaired surface, its
+// changes said in `changes`.
+Mesh repaired_surface(const PolygonSoup& soup, const RepairOptions& options, std::vector<std::string>& changes) {
   const size_t max_hole_edges = options.max_hole_edges;
-  RepairSummary summary;
-  auto& changes = summary.changes;
   std::vector<Point> points;
   points.reserve(soup.points.size());
   for (const glm::dvec3& p : soup.points) points.emplace_back(p.x, p.y, p.z);
@@ -200,7 +192,20 @@ RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output, co
   if (const size_t n = orient_closed_components_outward(mesh))
     changes.push_back("turned " + counted(n, "closed component", "closed components") + " outward");
   if (mesh.number_of_faces() == 0) throw InputError({soup.path, 0, 0}, "nothing left after the repair: every face was degenerate");
+  return mesh;
+}
 
+}  // namespace
+
+bool repair_can_write(const std::string& path) {
+  const MeshFormat* format = mesh_format_by_id(mesh_format_of(path));
+  return format && format->repair_writes;
+}
+
+RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output, const std::string& write_to,
+                          const RepairOptions& options) {
+  RepairSummary summary;
+  const Mesh mesh = repaired_surface(soup, options, summary.changes);
   // CGAL says why it could not write on std::cerr, unended: kept for the
   // message instead.
   std::ostringstream cgal_said;
@@ -213,6 +218,27 @@ RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output, co
     throw InputError({output, 0, 0}, "cannot write the repaired mesh" + (why.empty() ? "" : " (CGAL: " + why + ")"));
   }
   return summary;
+}
+
+RepairedTriangles repair_to_triangles(const PolygonSoup& soup, const RepairOptions& options) {
+  RepairedTriangles repaired;
+  const Mesh mesh = repaired_surface(soup, options, repaired.summary.changes);
+  // The surface's vertices numbered afresh: hole filling may leave removed ones among them.
+  std::vector<uint32_t> index(mesh.num_vertices());
+  repaired.points.reserve(mesh.number_of_vertices());
+  for (const auto v : mesh.vertices()) {
+    const Point& p = mesh.point(v);
+    index[v.idx()] = uint32_t(repaired.points.size());
+    repaired.points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  repaired.triangles.reserve(mesh.number_of_faces());
+  for (const auto f : mesh.faces()) {
+    std::array<uint32_t, 3> t{};
+    size_t k = 0;
+    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) t[k++] = index[v.idx()];
+    repaired.triangles.push_back(t);
+  }
+  return repaired;
 }
 
 }  // namespace umbra

@@ -1,7 +1,9 @@
 #pragma once
 // `umbra check --repair`: what CGAL's Polygon Mesh Processing can fix.
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -39,5 +41,14 @@ struct RepairOptions {
 
 RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output, const std::string& write_to,
                           const RepairOptions& options = {});
+
+// The same repair, its result handed back rather than written: the
+// surface's points and triangles (every face is a triangle once repaired).
+struct RepairedTriangles {
+  RepairSummary summary;
+  std::vector<glm::dvec3> points;
+  std::vector<std::array<uint32_t, 3>> triangles;
+};
+RepairedTriangles repair_to_triangles(const PolygonSoup& soup, const RepairOptions& options = {});
 
 }  // namespace umbra

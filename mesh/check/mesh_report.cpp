@@ -158,7 +158,7 @@ void MeshReport::print_text(std::ostream& out) const {
   const auto examples_line = [&](const std::vector<std::string>& items) {
     if (items.empty()) return;
     out << "                     e.g. ";
-    for (size_t i = 0; i < items.size(); ++i) out << (i ? ", " : "") << items[i];
+    for (size_t i = 0; i < std::min(items.size(), kMaxExamples); ++i) out << (i ? ", " : "") << items[i];
     out << "\n";
   };
   const auto edges_of = [](const std::vector<ElementPair>& v) {
@@ -255,12 +255,13 @@ void MeshReport::print_json(std::ostream& out) const {
   const auto ref = [](const char* kind, const ElementRef& e) { return Json{{kind, e.index}, {"line", e.line}}; };
   const auto refs = [&](const char* kind, const std::vector<ElementRef>& list) {
     Json items = Json::array();
-    for (const ElementRef& e : list) items.push_back(ref(kind, e));
+    for (size_t i = 0; i < std::min(list.size(), kMaxExamples); ++i) items.push_back(ref(kind, list[i]));
     return items;
   };
   const auto pairs = [&](const char* kind, const std::vector<ElementPair>& list) {
     Json items = Json::array();
-    for (const auto& [first, second] : list) items.push_back(Json::array({ref(kind, first), ref(kind, second)}));
+    for (size_t i = 0; i < std::min(list.size(), kMaxExamples); ++i)
+      items.push_back(Json::array({ref(kind, list[i].first), ref(kind, list[i].second)}));
     return items;
   };
   constexpr size_t kListed = 1000;

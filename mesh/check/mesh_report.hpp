@@ -114,7 +114,9 @@ struct MeshReport {
   std::vector<ComponentReport> components;
   std::vector<ReadWarning> warnings;  // the reader's, for quirks it read past
 
-  // A few offending elements of each kind, to find them in the file.
+  // Offending elements of each kind, to find them in the file: as many as
+  // CheckOptions::max_examples says; the printed reports list the first
+  // kMaxExamples.
   struct Examples {
     std::vector<ElementPair> border_edges;        // the edge's two vertices
     std::vector<ElementPair> non_manifold_edges;  // the edge's two vertices
