@@ -191,6 +191,15 @@ class EglSurface : public HeadlessContext::Surface {
   }
   ~EglSurface() override { release(); }
 
+  void make_current() override {
+    const EglLibrary& l = egl();
+    if (!l.bind_api(EGL_OPENGL_API) || !l.make_current(display_.display, surface_, surface_, context_))
+      throw std::runtime_error("EGL: cannot make the context current on this thread (" + error_code() + ")");
+  }
+  void release_current() override {
+    egl().make_current(display_.display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  }
+
  private:
   void release() {
     const EglLibrary& l = egl();

@@ -58,6 +58,10 @@ HeadlessContext::~HeadlessContext() = default;
 
 const std::string& HeadlessContext::platform() const { return surface_->platform; }
 
+void HeadlessContext::make_current() { surface_->make_current(); }
+
+void HeadlessContext::release_current() { surface_->release_current(); }
+
 std::string HeadlessContext::description() const { return surface_->platform + ": " + gl_description(); }
 
 }  // namespace umbra

@@ -46,6 +46,12 @@ class HeadlessContext {
   HeadlessContext(const HeadlessContext&) = delete;
   HeadlessContext& operator=(const HeadlessContext&) = delete;
 
+  // A context is current on the thread that made it. Another thread draws
+  // in it once it makes it current there, after the first has released it
+  // (a Python module's renderer, called from any thread, one at a time).
+  void make_current();
+  void release_current();
+
   int width() const { return width_; }
   int height() const { return height_; }
   // "EGL, NVIDIA device /dev/dri/renderD128", "EGL, Mesa's software device"
@@ -61,6 +67,18 @@ class HeadlessContext {
   std::unique_ptr<Surface> surface_;
   int width_;
   int height_;
+};
+
+// The context current on this thread for a scope, released at its end.
+class CurrentContext {
+ public:
+  explicit CurrentContext(HeadlessContext& context) : context_(context) { context_.make_current(); }
+  ~CurrentContext() { context_.release_current(); }
+  CurrentContext(const CurrentContext&) = delete;
+  CurrentContext& operator=(const CurrentContext&) = delete;
+
+ private:
+  HeadlessContext& context_;
 };
 
 }  // namespace umbra

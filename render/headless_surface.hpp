@@ -13,6 +13,8 @@ namespace umbra {
 
 struct HeadlessContext::Surface {
   virtual ~Surface() = default;
+  virtual void make_current() = 0;     // on the calling thread; throws std::runtime_error
+  virtual void release_current() = 0;  // from the calling thread
   std::string platform;
 };
 

@@ -67,6 +67,12 @@ class OsMesaSurface : public HeadlessContext::Surface {
   }
   ~OsMesaSurface() override { osmesa().destroy_context(context_); }
 
+  void make_current() override {
+    if (!osmesa().make_current(context_, pixel_, GL_UNSIGNED_BYTE, 1, 1))
+      throw std::runtime_error("OSMesa: cannot make the context current on this thread");
+  }
+  void release_current() override { osmesa().make_current(nullptr, nullptr, GL_UNSIGNED_BYTE, 0, 0); }
+
  private:
   OSMesaContext context_ = nullptr;
   unsigned char pixel_[4] = {};  // the default framebuffer: one RGBA8 pixel

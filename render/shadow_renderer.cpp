@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include "render/frame_drawing.hpp"
+#include "scene/camera_transform.hpp"
 #include "image/pixel_mean.hpp"
 #include "render/gl.hpp"
 #include "render/shaders.hpp"
@@ -91,6 +93,25 @@ Image ShadowRenderer::read_image() const {
 }
 
 std::vector<float> ShadowRenderer::read_depth() const { return drawing_->target().read_depth(); }
+
+std::vector<float> ShadowRenderer::view_depth() {
+  if (drawing_->samples_per_side() != 1) depth_and_ambient_pass(1);
+  const std::vector<float> window = read_depth();
+  const RenderSettings& s = plan_.settings;
+  const glm::dmat4 projection = infinite_perspective(plan_.camera.fovy_deg, double(s.width) / s.height, plan_.near_plane);
+  // Window depth d is (z_ndc + 1) / 2, and z_ndc = (P22 z + P32) / -z for
+  // the eye's z (negative ahead): so z = P32 / (-z_ndc - P22).
+  std::vector<float> depth(window.size());
+  const int w = s.width, h = s.height;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const double d = window[size_t(h - 1 - y) * size_t(w) + size_t(x)];  // the GL's row 0 is the bottom
+      const double z_ndc = 2.0 * d - 1.0;
+      depth[size_t(y) * size_t(w) + size_t(x)] =
+          d >= 1.0 ? std::numeric_limits<float>::infinity() : float(-projection[3][2] / (-z_ndc - projection[2][2]));
+    }
+  return depth;
+}
 
 void ShadowRenderer::finish() const { glFinish(); }
 

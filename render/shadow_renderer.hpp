@@ -48,6 +48,11 @@ class ShadowRenderer {
   // The window depth the last draw left, per pixel, rows from the bottom; 1
   // where no surface was drawn. For one sample a pixel (--antialias 1).
   std::vector<float> read_depth() const;
+  // The depth of the surface seen at each pixel's centre, as its distance
+  // along the camera's view axis in scene units (to the 24-bit depth
+  // buffer's precision), rows from the top; +infinity where no surface is.
+  // Draws the depth again at one sample a pixel where the last frame took more.
+  std::vector<float> view_depth();
 
   // Light `light`'s shadow mask (grey): kMaskNoSurface where no surface is
   // seen, kMaskLit where the visible point faces the light and is outside its

@@ -107,7 +107,8 @@ LoadedMesh load_mesh(MeshStatement statement, const TextureMaps& maps) {
     topology_only.self_intersection_seconds = 0.0;
     topology_only.triangle_topology = true;
     topology_only.search_closed_meshes = true;
-    analysis = analyse_mesh(read_polygon_soup(m.path, maps), topology_only);
+    analysis = statement.soup ? analyse_mesh(*statement.soup, topology_only)
+                              : analyse_mesh(read_polygon_soup(m.path, maps), topology_only);
   } catch (const InputError& e) {
     if (e.where().line == 0)  // the file as a whole: say so at the statement that names it
       throw InputError(statement.path_at, "mesh file " + in_quotes(m.path) + ": " + e.message());

@@ -5,6 +5,7 @@
 // this builds their meshes.
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,9 @@ using MeshLoadProgress = std::function<void(size_t loaded, size_t total, const s
 struct MeshStatement {
   Mesh mesh;
   FileLoc path_at;
+  // Given: the mesh itself, taken instead of reading mesh.path (a mesh
+  // handed over as arrays: array_soup.hpp).
+  std::shared_ptr<const PolygonSoup> soup;
 };
 
 // Reads every statement's file, its path taken relative to the folder of the

@@ -281,7 +281,7 @@ class SceneBuilder {
         m.translation = r.vec3("mesh translation");
       }
     }
-    pending_meshes_.push_back({std::move(m), path_at});
+    pending_meshes_.push_back({std::move(m), path_at, nullptr});
   }
 
   void camera(StatementReader& r) {

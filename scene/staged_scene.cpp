@@ -174,16 +174,12 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
 
 std::string staged_scene_name(const std::string& mesh_path) { return mesh_path + " (staged)"; }
 
-Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& progress, std::string* staged,
-                               const StagingOptions& staging, const TextureMaps& maps) {
+namespace {
+
+// The stage for the mesh at `path`, or for `soup` (named `path`) where given.
+Scene stage_mesh(const std::string& path, const std::shared_ptr<const PolygonSoup>& soup, const MeshLoadProgress& progress,
+                 std::string* staged, const StagingOptions& staging, const TextureMaps& maps) {
   const std::string& up = staging.up;
-  if (!is_mesh_file(path)) {
-    if (staged) staged->clear();
-    Scene scene = parse_scene_file(path, progress, maps);
-    if (staging.view.light_turn_deg != 0.0) rotate_lights_about_z(scene, staging.view.light_turn_deg);
-    if (staging.background) scene.background = *staging.background;
-    return scene;
-  }
   const std::string file_name = std::filesystem::path(path).filename().string();
   // A scene's quoted path holds no double quote and no line break: such a
   // name is loaded as it is, and written into the scene's text with '?' in
@@ -192,7 +188,7 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
   std::string written_name = file_name;
   for (char& ch : written_name)
     if (ch == '"' || ch == '\n' || ch == '\r') ch = '?';
-  const MeshFormat* format = mesh_format_by_id(detect_mesh_format_of_file(path));
+  const MeshFormat* format = soup ? nullptr : mesh_format_by_id(detect_mesh_format_of_file(path));
   const std::string format_up = format ? std::string(format->up) : "+y";
   const std::string name = staged_scene_name(path);
   const int mesh_line = 4;
@@ -215,6 +211,7 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
     if (!staging.crease_given && staging.frame_pixels > 0) statement.mesh.smooth_triangle_limit = staging.frame_pixels;
     statement.mesh.where = {name, mesh_line, 1};
     statement.path_at = {name, mesh_line, 6};
+    statement.soup = soup;
     Scene loaded;
     loaded.path = name;
     loaded.materials.emplace_back().name = "default";
@@ -306,6 +303,23 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
     scene.warnings.push_back(std::move(w));
   }
   return scene;
+}
+
+}  // namespace
+
+Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& progress, std::string* staged,
+                               const StagingOptions& staging, const TextureMaps& maps) {
+  if (is_mesh_file(path)) return stage_mesh(path, nullptr, progress, staged, staging, maps);
+  if (staged) staged->clear();
+  Scene scene = parse_scene_file(path, progress, maps);
+  if (staging.view.light_turn_deg != 0.0) rotate_lights_about_z(scene, staging.view.light_turn_deg);
+  if (staging.background) scene.background = *staging.background;
+  return scene;
+}
+
+Scene stage_polygon_soup(std::shared_ptr<const PolygonSoup> soup, std::string* staged, const StagingOptions& staging) {
+  const std::string name = soup->path;
+  return stage_mesh(name, soup, {}, staged, staging, TextureMaps::skip());
 }
 
 }  // namespace umbra

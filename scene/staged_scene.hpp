@@ -7,6 +7,7 @@
 // stage is written as scene text that the user can save and edit, and that
 // reads back as the same scene.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -123,5 +124,10 @@ struct StagingOptions {
 // `maps` says where texture maps may be read from.
 Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& progress = {}, std::string* staged = nullptr,
                                const StagingOptions& staging = {}, const TextureMaps& maps = {});
+
+// The stage for a mesh already in memory (a mesh handed over as arrays:
+// array_soup.hpp), named soup->path, as parse_scene_or_mesh_file stages a
+// file; its up axis, where `staging` gives none, is +y (glTF's and OBJ's).
+Scene stage_polygon_soup(std::shared_ptr<const PolygonSoup> soup, std::string* staged = nullptr, const StagingOptions& staging = {});
 
 }  // namespace umbra

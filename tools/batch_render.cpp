@@ -14,15 +14,14 @@
 #include "image/contact_sheet.hpp"
 #include "image/image.hpp"
 #include "mesh/input_error.hpp"
-#include "reference/ray_cast_render.hpp"
 #include "render/headless_context.hpp"
-#include "render/shadow_renderer.hpp"
 #include "scene/scene_checks.hpp"
 #include "scene/staged_scene.hpp"
 #include "tools/command_line.hpp"
-#include "tools/edge_rays.hpp"
 #include "tools/fault_injection.hpp"
 #include "tools/isolated_runs.hpp"
+#include "tools/picture_choices.hpp"
+#include "tools/picture_drawing.hpp"
 #include "tools/picture_names.hpp"
 #include "tools/progress_bar.hpp"
 
@@ -76,17 +75,9 @@ void render_one(const std::string& path, const std::string& root, const std::str
     RenderSettings settings = o.settings;
     set_picture_samples(settings, o.antialias, o.antialias_all, o.show_volumes, scene);
     require_drawable_size(settings.width, settings.height, settings.frame_samples());
-    Image image;
-    if (settings.method == RenderMethod::kRaycast) {
-      image = ray_cast_frame(scene, settings.width, settings.height, settings.antialias, settings.antialiased).image;
-    } else {
-      if (!context) context.emplace(settings.width, settings.height, o.gl);
-      const RenderPlan plan = make_render_plan(scene, settings);
-      ShadowRenderer renderer(scene, plan);
-      EdgeRays edge_rays(scene, settings);
-      image = renderer.render_image(o.show_volumes);
-      edge_rays.antialias(image);
-    }
+    PictureRequest request;
+    request.show_volumes = o.show_volumes;
+    const Image image = draw_picture(scene, settings, request, context, o.gl).image;
     std::filesystem::create_directories(std::filesystem::path(out).parent_path());
     write_png(image, out);
     record.status = kDrawn;
@@ -142,28 +133,6 @@ bool up_to_date(const std::string& picture, const std::string& input) {
 }
 
 }  // namespace
-
-int default_antialias(const std::string& path) { return is_mesh_file(path) ? kStagedAntialias : 1; }
-
-AntialiasedPixels antialiased_pixels(bool all, bool show_volumes, const RenderSettings& settings, const Scene* scene) {
-  const bool gl = settings.method != RenderMethod::kRaycast;
-  size_t triangles = 0;
-  if (scene) {
-    triangles = scene->triangles.size();
-    for (const Mesh& m : scene->meshes) triangles += m.triangles.size();
-  }
-  const bool spheres = scene && !scene->spheres.empty();
-  const bool finer_than_pixels = triangles > size_t(settings.width) * size_t(settings.height);
-  return all || show_volumes || !draws_exact_shadows(settings.method) || (gl && (spheres || finer_than_pixels))
-             ? AntialiasedPixels::kAll
-             : AntialiasedPixels::kEdges;
-}
-
-void set_picture_samples(RenderSettings& settings, const std::optional<int>& asked, bool all, bool show_volumes,
-                         const Scene& scene) {
-  settings.antialias = asked.value_or(scene.antialias.value_or(1));
-  settings.antialiased = antialiased_pixels(all, show_volumes, settings, &scene);
-}
 
 int run_batch_render(const BatchRenderOptions& o) {
   MeshPaths found;

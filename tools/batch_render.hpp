@@ -32,25 +32,6 @@ struct BatchRenderOptions {
   bool json = false;                 // a line of JSON on stdout per input file
 };
 
-// Samples per pixel along each side that a picture of `path` gets unless
-// --antialias says: 3 for a mesh file staged on its own (a picture to show),
-// 1 for a scene file, whose pictures stay as they always were.
-int default_antialias(const std::string& path);
-// Where a picture's samples are taken: at every pixel where `all`
-// (--antialias-all) asks it, where volumes are drawn over the picture
-// (--show-volumes: rays would leave them out), where the GL's shadows are
-// not the rays' (draws_exact_shadows, and a sphere's volume is its
-// N-gon's), or where the GL draws more triangles than the picture has
-// pixels (the rays' hierarchy over them would cost more than the larger
-// frame: docs/performance.md, "Antialiasing at edges"); else at edge pixels
-// alone. Without a scene, as for a small one with no sphere.
-AntialiasedPixels antialiased_pixels(bool all, bool show_volumes, const RenderSettings& settings, const Scene* scene = nullptr);
-// The samples a picture of `scene` takes, in `settings`: as many per side
-// as --antialias `asked` says, else as the scene's `antialias` statement (a
-// staged mesh's says 3), else 1; where antialiased_pixels says.
-void set_picture_samples(RenderSettings& settings, const std::optional<int>& asked, bool all, bool show_volumes,
-                         const Scene& scene);
-
 // Writes OUT_DIR/NAME.png for each file, NAME its path relative to the
 // folder it was found in (or its file name), so that a.obj and a.stl do not
 // meet; where two files would still share a NAME (a/x.off and b/x.off), each

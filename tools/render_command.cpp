@@ -10,9 +10,6 @@
 #include <iostream>
 #include <optional>
 #include <thread>
-#include <tuple>
-
-#include <tbb/task_group.h>
 
 #include "scene/scene_checks.hpp"
 #include "scene/scene_parser.hpp"
@@ -22,13 +19,12 @@
 #include "image/image.hpp"
 #include "image/partial_file.hpp"
 #include "image/picture_file.hpp"
-#include "reference/ray_cast_render.hpp"
 #include "render/render_plan.hpp"
-#include "render/shadow_renderer.hpp"
 #include "tools/command_line.hpp"
-#include "tools/edge_rays.hpp"
 #include "tools/freed_memory_reuse.hpp"
 #include "tools/huge_page_malloc.hpp"
+#include "tools/picture_choices.hpp"
+#include "tools/picture_drawing.hpp"
 #include "tools/progress_bar.hpp"
 #include "tools/standard_input.hpp"
 
@@ -183,21 +179,13 @@ bool is_picture_name(const std::string& path) {
   return false;
 }
 
-struct RenderOptions {
+struct RenderOptions : PictureChoices {
   std::string scene_path;
   std::optional<BatchRenderOptions> batch;  // several files or a folder
   std::string output;
-  StagingOptions staging;  // for a mesh file on its own
-  std::vector<std::string> staging_given;  // the staging options named
   std::optional<std::string> mask;
   PictureOptions picture;
   bool jpeg_quality_given = false;
-  RenderSettings settings;
-  double light_angle_deg = 0.0;
-  HeadlessGl gl = HeadlessGl::kAuto;
-  std::optional<int> antialias;  // unset: by what is rendered (default_antialias)
-  bool antialias_all = false;
-  bool show_volumes = false;
   bool explain = false;
   std::optional<std::string> save_scene;  // for a mesh file: where to write the staged scene
   bool any_texture_path = false;
@@ -215,18 +203,9 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     o.picture.jpeg_quality = parse_int_in(n, t, 1, 100);
     o.jpeg_quality_given = true;
   });
-  add_size_option(options, o.settings.width, o.settings.height);
-  add_light_angle_option(options, o.light_angle_deg);
-  add_segments_option(options, o.settings.sphere_segments);
-  add_method_option(options, o.settings.method);
-  add_map_size_option(options, o.settings.shadow_map_size);
-  add_gl_option(options, o.gl);
-  options.value("--antialias", [&](const std::string& n, const std::string& t) { o.antialias = parse_int_in(n, t, 1, 4); });
-  options.flag("--antialias-all", o.antialias_all);
-  options.flag("--show-volumes", o.show_volumes);
+  add_picture_choices(options, o);
   options.flag("--explain", o.explain);
   options.value("--save-scene", [&](const std::string&, const std::string& t) { o.save_scene = t; });
-  add_staging_options(options, o.staging, o.staging_given);
   add_any_texture_path_option(options, o.any_texture_path);
   std::optional<size_t> jobs;
   std::optional<Shard> shard;
@@ -246,10 +225,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   options.parse(argv);
   if (!scenes.empty()) o.scene_path = scenes[0];
   if (o.help) return o;
-  o.gl = gl_with_environment(o.gl);
-  require_consistent_staging(o.staging);
-  note_staging_flags(o.staging, o.staging_given);
-  o.staging.view.light_turn_deg = o.light_angle_deg;
+  settle_picture_choices(o);
   if (o.scene_path.empty()) throw UsageError("no scene or mesh file given");
   std::error_code ec;
   if (o.scene_path == "-" && ::isatty(STDIN_FILENO))
@@ -376,43 +352,22 @@ int run_render_command(const std::vector<std::string>& argv) {
     require_lights_off_casters(scene);
     require_caught_shadows_kept(scene, options.settings.method);
 
-    Image image;
-    std::optional<Image> mask;
-    if (options.settings.method == RenderMethod::kRaycast) {
-      if (options.explain)
-        progress->clear(), std::cout << "render plan for " << scene.path << "\n  method: raycast, eye rays and an exact "
-                  << "shadow ray per light (CPU, double precision)\n  image: " << image_phrase(options.settings)
-                  << "\n  memory: " << malloc_pages_description(current_malloc_environment()) << "\n";
-      RayCastFrame frame = ray_cast_frame(scene, options.settings.width, options.settings.height, options.settings.antialias,
-                                          options.settings.antialiased);
-      image = std::move(frame.image);
-      if (options.mask) mask = std::move(frame.masks[0]);
-    } else {
-      // The plan is made on the other cores while the GL context is set up
-      // here; the surfaces' buffers only after it, since the casters' and
-      // the buffers' transients together raise a large mesh's peak
-      // (docs/performance.md, "Render memory"). (The plan outlives the
-      // task making it.)
-      RenderPlan plan;
-      tbb::task_group planning;
-      planning.run([&] { plan = make_render_plan(scene, options.settings); });
-      HeadlessContext context(options.settings.width, options.settings.height, options.gl);
-      planning.wait();
-      EdgeRays edge_rays(scene, options.settings);  // its hierarchy built while the GL draws
-      ShadowRenderer renderer(scene, plan);
+    if (options.explain && options.settings.method == RenderMethod::kRaycast)
+      progress->clear(), std::cout << "render plan for " << scene.path << "\n  method: raycast, eye rays and an exact "
+                << "shadow ray per light (CPU, double precision)\n  image: " << image_phrase(options.settings)
+                << "\n  memory: " << malloc_pages_description(current_malloc_environment()) << "\n";
+    std::optional<HeadlessContext> context;
+    DrawnPicture drawn = draw_picture(scene, options.settings, {options.show_volumes, options.mask.has_value(), false}, context,
+                                      options.gl, [&](const RenderPlan& plan, const HeadlessContext& made) {
       progress->update(2, "drawing");
-      if (options.explain) {
-        progress.reset();
-        print_render_plan(std::cout, scene, plan);
-        std::cout << "  OpenGL: " << context.description() << "\n";
-        std::cout << "  memory: " << malloc_pages_description(current_malloc_environment()) << "\n";
-      }
-      if (options.mask)
-        std::tie(image, mask) = renderer.render_image_and_mask(options.show_volumes, 0);
-      else
-        image = renderer.render_image(options.show_volumes);
-      edge_rays.antialias(image);
-    }
+      if (!options.explain) return;
+      progress.reset();
+      print_render_plan(std::cout, scene, plan);
+      std::cout << "  OpenGL: " << made.description() << "\n";
+      std::cout << "  memory: " << malloc_pages_description(current_malloc_environment()) << "\n";
+    });
+    const Image& image = drawn.image;
+    const std::optional<Image>& mask = drawn.mask;
 
     progress.reset();
     write_picture(image, options.output, options.picture);

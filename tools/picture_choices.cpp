@@ -1,0 +1,58 @@
+#include "tools/picture_choices.hpp"
+
+#include "render/render_method.hpp"
+
+namespace umbra {
+
+void add_picture_choices(CommandOptions& options, PictureChoices& c) {
+  add_size_option(options, c.settings.width, c.settings.height);
+  add_light_angle_option(options, c.light_angle_deg);
+  add_segments_option(options, c.settings.sphere_segments);
+  add_method_option(options, c.settings.method);
+  add_map_size_option(options, c.settings.shadow_map_size);
+  add_gl_option(options, c.gl);
+  options.value("--antialias", [&](const std::string& n, const std::string& t) { c.antialias = parse_int_in(n, t, 1, 4); });
+  options.flag("--antialias-all", c.antialias_all);
+  options.flag("--show-volumes", c.show_volumes);
+  add_staging_options(options, c.staging, c.staging_given);
+}
+
+void settle_picture_choices(PictureChoices& c) {
+  c.gl = gl_with_environment(c.gl);
+  require_consistent_staging(c.staging);
+  note_staging_flags(c.staging, c.staging_given);
+  c.staging.view.light_turn_deg = c.light_angle_deg;
+}
+
+PictureChoices parse_picture_choices(const std::vector<std::string>& words) {
+  PictureChoices choices;
+  CommandOptions options;
+  add_picture_choices(options, choices);
+  options.parse(words);
+  settle_picture_choices(choices);
+  return choices;
+}
+
+int default_antialias(const std::string& path) { return is_mesh_file(path) ? kStagedAntialias : 1; }
+
+AntialiasedPixels antialiased_pixels(bool all, bool show_volumes, const RenderSettings& settings, const Scene* scene) {
+  const bool gl = settings.method != RenderMethod::kRaycast;
+  size_t triangles = 0;
+  if (scene) {
+    triangles = scene->triangles.size();
+    for (const Mesh& m : scene->meshes) triangles += m.triangles.size();
+  }
+  const bool spheres = scene && !scene->spheres.empty();
+  const bool finer_than_pixels = triangles > size_t(settings.width) * size_t(settings.height);
+  return all || show_volumes || !draws_exact_shadows(settings.method) || (gl && (spheres || finer_than_pixels))
+             ? AntialiasedPixels::kAll
+             : AntialiasedPixels::kEdges;
+}
+
+void set_picture_samples(RenderSettings& settings, const std::optional<int>& asked, bool all, bool show_volumes,
+                         const Scene& scene) {
+  settings.antialias = asked.value_or(scene.antialias.value_or(1));
+  settings.antialiased = antialiased_pixels(all, show_volumes, settings, &scene);
+}
+
+}  // namespace umbra

@@ -1,0 +1,46 @@
+#pragma once
+// One picture of a scene as `umbra render` draws it, in memory: the GL's
+// frame with its edges antialiased by exact rays (edge_rays.hpp), or the
+// ray-cast reference's; and, where asked, light 1's shadow mask and the
+// view depth. The command, its batches and the Python module all draw
+// through this.
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "image/image.hpp"
+#include "render/headless_context.hpp"
+#include "render/render_plan.hpp"
+#include "scene/scene.hpp"
+
+namespace umbra {
+
+struct PictureRequest {
+  bool show_volumes = false;  // the volumes drawn over the picture (--show-volumes)
+  bool mask = false;          // light 1's shadow mask too (ShadowRenderer::render_mask)
+  bool depth = false;         // the view depth too (ShadowRenderer::view_depth): the GL's methods only
+};
+
+struct DrawnPicture {
+  Image image;
+  std::optional<Image> mask;
+  std::vector<float> depth;  // rows from the top; empty unless asked
+};
+
+// Called with the plan once it is made and the context is current, before
+// anything is drawn (--explain prints the plan there). Not called for the
+// ray-cast method, which has neither.
+using BeforeDrawing = std::function<void(const RenderPlan&, const HeadlessContext&)>;
+
+// `scene` drawn as `settings` say (their samples as set_picture_samples
+// leaves them). For the GL's methods the context is made on `gl` on first
+// use, or again for another picture size, while the plan is made on the
+// other cores, and kept in `context` for the next picture; it is current on
+// the calling thread while this draws, and released after. Throws
+// UsageError for depth with the ray-cast method, and for a mask of a scene
+// without a light.
+DrawnPicture draw_picture(const Scene& scene, const RenderSettings& settings, const PictureRequest& request,
+                          std::optional<HeadlessContext>& context, HeadlessGl gl, const BeforeDrawing& before = {});
+
+}  // namespace umbra
