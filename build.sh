@@ -35,6 +35,7 @@ packages=(
   nlohmann-json3-dev                 # umbra check --json (nlohmann/json)
   libtinygltf-dev                    # glTF 2.0 and GLB meshes (tinygltf)
   lib3mf-dev libzip-dev              # 3MF meshes (lib3mf; its pkg-config names libzip)
+  python3-dev pybind11-dev python3-numpy  # the Python module umbra (docs/python.md)
 )
 # What the tests, benchmarks, sanitizers and fuzzers need besides: installed
 # by ./build.sh test, sanitize and fuzz.
@@ -50,6 +51,9 @@ test_packages=(
   clang libclang-rt-14-dev           # ./build.sh fuzz: libFuzzer
   gnuplot-nox                        # umbra bench --plot
   parallel                           # docs/batch-checks.md: sharded checks with GNU parallel (tested)
+  python3-pytest python3-pil         # the Python module's tests (pytest), reading the command's pictures (Pillow)
+  python3-distributed                # docs/batch-checks.md: the Dask recipe (tested)
+  slurm-wlm munge                    # docs/batch-checks.md: the Slurm recipe, on a cluster the test starts (tested)
 )
 case "${1:-}" in
   test|sanitize|fuzz) packages+=("${test_packages[@]}") ;;
@@ -58,9 +62,9 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo=sudo
 if ((${#missing[@]})); then
-  sudo=""
-  [ "$(id -u)" -eq 0 ] || sudo=sudo
   echo "installing: ${missing[*]}"
   $sudo apt-get update -q
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
@@ -74,7 +78,9 @@ case "${1:-}" in
     # -O1 and line tables only: AddressSanitizer asks for -O1 or more, its
     # reports need only file and line, and CGAL's templates compile in half
     # the time so (the whole build: 522 s against 999 s at -O2 -g).
-    cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS="$sanitizers" \
+    # The Python module is left out: a sanitized shared object needs its
+    # runtime preloaded into python3.
+    cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DUMBRA_PYTHON=OFF -DCMAKE_CXX_FLAGS="$sanitizers" \
       -DCMAKE_C_FLAGS="$sanitizers" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
       -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
     cmake --build build-sanitize -j"$(nproc)"
@@ -85,7 +91,7 @@ case "${1:-}" in
     ;;
   fuzz)
     seconds="${2:-60}"
-    CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DUMBRA_FUZZERS=ON \
+    CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DUMBRA_FUZZERS=ON -DUMBRA_PYTHON=OFF \
       -DUMBRA_BUILD_TESTS=OFF -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link $sanitizers" -DCMAKE_C_FLAGS="$sanitizers"
     cmake --build build-fuzz -j"$(nproc)" --target scene_fuzzer mesh_fuzzer mesh_seed
     # Seed corpus: the bundled scenes, and the bundled meshes and fuzz/seeds/mesh/
@@ -113,6 +119,9 @@ tests=OFF
 [ "${1:-}" = test ] && tests=ON
 cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DUMBRA_BUILD_TESTS=$tests
 cmake --build build -j"$(nproc)"
+# The Python module where Debian's python3 finds it (docs/python.md):
+# /usr/local/lib/python3.X/dist-packages/umbra.
+$sudo cmake --install build --component python > /dev/null
 
 case "${1:-}" in
   demo)

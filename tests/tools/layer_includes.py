@@ -2,7 +2,10 @@
 """The layer rules of docs/design.md, checked against the build's own targets.
 
 Each argument is FOLDER=TARGET:LINKED, where LINKED is the comma-separated
-list of what TARGET links (CMake's LINK_LIBRARIES). A file in FOLDER may
+list of what TARGET links (CMake's LINK_LIBRARIES); TARGET may be
+TARGET,OTHER,... where the folder's files make several targets (tools/: the
+command and its library umbra_picture), and linking any of them lets a
+folder include the folder's headers. A file in FOLDER may
 include headers of its own folder and of the folders whose targets TARGET
 links, nothing else of the project; CGAL only in mesh/predicates and
 mesh/check; OpenGL and its loaders only in render/. Prints every breach and
@@ -27,9 +30,9 @@ def main():
     layers = {}  # folder -> (target, linked targets)
     for arg in sys.argv[2:]:
         folder, rest = arg.split("=", 1)
-        target, linked = rest.split(":", 1)
-        layers[folder] = (target, {t for t in linked.split(",") if t})
-    folder_of_target = {target: folder for folder, (target, _) in layers.items()}
+        targets, linked = rest.split(":", 1)
+        layers[folder] = (targets.split(","), {t for t in linked.split(",") if t})
+    folder_of_target = {target: folder for folder, (targets, _) in layers.items() for target in targets}
 
     def layer_of(path):  # the deepest layer folder holding `path`
         best = None
@@ -39,7 +42,8 @@ def main():
         return best
 
     breaches = []
-    for folder, (target, linked) in sorted(layers.items()):
+    for folder, (targets, linked) in sorted(layers.items()):
+        target = targets[0]
         allowed = {folder} | {folder_of_target[t] for t in linked if t in folder_of_target}
         files = [f for f in (source / folder).iterdir() if f.suffix in (".cpp", ".hpp")]
         if not files:
@@ -51,7 +55,7 @@ def main():
                     layer = layer_of(name)
                     if layer is not None and layer not in allowed:
                         breaches.append(f'{where} includes "{name}", but {target} does not link '
-                                        f"{layers[layer][0]} ({layer}/)")
+                                        f"{layers[layer][0][0]} ({layer}/)")
                 for pattern, owners in PRIVATE_LIBRARIES:
                     if pattern.match(name) and folder not in owners:
                         breaches.append(f"{where} includes <{name}>, which only {', '.join(sorted(owners))} may")

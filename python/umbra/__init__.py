@@ -1,0 +1,191 @@
+"""umbra: exact hard shadows, and whether a mesh is a closed 2-manifold.
+
+The command's work as Python functions, with NumPy arrays in and out
+(docs/python.md):
+
+    render(mesh, size=(800, 800), **options)  -> (h, w, 4) uint8 array
+    check(mesh)                               -> the check --json report, a dict
+    repair(mesh)                              -> vertices, faces, report
+    load(path)                                -> a Mesh: vertices, faces, format, ...
+
+A mesh is a file's path (a mesh file, or for render a scene file too), a
+(vertices, faces) pair of arrays ((n, 3) numbers and (m, 3) vertex indices,
+as trimesh holds them), or any object with .vertices and .faces (trimesh,
+Open3D, umbra.Mesh). Errors carry umbra's message, FILE:LINE:COL included:
+InputError for bad input, OptionError for a bad option, both ValueErrors.
+"""
+
+import os
+import re
+import threading
+import warnings as _warnings
+
+import numpy as np
+
+from . import _umbra
+from ._umbra import InputError, OptionError
+
+__all__ = ["render", "check", "repair", "load", "Renderer", "Mesh", "InputError", "OptionError", "UmbraWarning"]
+
+
+class UmbraWarning(UserWarning):
+    """What umbra read past or changed: a file's quirk, a mesh that is not closed."""
+
+
+class Mesh:
+    """A mesh file's content, as load() reads it: vertices (n, 3) float64 as
+    written, faces (m, 3) uint32 (a polygon of k corners split into a fan of
+    k - 2 triangles), polygon_of_face (m,), the file's polygon count, format,
+    vertex_colors ((n, 3) float32 or None), material names and warnings. Any
+    function here takes it as a mesh."""
+
+    def __init__(self, fields):
+        self.__dict__.update(fields)
+
+    def __repr__(self):
+        return f"umbra.Mesh({self.format}, {len(self.vertices)} vertices, {len(self.faces)} faces)"
+
+
+def _source(mesh, name="arrays"):
+    """The mesh as _umbra takes it: a path, or its arrays."""
+    if isinstance(mesh, (str, bytes, os.PathLike)):
+        return os.fsdecode(mesh)
+    if isinstance(mesh, tuple) and len(mesh) == 2:
+        vertices, faces = mesh
+    elif hasattr(mesh, "vertices") and hasattr(mesh, "faces"):
+        vertices, faces = mesh.vertices, mesh.faces
+        name = type(mesh).__name__
+    else:
+        raise TypeError("a mesh is a path, a (vertices, faces) pair of arrays, or an object with .vertices and .faces; "
+                        f"got {type(mesh).__name__}")
+    # Read in place where NumPy can hand the memory over as it is (any
+    # strides, any of the usual number types); only another byte order is
+    # converted first.
+    arrays = []
+    for what, values in (("vertices", vertices), ("faces", faces)):
+        array = np.asarray(values)
+        if array.dtype.kind not in "fiu":
+            raise InputError(f"{name}: {what} must hold numbers, got {array.dtype}")
+        if not array.dtype.isnative:
+            array = array.astype(array.dtype.newbyteorder("="))
+        arrays.append(array)
+    return _umbra.ArraysMesh(arrays[0], arrays[1], name)
+
+
+_OPTION = re.compile(r"--([a-z][a-z-]*)")
+
+
+def _words(size, options):
+    """render()'s keyword arguments as umbra render's options:
+    camera_azimuth=20 is --camera-azimuth 20, eye=(1, 2, 3) is --eye 1,2,3,
+    flat=True is --flat."""
+    width, height = size
+    words = ["--size", f"{int(width)}x{int(height)}"]
+    for key, value in options.items():
+        if value is None or value is False:
+            continue
+        words.append("--" + key.replace("_", "-"))
+        if value is True:
+            continue
+        if isinstance(value, (tuple, list, np.ndarray)):
+            words.append(",".join(repr(float(v)) for v in value))
+        else:
+            words.append(str(value))
+    return words
+
+
+def _python_words(message):
+    """An option's message in keyword arguments' words: --camera-azimuth is camera_azimuth."""
+    return _OPTION.sub(lambda m: m.group(1).replace("-", "_"), message)
+
+
+class Renderer:
+    """One GL context kept for many renders (a context manager; close()
+    frees it). Renders from several threads take turns; each releases the
+    GIL while it draws. gl: "auto", "egl" or "osmesa", as umbra render --gl."""
+
+    def __init__(self, gl="auto"):
+        self._native = _umbra.Renderer(gl)
+
+    def render(self, mesh, size=(800, 800), *, mask=False, depth=False, **options):
+        """The picture umbra render draws of `mesh`, as an (h, w, 4) uint8
+        RGBA array; with mask=True also light 1's shadow mask ((h, w) uint8:
+        255 lit, 0 in shadow or facing away, 128 no surface), with
+        depth=True also the view depth ((h, w) float32: distance along the
+        camera's axis, inf where no surface), returned after the image in
+        that order. `options` are umbra render's options as keyword
+        arguments (umbra render --help lists them): --camera-azimuth 20 is
+        camera_azimuth=20, --eye 1,2,3 is eye=(1, 2, 3), --flat is
+        flat=True, --background transparent is background="transparent"."""
+        return self._draw(mesh, size, mask, depth, options)
+
+    def _draw(self, mesh, size, mask, depth, options):
+        if "gl" in options:
+            raise TypeError("gl is the Renderer's: umbra.Renderer(gl=...)")
+        try:
+            image, mask_array, depth_array, said = self._native.render(_source(mesh), _words(size, options), mask, depth)
+        except OptionError as e:
+            message = _python_words(str(e))
+            if message.startswith("unknown option"):
+                raise TypeError("render() got an " + message.replace("unknown option", "unknown keyword argument", 1)) from None
+            raise OptionError(message) from None
+        for line in said:
+            _warnings.warn(line, UmbraWarning, stacklevel=3)  # the caller of render()
+        extra = [a for a, wanted in ((mask_array, mask), (depth_array, depth)) if wanted]
+        return (image, *extra) if extra else image
+
+    @property
+    def platform(self):
+        """The GL it draws with, once it has drawn: "EGL ..., Mesa's software device: ..."."""
+        return self._native.platform
+
+    def close(self):
+        self._native.close()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+
+_renderers = threading.local()  # render()'s: one context per thread
+
+
+def render(mesh, size=(800, 800), *, mask=False, depth=False, **options):
+    """Renderer.render on this thread's own Renderer, made on first use."""
+    if not hasattr(_renderers, "default"):
+        _renderers.default = Renderer()
+    return _renderers.default._draw(mesh, size, mask, depth, options)
+
+
+def check(mesh, *, time_limit=60.0):
+    """The report umbra check --json prints, as a dict, with "defects": every
+    offending element as index arrays (border_edges (k, 2) vertex pairs,
+    non_manifold_edges (k, 2), non_manifold_vertices (k,), duplicate_faces
+    (k, 2) face and the face it repeats, degenerate_faces (k,),
+    faces_to_flip (k,), self_intersections (k, 2) face pairs). Vertices and
+    faces are numbered as the file or the arrays number them. The
+    self-intersection search stops after time_limit seconds (0 skips it)."""
+    import json
+    text, defects = _umbra.check(_source(mesh), float(time_limit))
+    report = json.loads(text)
+    report["defects"] = defects
+    return report
+
+
+def repair(mesh, *, max_hole_edges=_umbra.max_hole_edges, merge_tolerance=0.0, time_limit=60.0):
+    """umbra check --repair in memory: returns (vertices, faces, report),
+    the repaired mesh as (n, 3) float64 and (m, 3) uint32 arrays and its
+    check report (as check() returns it, without defects), with "changes":
+    what the repair did, a line each."""
+    import json
+    vertices, faces, changes, text = _umbra.repair(_source(mesh), int(max_hole_edges), float(merge_tolerance), float(time_limit))
+    report = json.loads(text)
+    report["changes"] = changes
+    return vertices, faces, report
+
+
+def load(path):
+    """The mesh file at `path` as a Mesh (see Mesh)."""
+    return Mesh(_umbra.load(os.fsdecode(path)))

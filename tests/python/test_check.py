@@ -1,0 +1,97 @@
+"""umbra.check, umbra.repair and umbra.load: the check's report, the repair
+and the file's content, from paths and arrays."""
+
+import json
+import subprocess
+
+import numpy as np
+import pytest
+
+import umbra
+from conftest import UMBRA, cube
+
+# Time measured, not found: differs from run to run.
+TIMED = ("seconds",)
+
+
+def without_times(report):
+    report = dict(report)
+    report["self_intersections"] = {k: v for k, v in report["self_intersections"].items() if k not in TIMED}
+    return report
+
+
+def command_report(path):
+    run = subprocess.run([UMBRA, "check", "--json", str(path)], capture_output=True, text=True)
+    assert run.returncode in (0, 1), run.stderr
+    return json.loads(run.stdout)
+
+
+def test_a_closed_cube_is_a_closed_manifold_with_no_defects():
+    report = umbra.check(cube())
+    assert report["closed_manifold"] and report["triangles"] == 12 and report["vertices"] == 8
+    assert report["volume"] == pytest.approx(1.0)
+    assert report["path"] == "arrays"
+    assert all(len(a) == 0 for a in report["defects"].values())
+
+
+def test_an_open_cube_names_its_four_border_edges():
+    report = umbra.check(cube(open_top=True))
+    assert not report["closed_manifold"] and report["border_edges"] == 4 and report["border_loops"] == 1
+    edges = report["defects"]["border_edges"]
+    assert edges.shape == (4, 2) and edges.dtype == np.uint32
+    # The top square's sides: vertices 4, 5, 7, 6 round it.
+    assert {frozenset(e) for e in edges.tolist()} == {frozenset(p) for p in ((4, 5), (5, 7), (7, 6), (6, 4))}
+
+
+def test_every_defect_is_listed_where_the_printed_report_shows_five(tmp_path):
+    # 8 separate triangles, each with 3 border edges: 24 in all.
+    rng = np.random.default_rng(7)
+    vertices = rng.random((24, 3))
+    faces = np.arange(24).reshape(8, 3)
+    report = umbra.check((vertices, faces))
+    assert report["border_edges"] == 24 and report["defects"]["border_edges"].shape == (24, 2)
+    assert len(report["examples"]["border_edges"]) == 5  # as check --json prints them
+    assert set(report["defects"]["border_edges"].ravel().tolist()) == set(range(24))
+
+
+def test_the_report_of_a_file_is_the_commands(models):
+    for path in (models / "OFF" / "Wuson.off", models / "PLY" / "cube.ply", models / "OFF" / "Cube.off"):
+        report = umbra.check(path)
+        del report["defects"]
+        assert without_times(report) == without_times(command_report(path)), path
+
+
+def test_a_file_that_cannot_be_read_raises_its_located_error(tmp_path):
+    broken = tmp_path / "broken.off"
+    broken.write_text("OFF\n3 1 0\n0 0 0\n1 0 0\n")
+    with pytest.raises(umbra.InputError, match=r"broken.off:\d+"):
+        umbra.check(broken)
+
+
+def test_repair_fills_the_open_cube_and_says_so():
+    vertices, faces, report = umbra.repair(cube(open_top=True))
+    assert vertices.shape == (8, 3) and faces.shape == (12, 3) and faces.dtype == np.uint32
+    assert report["closed_manifold"] and report["volume"] == pytest.approx(1.0)
+    assert any("filled 1 hole" in line for line in report["changes"]), report["changes"]
+    assert umbra.check((vertices, faces))["closed_manifold"]  # what it hands back checks as it reported
+
+
+def test_repair_with_no_holes_to_fill_leaves_the_hole(tmp_path):
+    vertices, faces, report = umbra.repair(cube(open_top=True), max_hole_edges=0)
+    assert len(faces) == 10 and report["border_edges"] == 4
+
+
+def test_load_reads_a_file_as_written(models):
+    mesh = umbra.load(models / "PLY" / "cube.ply")
+    assert mesh.vertices.shape[1] == 3 and mesh.faces.shape[1] == 3
+    assert mesh.format.startswith("PLY")
+    # Its quads, each split into two triangles.
+    assert mesh.polygons == 6 and len(mesh.faces) == 12
+    assert mesh.polygon_of_face.tolist() == [p for p in range(6) for _ in range(2)]
+    report = umbra.check(mesh)
+    assert report["triangles"] == 12
+
+
+def test_load_of_a_missing_file_raises():
+    with pytest.raises(umbra.InputError, match="nowhere.obj"):
+        umbra.load("/nowhere.obj")
