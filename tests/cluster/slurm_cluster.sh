@@ -16,7 +16,9 @@ start_slurm() {
   # munge's key: 1 KiB of random bytes, readable by its owner alone.
   head -c 1024 /dev/urandom > "$dir/munge/munge.key"
   chmod 400 "$dir/munge/munge.key"
-  local munge_socket="$dir/munge/munge.socket"
+  # A socket's path holds at most 107 bytes: a short folder of its own.
+  SLURM_MUNGE_SOCKET_DIR=$(mktemp -d /tmp/umbra-munge.XXXXXX)
+  local munge_socket="$SLURM_MUNGE_SOCKET_DIR/socket"
   if ! munged --force --socket="$munge_socket" --key-file="$dir/munge/munge.key" --pid-file="$dir/munge/munged.pid" \
        --log-file="$dir/log/munged.log" --seed-file="$dir/munge/munged.seed" 2> "$dir/log/munged.stderr"; then
     echo "munged could not start: $(cat "$dir/log/munged.stderr" "$dir/log/munged.log" 2>/dev/null | tail -3)"
@@ -87,5 +89,6 @@ stop_slurm() {
   for pidfile in "$dir/slurmd.pid" "$dir/slurmctld.pid" "$dir/munge/munged.pid"; do
     [ -s "$pidfile" ] && kill "$(cat "$pidfile")" 2>/dev/null
   done
+  [ -n "${SLURM_MUNGE_SOCKET_DIR:-}" ] && rm -rf "$SLURM_MUNGE_SOCKET_DIR"
   return 0
 }

@@ -15,8 +15,9 @@ source "$here/slurm_cluster.sh"
 rm -rf "$work" && mkdir -p "$work/meshes"
 cp "$@" "$work/meshes/"
 trap stop_slurm EXIT
-if ! why=$(start_slurm "$work/slurm"); then
-  echo "skipped: a Slurm cluster could not start on this machine: $why"
+# Not in a subshell: stop_slurm needs what start_slurm sets.
+if ! start_slurm "$work/slurm" > "$work/why.txt"; then
+  echo "skipped: a Slurm cluster could not start on this machine: $(cat "$work/why.txt")"
   exit 77
 fi
 export SLURM_CONF="$work/slurm/slurm.conf"
@@ -30,7 +31,8 @@ shard=\$SLURM_ARRAY_TASK_ID/\$SLURM_ARRAY_TASK_COUNT
 "$umbra" check --json --shard "\$shard" "$work/meshes" > "$work/reports-\$SLURM_ARRAY_TASK_ID.jsonl"
 "$umbra" render --size 160x120 --shard "\$shard" "$work/meshes" -o "$work/pictures"
 JOB
-if ! sbatch --wait "$work/shard.sh"; then
+# sbatch --wait returns once every task has ended; 5 minutes is far more than they take.
+if ! timeout 300 sbatch --wait "$work/shard.sh"; then
   echo "the array job failed:"; cat "$work"/task-*.log; exit 1
 fi
 cat "$work"/task-*.log
