@@ -4,20 +4,14 @@
 #include <cmath>
 #include <vector>
 
-// Sean Barrett's stb_easy_font (Debian's libstb-dev): an ASCII bitmap font
-// made of quads, no font file or texture, which is all a label needs.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#include <stb_easy_font.h>
-#pragma GCC diagnostic pop
+#include "image/text_drawing.hpp"
 
 namespace umbra {
 namespace {
 
 constexpr uint8_t kGround = 235, kInk = 40;
-constexpr int kScale = 2;                     // the font's pixels, doubled: about 14 pixels a line
 constexpr int kPad = 6;                       // around each tile
-constexpr int kLabelHeight = 12 * kScale;    // one line
+constexpr int kLabelHeight = kTextLineHeight;  // one line
 
 }  // namespace
 
@@ -44,21 +38,6 @@ Image thumbnail(const Image& picture, int max_width) {
 
 namespace {
 
-int text_width(const std::string& text) { return stb_easy_font_width(const_cast<char*>(text.c_str())) * kScale; }
-
-// `label` in the font's characters: stb_easy_font draws printable ASCII
-// only, and reads outside its tables for any other byte; each other
-// character (a UTF-8 sequence, a control byte) shows as one '?'.
-std::string printable(const std::string& label) {
-  std::string out;
-  for (const char ch : label) {
-    const auto byte = static_cast<unsigned char>(ch);
-    if (byte >= 0x20 && byte < 0x7f) out += ch;
-    else if ((byte & 0xc0) != 0x80) out += '?';  // a UTF-8 continuation byte belongs to the '?' before it
-  }
-  return out;
-}
-
 // `label`, fitted to `width`: whole if it fits; else without the start that
 // every label on the sheet shares (`shared` characters), said as "..."; else
 // cut in its middle, so that the part that tells it from the others stays
@@ -72,20 +51,6 @@ std::string fitted(const std::string& label, size_t shared, int width) {
     if (text_width(cut) <= width) return cut;
   }
   return "";
-}
-
-// Draws `text` with its top left at (x, y), clipped to the sheet.
-void draw_text(Image& sheet, int x, int y, const std::string& text) {
-  std::vector<char> quads(text.size() * 270 + 64);  // the header's advice: about 270 bytes a character
-  const int count = stb_easy_font_print(0, 0, const_cast<char*>(text.c_str()), nullptr, quads.data(), int(quads.size()));
-  for (int q = 0; q < count; ++q) {
-    const float* v = reinterpret_cast<const float*>(quads.data() + q * 4 * 16);  // 4 vertices of 16 bytes: x, y, z, colour
-    const int x0 = x + int(v[0]) * kScale, y0 = y + int(v[1]) * kScale;
-    const int x1 = x + int(v[8]) * kScale, y1 = y + int(v[9]) * kScale;  // the opposite corner, vertex 2
-    for (int py = std::max(y0, 0); py < std::min(y1, sheet.height); ++py)
-      for (int px = std::max(x0, 0); px < std::min(x1, sheet.width); ++px)
-        for (int c = 0; c < 3; ++c) sheet.at(px, py, c) = kInk;
-  }
 }
 
 }  // namespace
@@ -113,7 +78,7 @@ Image contact_sheet(const std::vector<SheetPicture>& pictures, int thumb_width, 
     for (int y = 0; y < t.height; ++y)
       for (int x = 0; x < t.width; ++x)
         for (int c = 0; c < 3; ++c) sheet.at(x0 + x, y0 + y, c) = t.at(x, y, c);
-    draw_text(sheet, x0, y0 + tile_h + 4, fitted(labels[size_t(k)], shared, tile_w));
+    draw_text(sheet, x0, y0 + tile_h + 4, fitted(labels[size_t(k)], shared, tile_w), {kInk, kInk, kInk});
   }
   return sheet;
 }

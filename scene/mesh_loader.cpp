@@ -19,6 +19,7 @@
 #include "mesh/io/mesh_file.hpp"
 #include "mesh/predicates/orientation.hpp"
 #include "mesh/topology/crease_normals.hpp"
+#include "scene/mesh_placement.hpp"
 #include "scene/scene_text.hpp"
 
 namespace umbra {
@@ -40,8 +41,6 @@ struct LoadedMesh {
 // coordinates over the mesh's size (a 1e-3 cube at 3e7, fitted, moves by
 // about 1e-5).
 std::vector<glm::dvec3> placed_points(Mesh& m, const FileLoc& path_at, const MeshAnalysis& analysis, double& rounding) {
-  glm::dvec3 fit_centre(0.0);
-  double fit_scale = 1.0;
   if (m.fit && !analysis.positions.empty()) {
     // The box of the faces' corners: a point no face uses is no part of the shape.
     glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
@@ -60,20 +59,18 @@ std::vector<glm::dvec3> placed_points(Mesh& m, const FileLoc& path_at, const Mes
     if (!(longest > 0.0))
       throw InputError(path_at, "mesh file " + in_quotes(m.path) + " has no extent to fit: its faces' corners coincide");
     m.file_bounds_min = lo, m.file_bounds_max = hi;
-    fit_centre = lo / 2.0 + hi / 2.0;  // halves first: lo + hi may overflow where each does not
-    fit_scale = 2.0 / longest;
   }
-  const glm::dmat3 rotation(glm::rotate(glm::dmat4(1.0), glm::radians(m.rotation_deg), glm::normalize(m.rotation_axis)));
+  const MeshPlacement placed = placement_of(m);
   std::vector<glm::dvec3> points;
   points.reserve(analysis.positions.size());
   double farthest = 0.0;  // the largest coordinate, whose last bits the subtraction of the centre keeps
   for (const glm::dvec3& p : analysis.positions) {
-    points.push_back(rotation * (m.scale * fit_scale * (p - fit_centre)) + m.translation);
+    points.push_back(placed(p));
     farthest = std::max({farthest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
   }
   // The point and the centre each to half an ulp of `farthest`, scaled;
   // then the rotation and the translation, a few ulps of the result.
-  rounding = 8.0 * std::numeric_limits<double>::epsilon() * (2.0 * farthest * std::abs(m.scale) * fit_scale + glm::length(m.translation) + 1.0);
+  rounding = 8.0 * std::numeric_limits<double>::epsilon() * (2.0 * farthest * std::abs(placed.scale) + glm::length(m.translation) + 1.0);
   return points;
 }
 

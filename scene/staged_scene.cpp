@@ -176,9 +176,10 @@ std::string staged_scene_name(const std::string& mesh_path) { return mesh_path +
 
 namespace {
 
-// The stage for the mesh at `path`, or for `soup` (named `path`) where given.
-Scene stage_mesh(const std::string& path, const std::shared_ptr<const PolygonSoup>& soup, const MeshLoadProgress& progress,
-                 std::string* staged, const StagingOptions& staging, const TextureMaps& maps) {
+// The stage for the mesh at `path`, or for `soup` (named `path`, its own up
+// axis `soup_up`) where given.
+Scene stage_mesh(const std::string& path, const std::shared_ptr<const PolygonSoup>& soup, const std::string& soup_up,
+                 const MeshLoadProgress& progress, std::string* staged, const StagingOptions& staging, const TextureMaps& maps) {
   const std::string& up = staging.up;
   const std::string file_name = std::filesystem::path(path).filename().string();
   // A scene's quoted path holds no double quote and no line break: such a
@@ -189,7 +190,7 @@ Scene stage_mesh(const std::string& path, const std::shared_ptr<const PolygonSou
   for (char& ch : written_name)
     if (ch == '"' || ch == '\n' || ch == '\r') ch = '?';
   const MeshFormat* format = soup ? nullptr : mesh_format_by_id(detect_mesh_format_of_file(path));
-  const std::string format_up = format ? std::string(format->up) : "+y";
+  const std::string format_up = soup ? soup_up : format ? std::string(format->up) : "+y";
   const std::string name = staged_scene_name(path);
   const int mesh_line = 4;
   // The mesh stood on `axis`, and its statement's text: loaded first, as
@@ -309,7 +310,7 @@ Scene stage_mesh(const std::string& path, const std::shared_ptr<const PolygonSou
 
 Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& progress, std::string* staged,
                                const StagingOptions& staging, const TextureMaps& maps) {
-  if (is_mesh_file(path)) return stage_mesh(path, nullptr, progress, staged, staging, maps);
+  if (is_mesh_file(path)) return stage_mesh(path, nullptr, "", progress, staged, staging, maps);
   if (staged) staged->clear();
   Scene scene = parse_scene_file(path, progress, maps);
   if (staging.view.light_turn_deg != 0.0) rotate_lights_about_z(scene, staging.view.light_turn_deg);
@@ -317,9 +318,10 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
   return scene;
 }
 
-Scene stage_polygon_soup(std::shared_ptr<const PolygonSoup> soup, std::string* staged, const StagingOptions& staging) {
+Scene stage_polygon_soup(std::shared_ptr<const PolygonSoup> soup, std::string* staged, const StagingOptions& staging,
+                         const std::string& own_up) {
   const std::string name = soup->path;
-  return stage_mesh(name, soup, {}, staged, staging, TextureMaps::skip());
+  return stage_mesh(name, soup, own_up, {}, staged, staging, TextureMaps::skip());
 }
 
 }  // namespace umbra

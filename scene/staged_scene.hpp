@@ -126,8 +126,11 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
                                const StagingOptions& staging = {}, const TextureMaps& maps = {});
 
 // The stage for a mesh already in memory (a mesh handed over as arrays:
-// array_soup.hpp), named soup->path, as parse_scene_or_mesh_file stages a
-// file; its up axis, where `staging` gives none, is +y (glTF's and OBJ's).
-Scene stage_polygon_soup(std::shared_ptr<const PolygonSoup> soup, std::string* staged = nullptr, const StagingOptions& staging = {});
+// array_soup.hpp; a file's, tinted for the defect picture), named
+// soup->path, as parse_scene_or_mesh_file stages a file; its up axis,
+// where `staging` gives none, is `own_up`, the convention its format
+// would have (+y for arrays, as glTF's and OBJ's).
+Scene stage_polygon_soup(std::shared_ptr<const PolygonSoup> soup, std::string* staged = nullptr, const StagingOptions& staging = {},
+                         const std::string& own_up = "+y");
 
 }  // namespace umbra

@@ -21,9 +21,11 @@
 #include "mesh/io/mesh_file.hpp"
 #include "mesh/io/mesh_format.hpp"
 #include "image/partial_file.hpp"
+#include "image/picture_file.hpp"
 #include "mesh/check/mesh_repair.hpp"
 #include "tools/isolated_runs.hpp"
 #include "tools/command_line.hpp"
+#include "tools/defect_picture.hpp"
 #include "tools/fault_injection.hpp"
 #include "tools/mesh_paths.hpp"
 #include "tools/standard_input.hpp"
@@ -82,6 +84,12 @@ options:
                     (with --repair) merge points at most D apart (in the
                     model's units) before anything else; by default only
                     equal ones are merged
+  --picture OUT.png (one MESH only) also draw the mesh, staged as umbra
+                    render stages it, with its defects where they are:
+                    border edges red, non-manifold edges blue, non-manifold
+                    vertices magenta, self-intersecting faces orange, faces
+                    to flip teal (fainter where a surface hides them), and a
+                    legend with the counts; OUT's name says PNG or JPEG
   --time-limit SEC  stop the search for self-intersections after SEC seconds
                     per mesh and report that it stopped (default 60; 0 skips)
   --timeout SEC     check the meshes in worker processes and stop one after
@@ -97,6 +105,8 @@ reported), the repaired mesh could not be written, or a usage error.
 
 namespace {
 
+constexpr int kDefectPictureSize = 800;  // --picture's width and height, render's default
+
 struct CheckCommandOptions {
   std::vector<std::string> meshes;  // as given: files and folders
   bool json = false;
@@ -107,6 +117,7 @@ struct CheckCommandOptions {
   std::optional<std::string> repair_output;
   std::optional<size_t> max_hole_edges;  // unset: kDefaultMaxHoleEdges
   std::optional<double> merge_tolerance;
+  std::optional<std::string> picture;  // --picture: where the defect picture goes
   CheckOptions check;
   double timeout_s = 0.0;  // >0: meshes checked in worker processes, each stopped after this long
   bool help = false;
@@ -120,6 +131,7 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
   options.flag("--brief", o.brief);
   options.flag("--solid", o.solid);
   options.value("--repair", [&](const std::string&, const std::string& t) { o.repair_output = t; });
+  options.value("--picture", [&](const std::string&, const std::string& t) { o.picture = t; });
   options.value("--max-hole-edges", [&](const std::string& n, const std::string& t) { o.max_hole_edges = size_t(parse_int_in(n, t, 0, 1000000)); });
   options.value("--merge-tolerance", [&](const std::string& n, const std::string& t) {
     o.merge_tolerance = parse_finite_number(n, t);
@@ -142,6 +154,15 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
   if (o.json && o.brief) throw UsageError("--json and --brief are two forms of the same report: give one");
   if (o.max_hole_edges && !o.repair_output) throw UsageError("--max-hole-edges says which holes --repair fills: give --repair OUT");
   if (o.merge_tolerance && !o.repair_output) throw UsageError("--merge-tolerance says which points --repair merges: give --repair OUT");
+  if (o.picture) {
+    if (o.meshes.size() != 1 || std::filesystem::is_directory(o.meshes[0]))
+      throw UsageError("--picture draws one mesh's defects: name one mesh file");
+    if (o.repair_output) throw UsageError("--picture draws the mesh as it is; check the repaired file for its picture");
+    if (o.shard || o.timeout_s > 0.0) throw UsageError("--picture checks one mesh: --shard and --timeout do not apply");
+    require_picture_name("--picture", *o.picture);
+    if (*o.picture == "-") throw UsageError("--picture needs a file: standard output holds the report");
+    require_other_than_input("--picture", *o.picture, o.meshes[0]);
+  }
   if (o.repair_output) {
     if (o.meshes.size() != 1 || std::filesystem::is_directory(o.meshes[0])) throw UsageError("--repair takes one mesh file at a time");
     if (o.shard) throw UsageError("--repair checks one mesh: --shard does not apply");
@@ -212,6 +233,32 @@ CheckOutcome read_check_job(const std::string& path, const IsolatedResult& resul
   return {rest.substr(0, out_size), rest.substr(std::min(out_size, rest.size())), std::stoi(status)};
 }
 
+// The check of one mesh, its report printed as the options ask, and its
+// defect picture written to `output` (DefectPicture).
+int picture_one(const std::string& path, const std::string& output, const CheckCommandOptions& options) {
+  try {
+    const PolygonSoup soup = read_polygon_soup(path, TextureMaps::skip());
+    CheckOptions every = options.check;
+    every.max_examples = SIZE_MAX;  // every defect drawn; the report prints a few
+    const MeshReport report = check_mesh(soup, every);
+    print_report(report, options, std::cout);
+    const MeshFormat* format = mesh_format_by_id(detect_mesh_format_of_file(path));
+    const DefectPicture picture(soup, report, format ? std::string(format->up) : "+y", kDefectPictureSize, kDefectPictureSize);
+    write_picture(picture.draw(gl_with_environment(HeadlessGl::kAuto)), output);
+    std::cerr << "umbra check: drew the defects of " << path << " to " << output << "\n";
+    return (options.solid ? report.is_solid() : report.is_closed_manifold()) ? 0 : 1;
+  } catch (const InputError& e) {
+    std::cerr << e.what() << "\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << path << ": not enough memory to check and draw this mesh\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << path << ": the picture failed: " << e.what() << "\n";
+    return 2;
+  }
+}
+
 int repair_one(const std::string& path, const std::string& output, const CheckCommandOptions& options) {
   try {
     const PolygonSoup soup = read_polygon_soup(path, TextureMaps::skip());
@@ -259,6 +306,7 @@ int run_check_command(const std::vector<std::string>& argv) {
     return 2;
   }
   if (options.repair_output) return repair_one(options.meshes[0], *options.repair_output, options);
+  if (options.picture) return picture_one(options.meshes[0], *options.picture, options);
 
   MeshPaths found;
   try {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <unordered_map>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -25,6 +26,15 @@ namespace {
 template <typename List>
 bool room_for(const List& list, size_t most) {
   return list.size() < most;
+}
+
+// Where a face is: the mean of its distinct corners' positions.
+glm::dvec3 mean_of_distinct(std::vector<uint32_t> corners, const std::vector<glm::dvec3>& positions) {
+  std::sort(corners.begin(), corners.end());
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  glm::dvec3 sum(0.0);
+  for (const uint32_t v : corners) sum += positions[v];
+  return corners.empty() ? sum : sum / double(corners.size());
 }
 
 // Per component, from what the stages found: closed, manifold, orientable
@@ -126,8 +136,9 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   const size_t vertex_count = merged.positions.size();
   report.merged_vertices = soup.points.size() - vertex_count;
   if (disposable) std::vector<glm::dvec3>().swap(disposable->points);
-  const auto vertex_ref = [&](uint32_t v) { return ElementRef{merged.first_point[v], soup.point_line(merged.first_point[v])}; };
-  const auto face_ref = [&](uint32_t f) { return ElementRef{f, soup.polygon_line(f)}; };
+  const auto vertex_ref = [&](uint32_t v) {
+    return ElementRef{merged.first_point[v], soup.point_line(merged.first_point[v]), merged.positions[v]};
+  };
   // Colours belong to the file's corners: kept, with each corner's merged
   // vertex, to find each triangle's once the triangles are final.
   const bool coloured = !soup.point_colors.empty() && soup.point_colors.size() == report.file_vertices;  // the points may be freed by now
@@ -164,6 +175,10 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   bool has_polygons = false;            // faces in the topology with more than three corners
   {
     const FaceClasses faces = classify_file_faces(soup, std::move(corners), merged.positions);
+    const auto face_ref = [&](uint32_t f) {
+      const auto first = faces.corners.begin() + soup.polygon_starts[f], last = faces.corners.begin() + soup.polygon_starts[f + 1];
+      return ElementRef{f, soup.polygon_line(f), mean_of_distinct({first, last}, merged.positions)};
+    };
     triangles = triangulate_faces(soup, faces, merged.positions);
     if (searched) {
       search.run([&] {
@@ -281,7 +296,16 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
     report.self_intersections.complete = found.complete;
     report.self_intersections.face_pairs = found.face_pairs;
     report.self_intersections.seconds = found.seconds;
-    for (const auto& [f, g] : found.examples) examples.self_intersections.push_back({face_ref(f), face_ref(g)});
+    // The faces' corners are gone by now: each crossing face's from its triangles.
+    std::unordered_map<uint32_t, std::vector<uint32_t>> corners_of;
+    for (const auto& [f, g] : found.examples) corners_of[f], corners_of[g];
+    for (size_t t = 0; t < triangles.triangles.size(); ++t)
+      if (const auto it = corners_of.find(triangles.face[t]); it != corners_of.end())
+        it->second.insert(it->second.end(), triangles.triangles[t].begin(), triangles.triangles[t].end());
+    const auto crossing_ref = [&](uint32_t f) {
+      return ElementRef{f, soup.polygon_line(f), mean_of_distinct(corners_of[f], merged.positions)};
+    };
+    for (const auto& [f, g] : found.examples) examples.self_intersections.push_back({crossing_ref(f), crossing_ref(g)});
   }
   analysis.positions = std::move(merged.positions);
   analysis.triangles = std::move(triangles.triangles);

@@ -252,7 +252,9 @@ void MeshReport::print_text(std::ostream& out) const {
 
 void MeshReport::print_json(std::ostream& out) const {
   using Json = nlohmann::ordered_json;  // keys in the order docs/check.md lists them
-  const auto ref = [](const char* kind, const ElementRef& e) { return Json{{kind, e.index}, {"line", e.line}}; };
+  const auto ref = [](const char* kind, const ElementRef& e) {
+    return Json{{kind, e.index}, {"line", e.line}, {"at", {e.at.x, e.at.y, e.at.z}}};
+  };
   const auto refs = [&](const char* kind, const std::vector<ElementRef>& list) {
     Json items = Json::array();
     for (size_t i = 0; i < std::min(list.size(), kMaxExamples); ++i) items.push_back(ref(kind, list[i]));

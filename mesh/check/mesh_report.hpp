@@ -21,10 +21,12 @@
 namespace umbra {
 
 // A vertex or face as the file has it: its position in the file counting
-// from 0, and its line (0 in binary files).
+// from 0, its line (0 in binary files), and where it is in the file's
+// coordinates (a face: the mean of its distinct corners).
 struct ElementRef {
   uint32_t index = 0;
   int line = 0;
+  glm::dvec3 at{0.0};
 };
 using ElementPair = std::pair<ElementRef, ElementRef>;
 

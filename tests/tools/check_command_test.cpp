@@ -119,7 +119,8 @@ TEST_F(CheckCommand, JsonIsOneValidObjectPerMeshPerLine) {
   EXPECT_EQ(read(path("fields.txt")),
             "good.obj True 0 silhouette False []\n"
             "bad \"name\".off None None None True None\n"
-            "flipped.obj False 1 silhouette False [{'face': 7, 'line': 16}]\n");
+            // Face 7, quad 3's second triangle: (0, 1, 0), (1, 1, 1), (1, 1, 0), its mean where it is.
+            "flipped.obj False 1 silhouette False [{'face': 7, 'line': 16, 'at': [0.6666666666666666, 1.0, 0.3333333333333333]}]\n");
 }
 
 TEST_F(CheckCommand, JsonHasALineForEveryMeshEvenWhenItsCheckRunsOutOfMemory) {

@@ -1,0 +1,161 @@
+// umbra check --picture (tools/defect_picture.hpp): each defect drawn in its
+// colour where the report's positions put it, and the command's output.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "mesh/check/mesh_check.hpp"
+#include "mesh/io/mesh_file.hpp"
+#include "tests/tools/command_fixture.hpp"
+#include "tools/defect_picture.hpp"
+
+namespace umbra {
+namespace {
+
+using namespace umbra::test;
+
+// In an OFF file (+y up): a horizontal and a vertical square crossing
+// through both their centres (self-intersecting, and their sides border
+// edges); three quads on one edge at x = 2 (a non-manifold edge); two
+// triangles meeting at (-2.5, 0.5, 0) (a non-manifold vertex); a cube of
+// quads with its top (+y) turned in (a face to flip).
+const char* const kDefects =
+    "OFF\n"
+    "29 13 0\n"
+    "-1 0.5 -1\n"
+    "1 0.5 -1\n"
+    "1 0.5 1\n"
+    "-1 0.5 1\n"
+    "-1 0 0\n"
+    "1 0 0\n"
+    "1 1 0\n"
+    "-1 1 0\n"
+    "2 0 0\n"
+    "2 1 0\n"
+    "3 0 0\n"
+    "3 1 0\n"
+    "2 0 1\n"
+    "2 1 1\n"
+    "2 0 -1\n"
+    "2 1 -1\n"
+    "-2.5 0.5 0\n"
+    "-3 0 0\n"
+    "-3 1 0\n"
+    "-2 0 0\n"
+    "-2 1 0\n"
+    "4 0 -0.5\n"
+    "5 0 -0.5\n"
+    "4 1 -0.5\n"
+    "5 1 -0.5\n"
+    "4 0 0.5\n"
+    "5 0 0.5\n"
+    "4 1 0.5\n"
+    "5 1 0.5\n"
+    "4 0 1 2 3\n"
+    "4 4 5 6 7\n"
+    "4 8 9 11 10\n"
+    "4 8 12 13 9\n"
+    "4 8 14 15 9\n"
+    "3 16 17 18\n"
+    "3 16 19 20\n"
+    "4 21 23 24 22\n"
+    "4 25 26 28 27\n"
+    "4 21 22 26 25\n"
+    "4 24 28 27 23\n"
+    "4 21 25 27 23\n"
+    "4 22 24 28 26\n";
+
+class DefectPictureTest : public CommandTest {
+ protected:
+  std::string write_mesh() const {
+    const std::string p = path("defects.off");
+    std::ofstream(p) << kDefects;
+    return p;
+  }
+};
+
+// The colour at `p` (x, y in pixels), as an RGB triple.
+std::array<int, 3> colour_at(const Image& image, const glm::dvec3& p) {
+  const int x = int(std::floor(p.x)), y = int(std::floor(p.y));
+  return {image.at(x, y, 0), image.at(x, y, 1), image.at(x, y, 2)};
+}
+
+TEST_F(DefectPictureTest, EachDefectIsDrawnInItsColourWhereTheReportPutsIt) {
+  const PolygonSoup soup = read_polygon_soup(write_mesh());
+  CheckOptions every;
+  every.max_examples = SIZE_MAX;
+  const MeshReport report = check_mesh(soup, every);
+  ASSERT_EQ(report.non_manifold_edges, 1u);
+  ASSERT_EQ(report.non_manifold_vertices, 1u);
+  ASSERT_EQ(report.self_intersections.face_pairs, 1u);
+  ASSERT_EQ(report.faces_to_flip, 1u);
+  ASSERT_GT(report.border_edges, 0u);
+  const DefectPicture picture(soup, report, "+y", 800, 800);
+  const Image image = picture.draw(HeadlessGl::kAuto);
+
+  // The vertical square's top side, from (-1, 1, 0) to (1, 1, 0), a border edge: red.
+  const auto top = std::find_if(report.examples.border_edges.begin(), report.examples.border_edges.end(), [](const ElementPair& e) {
+    return e.first.at.y == 1.0 && e.second.at.y == 1.0 && e.first.at.z == 0.0 && e.second.at.z == 0.0 &&
+           std::abs(e.first.at.x) == 1.0 && std::abs(e.second.at.x) == 1.0;
+  });
+  ASSERT_NE(top, report.examples.border_edges.end());
+  const auto red = colour_at(image, picture.project((top->first.at + top->second.at) / 2.0));
+  EXPECT_GT(red[0], red[1] + 60);
+  EXPECT_GT(red[0], red[2] + 60);
+  const ElementPair& fin = report.examples.non_manifold_edges.front();
+  EXPECT_EQ(fin.first.at.x, 2.0);
+  const auto blue = colour_at(image, picture.project((fin.first.at + fin.second.at) / 2.0));
+  EXPECT_GT(blue[2], blue[0] + 60);
+  EXPECT_GT(blue[2], blue[1] + 60);
+  EXPECT_EQ(report.examples.non_manifold_vertices.front().at, glm::dvec3(-2.5, 0.5, 0.0));
+  const auto magenta = colour_at(image, picture.project(report.examples.non_manifold_vertices.front().at));
+  EXPECT_GT(magenta[0], magenta[1] + 60);
+  EXPECT_GT(magenta[2], magenta[1] + 60);
+  // Both squares' centre, on their crossing: orange whichever is seen.
+  const auto& crossing = report.examples.self_intersections.front();
+  EXPECT_EQ(crossing.first.at, glm::dvec3(0.0, 0.5, 0.0));
+  const auto orange = colour_at(image, picture.project(crossing.first.at));
+  EXPECT_GT(orange[0], orange[2] + 60);
+  EXPECT_GT(orange[1], orange[2] + 20);
+  EXPECT_EQ(report.examples.faces_to_flip.front().at, glm::dvec3(4.5, 1.0, 0.0));
+  const auto teal = colour_at(image, picture.project(report.examples.faces_to_flip.front().at));
+  EXPECT_GT(teal[1], teal[0] + 60);
+  EXPECT_GT(teal[2], teal[0] + 60);
+  // Away from every mark, the surface's own grey.
+  const auto plain = colour_at(image, picture.project({4.5, 0.5, 0.5}));  // the cube's front (+z in the file is -y staged), no defect
+  EXPECT_LT(std::abs(plain[0] - plain[2]), 12);
+}
+
+TEST_F(DefectPictureTest, TheCommandWritesThePictureBesideItsReport) {
+  const std::string mesh = write_mesh();
+  const CommandResult r = run("check " + mesh + " --json --picture " + path("defects.png"));
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.out.find("\"at\":["), std::string::npos) << r.out;  // the report's positions
+  EXPECT_EQ(r.err, "umbra check: drew the defects of " + mesh + " to " + path("defects.png") + "\n");
+  std::ifstream png(path("defects.png"), std::ios::binary);
+  std::string signature(8, '\0');
+  png.read(signature.data(), 8);
+  EXPECT_EQ(signature, "\x89PNG\r\n\x1a\n");
+}
+
+TEST_F(DefectPictureTest, ThePictureOptionIsRefusedWhereItCannotApply) {
+  const std::string mesh = write_mesh();
+  EXPECT_EQ(run("check " + folder_.string() + " --picture " + path("x.png")).err,
+            "umbra check: --picture draws one mesh's defects: name one mesh file\n(see umbra check --help)\n");
+  EXPECT_EQ(run("check " + mesh + " --picture " + path("x.gif")).status, 2);
+  EXPECT_EQ(run("check " + mesh + " --picture " + mesh).status, 2);
+  EXPECT_FALSE(fs::exists(path("x.png")));
+  // A mesh that cannot be read: its error, and no picture.
+  std::ofstream(path("broken.off")) << "OFF\n3 1 0\n0 0 0\n";
+  const CommandResult broken = run("check " + path("broken.off") + " --picture " + path("x.png"));
+  EXPECT_EQ(broken.status, 2);
+  EXPECT_NE(broken.err.find("broken.off:"), std::string::npos) << broken.err;
+  EXPECT_FALSE(fs::exists(path("x.png")));
+}
+
+}  // namespace
+}  // namespace umbra
