@@ -28,6 +28,7 @@
 #include "tools/defect_picture.hpp"
 #include "tools/fault_injection.hpp"
 #include "tools/mesh_paths.hpp"
+#include "tools/picture_names.hpp"
 #include "tools/standard_input.hpp"
 #include "tools/progress_bar.hpp"
 
@@ -84,12 +85,14 @@ options:
                     (with --repair) merge points at most D apart (in the
                     model's units) before anything else; by default only
                     equal ones are merged
-  --picture OUT.png (one MESH only) also draw the mesh, staged as umbra
-                    render stages it, with its defects where they are:
-                    border edges red, non-manifold edges blue, non-manifold
-                    vertices magenta, self-intersecting faces orange, faces
-                    to flip teal (fainter where a surface hides them), and a
-                    legend with the counts; OUT's name says PNG or JPEG
+  --picture OUT.png also draw the mesh, staged as umbra render stages it,
+                    with its defects where they are: border edges red,
+                    non-manifold edges blue, non-manifold vertices magenta,
+                    self-intersecting faces orange, faces to flip teal
+                    (fainter where a surface hides them), and a legend with
+                    the counts; OUT's name says PNG or JPEG. With several
+                    meshes or a folder, OUT is a folder, and each mesh's
+                    picture is named as umbra render names a folder's
   --time-limit SEC  stop the search for self-intersections after SEC seconds
                     per mesh and report that it stopped (default 60; 0 skips)
   --timeout SEC     check the meshes in worker processes and stop one after
@@ -100,7 +103,8 @@ options:
 
 exit status: 0 every mesh is a closed 2-manifold (a solid, with --solid); 1
 one is not (after the repair, with --repair); 2 one could not be read (every other mesh is still
-reported), the repaired mesh could not be written, or a usage error.
+reported), the repaired mesh or a defect picture could not be written, or a
+usage error.
 )");
 
 namespace {
@@ -117,7 +121,8 @@ struct CheckCommandOptions {
   std::optional<std::string> repair_output;
   std::optional<size_t> max_hole_edges;  // unset: kDefaultMaxHoleEdges
   std::optional<double> merge_tolerance;
-  std::optional<std::string> picture;  // --picture: where the defect picture goes
+  std::optional<std::string> picture;  // --picture: where the defect picture goes, or with several meshes the folder
+  bool picture_folder = false;         // --picture names a folder: several meshes, a picture each
   CheckOptions check;
   double timeout_s = 0.0;  // >0: meshes checked in worker processes, each stopped after this long
   bool help = false;
@@ -155,13 +160,21 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
   if (o.max_hole_edges && !o.repair_output) throw UsageError("--max-hole-edges says which holes --repair fills: give --repair OUT");
   if (o.merge_tolerance && !o.repair_output) throw UsageError("--merge-tolerance says which points --repair merges: give --repair OUT");
   if (o.picture) {
-    if (o.meshes.size() != 1 || std::filesystem::is_directory(o.meshes[0]))
-      throw UsageError("--picture draws one mesh's defects: name one mesh file");
     if (o.repair_output) throw UsageError("--picture draws the mesh as it is; check the repaired file for its picture");
-    if (o.shard || o.timeout_s > 0.0) throw UsageError("--picture checks one mesh: --shard and --timeout do not apply");
-    require_picture_name("--picture", *o.picture);
-    if (*o.picture == "-") throw UsageError("--picture needs a file: standard output holds the report");
-    require_other_than_input("--picture", *o.picture, o.meshes[0]);
+    const std::string& p = *o.picture;
+    std::error_code ec;
+    o.picture_folder = o.meshes.size() != 1 || std::filesystem::is_directory(o.meshes[0], ec);
+    if (o.picture_folder) {
+      if (std::filesystem::exists(p, ec) && !std::filesystem::is_directory(p, ec))
+        throw UsageError("--picture " + p + " is a file; several meshes make a picture each, in a folder: name a folder");
+      if (!std::filesystem::exists(p, ec) && p.back() != '/' && picture_format_of(p))
+        throw UsageError("--picture " + p + " names a picture, but several meshes make a picture each, in a folder: name a "
+                         "folder (\"" + p + "/\" makes one of that name)");
+    } else {
+      require_picture_name("--picture", p);
+      if (p == "-") throw UsageError("--picture needs a file: standard output holds the report");
+      require_other_than_input("--picture", p, o.meshes[0]);
+    }
   }
   if (o.repair_output) {
     if (o.meshes.size() != 1 || std::filesystem::is_directory(o.meshes[0])) throw UsageError("--repair takes one mesh file at a time");
@@ -198,13 +211,37 @@ void print_report(const MeshReport& report, const CheckCommandOptions& options, 
   else report.print_text(out);
 }
 
-CheckOutcome check_one(const std::string& path, const CheckCommandOptions& options) {
+// `soup`'s defect picture (DefectPicture), from its report made with every
+// defect listed, written to `output`.
+void write_defect_picture(const std::string& path, const PolygonSoup& soup, const MeshReport& report, const std::string& output) {
+  const MeshFormat* format = mesh_format_by_id(detect_mesh_format_of_file(path));
+  const DefectPicture picture(soup, report, format ? std::string(format->up) : "+y", kDefectPictureSize, kDefectPictureSize);
+  const Image image = picture.draw(gl_with_environment(HeadlessGl::kAuto));
+  if (const std::filesystem::path folder = std::filesystem::path(output).parent_path(); !folder.empty())
+    std::filesystem::create_directories(folder);
+  write_picture(image, output);
+}
+
+// One mesh's check, and with `picture` its defect picture there too.
+CheckOutcome check_one(const std::string& path, const CheckCommandOptions& options, const std::string& picture = "") {
   try {
     inject_fault(path);
-    const MeshReport report = check_mesh(read_polygon_soup(path, TextureMaps::skip()), options.check);
+    PolygonSoup soup = read_polygon_soup(path, TextureMaps::skip());
+    CheckOptions check = options.check;
+    if (!picture.empty()) check.max_examples = SIZE_MAX;  // every defect drawn; the report prints a few
+    const MeshReport report = picture.empty() ? check_mesh(std::move(soup), check) : check_mesh(soup, check);
     std::ostringstream out;
     print_report(report, options, out);
-    return {out.str(), "", (options.solid ? report.is_solid() : report.is_closed_manifold()) ? 0 : 1};
+    CheckOutcome outcome{out.str(), "", (options.solid ? report.is_solid() : report.is_closed_manifold()) ? 0 : 1};
+    if (picture.empty()) return outcome;
+    try {
+      write_defect_picture(path, soup, report, picture);
+      if (!options.picture_folder) outcome.err = "umbra check: drew the defects of " + path + " to " + picture + "\n";
+    } catch (const std::exception& e) {
+      outcome.err = path + ": no defect picture: " + e.what() + "\n";
+      outcome.status = 2;
+    }
+    return outcome;
   } catch (const InputError& e) {
     return unchecked(path, e.what(), options);
   } catch (const std::bad_alloc&) {
@@ -216,8 +253,8 @@ CheckOutcome check_one(const std::string& path, const CheckCommandOptions& optio
 
 // check_one in a worker process (--timeout): its outcome as the status,
 // the length of its output, the output and its messages.
-std::string check_job(const std::string& path, const CheckCommandOptions& options) {
-  const CheckOutcome o = check_one(path, options);
+std::string check_job(const std::string& path, const CheckCommandOptions& options, const std::string& picture) {
+  const CheckOutcome o = check_one(path, options, picture);
   return std::to_string(o.status) + "\n" + std::to_string(o.out.size()) + "\n" + o.out + o.err;
 }
 
@@ -231,32 +268,6 @@ CheckOutcome read_check_job(const std::string& path, const IsolatedResult& resul
   const size_t out_size = std::stoull(length);
   const std::string rest(std::istreambuf_iterator<char>(in), {});
   return {rest.substr(0, out_size), rest.substr(std::min(out_size, rest.size())), std::stoi(status)};
-}
-
-// The check of one mesh, its report printed as the options ask, and its
-// defect picture written to `output` (DefectPicture).
-int picture_one(const std::string& path, const std::string& output, const CheckCommandOptions& options) {
-  try {
-    const PolygonSoup soup = read_polygon_soup(path, TextureMaps::skip());
-    CheckOptions every = options.check;
-    every.max_examples = SIZE_MAX;  // every defect drawn; the report prints a few
-    const MeshReport report = check_mesh(soup, every);
-    print_report(report, options, std::cout);
-    const MeshFormat* format = mesh_format_by_id(detect_mesh_format_of_file(path));
-    const DefectPicture picture(soup, report, format ? std::string(format->up) : "+y", kDefectPictureSize, kDefectPictureSize);
-    write_picture(picture.draw(gl_with_environment(HeadlessGl::kAuto)), output);
-    std::cerr << "umbra check: drew the defects of " << path << " to " << output << "\n";
-    return (options.solid ? report.is_solid() : report.is_closed_manifold()) ? 0 : 1;
-  } catch (const InputError& e) {
-    std::cerr << e.what() << "\n";
-    return 2;
-  } catch (const std::bad_alloc&) {
-    std::cerr << path << ": not enough memory to check and draw this mesh\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << path << ": the picture failed: " << e.what() << "\n";
-    return 2;
-  }
 }
 
 int repair_one(const std::string& path, const std::string& output, const CheckCommandOptions& options) {
@@ -306,7 +317,6 @@ int run_check_command(const std::vector<std::string>& argv) {
     return 2;
   }
   if (options.repair_output) return repair_one(options.meshes[0], *options.repair_output, options);
-  if (options.picture) return picture_one(options.meshes[0], *options.picture, options);
 
   MeshPaths found;
   try {
@@ -322,6 +332,15 @@ int run_check_command(const std::vector<std::string>& argv) {
   if (options.shard && options.shard->index > 0) found.passed_over.clear();
   for (const auto& [path, what] : found.passed_over) std::cerr << "umbra check: passed over " << path << ": " << what << "\n";
   const std::vector<std::string> meshes = options.shard ? shard_of(all, *options.shard) : all;
+  // Each mesh's defect picture, if asked: named as umbra render names a
+  // folder's pictures, for all the meshes before the shards part.
+  std::vector<std::string> pictures(meshes.size());
+  if (options.picture && !options.picture_folder) pictures[0] = *options.picture;
+  if (options.picture_folder) {
+    const std::vector<std::string> names = distinct_picture_names(found.meshes, found.names, found.roots);
+    const std::vector<std::string> ours = options.shard ? shard_of(names, *options.shard) : names;
+    for (size_t i = 0; i < meshes.size(); ++i) pictures[i] = (std::filesystem::path(*options.picture) / (ours[i] + ".png")).string();
+  }
   const auto start = std::chrono::steady_clock::now();
 
   // Workers take meshes in order; reports are printed in order, each as soon
@@ -351,7 +370,7 @@ int run_check_command(const std::vector<std::string>& argv) {
     // of memory costs only its own report.
     try {
       run_isolated(
-          count, options.jobs, options.timeout_s, [&](size_t i) { return check_job(meshes[i], options); },
+          count, options.jobs, options.timeout_s, [&](size_t i) { return check_job(meshes[i], options, pictures[i]); },
           [&](size_t i, const IsolatedResult& result) {
             outcomes[i] = read_check_job(meshes[i], result, options);
             ++finished;
@@ -372,7 +391,7 @@ int run_check_command(const std::vector<std::string>& argv) {
         for (size_t i = next++; i < count; i = next++) {
           // Isolated: while a check waits for its own parallel work, its thread
           // takes no other mesh, which would hold back this mesh's report.
-          CheckOutcome outcome = tbb::this_task_arena::isolate([&] { return check_one(meshes[i], options); });
+          CheckOutcome outcome = tbb::this_task_arena::isolate([&] { return check_one(meshes[i], options, pictures[i]); });
           const std::lock_guard<std::mutex> lock(print_mutex);
           outcomes[i] = std::move(outcome);
           ++finished;

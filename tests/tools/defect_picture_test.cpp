@@ -142,10 +142,28 @@ TEST_F(DefectPictureTest, TheCommandWritesThePictureBesideItsReport) {
   EXPECT_EQ(signature, "\x89PNG\r\n\x1a\n");
 }
 
+TEST_F(DefectPictureTest, AFolderGetsAPictureForEachMeshNamedAsRenderNamesThem) {
+  fs::create_directories(path("meshes/sub"));
+  std::ofstream(path("meshes/sub/defects.off")) << kDefects;
+  std::ofstream(path("meshes/tetra.off")) << "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  const CommandResult r = run("check --brief " + path("meshes") + " --picture " + path("pictures"));
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(path("pictures/sub/defects.off.png")));
+  EXPECT_TRUE(fs::is_regular_file(path("pictures/tetra.off.png")));  // a closed mesh too: nothing marked, its verdict in the legend
+  // 24 triangles: 2 squares and 3 fins of 2, the bow tie's 2, the cube's 12; 6 components, the bow tie's two
+  // triangles apart; 23 border edges: 4 on each square, 3 on each fin, 3 on each triangle of the bow tie.
+  EXPECT_EQ(r.out, path("meshes/sub/defects.off") + ": OFF, 24 triangles, 6 components: not a closed 2-manifold (23 border "
+                       "edges in 6 holes, 1 non-manifold edge, 1 non-manifold vertex, inconsistent orientation (1 face to flip), 1 "
+                       "self-intersecting face pair): shadow from silhouette edges for its 1 closed component (once the renderer flips "
+                       "those faces), from an edge-multiplicity volume for the other 5\n" +
+                       path("meshes/tetra.off") + ": OFF, 4 triangles, 1 component: closed 2-manifold: casts its shadow from silhouette edges\n");
+}
+
 TEST_F(DefectPictureTest, ThePictureOptionIsRefusedWhereItCannotApply) {
   const std::string mesh = write_mesh();
   EXPECT_EQ(run("check " + folder_.string() + " --picture " + path("x.png")).err,
-            "umbra check: --picture draws one mesh's defects: name one mesh file\n(see umbra check --help)\n");
+            "umbra check: --picture " + path("x.png") + " names a picture, but several meshes make a picture each, in a folder: "
+            "name a folder (\"" + path("x.png") + "/\" makes one of that name)\n(see umbra check --help)\n");
   EXPECT_EQ(run("check " + mesh + " --picture " + path("x.gif")).status, 2);
   EXPECT_EQ(run("check " + mesh + " --picture " + mesh).status, 2);
   EXPECT_FALSE(fs::exists(path("x.png")));
