@@ -54,6 +54,7 @@ test_packages=(
   python3-pytest python3-pil         # the Python module's tests (pytest), reading the command's pictures (Pillow)
   python3-distributed                # docs/batch-checks.md: the Dask recipe (tested)
   slurm-wlm munge                    # docs/batch-checks.md: the Slurm recipe, on a cluster the test starts (tested)
+  chromium                           # umbra check --report's page, opened in a real browser (tested)
 )
 case "${1:-}" in
   test|sanitize|fuzz) packages+=("${test_packages[@]}") ;;

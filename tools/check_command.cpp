@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -24,6 +25,7 @@
 #include "image/picture_file.hpp"
 #include "mesh/check/mesh_repair.hpp"
 #include "tools/isolated_runs.hpp"
+#include "tools/check_report_page.hpp"
 #include "tools/command_line.hpp"
 #include "tools/defect_picture.hpp"
 #include "tools/fault_injection.hpp"
@@ -93,6 +95,14 @@ options:
                     the counts; OUT's name says PNG or JPEG. With several
                     meshes or a folder, OUT is a folder, and each mesh's
                     picture is named as umbra render names a folder's
+  --report REPORT.html
+                    also write one web page of every mesh's report, a row
+                    each with its defect picture (--picture's, or small ones
+                    drawn into REPORT-pictures/), verdict and measures,
+                    sortable by any column and filtered by verdict; static,
+                    it opens from the disk with no server
+  --no-pictures     (with --report) rows without pictures: thousands of
+                    meshes are checked in seconds, and drawn in minutes
   --time-limit SEC  stop the search for self-intersections after SEC seconds
                     per mesh and report that it stopped (default 60; 0 skips)
   --timeout SEC     check the meshes in worker processes and stop one after
@@ -110,6 +120,7 @@ usage error.
 namespace {
 
 constexpr int kDefectPictureSize = 800;  // --picture's width and height, render's default
+constexpr int kReportPictureSize = 320;  // --report's own pictures: a table's thumbnails
 
 struct CheckCommandOptions {
   std::vector<std::string> meshes;  // as given: files and folders
@@ -123,6 +134,8 @@ struct CheckCommandOptions {
   std::optional<double> merge_tolerance;
   std::optional<std::string> picture;  // --picture: where the defect picture goes, or with several meshes the folder
   bool picture_folder = false;         // --picture names a folder: several meshes, a picture each
+  std::optional<std::string> report;   // --report: the page to write
+  bool no_pictures = false;            // --no-pictures: the report's rows without them
   CheckOptions check;
   double timeout_s = 0.0;  // >0: meshes checked in worker processes, each stopped after this long
   bool help = false;
@@ -137,6 +150,8 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
   options.flag("--solid", o.solid);
   options.value("--repair", [&](const std::string&, const std::string& t) { o.repair_output = t; });
   options.value("--picture", [&](const std::string&, const std::string& t) { o.picture = t; });
+  options.value("--report", [&](const std::string&, const std::string& t) { o.report = t; });
+  options.flag("--no-pictures", o.no_pictures);
   options.value("--max-hole-edges", [&](const std::string& n, const std::string& t) { o.max_hole_edges = size_t(parse_int_in(n, t, 0, 1000000)); });
   options.value("--merge-tolerance", [&](const std::string& n, const std::string& t) {
     o.merge_tolerance = parse_finite_number(n, t);
@@ -159,6 +174,15 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
   if (o.json && o.brief) throw UsageError("--json and --brief are two forms of the same report: give one");
   if (o.max_hole_edges && !o.repair_output) throw UsageError("--max-hole-edges says which holes --repair fills: give --repair OUT");
   if (o.merge_tolerance && !o.repair_output) throw UsageError("--merge-tolerance says which points --repair merges: give --repair OUT");
+  if (o.report) {
+    if (o.repair_output) throw UsageError("--report shows what the check finds; check the repaired file for its report");
+    std::string extension = std::filesystem::path(*o.report).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (extension != ".html" && extension != ".htm") throw UsageError("--report writes a web page: name a .html file, got \"" + *o.report + "\"");
+    for (const std::string& mesh : o.meshes) require_other_than_input("--report", *o.report, mesh);
+    if (o.no_pictures && o.picture) throw UsageError("--no-pictures leaves out the pictures --picture asks for: give one");
+  }
+  if (o.no_pictures && !o.report) throw UsageError("--no-pictures is for --report's rows: give --report REPORT.html");
   if (o.picture) {
     if (o.repair_output) throw UsageError("--picture draws the mesh as it is; check the repaired file for its picture");
     const std::string& p = *o.picture;
@@ -191,17 +215,21 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
   return o;
 }
 
-// One mesh's outcome: what to print, and its exit status.
+// One mesh's outcome: what to print, its exit status, and for --report its
+// line of JSON (the report's, or the error's).
 struct CheckOutcome {
   std::string out, err;
   int status = 0;
+  std::string record;
+  bool picture_failed = false;  // the check stands; the exit status says 2
 };
 
 // A mesh that could not be checked: said on stderr, and still its line of
 // JSON (every mesh gets one).
 CheckOutcome unchecked(const std::string& path, const std::string& message, const CheckCommandOptions& options) {
-  if (options.brief) return {message + "\n", "", 2};  // its line in the list, which starts with its path
-  return {options.json ? json_error_line(path, message) : "", message + "\n", 2};
+  const std::string record = options.report ? json_error_line(path, message) : "";
+  if (options.brief) return {message + "\n", "", 2, record, false};  // its line in the list, which starts with its path
+  return {options.json ? json_error_line(path, message) : "", message + "\n", 2, record, false};
 }
 
 // The report in the form the options ask for.
@@ -213,9 +241,10 @@ void print_report(const MeshReport& report, const CheckCommandOptions& options, 
 
 // `soup`'s defect picture (DefectPicture), from its report made with every
 // defect listed, written to `output`.
-void write_defect_picture(const std::string& path, const PolygonSoup& soup, const MeshReport& report, const std::string& output) {
+void write_defect_picture(const std::string& path, const PolygonSoup& soup, const MeshReport& report, const std::string& output,
+                          int size) {
   const MeshFormat* format = mesh_format_by_id(detect_mesh_format_of_file(path));
-  const DefectPicture picture(soup, report, format ? std::string(format->up) : "+y", kDefectPictureSize, kDefectPictureSize);
+  const DefectPicture picture(soup, report, format ? std::string(format->up) : "+y", size, size);
   const Image image = picture.draw(gl_with_environment(HeadlessGl::kAuto));
   if (const std::filesystem::path folder = std::filesystem::path(output).parent_path(); !folder.empty())
     std::filesystem::create_directories(folder);
@@ -232,14 +261,19 @@ CheckOutcome check_one(const std::string& path, const CheckCommandOptions& optio
     const MeshReport report = picture.empty() ? check_mesh(std::move(soup), check) : check_mesh(soup, check);
     std::ostringstream out;
     print_report(report, options, out);
-    CheckOutcome outcome{out.str(), "", (options.solid ? report.is_solid() : report.is_closed_manifold()) ? 0 : 1};
+    CheckOutcome outcome{out.str(), "", (options.solid ? report.is_solid() : report.is_closed_manifold()) ? 0 : 1, "", false};
+    if (options.report) {
+      std::ostringstream line;
+      report.print_json(line);
+      outcome.record = line.str();
+    }
     if (picture.empty()) return outcome;
     try {
-      write_defect_picture(path, soup, report, picture);
-      if (!options.picture_folder) outcome.err = "umbra check: drew the defects of " + path + " to " + picture + "\n";
+      write_defect_picture(path, soup, report, picture, options.picture ? kDefectPictureSize : kReportPictureSize);
+      if (options.picture && !options.picture_folder) outcome.err = "umbra check: drew the defects of " + path + " to " + picture + "\n";
     } catch (const std::exception& e) {
       outcome.err = path + ": no defect picture: " + e.what() + "\n";
-      outcome.status = 2;
+      outcome.picture_failed = true;
     }
     return outcome;
   } catch (const InputError& e) {
@@ -252,22 +286,26 @@ CheckOutcome check_one(const std::string& path, const CheckCommandOptions& optio
 }
 
 // check_one in a worker process (--timeout): its outcome as the status,
-// the length of its output, the output and its messages.
+// the lengths of its output and its record, the output, the record and its
+// messages.
 std::string check_job(const std::string& path, const CheckCommandOptions& options, const std::string& picture) {
   const CheckOutcome o = check_one(path, options, picture);
-  return std::to_string(o.status) + "\n" + std::to_string(o.out.size()) + "\n" + o.out + o.err;
+  return std::to_string(o.status) + "\n" + std::to_string(o.out.size()) + "\n" + std::to_string(o.record.size()) + "\n" +
+         (o.picture_failed ? "1" : "0") + "\n" + o.out + o.record + o.err;
 }
 
 CheckOutcome read_check_job(const std::string& path, const IsolatedResult& result, const CheckCommandOptions& options) {
   if (const std::string ended = unfinished_phrase(result, options.timeout_s); !ended.empty())
     return unchecked(path, path + ": " + ended, options);
   std::istringstream in(result.output);
-  std::string status, length;
-  if (!std::getline(in, status) || !std::getline(in, length))
+  std::string status, length, record_length, picture_failed;
+  if (!std::getline(in, status) || !std::getline(in, length) || !std::getline(in, record_length) || !std::getline(in, picture_failed))
     return unchecked(path, path + ": the check ended without a result (exit status " + std::to_string(result.exit_status) + ")", options);
-  const size_t out_size = std::stoull(length);
+  const size_t out_size = std::min(size_t(std::stoull(length)), result.output.size());
+  const size_t record_size = std::stoull(record_length);
   const std::string rest(std::istreambuf_iterator<char>(in), {});
-  return {rest.substr(0, out_size), rest.substr(std::min(out_size, rest.size())), std::stoi(status)};
+  return {rest.substr(0, out_size), rest.substr(std::min(out_size + record_size, rest.size())), std::stoi(status),
+          rest.substr(std::min(out_size, rest.size()), record_size), picture_failed == "1"};
 }
 
 int repair_one(const std::string& path, const std::string& output, const CheckCommandOptions& options) {
@@ -334,13 +372,20 @@ int run_check_command(const std::vector<std::string>& argv) {
   const std::vector<std::string> meshes = options.shard ? shard_of(all, *options.shard) : all;
   // Each mesh's defect picture, if asked: named as umbra render names a
   // folder's pictures, for all the meshes before the shards part.
+  // --report without --picture: small ones beside the page, in REPORT-pictures/.
   std::vector<std::string> pictures(meshes.size());
   if (options.picture && !options.picture_folder) pictures[0] = *options.picture;
-  if (options.picture_folder) {
+  const std::optional<std::string> picture_folder =
+      options.picture_folder ? options.picture
+      : options.report && !options.picture && !options.no_pictures
+          ? std::optional<std::string>((std::filesystem::path(*options.report).replace_extension().string() + "-pictures"))
+          : std::nullopt;
+  if (picture_folder) {
     const std::vector<std::string> names = distinct_picture_names(found.meshes, found.names, found.roots);
     const std::vector<std::string> ours = options.shard ? shard_of(names, *options.shard) : names;
-    for (size_t i = 0; i < meshes.size(); ++i) pictures[i] = (std::filesystem::path(*options.picture) / (ours[i] + ".png")).string();
+    for (size_t i = 0; i < meshes.size(); ++i) pictures[i] = (std::filesystem::path(*picture_folder) / (ours[i] + ".png")).string();
   }
+  std::vector<std::string> records;  // --report's, in file order
   const auto start = std::chrono::steady_clock::now();
 
   // Workers take meshes in order; reports are printed in order, each as soon
@@ -359,7 +404,8 @@ int run_check_command(const std::vector<std::string>& argv) {
       progress.clear();
       std::cout << outcome.out << std::flush;
       std::cerr << outcome.err << std::flush;
-      status = std::max(status, outcome.status);
+      if (options.report) records.push_back(outcome.record);
+      status = std::max({status, outcome.status, outcome.picture_failed ? 2 : 0});
       (outcome.status == 0 ? closed : outcome.status == 1 ? open : unreadable) += 1;
       outcomes[printed].reset();
     }
@@ -399,6 +445,15 @@ int run_check_command(const std::vector<std::string>& argv) {
         }
       });
     });
+  }
+  if (options.report) {
+    try {
+      write_check_report_page(*options.report, meshes, records, pictures);
+      std::cerr << "umbra check: wrote the report of " << count << (count == 1 ? " mesh" : " meshes") << " to " << *options.report << "\n";
+    } catch (const std::exception& e) {
+      std::cerr << "umbra check: " << e.what() << "\n";
+      status = 2;
+    }
   }
   if (count > 1 || all.size() != options.meshes.size() || options.shard || !found.passed_over.empty()) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
