@@ -21,9 +21,11 @@
 #include "mesh/input_error.hpp"
 #include "mesh/io/array_soup.hpp"
 #include "mesh/io/mesh_file.hpp"
+#include "mesh/io/mesh_format.hpp"
 #include "scene/scene_checks.hpp"
 #include "scene/staged_scene.hpp"
 #include "tools/command_line.hpp"
+#include "tools/defect_picture.hpp"
 #include "tools/picture_choices.hpp"
 #include "tools/picture_drawing.hpp"
 
@@ -181,19 +183,33 @@ py::dict defect_arrays(const MeshReport::Examples& e) {
 }
 
 // (the report as check --json prints it, its defects as arrays).
-py::tuple check(const MeshSource& source, double time_limit_s) {
+// (the report as check --json prints it, its defects as arrays, and with
+// `picture` (width, height) its defect picture, as check --picture draws it).
+py::tuple check(const MeshSource& source, double time_limit_s, std::optional<std::pair<int, int>> picture) {
   PolygonSoup soup = read_source(source, TextureMaps::skip());
   MeshReport report;
+  std::optional<Image> drawn;
   {
     py::gil_scoped_release released;
     CheckOptions options;
     options.self_intersection_seconds = time_limit_s;
     options.max_examples = SIZE_MAX;
-    report = check_mesh(std::move(soup), options);
+    if (!picture) {
+      report = check_mesh(std::move(soup), options);
+    } else {
+      report = check_mesh(soup, options);
+      require_drawable_size(picture->first, picture->second, 1);
+      const auto* path = std::get_if<std::string>(&source);
+      const MeshFormat* format = path ? mesh_format_by_id(detect_mesh_format_of_file(*path)) : nullptr;
+      const DefectPicture defects(soup, report, format ? std::string(format->up) : "+y", picture->first, picture->second);
+      drawn = defects.draw(gl_with_environment(HeadlessGl::kAuto));
+    }
   }
   std::ostringstream json;
   report.print_json(json);
-  return py::make_tuple(json.str(), defect_arrays(report.examples));
+  py::object image = py::none();
+  if (drawn) image = rgba_array(std::move(*drawn));
+  return py::make_tuple(json.str(), defect_arrays(report.examples), image);
 }
 
 // (vertices, faces, changes, the repaired mesh's check --json report).
@@ -287,7 +303,7 @@ PYBIND11_MODULE(_umbra, m) {
       .def("render", &Renderer::render, py::arg("source"), py::arg("words"), py::arg("mask"), py::arg("depth"))
       .def("close", &Renderer::close)
       .def_property_readonly("platform", &Renderer::platform);
-  m.def("check", &check, py::arg("source"), py::arg("time_limit"));
+  m.def("check", &check, py::arg("source"), py::arg("time_limit"), py::arg("picture"));
   m.def("repair", &repair, py::arg("source"), py::arg("max_hole_edges"), py::arg("merge_tolerance"), py::arg("time_limit"));
   m.def("load", &load, py::arg("path"));
   m.attr("max_hole_edges") = kDefaultMaxHoleEdges;

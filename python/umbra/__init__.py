@@ -159,18 +159,23 @@ def render(mesh, size=(800, 800), *, mask=False, depth=False, **options):
     return _renderers.default._draw(mesh, size, mask, depth, options)
 
 
-def check(mesh, *, time_limit=60.0):
+def check(mesh, *, time_limit=60.0, picture=None):
     """The report umbra check --json prints, as a dict, with "defects": every
     offending element as index arrays (border_edges (k, 2) vertex pairs,
     non_manifold_edges (k, 2), non_manifold_vertices (k,), duplicate_faces
     (k, 2) face and the face it repeats, degenerate_faces (k,),
     faces_to_flip (k,), self_intersections (k, 2) face pairs). Vertices and
     faces are numbered as the file or the arrays number them. The
-    self-intersection search stops after time_limit seconds (0 skips it)."""
+    self-intersection search stops after time_limit seconds (0 skips it).
+    With picture=(width, height), also "picture": the defect picture that
+    umbra check --picture draws, an (h, w, 4) uint8 array."""
     import json
-    text, defects = _umbra.check(_source(mesh), float(time_limit))
+    size = None if picture is None else (int(picture[0]), int(picture[1]))
+    text, defects, image = _umbra.check(_source(mesh), float(time_limit), size)
     report = json.loads(text)
     report["defects"] = defects
+    if image is not None:
+        report["picture"] = image
     return report
 
 

@@ -95,3 +95,13 @@ def test_load_reads_a_file_as_written(models):
 def test_load_of_a_missing_file_raises():
     with pytest.raises(umbra.InputError, match="nowhere.obj"):
         umbra.load("/nowhere.obj")
+
+
+def test_the_defect_picture_comes_as_an_array_the_commands_size(tmp_path):
+    report = umbra.check(cube(open_top=True), picture=(640, 480))
+    picture = report["picture"]
+    assert picture.shape == (480, 640, 4) and picture.dtype == np.uint8
+    # The open cube's border, in the border edges' red, below the legend (whose swatch is red too).
+    red = (picture[70:, :, 0] > 200) & (picture[70:, :, 1] < 80) & (picture[70:, :, 2] < 80)
+    assert red.sum() > 200
+    assert "picture" not in umbra.check(cube())
