@@ -95,6 +95,7 @@ options:
                     the counts; OUT's name says PNG or JPEG. With several
                     meshes or a folder, OUT is a folder, and each mesh's
                     picture is named as umbra render names a folder's
+                    (meshes are then checked one at a time)
   --report REPORT.html
                     also write one web page of every mesh's report, a row
                     each with its defect picture (--picture's, or small ones
@@ -431,8 +432,20 @@ int run_check_command(const std::vector<std::string>& argv) {
     // --jobs bounds the threads of the whole process: this one and TBB's
     // workers, which check meshes and run the searches inside them alike.
     const tbb::global_control threads(tbb::global_control::max_allowed_parallelism, options.jobs);
+    // Defect pictures are drawn on this thread alone, a mesh at a time (each
+    // check still searches on every core): Mesa's EGL, whose contexts TBB's
+    // workers had made, freed their threads' state twice as the process
+    // ended (glibc's "double free", 5 runs in 6 with two workers).
+    const bool draws = std::any_of(pictures.begin(), pictures.end(), [](const std::string& p) { return !p.empty(); });
+    if (draws) {
+      for (size_t i = 0; i < count; ++i) {
+        outcomes[i] = check_one(meshes[i], options, pictures[i]);
+        ++finished;
+        print_ready();
+      }
+    }
     tbb::task_arena arena(int(options.jobs));
-    arena.execute([&] {
+    if (!draws) arena.execute([&] {
       tbb::parallel_for(size_t(0), std::min(count, options.jobs), [&](size_t) {
         for (size_t i = next++; i < count; i = next++) {
           // Isolated: while a check waits for its own parallel work, its thread

@@ -31,7 +31,9 @@ th[aria-sort=descending]::after { content: " \25BC"; }
 td { border-top: 1px solid #ddd; padding: 4px 8px; vertical-align: top; }
 td.number { text-align: right; font-variant-numeric: tabular-nums; }
 td.picture img { width: 128px; height: 128px; object-fit: contain; background: #ccc; display: block; }
-td.mesh { max-width: 28em; overflow-wrap: anywhere; }
+td.mesh { min-width: 12em; max-width: 28em; overflow-wrap: anywhere; }
+td.closed, td.not-closed, td.unreadable { min-width: 11em; }
+td.why { min-width: 16em; }
 .closed { color: #1a7f37; } .not-closed { color: #b35900; } .unreadable { color: #c00; }
 </style>
 </head>
@@ -64,7 +66,7 @@ const pictures = JSON.parse(document.getElementById("pictures").textContent);
 const columns = [
   ["picture", null, false],
   ["mesh", r => r.path, false],
-  ["verdict", r => r.error ? "unreadable: " + r.error : r.verdict.split(": ")[0], false],
+  ["verdict", r => r.error ? "unreadable: " + r.error : r.verdict.split(": ")[0].split(" (")[0], false],  // the counts have columns
   ["triangles", r => r.triangles, true],
   ["components", r => r.components, true],
   ["border edges", r => r.border_edges, true],
@@ -127,6 +129,7 @@ const rows = reports.map((r, i) => {
       if (c[2]) td.className = "number";
       if (c[0] === "verdict") td.className = kind(r);
       if (c[0] === "mesh") td.className = "mesh", td.title = v, td.textContent = v.slice(shared.length);
+      if (c[0] === "why not a solid") td.className = "why";
     }
     tr.appendChild(td);
   });
