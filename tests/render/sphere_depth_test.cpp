@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include <glm/geometric.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -70,6 +72,48 @@ TEST(SphereDepth, IsTheExactHitOfThePixelCentresRay) {
   EXPECT_GT(r.sphere_pixels, 1000);
   EXPECT_EQ(r.beyond_rounding, 0) << "of " << r.sphere_pixels << " sphere pixels; the worst, " << r.worst_pixel
                                   << ", by " << r.worst_steps << " steps of the depth buffer";
+}
+
+// ShadowRenderer::view_depth: at each pixel, the distance along the view
+// axis to the surface the pixel's centre ray hits first, +infinity where it
+// hits none; also after a frame drawn with 3 x 3 samples, which it draws again
+// at one.
+TEST(ViewDepth, IsTheExactHitsDistanceAlongTheViewAxis) {
+  const Scene scene = parse_scene_text("light 0.3 0.2 3\n"
+                                       "camera eye 0 0 5 target 0 0 0 up 0 1 0 fovy 30\n"
+                                       "triangle -1 -1 0  1 -1 0  1 1 0\n"
+                                       "triangle -1 -1 0  1 1 0  -1 1 0\n"
+                                       "sphere 0.3 0.4 0.6 0.25\n",  // off centre: a picture turned over would show
+                                       "depth.scene");
+  for (const int samples : {1, 3}) {
+    RenderSettings settings;
+    settings.width = 81, settings.height = 61;
+    settings.antialias = samples;
+    const RenderPlan plan = make_render_plan(scene, settings);
+    HeadlessContext context(settings.width, settings.height);
+    ShadowRenderer renderer(scene, plan);
+    renderer.render_image(false);
+    const std::vector<float> depth = renderer.view_depth();
+    ASSERT_EQ(depth.size(), size_t(81 * 61));
+    const glm::dvec3 forward = glm::normalize(scene.camera.target - scene.camera.eye);
+    int surfaces = 0, background = 0, off = 0;
+    for (int y = 0; y < 61; ++y)
+      for (int x = 0; x < 81; ++x) {
+        const float seen = depth[size_t(y) * 81 + size_t(x)];
+        const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, 81, 61, x, y));
+        if (!hit) {
+          background += std::isinf(seen) != 0;
+          off += std::isinf(seen) == 0;
+          continue;
+        }
+        const double exact = glm::dot(hit->point - scene.camera.eye, forward);
+        ++surfaces;
+        off += !(std::abs(seen - exact) < 1e-3 * exact);  // the 24-bit buffer's steps, far from the near plane
+      }
+    EXPECT_GT(surfaces, 1000) << samples;
+    EXPECT_GT(background, 100) << samples;
+    EXPECT_EQ(off, 0) << "pixels whose depth is not the exact hit's, at " << samples << " x " << samples << " samples";
+  }
 }
 
 }  // namespace
