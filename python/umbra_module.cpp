@@ -200,8 +200,7 @@ py::tuple check(const MeshSource& source, double time_limit_s, std::optional<std
       report = check_mesh(soup, options);
       require_drawable_size(picture->first, picture->second, 1);
       const auto* path = std::get_if<std::string>(&source);
-      const MeshFormat* format = path ? mesh_format_by_id(detect_mesh_format_of_file(*path)) : nullptr;
-      const DefectPicture defects(soup, report, format ? std::string(format->up) : "+y", picture->first, picture->second);
+      const DefectPicture defects(soup, report, path ? up_axis_of_file(*path) : "+y", picture->first, picture->second);
       drawn = defects.draw(gl_with_environment(HeadlessGl::kAuto));
     }
   }

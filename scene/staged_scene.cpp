@@ -189,8 +189,7 @@ Scene stage_mesh(const std::string& path, const std::shared_ptr<const PolygonSou
   std::string written_name = file_name;
   for (char& ch : written_name)
     if (ch == '"' || ch == '\n' || ch == '\r') ch = '?';
-  const MeshFormat* format = soup ? nullptr : mesh_format_by_id(detect_mesh_format_of_file(path));
-  const std::string format_up = soup ? soup_up : format ? std::string(format->up) : "+y";
+  const std::string format_up = soup ? soup_up : up_axis_of_file(path);
   const std::string name = staged_scene_name(path);
   const int mesh_line = 4;
   // The mesh stood on `axis`, and its statement's text: loaded first, as

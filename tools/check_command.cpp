@@ -244,8 +244,7 @@ void print_report(const MeshReport& report, const CheckCommandOptions& options, 
 // defect listed, written to `output`.
 void write_defect_picture(const std::string& path, const PolygonSoup& soup, const MeshReport& report, const std::string& output,
                           int size) {
-  const MeshFormat* format = mesh_format_by_id(detect_mesh_format_of_file(path));
-  const DefectPicture picture(soup, report, format ? std::string(format->up) : "+y", size, size);
+  const DefectPicture picture(soup, report, up_axis_of_file(path), size, size);
   const Image image = picture.draw(gl_with_environment(HeadlessGl::kAuto));
   if (const std::filesystem::path folder = std::filesystem::path(output).parent_path(); !folder.empty())
     std::filesystem::create_directories(folder);

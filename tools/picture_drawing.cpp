@@ -29,10 +29,8 @@ DrawnPicture draw_picture(const Scene& scene, const RenderSettings& settings, co
   tbb::task_group planning;
   planning.run([&] { plan = make_render_plan(scene, settings); });
   try {
-    if (!context || context->width() != settings.width || context->height() != settings.height) {
-      context.reset();
-      context.emplace(settings.width, settings.height, gl);
-    }
+    if (!context || context->width() != settings.width || context->height() != settings.height)
+      context.emplace(settings.width, settings.height, gl);  // the old one gone first
   } catch (...) {
     planning.wait();
     throw;

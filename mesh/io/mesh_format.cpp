@@ -175,6 +175,11 @@ std::string detect_mesh_format_of_file(const std::string& path) {
   }
 }
 
+std::string up_axis_of_file(const std::string& path) {
+  const MeshFormat* format = mesh_format_by_id(detect_mesh_format_of_file(path));
+  return format ? std::string(format->up) : "+y";
+}
+
 std::string mesh_format_of(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));

@@ -52,6 +52,10 @@ std::string detect_mesh_format(std::string_view bytes);
 // cannot be read (whoever reads it next says why).
 std::string detect_mesh_format_of_file(const std::string& path);
 
+// The up axis the file at `path` has by its format's convention
+// (MeshFormat::up), or "+y" where its format cannot be told.
+std::string up_axis_of_file(const std::string& path);
+
 // The id of the format whose extension `path` has (any case), or "".
 std::string mesh_format_of(const std::string& path);
 
