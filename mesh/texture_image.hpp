@@ -15,6 +15,9 @@ struct TextureImage {
   enum class Wrap { kRepeat, kClampToEdge, kMirroredRepeat };
 
   std::string name;  // the file, or the glTF image, for messages
+  // The file it was decoded from, as an OBJ's material library names it;
+  // "" for a map its model holds inside itself (glTF's, 3MF's).
+  std::string file;
   int width = 0, height = 0;
   std::vector<uint8_t> rgba;  // 8 bits a channel, row 0 at v = 0 (the image's top)
   Wrap wrap_u = Wrap::kRepeat, wrap_v = Wrap::kRepeat;

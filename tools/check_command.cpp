@@ -6,7 +6,9 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <sstream>
@@ -78,7 +80,9 @@ options:
                     drop degenerate and duplicate faces, stitch borders,
                     fill holes, orient consistently and outward; then check
                     OUT and say what changed and what is still wrong. Never
-                    writes MESH.
+                    writes MESH. An .obj keeps the materials, texture
+                    coordinates, normals and colours, its library and maps
+                    beside it (STEM.mtl, STEM.NAME); a .ply the colours
   --max-hole-edges N
                     (with --repair) fill only holes of at most N edges
                     (default {max hole edges}; 0 fills none): a larger one is
@@ -308,13 +312,45 @@ CheckOutcome read_check_job(const std::string& path, const IsolatedResult& resul
           rest.substr(std::min(out_size, rest.size()), record_size), picture_failed == "1"};
 }
 
+// Whether the repair may put a companion file (an OBJ's material library,
+// a map) at `path`: not over a file it reads, and not over a material
+// library umbra did not write, which another OBJ beside it may name.
+void require_companion_may_replace(const CompanionFile& companion, const std::string& input, const PolygonSoup& soup) {
+  std::error_code ec;
+  if (!std::filesystem::exists(companion.path, ec)) return;
+  std::vector<std::string> read = {input};
+  for (const SoupMaterial& m : soup.materials)
+    if (m.texture && !m.texture->file.empty()) read.push_back(m.texture->file);
+  for (const std::string& file : read)
+    if (std::filesystem::equivalent(companion.path, file, ec))
+      throw InputError({companion.path, 0, 0}, "the repair would overwrite this file, which the mesh reads, with " + companion.what +
+                                                    ": name the output otherwise");
+  std::ifstream existing(companion.path);
+  std::string first_line;
+  std::getline(existing, first_line);
+  if (companion.path.size() > 4 && companion.path.substr(companion.path.size() - 4) == ".mtl" &&
+      first_line.find("written by umbra check --repair") == std::string::npos)
+    throw InputError({companion.path, 0, 0},
+                     "the repair would overwrite this material library, which umbra did not write: name the output otherwise");
+}
+
 int repair_one(const std::string& path, const std::string& output, const CheckCommandOptions& options) {
   try {
-    const PolygonSoup soup = read_polygon_soup(path, TextureMaps::skip());
+    // Read with its maps, which an OBJ's material library names again.
+    const PolygonSoup soup = read_polygon_soup(path);
     PartialFile partial(output, "the repaired mesh", PartialFile::Ending::kKeepExtension);
     const RepairSummary summary = repair_mesh(
         soup, output, partial.temporary_path(),
         RepairOptions{options.max_hole_edges.value_or(kDefaultMaxHoleEdges), options.merge_tolerance.value_or(0.0)});
+    std::vector<std::unique_ptr<PartialFile>> companions;
+    for (const CompanionFile& companion : summary.companions) {
+      require_companion_may_replace(companion, path, soup);
+      companions.push_back(std::make_unique<PartialFile>(companion.path, companion.what));
+      std::ofstream out(companions.back()->temporary_path(), std::ios::binary);
+      if (!out.write(companion.bytes.data(), std::streamsize(companion.bytes.size())) || (out.close(), !out))
+        throw InputError({companion.path, 0, 0}, "cannot write " + companion.what);
+    }
+    for (const auto& companion : companions) companion->commit();
     partial.commit();
     const MeshReport after = check_mesh(read_polygon_soup(output, TextureMaps::skip()), options.check);
     if (options.json || options.brief) {

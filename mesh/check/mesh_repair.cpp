@@ -15,16 +15,17 @@
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include "mesh/check/hole_filling.hpp"
 #include "mesh/check/point_merging.hpp"
+#include "mesh/check/repair_attributes.hpp"
 #include "mesh/check/repair_mesh_type.hpp"
 #include "mesh/check/self_intersections.hpp"
 #include "mesh/check/solid_orientation.hpp"
 #include "mesh/input_error.hpp"
 #include "mesh/io/mesh_format.hpp"
+#include "mesh/word_list.hpp"
 
 namespace umbra {
 namespace {
@@ -124,8 +125,11 @@ void say_holes(const HoleFilling& holes, size_t max_edges, std::vector<std::stri
 
 // The repair itself, as repair_mesh documents it: the repaired surface, its
 // changes said in `changes`.
-Mesh repaired_surface(const PolygonSoup& soup, const RepairOptions& options, std::vector<std::string>& changes) {
+// `placed` is where it put each of the soup's points.
+Mesh repaired_surface(const PolygonSoup& soup, const RepairOptions& options, std::vector<std::string>& changes,
+                      std::vector<glm::dvec3>& placed) {
   const size_t max_hole_edges = options.max_hole_edges;
+  placed = soup.points;
   std::vector<Point> points;
   points.reserve(soup.points.size());
   for (const glm::dvec3& p : soup.points) points.emplace_back(p.x, p.y, p.z);
@@ -141,6 +145,8 @@ Mesh repaired_surface(const PolygonSoup& soup, const RepairOptions& options, std
                         " (--merge-tolerance)");
     points.clear();
     for (const glm::dvec3& p : near.positions) points.emplace_back(p.x, p.y, p.z);
+    placed.resize(soup.points.size());
+    for (size_t p = 0; p < placed.size(); ++p) placed[p] = near.positions[near.vertex_of_point[p]];
     for (Polygon& polygon : polygons)
       for (std::size_t& v : polygon) v = near.vertex_of_point[v];
   }
@@ -195,49 +201,58 @@ Mesh repaired_surface(const PolygonSoup& soup, const RepairOptions& options, std
   return mesh;
 }
 
+// The repaired surface as triangles over its own points, numbered afresh
+// (hole filling may leave removed vertices among the mesh's), with the
+// soup's attributes (repair_attributes.hpp).
+TriangleFile repaired_triangle_file(const PolygonSoup& soup, const RepairOptions& options, std::vector<std::string>& changes) {
+  std::vector<glm::dvec3> placed;
+  const Mesh mesh = repaired_surface(soup, options, changes, placed);
+  std::vector<glm::dvec3> points;
+  std::vector<uint32_t> index(mesh.num_vertices());
+  points.reserve(mesh.number_of_vertices());
+  for (const auto v : mesh.vertices()) {
+    const Point& p = mesh.point(v);
+    index[v.idx()] = uint32_t(points.size());
+    points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  std::vector<std::array<uint32_t, 3>> triangles;
+  triangles.reserve(mesh.number_of_faces());
+  for (const auto f : mesh.faces()) {
+    std::array<uint32_t, 3> t{};
+    size_t k = 0;
+    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) t[k++] = index[v.idx()];
+    triangles.push_back(t);
+  }
+  return with_soup_attributes(soup, placed, std::move(points), std::move(triangles));
+}
+
 }  // namespace
 
 bool repair_can_write(const std::string& path) {
   const MeshFormat* format = mesh_format_by_id(mesh_format_of(path));
-  return format && format->repair_writes;
+  return format && format->write;
 }
 
 RepairSummary repair_mesh(const PolygonSoup& soup, const std::string& output, const std::string& write_to,
                           const RepairOptions& options) {
   RepairSummary summary;
-  const Mesh mesh = repaired_surface(soup, options, summary.changes);
-  // CGAL says why it could not write on std::cerr, unended: kept for the
-  // message instead.
-  std::ostringstream cgal_said;
-  std::streambuf* const cerr = std::cerr.rdbuf(cgal_said.rdbuf());
-  const bool written = CGAL::IO::write_polygon_mesh(write_to, mesh, CGAL::parameters::stream_precision(17));
-  std::cerr.rdbuf(cerr);
-  if (!written) {
-    std::string why = cgal_said.str();
-    while (!why.empty() && (why.back() == '\n' || why.back() == ' ')) why.pop_back();
-    throw InputError({output, 0, 0}, "cannot write the repaired mesh" + (why.empty() ? "" : " (CGAL: " + why + ")"));
-  }
+  const MeshFormat* format = mesh_format_by_id(mesh_format_of(output));
+  if (!format || !format->write)
+    throw InputError({output, 0, 0}, "cannot write the repaired mesh: write one of " + mesh_format_extensions(true));
+  const TriangleFile repaired = repaired_triangle_file(soup, options, summary.changes);
+  WrittenMesh written = format->write(repaired, output, write_to);
+  if (!written.dropped.empty())
+    summary.changes.push_back("left out the " + word_list(written.dropped, "and") + ", which " + std::string(format->name) +
+                              " cannot keep (OBJ keeps them all)");
+  summary.companions = std::move(written.companions);
   return summary;
 }
 
 RepairedTriangles repair_to_triangles(const PolygonSoup& soup, const RepairOptions& options) {
   RepairedTriangles repaired;
-  const Mesh mesh = repaired_surface(soup, options, repaired.summary.changes);
-  // The surface's vertices numbered afresh: hole filling may leave removed ones among them.
-  std::vector<uint32_t> index(mesh.num_vertices());
-  repaired.points.reserve(mesh.number_of_vertices());
-  for (const auto v : mesh.vertices()) {
-    const Point& p = mesh.point(v);
-    index[v.idx()] = uint32_t(repaired.points.size());
-    repaired.points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-  }
-  repaired.triangles.reserve(mesh.number_of_faces());
-  for (const auto f : mesh.faces()) {
-    std::array<uint32_t, 3> t{};
-    size_t k = 0;
-    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) t[k++] = index[v.idx()];
-    repaired.triangles.push_back(t);
-  }
+  TriangleFile file = repaired_triangle_file(soup, options, repaired.summary.changes);
+  repaired.points = std::move(file.points);
+  repaired.triangles = std::move(file.triangles);
   return repaired;
 }
 

@@ -7,16 +7,21 @@
 #include <string>
 #include <vector>
 
+#include "mesh/io/mesh_writers.hpp"
 #include "mesh/io/polygon_soup.hpp"
 
 namespace umbra {
 
 struct RepairSummary {
   std::vector<std::string> changes;  // one line per kind of change made, e.g. "merged 24 repeated vertices"
+  // What the written mesh names beside it (an OBJ's material library, its
+  // maps), for the caller to write whole before it renames the mesh into place.
+  std::vector<CompanionFile> companions;
 };
 
 // Whether the repair can write a mesh to `path`, by its extension: .obj,
-// .off, .ply or .stl (any case), which CGAL writes; not glTF or 3MF.
+// .off, .ply or .stl (any case), the formats whose table row has a writer;
+// not glTF or 3MF.
 bool repair_can_write(const std::string& path);
 
 // Holes of more edges than this are left open unless --max-hole-edges says:
@@ -30,8 +35,10 @@ constexpr size_t kDefaultMaxHoleEdges = 200;
 // `max_hole_edges` edges (hole_filling.hpp), and turns every closed
 // component outward; writes the result to `write_to`, a file whose extension is
 // `output`'s and chooses the format (the caller renames it to `output` once
-// whole). Throws InputError, located at `output`, when nothing usable is left
-// or the file cannot be written.
+// whole), with what the format keeps of the soup's materials, texture
+// coordinates, colours and normals (repair_attributes.hpp; the summary says
+// what it could not keep). Throws InputError, located at `output`, when
+// nothing usable is left or the file cannot be written.
 struct RepairOptions {
   size_t max_hole_edges = kDefaultMaxHoleEdges;
   // Points at most this far apart (in the model's units) are one before

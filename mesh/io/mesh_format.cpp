@@ -9,6 +9,7 @@
 #include "mesh/input_error.hpp"
 #include "mesh/io/mapped_file.hpp"
 #include "mesh/io/mesh_readers.hpp"
+#include "mesh/io/mesh_writers.hpp"
 #include "mesh/io/text_scanner.hpp"
 #include "mesh/word_list.hpp"
 
@@ -124,15 +125,15 @@ PolygonSoup without_maps(std::string_view bytes, const std::string& path, const 
 const std::vector<MeshFormat>& mesh_formats() {
   static const std::vector<MeshFormat> formats{
       {"obj", "OBJ", {".obj"}, never, is_obj, [](std::string_view b, const std::string& p, const TextureMaps& t) { return read_obj(b, p, t); },
-       true, "+y"},
-      {"off", "OFF", {".off"}, never, is_off, without_maps<read_off>, true, "+y"},
+       write_obj_file, "+y"},
+      {"off", "OFF", {".off"}, never, is_off, without_maps<read_off>, write_off_file, "+y"},
       {"ply", "PLY", {".ply"}, [](std::string_view b) { return starts_with(b, "ply\n") || starts_with(b, "ply\r"); }, never,
-       without_maps<read_ply>, true, "+y"},
-      {"stl", "STL", {".stl"}, is_binary_stl, is_ascii_stl, without_maps<read_stl>, true, "+z"},
+       without_maps<read_ply>, write_ply_file, "+y"},
+      {"stl", "STL", {".stl"}, is_binary_stl, is_ascii_stl, without_maps<read_stl>, write_stl_file, "+z"},
       {"gltf", "glTF", {".gltf", ".glb"}, [](std::string_view b) { return starts_with(b, "glTF"); }, is_gltf_json, read_gltf,
-       false, "+y"},
+       nullptr, "+y"},
       {"3mf", "3MF", {".3mf"}, [](std::string_view b) { return is_zip(b) && has_model_part(b); }, never, without_maps<read_3mf>,
-       false, "+z"},
+       nullptr, "+z"},
   };
   return formats;
 }
@@ -152,7 +153,7 @@ std::string mesh_format_names() {
 std::string mesh_format_extensions(bool repair_writes_only) {
   std::vector<std::string_view> extensions;
   for (const MeshFormat& f : mesh_formats())
-    if (f.repair_writes || !repair_writes_only) extensions.insert(extensions.end(), f.extensions.begin(), f.extensions.end());
+    if (f.write || !repair_writes_only) extensions.insert(extensions.end(), f.extensions.begin(), f.extensions.end());
   return word_list(extensions);
 }
 

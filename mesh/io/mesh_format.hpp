@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "mesh/io/mesh_writers.hpp"
 #include "mesh/io/polygon_soup.hpp"
 
 namespace umbra {
@@ -26,7 +27,7 @@ struct MeshFormat {
   // Plainly this format as text: the file's first 64 KiB, known to be text.
   bool (*has_text)(std::string_view head);
   PolygonSoup (*read)(std::string_view bytes, const std::string& path, const TextureMaps& maps);
-  bool repair_writes;  // --repair can write it
+  MeshWriter write;  // how --repair writes it (mesh_writers.hpp); null where it cannot
   // The axis that points up by the format's convention, which a model staged
   // on its own stands on: glTF +Y and 3MF +Z by their specifications, STL +Z
   // as printing and CAD tools write it, OBJ, PLY and OFF +Y as most

@@ -123,7 +123,10 @@ std::shared_ptr<const TextureImage> ModelFiles::texture(const std::string& path,
     std::vector<unsigned char> bytes;
     d.error = refusal(path);
     if (d.error.empty() && read_regular_file(path, kMostTextureFileBytes, bytes, d.error))
-      d.image = decode_texture(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path, d.error);
+      if (auto image = decode_texture(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path, d.error)) {
+        image->file = path;
+        d.image = std::move(image);
+      }
   }
   error = first_time ? d.error : "";
   return d.image;

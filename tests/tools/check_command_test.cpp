@@ -1,6 +1,7 @@
 // `umbra check` as a user meets it: reports in order, exit codes, JSON lines,
 // repair that never touches its input.
 #include <set>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -385,6 +386,56 @@ TEST_F(CheckCommand, RepairRefusesToOverwriteItsInputOrTakeTwoMeshes) {
                                   "\"\n(see umbra check --help)\n");
     EXPECT_FALSE(fs::exists(path(name))) << name;
   }
+}
+
+// assimp's spider: 5 textured materials, 6 holes. The repaired OBJ names
+// its library and copies of its maps beside it, and reads them back with no
+// warning, every corner at an input point with the input's coordinates there.
+TEST_F(CheckCommand, RepairOfATexturedObjKeepsItsMaterialsAndMaps) {
+  const std::string spider = "/usr/share/assimp/models/OBJ/spider.obj";
+  if (!fs::exists(spider)) GTEST_SKIP() << "needs Debian's assimp-testmodels (build.sh installs it)";
+  const CommandResult r = run("check " + spider + " --repair " + path("fixed.obj"));
+  EXPECT_NE(r.out.find("  filled 6 holes with "), std::string::npos) << r.out << r.err;
+  EXPECT_EQ(r.out.find("left out"), std::string::npos) << r.out;
+  for (const char* companion : {"fixed.mtl", "fixed.SpiderTex.jpg", "fixed.drkwood2.jpg", "fixed.engineflare1.jpg",
+                                "fixed.wal67ar_small.jpg", "fixed.wal69ar_small.jpg"})
+    EXPECT_TRUE(fs::exists(path(companion))) << companion;
+  const PolygonSoup in = read_polygon_soup(spider);
+  const PolygonSoup out = read_polygon_soup(path("fixed.obj"));
+  EXPECT_TRUE(out.warnings.empty()) << out.warnings[0].message;
+  ASSERT_EQ(out.materials.size(), 5u);
+  for (const SoupMaterial& m : out.materials) EXPECT_TRUE(m.texture) << m.name;
+  std::set<std::tuple<double, double, double, float, float>> input_corners;
+  std::set<std::tuple<double, double, double>> input_points;
+  for (size_t c = 0; c < in.corners.size(); ++c) {
+    const glm::dvec3 p = in.points[in.corners[c]];
+    input_corners.insert({p.x, p.y, p.z, in.corner_uvs[c].x, in.corner_uvs[c].y});
+    input_points.insert({p.x, p.y, p.z});
+  }
+  ASSERT_EQ(out.corner_uvs.size(), out.corners.size());
+  size_t at_input_points = 0;
+  for (size_t c = 0; c < out.corners.size(); ++c) {
+    const glm::dvec3 p = out.points[out.corners[c]];
+    if (!input_points.count({p.x, p.y, p.z})) continue;  // a point that filling a hole added
+    ++at_input_points;
+    EXPECT_TRUE(input_corners.count({p.x, p.y, p.z, out.corner_uvs[c].x, out.corner_uvs[c].y})) << "corner " << c;
+  }
+  EXPECT_GT(at_input_points, out.corners.size() / 2);
+}
+
+TEST_F(CheckCommand, RepairNeverOverwritesAMaterialLibraryItDidNotWrite) {
+  const std::string input = write("in.obj", "mtllib out.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nusemtl red\n"
+                                            "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n");
+  const std::string library = write("out.mtl", "newmtl red\nKd 1 0 0\n");
+  const CommandResult r = run("check " + input + " --repair " + path("out.obj"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, library + ": the repair would overwrite this material library, which umbra did not write: name the output otherwise\n");
+  EXPECT_EQ(read(library), "newmtl red\nKd 1 0 0\n");
+  EXPECT_FALSE(fs::exists(path("out.obj")));
+  // A library that an earlier repair wrote is replaced.
+  ASSERT_EQ(run("check " + input + " --repair " + path("other.obj")).status, 0);
+  ASSERT_EQ(run("check " + input + " --repair " + path("other.obj")).status, 0);
+  EXPECT_EQ(read_polygon_soup(path("other.obj")).materials.at(0).diffuse, glm::dvec3(1, 0, 0));
 }
 
 TEST_F(CheckCommand, RepairIntoAMissingFolderFailsWithoutLeavingAFile) {
