@@ -78,7 +78,8 @@ options:
   --repair OUT      (one MESH only) write a repaired copy to OUT, a
                     {repair extensions} file: merge repeated vertices,
                     drop degenerate and duplicate faces, stitch borders,
-                    fill holes, orient consistently and outward; then check
+                    fill holes, orient consistently and outward, merge
+                    overlapping parts into their union; then check
                     OUT and say what changed and what is still wrong. Never
                     writes MESH. An .obj keeps the materials, texture
                     coordinates, normals and colours, its library and maps

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <limits>
 #include <map>
+#include <optional>
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -20,6 +21,8 @@
 #include "mesh/check/hole_filling.hpp"
 #include "mesh/check/point_merging.hpp"
 #include "mesh/check/repair_attributes.hpp"
+#include "mesh/check/revisiting_polygons.hpp"
+#include "mesh/check/self_intersection_removal.hpp"
 #include "mesh/check/repair_mesh_type.hpp"
 #include "mesh/check/self_intersections.hpp"
 #include "mesh/check/solid_orientation.hpp"
@@ -57,11 +60,16 @@ size_t remove_degenerate_polygons(std::vector<Polygon>& polygons) {
   return before - polygons.size();
 }
 
+// What orient_closed_components_outward did and found.
+struct Outward {
+  size_t reversed = 0;        // closed components turned
+  size_t crossing_pairs = 0;  // pairs of faces that cross
+};
+
 // Reverses every closed component that faces into the solid it bounds
 // (facing_of_closed_components, with the self-intersection search saying
-// which cross a face: those, and those inside them, stay as they are);
-// returns how many.
-size_t orient_closed_components_outward(Mesh& mesh) {
+// which cross a face: those, and those inside them, stay as they are).
+Outward orient_closed_components_outward(Mesh& mesh) {
   auto component = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:component", 0).first;
   const std::size_t count = PMP::connected_components(mesh, component);
   std::vector<std::vector<Mesh::Face_index>> faces(count);
@@ -98,7 +106,7 @@ size_t orient_closed_components_outward(Mesh& mesh) {
     ++reversed;
   }
   mesh.remove_property_map(component);
-  return reversed;
+  return {reversed, found.pairs.size()};
 }
 
 // What fill_holes did, in a line each.
@@ -195,8 +203,20 @@ Mesh repaired_surface(const PolygonSoup& soup, const RepairOptions& options, std
   HoleFilling holes = fill_holes(mesh, max_hole_edges, lobe_triangles);
   holes.triangles_added += add_lobe_patches(mesh, lobe_triangles);
   say_holes(holes, max_hole_edges, changes);
-  if (const size_t n = orient_closed_components_outward(mesh))
-    changes.push_back("turned " + counted(n, "closed component", "closed components") + " outward");
+  const Outward outward = orient_closed_components_outward(mesh);
+  if (outward.reversed > 0) changes.push_back("turned " + counted(outward.reversed, "closed component", "closed components") + " outward");
+  if (outward.crossing_pairs > 0) {
+    const std::string pairs = counted(outward.crossing_pairs, "pair", "pairs") + " of faces that cross";
+    const SelfIntersectionRemoval removal = remove_self_intersections(mesh);
+    if (removal.removed) {
+      changes.push_back("removed the " + pairs + ": the parts that overlapped are one surface, bounding their union (" +
+                        counted(mesh.number_of_faces(), "triangle", "triangles") + " now)");
+      if (const size_t n = orient_closed_components_outward(mesh).reversed)
+        changes.push_back("turned " + counted(n, "closed component", "closed components") + " of it outward");
+    } else {
+      changes.push_back("left the " + pairs + ": " + removal.why_not);
+    }
+  }
   if (mesh.number_of_faces() == 0) throw InputError({soup.path, 0, 0}, "nothing left after the repair: every face was degenerate");
   return mesh;
 }
@@ -204,7 +224,17 @@ Mesh repaired_surface(const PolygonSoup& soup, const RepairOptions& options, std
 // The repaired surface as triangles over its own points, numbered afresh
 // (hole filling may leave removed vertices among the mesh's), with the
 // soup's attributes (repair_attributes.hpp).
-TriangleFile repaired_triangle_file(const PolygonSoup& soup, const RepairOptions& options, std::vector<std::string>& changes) {
+TriangleFile repaired_triangle_file(const PolygonSoup& file_soup, const RepairOptions& options, std::vector<std::string>& changes) {
+  // A face that passes twice through a point (a keyhole round a hole) is
+  // its triangles, as the check reads it, rather than dropped as degenerate.
+  std::optional<PolygonSoup> split;
+  if (has_revisiting_polygons(file_soup)) {
+    split = split_revisiting_polygons(file_soup);
+    const size_t faces = split->warnings.size() - file_soup.warnings.size();
+    changes.push_back("split " + counted(faces, "face that passes", "faces that pass") + " more than once through a point into " +
+                      counted(split->polygon_count() - file_soup.polygon_count() + faces, "triangle", "triangles"));
+  }
+  const PolygonSoup& soup = split ? *split : file_soup;
   std::vector<glm::dvec3> placed;
   const Mesh mesh = repaired_surface(soup, options, changes, placed);
   std::vector<glm::dvec3> points;
@@ -223,7 +253,15 @@ TriangleFile repaired_triangle_file(const PolygonSoup& soup, const RepairOptions
     for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) t[k++] = index[v.idx()];
     triangles.push_back(t);
   }
-  return with_soup_attributes(soup, placed, std::move(points), std::move(triangles));
+  std::vector<std::array<glm::dvec3, 3>> split_from;
+  if (const auto property = mesh.property_map<Mesh::Face_index, SplitFrom>(kSplitFromProperty); property.second) {
+    split_from.reserve(triangles.size());
+    for (const auto f : mesh.faces()) {
+      std::array<glm::dvec3, 3>& from = split_from.emplace_back();
+      for (size_t k = 0; k < 3; ++k) from[k] = {property.first[f][k].x(), property.first[f][k].y(), property.first[f][k].z()};
+    }
+  }
+  return with_soup_attributes(soup, placed, std::move(points), std::move(triangles), split_from);
 }
 
 }  // namespace

@@ -200,9 +200,12 @@ void MeshReport::print_text(std::ostream& out) const {
   else out << plural(inconsistent_edges, "edge disagrees", "edges disagree") << ", " << plural(faces_to_flip, "face", "faces") << " to flip";
   if (inward_components > 0) out << "; " << plural(inward_components, "closed component faces", "closed components face") << " inward";
   if (undecided_components > 0)
-    out << "; " << plural(undecided_components, "closed component", "closed components")
-        << (self_intersections.checked && self_intersections.complete ? " cross faces: which way they face is undecided"
-                                                                       : ": which way they face is undecided without a complete self-intersection search");
+    out << "; "
+        << (self_intersections.checked && self_intersections.complete
+                ? plural(undecided_components, "closed component crosses", "closed components cross") +
+                      " faces: which way they face is undecided"
+                : plural(undecided_components, "closed component", "closed components") +
+                      ": which way they face is undecided without a complete self-intersection search");
   out << "\n";
   examples_line(refs_of("flip face", examples.faces_to_flip));
   out << "  self-intersections ";

@@ -71,13 +71,28 @@ class CornersByPosition {
   std::vector<uint32_t> polygon_of_;
 };
 
-// Gives each point without a soup corner the corner of the nearest point,
-// by edges, that has one (a breadth-first search from all of them at once).
-void spread_to_the_rest(const std::vector<std::array<uint32_t, 3>>& triangles, std::vector<uint32_t>& corner_of_point) {
-  std::vector<uint32_t> first(corner_of_point.size() + 1, 0);
+// Where a repaired corner's attributes come from: a blend of up to three
+// of the soup's corners (kNone for none), by weights that sum to 1.
+struct Blend {
+  std::array<uint32_t, 3> corners{kNone, kNone, kNone};
+  glm::dvec3 weights{1.0, 0.0, 0.0};
+  bool found() const { return corners[0] != kNone; }
+  template <typename Value, typename Of>
+  Value of(Of&& attribute) const {
+    Value sum(0.0f);
+    for (size_t k = 0; k < 3; ++k)
+      if (corners[k] != kNone) sum += float(weights[k]) * attribute(corners[k]);
+    return sum;
+  }
+};
+
+// Gives each point without a blend the blend of the nearest point, by edges,
+// that has one (a breadth-first search from all of them at once).
+void spread_to_the_rest(const std::vector<std::array<uint32_t, 3>>& triangles, std::vector<Blend>& blend_of_point) {
+  std::vector<uint32_t> first(blend_of_point.size() + 1, 0);
   for (const auto& t : triangles)
     for (const uint32_t v : t) first[v + 1] += 2;
-  for (size_t v = 0; v < corner_of_point.size(); ++v) first[v + 1] += first[v];
+  for (size_t v = 0; v < blend_of_point.size(); ++v) first[v + 1] += first[v];
   std::vector<uint32_t> neighbours(first.back()), filled(first.begin(), first.end() - 1);
   for (const auto& t : triangles)
     for (size_t k = 0; k < 3; ++k) {
@@ -85,66 +100,94 @@ void spread_to_the_rest(const std::vector<std::array<uint32_t, 3>>& triangles, s
       neighbours[filled[t[k]]++] = t[(k + 2) % 3];
     }
   std::vector<uint32_t> queue;
-  for (uint32_t v = 0; v < corner_of_point.size(); ++v)
-    if (corner_of_point[v] != kNone) queue.push_back(v);
+  for (uint32_t v = 0; v < blend_of_point.size(); ++v)
+    if (blend_of_point[v].found()) queue.push_back(v);
   for (size_t head = 0; head < queue.size(); ++head) {
     const uint32_t v = queue[head];
     for (uint32_t n = first[v]; n < first[v + 1]; ++n)
-      if (corner_of_point[neighbours[n]] == kNone) {
-        corner_of_point[neighbours[n]] = corner_of_point[v];
+      if (!blend_of_point[neighbours[n]].found()) {
+        blend_of_point[neighbours[n]] = blend_of_point[v];
         queue.push_back(neighbours[n]);
       }
   }
 }
 
-// The most common of the three corners' materials (-1 for none).
-int most_common_material(const PolygonSoup& soup, const CornersByPosition& corners, const std::array<uint32_t, 3>& origin) {
-  std::array<int, 3> materials;
-  for (size_t k = 0; k < 3; ++k) materials[k] = origin[k] == kNone ? -1 : soup.polygon_material(corners.polygon_of(origin[k]));
-  return materials[1] == materials[2] ? materials[1] : materials[0];
+// The barycentric coordinates of `p` in the triangle (a, b, c), p taken
+// onto its plane.
+glm::dvec3 barycentric(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+  // A corner's own point takes its attributes exactly, not to rounding.
+  if (p == a) return {1.0, 0.0, 0.0};
+  if (p == b) return {0.0, 1.0, 0.0};
+  if (p == c) return {0.0, 0.0, 1.0};
+  const glm::dvec3 n = glm::cross(b - a, c - a);
+  const double area = glm::dot(n, n);
+  if (area == 0.0) return {1.0, 0.0, 0.0};
+  const double u = glm::dot(glm::cross(c - b, p - b), n) / area, v = glm::dot(glm::cross(a - c, p - c), n) / area;
+  return {u, v, 1.0 - u - v};
 }
 
 }  // namespace
 
 TriangleFile with_soup_attributes(const PolygonSoup& soup, const std::vector<glm::dvec3>& placed, std::vector<glm::dvec3> points,
-                                  std::vector<std::array<uint32_t, 3>> triangles) {
+                                  std::vector<std::array<uint32_t, 3>> triangles,
+                                  const std::vector<std::array<glm::dvec3, 3>>& split_from) {
   TriangleFile file;
   file.points = std::move(points);
   file.triangles = std::move(triangles);
   if (soup.materials.empty() && soup.corner_uvs.empty() && soup.point_colors.empty() && soup.corner_normals.empty()) return file;
 
   const CornersByPosition corners(soup, placed);
-  std::vector<std::array<uint32_t, 3>> origin(file.triangles.size());
-  std::vector<uint8_t> on_a_polygon(file.triangles.size());
-  std::vector<uint32_t> corner_of_point(file.points.size(), kNone);
+  enum class Found : uint8_t { kOnAPolygon, kCutFromOne, kNot };
+  std::vector<Found> found(file.triangles.size(), Found::kNot);
+  std::vector<uint32_t> polygon(file.triangles.size(), kNone);
+  std::vector<std::array<Blend, 3>> blends(file.triangles.size());
+  std::vector<Blend> blend_of_point(file.points.size());
   bool all_found = true;
   for (size_t t = 0; t < file.triangles.size(); ++t) {
     const auto& triangle = file.triangles[t];
-    origin[t] = corners.origin_of({file.points[triangle[0]], file.points[triangle[1]], file.points[triangle[2]]});
-    on_a_polygon[t] = origin[t][0] != kNone;
-    all_found = all_found && on_a_polygon[t];
-    for (size_t k = 0; k < 3 && on_a_polygon[t]; ++k)
-      if (corner_of_point[triangle[k]] == kNone) corner_of_point[triangle[k]] = origin[t][k];
+    const std::array<glm::dvec3, 3> at = {file.points[triangle[0]], file.points[triangle[1]], file.points[triangle[2]]};
+    if (const std::array<uint32_t, 3> origin = corners.origin_of(at); origin[0] != kNone) {
+      found[t] = Found::kOnAPolygon;
+      for (size_t k = 0; k < 3; ++k) blends[t][k].corners[0] = origin[k];
+    } else if (!split_from.empty()) {
+      const std::array<glm::dvec3, 3>& from = split_from[t];
+      if (const std::array<uint32_t, 3> cut = corners.origin_of(from); cut[0] != kNone) {
+        found[t] = Found::kCutFromOne;
+        for (size_t k = 0; k < 3; ++k) blends[t][k] = {cut, barycentric(at[k], from[0], from[1], from[2])};
+      }
+    }
+    if (found[t] == Found::kNot) {
+      all_found = false;
+      continue;
+    }
+    polygon[t] = corners.polygon_of(blends[t][0].corners[0]);
+    for (size_t k = 0; k < 3; ++k)
+      if (!blend_of_point[triangle[k]].found()) blend_of_point[triangle[k]] = blends[t][k];
   }
   if (!all_found) {
-    spread_to_the_rest(file.triangles, corner_of_point);
+    spread_to_the_rest(file.triangles, blend_of_point);
     for (size_t t = 0; t < file.triangles.size(); ++t)
-      if (!on_a_polygon[t])
-        for (size_t k = 0; k < 3; ++k) origin[t][k] = corner_of_point[file.triangles[t][k]];
+      if (found[t] == Found::kNot)
+        for (size_t k = 0; k < 3; ++k) blends[t][k] = blend_of_point[file.triangles[t][k]];
   }
 
   if (!soup.materials.empty()) {
     file.materials = soup.materials;
     file.triangle_materials.resize(file.triangles.size());
-    for (size_t t = 0; t < file.triangles.size(); ++t)
-      file.triangle_materials[t] = on_a_polygon[t] ? soup.polygon_material(corners.polygon_of(origin[t][0]))
-                                                   : most_common_material(soup, corners, origin[t]);
+    for (size_t t = 0; t < file.triangles.size(); ++t) {
+      // A patch takes the material most of its corners' sources have.
+      std::array<int, 3> material;
+      for (size_t k = 0; k < 3; ++k)
+        material[k] = blends[t][k].found() ? soup.polygon_material(corners.polygon_of(blends[t][k].corners[0])) : -1;
+      file.triangle_materials[t] = polygon[t] != kNone ? soup.polygon_material(polygon[t])
+                                   : material[1] == material[2] ? material[1] : material[0];
+    }
   }
   if (!soup.corner_uvs.empty()) {
     file.corner_uvs.resize(3 * file.triangles.size());
     for (size_t t = 0; t < file.triangles.size(); ++t)
       for (size_t k = 0; k < 3; ++k)
-        file.corner_uvs[3 * t + k] = origin[t][k] == kNone ? glm::vec2(0.0f) : soup.corner_uvs[origin[t][k]];
+        file.corner_uvs[3 * t + k] = blends[t][k].of<glm::vec2>([&](uint32_t c) { return soup.corner_uvs[c]; });
   }
   if (!soup.corner_normals.empty()) {
     file.corner_normals.resize(3 * file.triangles.size());
@@ -154,7 +197,9 @@ TriangleFile with_soup_attributes(const PolygonSoup& soup, const std::vector<glm
       for (size_t k = 0; k < 3; ++k) {
         // A patch borrows no normal: one from the faces round a hole
         // would shade it as if it curved their way.
-        const glm::vec3 normal = on_a_polygon[t] ? soup.corner_normals[origin[t][k]] : glm::vec3(0.0f);
+        glm::vec3 normal(0.0f);
+        if (found[t] != Found::kNot) normal = blends[t][k].of<glm::vec3>([&](uint32_t c) { return soup.corner_normals[c]; });
+        if (found[t] == Found::kCutFromOne && glm::dot(normal, normal) > 0.0f) normal = glm::normalize(normal);
         file.corner_normals[3 * t + k] = glm::dot(glm::dvec3(normal), facing) < 0.0 ? -normal : normal;
       }
     }
@@ -162,8 +207,10 @@ TriangleFile with_soup_attributes(const PolygonSoup& soup, const std::vector<glm
   if (!soup.point_colors.empty()) {
     file.point_colors.assign(file.points.size(), glm::vec3(1.0f));
     for (size_t v = 0; v < file.points.size(); ++v)
-      if (corner_of_point[v] != kNone && soup.corners[corner_of_point[v]] < soup.point_colors.size())
-        file.point_colors[v] = soup.point_colors[soup.corners[corner_of_point[v]]];
+      if (blend_of_point[v].found())
+        file.point_colors[v] = blend_of_point[v].of<glm::vec3>([&](uint32_t c) {
+          return soup.corners[c] < soup.point_colors.size() ? soup.point_colors[soup.corners[c]] : glm::vec3(1.0f);
+        });
   }
   return file;
 }

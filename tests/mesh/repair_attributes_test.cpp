@@ -19,6 +19,7 @@
 #include "mesh/input_error.hpp"
 #include "mesh/io/mesh_file.hpp"
 #include "mesh/io/texture_file.hpp"
+#include "tests/mesh/mesh_builders.hpp"
 #include "tests/scratch_folder.hpp"
 
 namespace umbra {
@@ -195,6 +196,46 @@ TEST_F(RepairAttributes, ANormalTurnsWithTheFaceTheRepairTurnsOutward) {
     EXPECT_GT(glm::dot(glm::dvec3(outward), centre - glm::dvec3(0.5)), 0.0) << f;
     for (uint32_t k = 0; k < 3; ++k) EXPECT_EQ(out.corner_normals[out.polygon_starts[f] + k], outward) << f;
   }
+}
+
+// Two cubes that overlap, mapped by texture coordinates (x, y) at every
+// corner: the repair cuts their faces where they cross and keeps the outer
+// pieces, and each piece's corners, the new points on the crossing
+// included, take the coordinates interpolated there, which are again (x, y).
+TEST_F(RepairAttributes, FacesCutWhereOverlappingPartsMeetTakeTheirCoordinatesInterpolated) {
+  std::string obj = "mtllib cube.mtl\nusemtl lid\n";
+  for (const double at : {0.0, 0.5}) {
+    for (int i = 0; i < 8; ++i) {
+      const glm::dvec3 p(at + (i & 1), at + ((i & 2) >> 1), at + ((i & 4) >> 2));
+      obj += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\nvt " + std::to_string(p.x) + " " +
+             std::to_string(p.y) + "\n";
+    }
+    const int base = at == 0.0 ? 1 : 9;
+    for (const std::array<int, 4>& quad : std::vector<std::array<int, 4>>{{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}}) {
+      obj += "f";
+      for (const int k : quad) obj += " " + std::to_string(base + k) + "/" + std::to_string(base + k);
+      obj += "\n";
+    }
+  }
+  const PolygonSoup soup = read_polygon_soup(write("two.obj", obj));
+  const std::string path = (folder_ / "out.obj").string();
+  const RepairSummary summary = repair_mesh(soup, path, path);
+  ASSERT_TRUE(std::any_of(summary.changes.begin(), summary.changes.end(),
+                          [](const std::string& c) { return c.find("pairs of faces that cross: the parts that overlapped are one surface") != std::string::npos; }))
+      << summary.changes.back();
+  for (const CompanionFile& companion : summary.companions) write(std::filesystem::path(companion.path).filename(), companion.bytes);
+  const PolygonSoup out = read_polygon_soup(path);
+  EXPECT_NEAR(test::signed_volume(out, glm::dvec3(0.75)), 2.0 - 0.125, 1e-12);
+  ASSERT_EQ(out.corner_uvs.size(), out.corners.size());
+  size_t new_points = 0;
+  for (size_t c = 0; c < out.corners.size(); ++c) {
+    const glm::dvec3 p = out.points[out.corners[c]];
+    new_points += std::fmod(p.x, 0.5) != 0.0 || std::fmod(p.y, 0.5) != 0.0 || std::fmod(p.z, 0.5) != 0.0;
+    EXPECT_NEAR(out.corner_uvs[c].x, p.x, 1e-6) << "corner " << c;
+    EXPECT_NEAR(out.corner_uvs[c].y, 1.0 - p.y, 1e-6) << "corner " << c;
+  }
+  EXPECT_EQ(new_points, 0u);  // the crossings of these cubes meet at points of the half grid
+  for (size_t f = 0; f < out.polygon_count(); ++f) EXPECT_EQ(out.polygon_material(f), 1) << f;
 }
 
 TEST_F(RepairAttributes, APlyKeepsColoursAndEachFormatSaysWhatItLeavesOut) {
