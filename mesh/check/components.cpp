@@ -40,17 +40,14 @@ ComponentLabels label_components(const FaceClasses& faces, EdgeGroups& groups) {
   return labels;
 }
 
-VertexFans find_vertex_fans(const PolygonSoup& soup, const FaceClasses& faces, EdgeGroups& groups,
-                            const ComponentLabels& labels, size_t vertex_count) {
+ComponentVertices find_vertex_fans(const PolygonSoup& soup, const FaceClasses& faces, EdgeGroups& groups,
+                                   const ComponentLabels& labels, size_t vertex_count) {
   const uint32_t face_count = uint32_t(faces.repeats_vertex.size());
-  VertexFans out;
+  ComponentVertices out;
   out.vertices.assign(labels.reports.size(), 0);
   out.pinched_vertices.assign(labels.reports.size(), 0);
   std::vector<uint32_t> component_of_vertex(vertex_count, kNone);
   std::vector<uint64_t> vertex_in_other_component;  // (component << 32) | vertex: only where components touch
-  std::vector<uint32_t> fan_of_vertex(vertex_count, kNone);
-  std::vector<uint8_t>& several_fans = out.several_fans;
-  several_fans.assign(vertex_count, 0);
   for (uint32_t f = 0; f < face_count; ++f) {
     if (!faces.in_topology(f)) continue;
     const uint32_t component = labels.of_face[f];
@@ -63,36 +60,22 @@ VertexFans find_vertex_fans(const PolygonSoup& soup, const FaceClasses& faces, E
       } else if (component_of_vertex[v] != component) {
         vertex_in_other_component.push_back((uint64_t(component) << 32) | v);
       }
-      const uint32_t fan = groups.fans.find(c);
-      if (fan_of_vertex[v] == kNone) fan_of_vertex[v] = fan;
-      else if (fan_of_vertex[v] != fan) several_fans[v] = 1;
     }
   }
   std::sort(vertex_in_other_component.begin(), vertex_in_other_component.end());
   vertex_in_other_component.erase(std::unique(vertex_in_other_component.begin(), vertex_in_other_component.end()),
                                   vertex_in_other_component.end());
   for (uint64_t cv : vertex_in_other_component) ++out.vertices[cv >> 32];
+  VertexFans fans = count_vertex_fans(vertex_count, groups.on_non_manifold_edge, [&](auto&& visit) {
+    for (uint32_t f = 0; f < face_count; ++f)
+      if (faces.in_topology(f))
+        for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c)
+          visit(faces.corners[c], labels.of_face[f], groups.fans.find(c));
+  });
   for (uint32_t v = 0; v < vertex_count; ++v)
-    if (several_fans[v] && !groups.on_non_manifold_edge[v]) out.non_manifold_vertices.push_back(v);
-  // A component is pinched at a vertex when two of the vertex's fans lie in
-  // it; counted once per vertex however many fans it has there.
-  std::vector<std::pair<uint32_t, uint64_t>> vertex_fans;
-  for (uint32_t f = 0; f < face_count; ++f) {
-    if (!faces.in_topology(f)) continue;
-    for (uint32_t c = soup.polygon_starts[f]; c < soup.polygon_starts[f + 1]; ++c) {
-      const uint32_t v = faces.corners[c];
-      if (several_fans[v] && !groups.on_non_manifold_edge[v])
-        vertex_fans.push_back({v, (uint64_t(labels.of_face[f]) << 32) | groups.fans.find(c)});
-    }
-  }
-  std::sort(vertex_fans.begin(), vertex_fans.end());
-  vertex_fans.erase(std::unique(vertex_fans.begin(), vertex_fans.end()), vertex_fans.end());
-  const auto same_component_vertex = [&](size_t i, size_t j) {
-    return vertex_fans[i].first == vertex_fans[j].first && (vertex_fans[i].second >> 32) == (vertex_fans[j].second >> 32);
-  };
-  for (size_t i = 1; i < vertex_fans.size(); ++i)
-    if (same_component_vertex(i, i - 1) && (i < 2 || !same_component_vertex(i, i - 2)))
-      ++out.pinched_vertices[vertex_fans[i].second >> 32];
+    if (fans.several_fans[v] && !groups.on_non_manifold_edge[v]) out.non_manifold_vertices.push_back(v);
+  for (const uint32_t component : fans.pinched_components) ++out.pinched_vertices[component];
+  out.several_fans = std::move(fans.several_fans);
   return out;
 }
 

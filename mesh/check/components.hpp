@@ -9,6 +9,7 @@
 #include "mesh/check/edge_groups.hpp"
 #include "mesh/check/face_classes.hpp"
 #include "mesh/check/mesh_report.hpp"
+#include "mesh/topology/vertex_fans.hpp"
 
 namespace umbra {
 
@@ -20,14 +21,16 @@ struct ComponentLabels {
 };
 ComponentLabels label_components(const FaceClasses& faces, EdgeGroups& groups);
 
-struct VertexFans {
+// Each component's vertices, and its fans as mesh/topology/vertex_fans
+// counts them.
+struct ComponentVertices {
   std::vector<size_t> vertices;           // per component
   std::vector<size_t> pinched_vertices;   // per component: vertices two of whose fans lie in it (on no non-manifold edge)
   std::vector<uint32_t> non_manifold_vertices;  // in vertex order; vertices on a non-manifold edge are counted with the edge
   std::vector<uint8_t> several_fans;      // per vertex: its corners form more than one fan
   size_t topology_vertices = 0;           // vertices of the faces in the topology
 };
-VertexFans find_vertex_fans(const PolygonSoup& soup, const FaceClasses& faces, EdgeGroups& groups,
+ComponentVertices find_vertex_fans(const PolygonSoup& soup, const FaceClasses& faces, EdgeGroups& groups,
                             const ComponentLabels& labels, size_t vertex_count);
 
 // The holes of each component (border_loops_per_component).

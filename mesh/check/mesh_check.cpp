@@ -218,7 +218,7 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
     }
 
     labels = label_components(faces, groups);
-    VertexFans fans = find_vertex_fans(soup, faces, groups, labels, vertex_count);
+    ComponentVertices fans = find_vertex_fans(soup, faces, groups, labels, vertex_count);
     report.non_manifold_vertices = fans.non_manifold_vertices.size();
     for (size_t k = 0; k < std::min(fans.non_manifold_vertices.size(), options.max_examples); ++k)
       examples.non_manifold_vertices.push_back(vertex_ref(fans.non_manifold_vertices[k]));

@@ -7,6 +7,7 @@
 #include "mesh/topology/border_loops.hpp"
 #include "mesh/topology/component_shape.hpp"
 #include "mesh/topology/union_find.hpp"
+#include "mesh/topology/vertex_fans.hpp"
 
 namespace umbra {
 namespace {
@@ -84,28 +85,12 @@ SilhouetteComponents find_silhouette_components(const std::vector<std::array<uin
   // Border loops, per component (numbered by its root face).
   for (BorderEdge& e : border) e.component = components.find(e.component);
   for (const size_t loops : border_loops_per_component(std::move(border), face_count, vertex_count)) result.border_loops += loops;
-  // Vertices whose corners make more than one fan: non-manifold, and pinched
-  // in each component that holds two of its fans.
-  std::vector<uint32_t> fan_of_vertex(vertex_count, kNone);
-  std::vector<uint8_t> several_fans(vertex_count, 0);
-  for (uint32_t t = 0; t < face_count; ++t)
-    for (uint32_t i = 0; i < 3; ++i) {
-      const uint32_t v = triangles[t][i], fan = fans.find(3 * t + i);
-      if (fan_of_vertex[v] == kNone) fan_of_vertex[v] = fan;
-      else if (fan_of_vertex[v] != fan) several_fans[v] = 1;
-    }
-  std::vector<std::array<uint32_t, 3>> vertex_fans;  // (vertex, component root, fan) of the non-manifold vertices' corners
-  for (uint32_t t = 0; t < face_count; ++t)
-    for (uint32_t i = 0; i < 3; ++i)
-      if (const uint32_t v = triangles[t][i]; several_fans[v] && !on_non_manifold_edge[v])
-        vertex_fans.push_back({v, components.find(t), fans.find(3 * t + i)});
-  std::sort(vertex_fans.begin(), vertex_fans.end());
-  vertex_fans.erase(std::unique(vertex_fans.begin(), vertex_fans.end()), vertex_fans.end());
-  for (size_t i = 1; i < vertex_fans.size(); ++i)
-    if (vertex_fans[i][0] == vertex_fans[i - 1][0] && vertex_fans[i][1] == vertex_fans[i - 1][1] &&
-        (i < 2 || vertex_fans[i - 2][0] != vertex_fans[i][0] || vertex_fans[i - 2][1] != vertex_fans[i][1]))
-      found.push_back({vertex_fans[i][1], ComponentShape{0, 0, 1, true}});
-  for (size_t v = 0; v < vertex_count; ++v) result.non_manifold_vertices += several_fans[v] && !on_non_manifold_edge[v];
+  const VertexFans vertex_fans = count_vertex_fans(vertex_count, on_non_manifold_edge, [&](auto&& visit) {
+    for (uint32_t t = 0; t < face_count; ++t)
+      for (uint32_t i = 0; i < 3; ++i) visit(triangles[t][i], components.find(t), fans.find(3 * t + i));
+  });
+  for (const uint32_t root : vertex_fans.pinched_components) found.push_back({root, ComponentShape{0, 0, 1, true}});
+  for (size_t v = 0; v < vertex_count; ++v) result.non_manifold_vertices += vertex_fans.several_fans[v] && !on_non_manifold_edge[v];
   // Each component's shape, summed from what was found, and the one rule.
   std::vector<ComponentShape> shape(face_count, ComponentShape{0, 0, 0, true});
   for (const auto& [face, part] : found) {

@@ -71,7 +71,7 @@ TEST(CheckStages, ComponentsFansAndLoopsOfTwoBowlsTouchingAtAVertex) {
   EXPECT_EQ(labels.of_face, (std::vector<uint32_t>{0, 0, 0, 0, 1, 1, 1, 1}));
   EXPECT_EQ(labels.reports[0].faces, 4u);
   EXPECT_EQ(labels.reports[0].border_edges, 4u);
-  const VertexFans fans = find_vertex_fans(soup, faces, groups, labels, soup.points.size());
+  const ComponentVertices fans = find_vertex_fans(soup, faces, groups, labels, soup.points.size());
   EXPECT_EQ(fans.non_manifold_vertices, std::vector<uint32_t>{0});  // the shared apex: two fans
   EXPECT_EQ(fans.vertices, (std::vector<size_t>{5, 5}));            // the apex counts in both
   EXPECT_EQ(fans.pinched_vertices, (std::vector<size_t>{0, 0}));     // but each component holds one fan of it
