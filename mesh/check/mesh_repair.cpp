@@ -15,6 +15,7 @@
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/stitch_borders.h>
+#include <CGAL/Polygon_mesh_processing/internal/Snapping/snap.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -109,6 +110,21 @@ Outward orient_closed_components_outward(Mesh& mesh) {
   return {reversed, found.pairs.size()};
 }
 
+// Fills the holes of `mesh` (a triangle mesh) of at most `max_hole_edges`
+// edges, those that pass twice through a point lobe by lobe.
+HoleFilling filled(Mesh& mesh, size_t max_hole_edges) {
+  std::vector<std::array<Point, 3>> lobe_triangles;
+  HoleFilling holes = fill_holes(mesh, max_hole_edges, lobe_triangles);
+  holes.triangles_added += add_lobe_patches(mesh, lobe_triangles);
+  return holes;
+}
+
+size_t border_edge_count(const Mesh& mesh) {
+  size_t count = 0;
+  for (const auto h : mesh.halfedges()) count += mesh.is_border(h);
+  return count;
+}
+
 // What fill_holes did, in a line each.
 void say_holes(const HoleFilling& holes, size_t max_edges, std::vector<std::string>& changes) {
   if (holes.filled > 0) {
@@ -199,9 +215,30 @@ Mesh repaired_surface(const PolygonSoup& soup, const RepairOptions& options, std
     changes.push_back("collapsed degenerate triangles (" + counted(triangles_before - mesh.number_of_faces(), "triangle", "triangles") +
                       " fewer)");
   if (!all_removed) changes.push_back("could not remove every degenerate triangle");
-  std::vector<std::array<Point, 3>> lobe_triangles;
-  HoleFilling holes = fill_holes(mesh, max_hole_edges, lobe_triangles);
-  holes.triangles_added += add_lobe_patches(mesh, lobe_triangles);
+  std::optional<Mesh> unfilled;
+  if (!CGAL::is_closed(mesh)) unfilled = mesh;
+  HoleFilling holes = filled(mesh, max_hole_edges);
+  if (unfilled && !CGAL::is_closed(mesh)) {
+    // A crack between two patches whose points do not meet (as CAD
+    // tessellations leave them) is a hole no patch fills well. Tried again
+    // with the borders first snapped onto each other (CGAL's snap_borders:
+    // each border point onto a point or edge across within a bound of its
+    // own edges' lengths) and stitched, and kept where that leaves less
+    // border: snapping also moves points of a border that is a true hole.
+    Mesh& snapped = *unfilled;
+    const size_t moved = PMP::experimental::snap_borders(snapped);
+    const size_t stitched = PMP::stitch_borders(snapped);
+    PMP::remove_degenerate_faces(snapped);
+    snapped.collect_garbage();
+    HoleFilling snapped_holes = filled(snapped, max_hole_edges);
+    if (moved > 0 && border_edge_count(snapped) < border_edge_count(mesh)) {
+      changes.push_back("snapped " + counted(moved, "border point", "border points") + " onto the border across a crack and stitched " +
+                        counted(stitched, "pair of border edges", "pairs of border edges") +
+                        " (CGAL's snap_borders), which left less border open than filling alone");
+      mesh = std::move(snapped);
+      holes = snapped_holes;
+    }
+  }
   say_holes(holes, max_hole_edges, changes);
   const Outward outward = orient_closed_components_outward(mesh);
   if (outward.reversed > 0) changes.push_back("turned " + counted(outward.reversed, "closed component", "closed components") + " outward");

@@ -483,6 +483,24 @@ TEST_F(CheckCommand, RepairSplitsAKeyholeFaceIntoItsTriangles) {
   EXPECT_DOUBLE_EQ(area, 8.0);
 }
 
+// A unit cube whose top is split in two at x = 0.5, the sides left whole: a
+// point lies on each side's top edge (a T-junction), and the crack between
+// them is a hole with no area that no patch fills. Snapped onto the edge
+// and stitched, the cube is whole.
+TEST_F(CheckCommand, RepairSnapsACrackWherePatchesMeetAtAPointOnAnEdge) {
+  const std::string input = write("crack.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                                               "v 0.5 0 1\nv 0.5 1 1\nf 1 4 3 2\nf 1 2 6 5\nf 4 8 7 3\nf 1 5 8 4\nf 2 3 7 6\n"
+                                               "f 5 9 10 8\nf 9 6 7 10\n");
+  ASSERT_NE(run("check " + input).out.find("border             6 edges in 2 loops"), std::string::npos);
+  const CommandResult r = run("check " + input + " --repair " + path("out.obj") + " --solid");
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("  snapped 2 border points onto the border across a crack and stitched 4 pairs of border edges (CGAL's "
+                       "snap_borders), which left less border open than filling alone\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NEAR(test::signed_volume(read_polygon_soup(path("out.obj")), glm::dvec3(0.5)), 1.0, 1e-12);
+}
+
 TEST_F(CheckCommand, RepairIntoAMissingFolderFailsWithoutLeavingAFile) {
   const std::string input = write("in.obj", obj_text(test::tetrahedron()));
   const CommandResult r = run("check " + input + " --repair " + path("no/such/out.obj"));
