@@ -1,6 +1,7 @@
 #include "mesh/check/hole_filling.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 
 #include <CGAL/Polygon_mesh_processing/border.h>
@@ -50,16 +51,68 @@ std::vector<std::array<Point, 3>> triangulated_lobe(const std::vector<Point>& lo
   return out;
 }
 
+// Per face, whether its connected component is flat: a panel, a sheet, a
+// lone triangle. Flat is most of its area facing one way (the faces' summed
+// normal at least half their summed area) and every point within 1e-7 of
+// the part's size from the plane through one of them: a flat part written
+// in single precision is flat to about that.
+std::vector<uint8_t> faces_on_flat_parts(const SurfaceMesh& mesh) {
+  std::vector<uint8_t> flat(mesh.num_faces(), 0);
+  std::vector<uint8_t> seen(mesh.num_faces(), 0);
+  for (const auto start : mesh.faces()) {
+    if (seen[start.idx()]) continue;
+    std::vector<SurfaceMesh::Face_index> part{start};
+    seen[start.idx()] = 1;
+    for (size_t k = 0; k < part.size(); ++k)
+      for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(part[k]), mesh))
+        if (const auto f = mesh.face(mesh.opposite(h)); f != SurfaceMesh::null_face() && !seen[f.idx()]) {
+          seen[f.idx()] = 1;
+          part.push_back(f);
+        }
+    CGAL::Vector_3<repair::Kernel> normal(0, 0, 0);
+    double area = 0.0;
+    CGAL::Bbox_3 box;
+    for (const auto f : part) {
+      const auto h = mesh.halfedge(f);
+      const Point& a = mesh.point(mesh.source(h));
+      const Point& b = mesh.point(mesh.target(h));
+      const Point& c = mesh.point(mesh.target(mesh.next(h)));
+      const auto n = CGAL::cross_product(b - a, c - a);
+      normal = normal + n;
+      area += std::sqrt(n.squared_length());
+      box += a.bbox() + b.bbox() + c.bbox();
+    }
+    const double length = std::sqrt(normal.squared_length());
+    if (area == 0.0 || length < 0.5 * area) continue;
+    const double size = std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin());
+    const Point& on = mesh.point(mesh.source(mesh.halfedge(part[0])));
+    bool within = true;
+    for (const auto f : part)
+      for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+        within = within && std::abs(CGAL::scalar_product(mesh.point(v) - on, normal)) / length <= 1e-7 * size;
+    if (within)
+      for (const auto f : part) flat[f.idx()] = 1;
+  }
+  return flat;
+}
+
 }  // namespace
 
 HoleFilling fill_holes(SurfaceMesh& mesh, size_t max_edges, std::vector<std::array<Point, 3>>& lobe_triangles) {
   HoleFilling result;
   std::vector<SurfaceMesh::Halfedge_index> holes;  // one border half-edge per cycle
   PMP::extract_boundary_cycles(mesh, std::back_inserter(holes));
+  const std::vector<uint8_t> flat = faces_on_flat_parts(mesh);
   for (const SurfaceMesh::Halfedge_index hole : holes) {
     // A patch filled before may have closed this cycle too (a border that
     // touches itself is one cycle here, walked through its pinch).
     if (!mesh.is_border(hole)) continue;
+    // A flat part has no inside: filling its outline would lay a second
+    // copy of it back to back, closed round nothing.
+    if (const auto f = mesh.face(mesh.opposite(hole)); f.idx() < flat.size() && flat[f.idx()]) {
+      ++result.on_flat_parts;
+      continue;
+    }
     size_t edges = 0;
     std::vector<Point> loop;
     for (auto h = hole; edges == 0 || h != hole; h = mesh.next(h)) ++edges, loop.push_back(mesh.point(mesh.source(h)));

@@ -20,6 +20,7 @@ struct HoleFilling {
   size_t faired_roughly = 0;      // filled, but the fairing's solver failed: the refined patch kept as it is
   std::vector<size_t> too_large;  // the edges of each hole left for having more than the bound
   std::vector<size_t> failed;     // the edges of each hole no triangulation was found for
+  size_t on_flat_parts = 0;       // holes left in flat parts (a panel, a sheet), which have no inside to close
   size_t lobes = 0;               // of holes whose border passes twice through a point, filled by add_lobe_patches
 };
 

@@ -119,12 +119,6 @@ HoleFilling filled(Mesh& mesh, size_t max_hole_edges) {
   return holes;
 }
 
-size_t border_edge_count(const Mesh& mesh) {
-  size_t count = 0;
-  for (const auto h : mesh.halfedges()) count += mesh.is_border(h);
-  return count;
-}
-
 // What fill_holes did, in a line each.
 void say_holes(const HoleFilling& holes, size_t max_edges, std::vector<std::string>& changes) {
   if (holes.filled > 0) {
@@ -142,6 +136,9 @@ void say_holes(const HoleFilling& holes, size_t max_edges, std::vector<std::stri
                       " edges open (the largest has " + std::to_string(largest) + "; --max-hole-edges " + std::to_string(largest) +
                       " fills " + (holes.too_large.size() == 1 ? "it" : "them") + ")");
   }
+  if (holes.on_flat_parts > 0)
+    changes.push_back("left " + counted(holes.on_flat_parts, "hole", "holes") +
+                      " of flat parts open: a flat part (a panel, a sheet) has no inside to close");
   if (!holes.failed.empty())
     changes.push_back("left " + counted(holes.failed.size(), "hole", "holes") +
                       " open that no triangulation without a degenerate or crossing triangle fills");
@@ -223,18 +220,19 @@ Mesh repaired_surface(const PolygonSoup& soup, const RepairOptions& options, std
     // tessellations leave them) is a hole no patch fills well. Tried again
     // with the borders first snapped onto each other (CGAL's snap_borders:
     // each border point onto a point or edge across within a bound of its
-    // own edges' lengths) and stitched, and kept where that leaves less
-    // border: snapping also moves points of a border that is a true hole.
+    // own edges' lengths) and stitched, and kept only where that closes the
+    // surface: snapping also moves points of a border that is a true hole,
+    // and of nearly equal copies, which --merge-tolerance merges better.
     Mesh& snapped = *unfilled;
     const size_t moved = PMP::experimental::snap_borders(snapped);
     const size_t stitched = PMP::stitch_borders(snapped);
     PMP::remove_degenerate_faces(snapped);
     snapped.collect_garbage();
     HoleFilling snapped_holes = filled(snapped, max_hole_edges);
-    if (moved > 0 && border_edge_count(snapped) < border_edge_count(mesh)) {
+    if (moved > 0 && CGAL::is_closed(snapped)) {
       changes.push_back("snapped " + counted(moved, "border point", "border points") + " onto the border across a crack and stitched " +
                         counted(stitched, "pair of border edges", "pairs of border edges") +
-                        " (CGAL's snap_borders), which left less border open than filling alone");
+                        " (CGAL's snap_borders), which closed the surface where filling alone left holes");
       mesh = std::move(snapped);
       holes = snapped_holes;
     }

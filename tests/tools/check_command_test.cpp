@@ -495,10 +495,30 @@ TEST_F(CheckCommand, RepairSnapsACrackWherePatchesMeetAtAPointOnAnEdge) {
   const CommandResult r = run("check " + input + " --repair " + path("out.obj") + " --solid");
   EXPECT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("  snapped 2 border points onto the border across a crack and stitched 4 pairs of border edges (CGAL's "
-                       "snap_borders), which left less border open than filling alone\n"),
+                       "snap_borders), which closed the surface where filling alone left holes\n"),
             std::string::npos)
       << r.out;
   EXPECT_NEAR(test::signed_volume(read_polygon_soup(path("out.obj")), glm::dvec3(0.5)), 1.0, 1e-12);
+}
+
+// A flat washer (a 2 x 2 square round a 1 x 1 hole, four quads): both its
+// outline and its hole stay open. Filling them would lay a second washer
+// back to back with it and plug the hole.
+TEST_F(CheckCommand, RepairLeavesTheHolesOfAFlatPartOpen) {
+  const std::string input = write("washer.obj", "v 0 0 0\nv 2 0 0\nv 2 2 0\nv 0 2 0\nv 0.5 0.5 0\nv 1.5 0.5 0\nv 1.5 1.5 0\nv 0.5 1.5 0\n"
+                                                "f 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n");
+  const CommandResult r = run("check " + input + " --repair " + path("out.obj"));
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.out.find("  left 2 holes of flat parts open: a flat part (a panel, a sheet) has no inside to close\n"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("  border             8 edges in 2 loops\n"), std::string::npos) << r.out;
+  const PolygonSoup out = read_polygon_soup(path("out.obj"));
+  double area = 0.0;
+  for (size_t f = 0; f < out.polygon_count(); ++f) {
+    const glm::dvec3 a = out.points[out.polygon(f)[0]], b = out.points[out.polygon(f)[1]], c = out.points[out.polygon(f)[2]];
+    area += 0.5 * glm::length(glm::cross(b - a, c - a));
+  }
+  EXPECT_DOUBLE_EQ(area, 3.0);
 }
 
 TEST_F(CheckCommand, RepairIntoAMissingFolderFailsWithoutLeavingAFile) {
