@@ -144,6 +144,57 @@ void say_holes(const HoleFilling& holes, size_t max_edges, std::vector<std::stri
                       " open that no triangulation without a degenerate or crossing triangle fills");
 }
 
+// Fills the holes of `mesh` (filled), where that leaves some trying again
+// with its cracks snapped shut first; says what it did in `changes`.
+void close_holes(Mesh& mesh, size_t max_hole_edges, std::vector<std::string>& changes) {
+  std::optional<Mesh> unfilled;
+  if (!CGAL::is_closed(mesh)) unfilled = mesh;
+  HoleFilling holes = filled(mesh, max_hole_edges);
+  if (unfilled && !CGAL::is_closed(mesh)) {
+    // A crack between two patches whose points do not meet (as CAD
+    // tessellations leave them) is a hole no patch fills well. Tried again
+    // with the borders first snapped onto each other (CGAL's snap_borders:
+    // each border point onto a point or edge across within a bound of its
+    // own edges' lengths) and stitched, and kept only where that closes the
+    // surface: snapping also moves points of a border that is a true hole,
+    // and of nearly equal copies, which --merge-tolerance merges better.
+    Mesh& snapped = *unfilled;
+    const size_t moved = PMP::experimental::snap_borders(snapped);
+    const size_t stitched = PMP::stitch_borders(snapped);
+    PMP::remove_degenerate_faces(snapped);
+    snapped.collect_garbage();
+    HoleFilling snapped_holes = filled(snapped, max_hole_edges);
+    if (moved > 0 && CGAL::is_closed(snapped)) {
+      changes.push_back("snapped " + counted(moved, "border point", "border points") + " onto the border across a crack and stitched " +
+                        counted(stitched, "pair of border edges", "pairs of border edges") +
+                        " (CGAL's snap_borders), which closed the surface where filling alone left holes");
+      mesh = std::move(snapped);
+      holes = snapped_holes;
+    }
+  }
+  say_holes(holes, max_hole_edges, changes);
+}
+
+// Turns each closed component outward where that is decided, then merges
+// parts that overlap into their union (self_intersection_removal.hpp);
+// says what it did in `changes`.
+void turn_outward_and_merge_overlaps(Mesh& mesh, std::vector<std::string>& changes) {
+  const Outward outward = orient_closed_components_outward(mesh);
+  if (outward.reversed > 0) changes.push_back("turned " + counted(outward.reversed, "closed component", "closed components") + " outward");
+  if (outward.crossing_pairs > 0) {
+    const std::string pairs = counted(outward.crossing_pairs, "pair", "pairs") + " of faces that cross";
+    const SelfIntersectionRemoval removal = remove_self_intersections(mesh);
+    if (removal.removed) {
+      changes.push_back("removed the " + pairs + ": the parts that overlapped are one surface, bounding their union (" +
+                        counted(mesh.number_of_faces(), "triangle", "triangles") + " now)");
+      if (const size_t n = orient_closed_components_outward(mesh).reversed)
+        changes.push_back("turned " + counted(n, "closed component", "closed components") + " of it outward");
+    } else {
+      changes.push_back("left the " + pairs + ": " + removal.why_not);
+    }
+  }
+}
+
 // The repair itself, as repair_mesh documents it: the repaired surface, its
 // changes said in `changes`.
 // `placed` is where it put each of the soup's points.
@@ -212,46 +263,8 @@ Mesh repaired_surface(const PolygonSoup& soup, const RepairOptions& options, std
     changes.push_back("collapsed degenerate triangles (" + counted(triangles_before - mesh.number_of_faces(), "triangle", "triangles") +
                       " fewer)");
   if (!all_removed) changes.push_back("could not remove every degenerate triangle");
-  std::optional<Mesh> unfilled;
-  if (!CGAL::is_closed(mesh)) unfilled = mesh;
-  HoleFilling holes = filled(mesh, max_hole_edges);
-  if (unfilled && !CGAL::is_closed(mesh)) {
-    // A crack between two patches whose points do not meet (as CAD
-    // tessellations leave them) is a hole no patch fills well. Tried again
-    // with the borders first snapped onto each other (CGAL's snap_borders:
-    // each border point onto a point or edge across within a bound of its
-    // own edges' lengths) and stitched, and kept only where that closes the
-    // surface: snapping also moves points of a border that is a true hole,
-    // and of nearly equal copies, which --merge-tolerance merges better.
-    Mesh& snapped = *unfilled;
-    const size_t moved = PMP::experimental::snap_borders(snapped);
-    const size_t stitched = PMP::stitch_borders(snapped);
-    PMP::remove_degenerate_faces(snapped);
-    snapped.collect_garbage();
-    HoleFilling snapped_holes = filled(snapped, max_hole_edges);
-    if (moved > 0 && CGAL::is_closed(snapped)) {
-      changes.push_back("snapped " + counted(moved, "border point", "border points") + " onto the border across a crack and stitched " +
-                        counted(stitched, "pair of border edges", "pairs of border edges") +
-                        " (CGAL's snap_borders), which closed the surface where filling alone left holes");
-      mesh = std::move(snapped);
-      holes = snapped_holes;
-    }
-  }
-  say_holes(holes, max_hole_edges, changes);
-  const Outward outward = orient_closed_components_outward(mesh);
-  if (outward.reversed > 0) changes.push_back("turned " + counted(outward.reversed, "closed component", "closed components") + " outward");
-  if (outward.crossing_pairs > 0) {
-    const std::string pairs = counted(outward.crossing_pairs, "pair", "pairs") + " of faces that cross";
-    const SelfIntersectionRemoval removal = remove_self_intersections(mesh);
-    if (removal.removed) {
-      changes.push_back("removed the " + pairs + ": the parts that overlapped are one surface, bounding their union (" +
-                        counted(mesh.number_of_faces(), "triangle", "triangles") + " now)");
-      if (const size_t n = orient_closed_components_outward(mesh).reversed)
-        changes.push_back("turned " + counted(n, "closed component", "closed components") + " of it outward");
-    } else {
-      changes.push_back("left the " + pairs + ": " + removal.why_not);
-    }
-  }
+  close_holes(mesh, max_hole_edges, changes);
+  turn_outward_and_merge_overlaps(mesh, changes);
   if (mesh.number_of_faces() == 0) throw InputError({soup.path, 0, 0}, "nothing left after the repair: every face was degenerate");
   return mesh;
 }
