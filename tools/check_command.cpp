@@ -337,8 +337,10 @@ void require_companion_may_replace(const CompanionFile& companion, const std::st
 
 int repair_one(const std::string& path, const std::string& output, const CheckCommandOptions& options) {
   try {
-    // Read with its maps, which an OBJ's material library names again.
+    // Read with its maps, which an OBJ's material library names again; what
+    // the reader passed over (a map it could not read) is said, as render says it.
     const PolygonSoup soup = read_polygon_soup(path);
+    for (const ReadWarning& w : soup.warnings) std::cerr << FileLoc{path, w.line, 0}.str() << ": warning: " << w.message << "\n";
     PartialFile partial(output, "the repaired mesh", PartialFile::Ending::kKeepExtension);
     const RepairSummary summary = repair_mesh(
         soup, output, partial.temporary_path(),

@@ -449,6 +449,19 @@ TEST_F(CheckCommand, RepairOfATexturedObjKeepsItsMaterialsAndMaps) {
   EXPECT_GT(at_input_points, out.corners.size() / 2);
 }
 
+// A map the input names but that cannot be read is said, as render says
+// it: the repaired library has no map to name.
+TEST_F(CheckCommand, RepairSaysWhichMapItCouldNotRead) {
+  const std::string input = write("in.obj", "mtllib in.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nusemtl a\n"
+                                            "f 1/1 3/1 2/1\nf 1/1 2/1 4/1\nf 2/1 3/1 4/1\nf 1/1 4/1 3/1\n");
+  write("in.mtl", "newmtl a\nKd 1 0 0\nmap_Kd missing.png\n");
+  const CommandResult r = run("check " + input + " --repair " + path("out.obj"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, input + ":1: warning: material \"a\"'s texture map \"" + path("missing.png") +
+                       "\": does not exist: its faces take the material's Kd colour\n");
+  EXPECT_EQ(read(path("out.mtl")), "# materials of out.obj, written by umbra check --repair\n\nnewmtl a\nKd 1 0 0\nKs 0 0 0\nNs 32\n");
+}
+
 TEST_F(CheckCommand, RepairNeverOverwritesAMaterialLibraryItDidNotWrite) {
   const std::string input = write("in.obj", "mtllib out.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nusemtl red\n"
                                             "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n");
