@@ -1,5 +1,7 @@
 #include "mesh/check/repair_attributes.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cstring>
 #include <limits>
 #include <unordered_map>
