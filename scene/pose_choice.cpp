@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+#include <glm/trigonometric.hpp>
 
 #include "scene/up_axis.hpp"
 
@@ -62,16 +63,50 @@ std::optional<PoseChoice> better_pose(const Mesh& mesh, const std::string& forma
 }
 
 std::optional<double> view_turn_facing(const Mesh& mesh) {
+  if (mesh.triangles.empty()) return std::nullopt;
   const glm::dvec3 extent = mesh.bounds_max - mesh.bounds_min;
   const int thin = thinnest(extent);
-  if (mesh.triangles.empty() || !is_flat(extent) || thin == 2) return std::nullopt;
   // The side its faces turn to, by their area: the front of a one-sided panel.
-  double facing = 0.0;
-  for (const auto& [a, b, c] : mesh.triangles)
-    facing += glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a])[thin];
+  glm::dvec3 facing(0.0);
+  double area = 0.0;
+  for (const auto& [a, b, c] : mesh.triangles) {
+    const glm::dvec3 n = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
+    facing += n;
+    area += glm::length(n);
+  }
   // Azimuth 0 looks from -y, 90 from +x.
-  if (thin == 1) return facing > 0.0 ? 180.0 : 0.0;
-  return facing < 0.0 ? -90.0 : 90.0;
+  if (is_flat(extent)) {
+    if (thin == 2) return std::nullopt;
+    if (thin == 1) return facing.y > 0.0 ? 180.0 : 0.0;
+    return facing.x < 0.0 ? -90.0 : 90.0;
+  }
+  // A panel at a slant to the stage's axes, flat in a plane of its own (most
+  // of its area turned one way, and thin across that plane): the camera
+  // turned to the horizontal of the way it faces, as for one along an axis;
+  // for one tilted less than 45 degrees from level, of the way its upper
+  // side faces, so that the camera, above, looks down onto that side.
+  // Its plane's normal: the faces' normals summed, each turned to agree with
+  // the largest face's (a panel may hold faces wound both ways), then turned
+  // to the side that the faces, wound as they are, face by area.
+  glm::dvec3 largest(0.0), aligned(0.0);
+  for (const auto& [a, b, c] : mesh.triangles) {
+    const glm::dvec3 n = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
+    if (glm::dot(n, n) > glm::dot(largest, largest)) largest = n;
+  }
+  for (const auto& [a, b, c] : mesh.triangles) {
+    const glm::dvec3 n = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
+    aligned += glm::dot(n, largest) < 0.0 ? -n : n;
+  }
+  const double length = glm::length(aligned);
+  if (!(length > 0.5 * area)) return std::nullopt;
+  glm::dvec3 normal = glm::dot(aligned, facing) < 0.0 ? -aligned / length : aligned / length;
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  for (const auto& [a, b, c] : mesh.triangles)
+    for (const uint32_t v : {a, b, c}) lo = std::min(lo, glm::dot(mesh.positions[v], normal)), hi = std::max(hi, glm::dot(mesh.positions[v], normal));
+  if (!(hi - lo < kFlat * std::max({extent.x, extent.y, extent.z}))) return std::nullopt;
+  if (std::abs(normal.z) > std::sqrt(0.5) && normal.z < 0.0) normal = -normal;
+  if (std::hypot(normal.x, normal.y) < 1e-3) return std::nullopt;  // level: any side shows it
+  return glm::degrees(std::atan2(normal.x, -normal.y));
 }
 
 }  // namespace umbra

@@ -34,8 +34,11 @@ std::optional<PoseChoice> better_pose(const Mesh& mesh, const std::string& forma
 // For a flat model standing upright, the turn about the stage's up (in
 // degrees) of the default camera and light that puts both on the side its
 // faces turn to (by area; the stage's front, -y, when they turn neither
-// way), the camera seeing its face as it sees a model's front: none for a
-// model that is not flat and upright, whose front is the stage's.
+// way), the camera seeing its face as it sees a model's front. Flat is thin
+// along a stage axis, or thin across a slanted plane of its own that most of
+// its area faces (a panel turned about the vertical, or tilted: the camera
+// then turned to the side its upper face looks to). None for a model that
+// is not flat, or lies level, whose front is the stage's.
 std::optional<double> view_turn_facing(const Mesh& mesh);
 
 }  // namespace umbra

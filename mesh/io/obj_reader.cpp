@@ -157,13 +157,15 @@ void read_material_library(const std::string& path, int line, PolygonSoup& soup,
       if (unread++ == 0) first_unread = "line " + std::to_string(e.where().line) + ": " + e.message();
     }
   }
-  // Ns 0 is a matte surface, as exporters write it (3ds Max's, for one) and
-  // Blender's importer reads it (roughness 1 - sqrt(Ns / 1000), fully
-  // rough): no highlight, not Phong's cos^0, which would light the whole
-  // face with Ks. So are illumination models 0 and 1 (colour alone, and
-  // diffuse alone: Wavefront's MTL specification), whatever Ks says.
+  // Ns under 1 is a matte surface, as exporters write it (3ds Max's Ns 0,
+  // for one) and Blender's importer reads it (roughness 1 - sqrt(Ns / 1000):
+  // 0.97 and more, fully rough): no highlight, not Phong's cos^Ns, whose lobe
+  // for an exponent under 1 is broader than the diffuse term's own and
+  // lights the whole face with Ks. So are illumination models 0 and 1
+  // (colour alone, and diffuse alone: Wavefront's MTL specification),
+  // whatever Ks says.
   for (size_t m = first_material; m < soup.materials.size(); ++m)
-    if (soup.materials[m].shininess == 0.0 || matte.count(soup.materials[m].name)) soup.materials[m].specular = glm::dvec3(0.0);
+    if (soup.materials[m].shininess < 1.0 || matte.count(soup.materials[m].name)) soup.materials[m].specular = glm::dvec3(0.0);
   if (unread > 0)
     soup.warn(line, "material library \"" + path + "\": " +
                         (unread == 1 ? std::string("1 statement it could not read was") : std::to_string(unread) + " statements it could not read were") +

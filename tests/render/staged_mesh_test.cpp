@@ -3,10 +3,13 @@
 // text saved and read back as the same scene, and its shadow masks against
 // exact shadow rays, for meshes the tests write and a real exported model.
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
 #include <gtest/gtest.h>
+
+#include <glm/trigonometric.hpp>
 
 #include "hard_case_scenes.hpp"
 #include "image_agreement.hpp"
@@ -407,6 +410,14 @@ TEST(StagedMesh, AFlatPartStandsAndShowsItsLitFace) {
   const Scene kept = parse_scene_or_mesh_file(test::write_mesh("upright.obj", test::obj_text(upright)), {}, &text);
   EXPECT_EQ(pose_note(text), "");
   EXPECT_TRUE(seen_and_lit(kept));
+  // Standing at a slant along the default view's line of sight (azimuth
+  // 35), which would see only its edge: the camera is turned to its face,
+  // which looks to azimuth -55.
+  const glm::dvec3 along(std::sin(glm::radians(35.0)), -std::cos(glm::radians(35.0)), 0.0);
+  const PolygonSoup slanted = test::make_soup({{0, 0, 0}, 2.0 * along, 2.0 * along + glm::dvec3(0, 0, 1), {0, 0, 1}}, {{0, 1, 2}, {0, 2, 3}});
+  const Scene faced = parse_scene_or_mesh_file(test::write_mesh("slanted.stl", stl_text(slanted)), {}, &text);
+  EXPECT_EQ(pose_note(text), "");
+  EXPECT_TRUE(seen_and_lit(faced));
   const std::string triangle = "/usr/share/assimp/models/STL/triangle.stl";
   if (!std::filesystem::exists(triangle)) GTEST_SKIP() << "needs Debian's assimp-testmodels (build.sh installs it)";
   const Scene real = parse_scene_or_mesh_file(triangle, {}, &text);

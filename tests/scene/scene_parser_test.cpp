@@ -328,13 +328,19 @@ TEST_F(SceneMeshes, ASmoothMeshWithoutNormalsHasItsCreases) {
 }
 
 // OBJ's Ns 0 is a matte surface, as exporters write it: no highlight, not
-// Phong's cos^0 that would light the whole face with Ks; so is illum 1.
-TEST_F(SceneMeshes, AnObjMaterialOfShininessZeroIsMatte) {
+// Phong's cos^0 that would light the whole face with Ks; so is any Ns under
+// 1 (assimp's regr_3429812.mtl has Ns 0.75 with Ks 0.85, which lit its quad
+// white), and illum 1.
+TEST_F(SceneMeshes, AnObjMaterialOfShininessUnderOneIsMatte) {
   write("box.mtl", "newmtl matte\nKd 0.2 0.2 0.2\nKs 0.9 0.9 0.9\nNs 0\nnewmtl shiny\nKd 0.2 0.2 0.2\nKs 0.9 0.9 0.9\nNs 40\n"
-                   "newmtl diffuse\nKs 0.9 0.9 0.9\nNs 40\nillum 1\n");
-  write("box.obj", "mtllib box.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nusemtl matte\nf 1 2 3\nusemtl shiny\nf 1 3 2\nusemtl diffuse\nf 2 4 3\n");
+                   "newmtl diffuse\nKs 0.9 0.9 0.9\nNs 40\nillum 1\nnewmtl rough\nKs 0.85 0.85 0.85\nNs 0.75\n"
+                   "newmtl broad\nKs 0.5 0.5 0.5\nNs 1\n");
+  write("box.obj", "mtllib box.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nusemtl matte\nf 1 2 3\nusemtl shiny\nf 1 3 2\nusemtl diffuse\nf 2 4 3\n"
+                   "usemtl rough\nf 2 3 4\nusemtl broad\nf 1 2 4\n");
   const Scene scene = parse("light 0 0 5\nmesh box.obj\n");
-  ASSERT_EQ(scene.materials.size(), 4u);
+  ASSERT_EQ(scene.materials.size(), 6u);
+  EXPECT_EQ(scene.materials[4].specular, glm::dvec3(0.0));  // Ns 0.75
+  EXPECT_EQ(scene.materials[5].specular, glm::dvec3(0.5));  // Ns 1: Phong's cosine, kept
   EXPECT_EQ(scene.materials[3].specular, glm::dvec3(0.0));  // illum 1: diffuse alone
   EXPECT_EQ(scene.materials[1].name, "box.obj:matte");
   EXPECT_EQ(scene.materials[1].specular, glm::dvec3(0.0));
