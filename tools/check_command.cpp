@@ -83,7 +83,8 @@ options:
                     OUT and say what changed and what is still wrong. Never
                     writes MESH. An .obj keeps the materials, texture
                     coordinates, normals and colours, its library and maps
-                    beside it (STEM.mtl, STEM.NAME); a .ply the colours
+                    beside it (STEM.mtl, STEM.NAME); a .ply keeps the
+                    colours
   --max-hole-edges N
                     (with --repair) fill only holes of at most N edges
                     (default {max hole edges}; 0 fills none): a larger one is
