@@ -88,6 +88,7 @@ std::string material_library(const TriangleFile& mesh, const std::filesystem::pa
   std::string text = "# materials of " + path.filename().string() + ", written by umbra check --repair\n";
   std::error_code ec;
   const std::filesystem::path folder = std::filesystem::absolute(path, ec).parent_path();
+  std::map<std::string, std::string> copied;  // the maps copied beside the output, by name, and their sources
   for (size_t m = 0; m < mesh.materials.size(); ++m) {
     const SoupMaterial& material = mesh.materials[m];
     text += "\nnewmtl " + material_name(mesh, m) + "\nKd";
@@ -107,15 +108,24 @@ std::string material_library(const TriangleFile& mesh, const std::filesystem::pa
     }
     // Copied beside the output, which then reads it from its own folder as
     // umbra reads any model's maps (texture_file.hpp), and travels whole.
+    // One copy of a file that several materials name; two files of one name
+    // from different folders each their own (the second with the material's number).
+    std::string name = path.stem().string() + "." +
+                       (source.empty() ? std::to_string(m) + ".png" : std::filesystem::path(source).filename().string());
+    const auto [copy, added] = copied.try_emplace(name, source);
+    const bool copied_already = !added && !source.empty() && copy->second == source;
+    if (!added && !copied_already) {
+      name = path.stem().string() + "." + std::to_string(m) + "." + std::filesystem::path(source).filename().string();
+      copied.emplace(name, source);
+    }
+    text += "map_Kd " + name + "\n";
+    if (copied_already) continue;
     std::vector<unsigned char> bytes;
     std::string error;
-    const std::string name = path.stem().string() + "." +
-                             (source.empty() ? std::to_string(m) + ".png" : std::filesystem::path(source).filename().string());
     if (!source.empty() && !read_regular_file(source, kMostTextureFileBytes, bytes, error))
       throw InputError({path.string(), 0, 0}, "cannot copy " + what + " " + source + ": " + error);
     companions.push_back({(path.parent_path() / name).string(), what,
                           source.empty() ? png_bytes(*material.texture) : std::string(bytes.begin(), bytes.end())});
-    text += "map_Kd " + name + "\n";
   }
   return text;
 }

@@ -266,6 +266,37 @@ TEST_F(RepairAttributes, AMapOutsideTheOutputsFolderIsCopiedBesideIt) {
   EXPECT_NE(summary.companions[1].bytes.find("\nmap_Kd out.lid.png\n"), std::string::npos) << summary.companions[1].bytes;
 }
 
+// Two maps of one name from two folders are two copies; a map that two
+// materials name is one.
+TEST_F(RepairAttributes, MapsOfOneNameFromTwoFoldersAreCopiedApartAndASharedOneOnce) {
+  for (const char* folder : {"a", "b"}) {
+    std::filesystem::create_directory(folder_ / folder);
+    Image map(1, 1, 3);
+    map.at(0, 0, folder[0] == 'a' ? 0 : 2) = 255;
+    write_png(map, (folder_ / folder / "wood.png").string());
+  }
+  write("three.mtl", "newmtl first\nmap_Kd a/wood.png\nnewmtl second\nmap_Kd b/wood.png\nnewmtl third\nmap_Kd a/wood.png\n");
+  const PolygonSoup soup = read_polygon_soup(write("three.obj", "mtllib three.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\n"
+                                                                "usemtl first\nf 1/1 3/1 2/1\nusemtl second\nf 1/1 2/1 4/1\n"
+                                                                "usemtl third\nf 2/1 3/1 4/1\nf 1/1 4/1 3/1\n"));
+  ASSERT_TRUE(soup.warnings.empty()) << soup.warnings[0].message;
+  std::filesystem::create_directory(folder_ / "out");
+  const std::string path = (folder_ / "out" / "x.obj").string();
+  const RepairSummary summary = repair_mesh(soup, path, path);
+  ASSERT_EQ(summary.companions.size(), 3u);  // two maps and the library
+  EXPECT_EQ(summary.companions[0].path, (folder_ / "out" / "x.wood.png").string());
+  EXPECT_EQ(summary.companions[1].path, (folder_ / "out" / "x.1.wood.png").string());
+  EXPECT_NE(summary.companions[0].bytes, summary.companions[1].bytes);
+  EXPECT_NE(summary.companions[2].bytes.find("newmtl third\nKd 0.8 0.8 0.8\nKs 0 0 0\nNs 32\nmap_Kd x.wood.png\n"), std::string::npos)
+      << summary.companions[2].bytes;
+  for (const CompanionFile& companion : summary.companions) write("out/" + std::filesystem::path(companion.path).filename().string(), companion.bytes);
+  const PolygonSoup out = read_polygon_soup(path);
+  ASSERT_EQ(out.materials.size(), 3u);
+  EXPECT_EQ(out.materials[0].texture->rgba, (std::vector<uint8_t>{255, 0, 0, 255}));
+  EXPECT_EQ(out.materials[1].texture->rgba, (std::vector<uint8_t>{0, 0, 255, 255}));
+  EXPECT_EQ(out.materials[2].texture->rgba, (std::vector<uint8_t>{255, 0, 0, 255}));
+}
+
 TEST_F(RepairAttributes, AMapHeldInsideAGlbIsWrittenBesideTheObjAsPng) {
   const std::string glb = "/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
   if (!std::filesystem::exists(glb)) GTEST_SKIP() << "needs Debian's assimp-testmodels (build.sh installs it)";
