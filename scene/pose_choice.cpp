@@ -66,13 +66,15 @@ std::optional<double> view_turn_facing(const Mesh& mesh) {
   if (mesh.triangles.empty()) return std::nullopt;
   const glm::dvec3 extent = mesh.bounds_max - mesh.bounds_min;
   const int thin = thinnest(extent);
-  // The side its faces turn to, by their area: the front of a one-sided panel.
-  glm::dvec3 facing(0.0);
+  // The side its faces turn to, by their area: the front of a one-sided
+  // panel; and, for a panel at a slant below, its largest face.
+  glm::dvec3 facing(0.0), largest(0.0);
   double area = 0.0;
   for (const auto& [a, b, c] : mesh.triangles) {
     const glm::dvec3 n = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
     facing += n;
     area += glm::length(n);
+    if (glm::dot(n, n) > glm::dot(largest, largest)) largest = n;
   }
   // Azimuth 0 looks from -y, 90 from +x.
   if (is_flat(extent)) {
@@ -88,11 +90,7 @@ std::optional<double> view_turn_facing(const Mesh& mesh) {
   // Its plane's normal: the faces' normals summed, each turned to agree with
   // the largest face's (a panel may hold faces wound both ways), then turned
   // to the side that the faces, wound as they are, face by area.
-  glm::dvec3 largest(0.0), aligned(0.0);
-  for (const auto& [a, b, c] : mesh.triangles) {
-    const glm::dvec3 n = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
-    if (glm::dot(n, n) > glm::dot(largest, largest)) largest = n;
-  }
+  glm::dvec3 aligned(0.0);
   for (const auto& [a, b, c] : mesh.triangles) {
     const glm::dvec3 n = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
     aligned += glm::dot(n, largest) < 0.0 ? -n : n;

@@ -5,6 +5,7 @@
 #include <iterator>
 
 #include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/fair.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
@@ -56,43 +57,42 @@ std::vector<std::array<Point, 3>> triangulated_lobe(const std::vector<Point>& lo
 // normal at least half their summed area) and every point within 1e-7 of
 // the part's size from the plane through one of them: a flat part written
 // in single precision is flat to about that.
-std::vector<uint8_t> faces_on_flat_parts(const SurfaceMesh& mesh) {
-  std::vector<uint8_t> flat(mesh.num_faces(), 0);
-  std::vector<uint8_t> seen(mesh.num_faces(), 0);
-  for (const auto start : mesh.faces()) {
-    if (seen[start.idx()]) continue;
-    std::vector<SurfaceMesh::Face_index> part{start};
-    seen[start.idx()] = 1;
-    for (size_t k = 0; k < part.size(); ++k)
-      for (const auto h : CGAL::halfedges_around_face(mesh.halfedge(part[k]), mesh))
-        if (const auto f = mesh.face(mesh.opposite(h)); f != SurfaceMesh::null_face() && !seen[f.idx()]) {
-          seen[f.idx()] = 1;
-          part.push_back(f);
-        }
-    CGAL::Vector_3<repair::Kernel> normal(0, 0, 0);
+std::vector<uint8_t> faces_on_flat_parts(SurfaceMesh& mesh) {
+  auto component = mesh.add_property_map<SurfaceMesh::Face_index, std::size_t>("f:flat_component", 0).first;
+  struct Part {
+    CGAL::Vector_3<repair::Kernel> normal{0, 0, 0};
     double area = 0.0;
     CGAL::Bbox_3 box;
-    for (const auto f : part) {
-      const auto h = mesh.halfedge(f);
-      const Point& a = mesh.point(mesh.source(h));
-      const Point& b = mesh.point(mesh.target(h));
-      const Point& c = mesh.point(mesh.target(mesh.next(h)));
-      const auto n = CGAL::cross_product(b - a, c - a);
-      normal = normal + n;
-      area += std::sqrt(n.squared_length());
-      box += a.bbox() + b.bbox() + c.bbox();
-    }
-    const double length = std::sqrt(normal.squared_length());
-    if (area == 0.0 || length < 0.5 * area) continue;
-    const double size = std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin());
-    const Point& on = mesh.point(mesh.source(mesh.halfedge(part[0])));
-    bool within = true;
-    for (const auto f : part)
-      for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-        within = within && std::abs(CGAL::scalar_product(mesh.point(v) - on, normal)) / length <= 1e-7 * size;
-    if (within)
-      for (const auto f : part) flat[f.idx()] = 1;
+    Point on;  // one of its points
+    bool flat = true;
+  };
+  std::vector<Part> parts(PMP::connected_components(mesh, component));
+  for (const auto f : mesh.faces()) {
+    Part& part = parts[component[f]];
+    const auto h = mesh.halfedge(f);
+    const Point &a = mesh.point(mesh.source(h)), &b = mesh.point(mesh.target(h)), &c = mesh.point(mesh.target(mesh.next(h)));
+    const auto n = CGAL::cross_product(b - a, c - a);
+    part.normal = part.normal + n;
+    part.area += std::sqrt(n.squared_length());
+    part.box += a.bbox() + b.bbox() + c.bbox();
+    part.on = a;
   }
+  for (Part& part : parts) {
+    const double length = std::sqrt(part.normal.squared_length());
+    part.flat = part.area > 0.0 && length >= 0.5 * part.area;
+  }
+  for (const auto f : mesh.faces()) {
+    Part& part = parts[component[f]];
+    if (!part.flat) continue;
+    const double length = std::sqrt(part.normal.squared_length());
+    const CGAL::Bbox_3& box = part.box;
+    const double size = std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin());
+    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      part.flat = part.flat && std::abs(CGAL::scalar_product(mesh.point(v) - part.on, part.normal)) / length <= 1e-7 * size;
+  }
+  std::vector<uint8_t> flat(mesh.num_faces(), 0);
+  for (const auto f : mesh.faces()) flat[f.idx()] = parts[component[f]].flat;
+  mesh.remove_property_map(component);
   return flat;
 }
 

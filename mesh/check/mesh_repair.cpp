@@ -63,8 +63,8 @@ size_t remove_degenerate_polygons(std::vector<Polygon>& polygons) {
 
 // What orient_closed_components_outward did and found.
 struct Outward {
-  size_t reversed = 0;        // closed components turned
-  size_t crossing_pairs = 0;  // pairs of faces that cross
+  size_t reversed = 0;             // closed components turned
+  std::vector<FacePair> crossing;  // pairs of faces that cross
 };
 
 // Reverses every closed component that faces into the solid it bounds
@@ -82,6 +82,7 @@ Outward orient_closed_components_outward(Mesh& mesh) {
   }
   std::vector<std::array<uint32_t, 3>> triangles;  // each face as a fan, for the volumes
   std::vector<uint32_t> component_of, face_of;
+  std::vector<Mesh::Face_index> mesh_face_of;  // per triangle
   for (const Mesh::Face_index f : mesh.faces()) {
     faces[component[f]].push_back(f);
     std::vector<uint32_t> corners;
@@ -93,6 +94,7 @@ Outward orient_closed_components_outward(Mesh& mesh) {
       triangles.push_back({corners[0], corners[k], corners[k + 1]});
       component_of.push_back(uint32_t(component[f]));
       face_of.push_back(uint32_t(triangles.size() - 1));  // each triangle on its own: fans cross nothing
+      mesh_face_of.push_back(f);
     }
   }
   const SelfIntersections found = find_self_intersections(positions, triangles, face_of,
@@ -107,7 +109,9 @@ Outward orient_closed_components_outward(Mesh& mesh) {
     ++reversed;
   }
   mesh.remove_property_map(component);
-  return {reversed, found.pairs.size()};
+  Outward outward{reversed, {}};
+  for (const auto& [s, t] : found.pairs) outward.crossing.emplace_back(mesh_face_of[s], mesh_face_of[t]);
+  return outward;
 }
 
 // Fills the holes of `mesh` (a triangle mesh) of at most `max_hole_edges`
@@ -181,9 +185,9 @@ void close_holes(Mesh& mesh, size_t max_hole_edges, std::vector<std::string>& ch
 void turn_outward_and_merge_overlaps(Mesh& mesh, std::vector<std::string>& changes) {
   const Outward outward = orient_closed_components_outward(mesh);
   if (outward.reversed > 0) changes.push_back("turned " + counted(outward.reversed, "closed component", "closed components") + " outward");
-  if (outward.crossing_pairs > 0) {
-    const std::string pairs = counted(outward.crossing_pairs, "pair", "pairs") + " of faces that cross";
-    const SelfIntersectionRemoval removal = remove_self_intersections(mesh);
+  if (!outward.crossing.empty()) {
+    const std::string pairs = counted(outward.crossing.size(), "pair", "pairs") + " of faces that cross";
+    const SelfIntersectionRemoval removal = remove_self_intersections(mesh, outward.crossing);
     if (removal.removed) {
       changes.push_back("removed the " + pairs + ": the parts that overlapped are one surface, bounding their union (" +
                         counted(mesh.number_of_faces(), "triangle", "triangles") + " now)");
@@ -197,11 +201,11 @@ void turn_outward_and_merge_overlaps(Mesh& mesh, std::vector<std::string>& chang
 
 // The repair itself, as repair_mesh documents it: the repaired surface, its
 // changes said in `changes`.
-// `placed` is where it put each of the soup's points.
+// `placed` is where it put each of the soup's points when a merge within a
+// tolerance moved some; left empty when each stays where the soup has it.
 Mesh repaired_surface(const PolygonSoup& soup, const RepairOptions& options, std::vector<std::string>& changes,
                       std::vector<glm::dvec3>& placed) {
   const size_t max_hole_edges = options.max_hole_edges;
-  placed = soup.points;
   std::vector<Point> points;
   points.reserve(soup.points.size());
   for (const glm::dvec3& p : soup.points) points.emplace_back(p.x, p.y, p.z);
@@ -309,7 +313,7 @@ TriangleFile repaired_triangle_file(const PolygonSoup& file_soup, const RepairOp
       for (size_t k = 0; k < 3; ++k) from[k] = {property.first[f][k].x(), property.first[f][k].y(), property.first[f][k].z()};
     }
   }
-  return with_soup_attributes(soup, placed, std::move(points), std::move(triangles), split_from);
+  return with_soup_attributes(soup, placed.empty() ? soup.points : placed, std::move(points), std::move(triangles), split_from);
 }
 
 }  // namespace

@@ -54,48 +54,50 @@ std::vector<Part> parts_of(Mesh& mesh, Mesh::Property_map<Mesh::Face_index, std:
 // inside is unclear, and the autorefinement can keep the wrong one) and be a
 // solid of some thickness facing out (a sliver or a flat pocket is where its
 // constructions fail).
-std::string unsound_parts(Mesh& mesh) {
-  auto component = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:removal_component", 0).first;
-  const std::vector<Part> parts = parts_of(mesh, component);
-  std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> crossing;
-  PMP::self_intersections(mesh, std::back_inserter(crossing));
-  std::string why;
+std::string unsound_parts(const std::vector<Part>& parts, Mesh::Property_map<Mesh::Face_index, std::size_t> component,
+                          const std::vector<FacePair>& crossing) {
   for (const auto& [f, g] : crossing) {
-    if (component[f] == component[g]) {
-      why = "a closed component crosses itself, where which side is inside is unclear";
-      break;
-    }
+    if (component[f] == component[g]) return "a closed component crosses itself, where which side is inside is unclear";
     for (const std::size_t c : {component[f], component[g]}) {
       const CGAL::Bbox_3& box = parts[c].box;
       const double diagonal = std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin());
       // A cube encloses 0.19 of its diagonal cubed; a plate a thousandth as
       // thick as wide about 2e-4.
       if (parts[c].volume <= 1e-6 * diagonal * diagonal * diagonal)
-        why = parts[c].volume < 0.0 ? "a closed component that crosses another faces inward"
-                                    : "a closed component that crosses another is too thin to be a solid";
+        return parts[c].volume < 0.0 ? "a closed component that crosses another faces inward"
+                                     : "a closed component that crosses another is too thin to be a solid";
     }
-    if (!why.empty()) break;
   }
-  mesh.remove_property_map(component);
-  return why;
+  return "";
 }
 
-// The total signed volume of `mesh`'s parts, the largest part's and all
-// parts' summed.
+// The total signed volume of the parts, the largest part's and all parts'
+// summed.
 struct Enclosed {
   double total = 0.0, largest = 0.0, all = 0.0;
 };
-Enclosed enclosed_by(Mesh& mesh) {
-  auto component = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:removal_component", 0).first;
+Enclosed enclosed_by(const std::vector<Part>& parts) {
   Enclosed enclosed;
-  for (const Part& part : parts_of(mesh, component)) {
+  for (const Part& part : parts) {
     enclosed.total += part.volume;
     enclosed.largest = std::max(enclosed.largest, std::abs(part.volume));
     enclosed.all += std::abs(part.volume);
   }
-  mesh.remove_property_map(component);
   return enclosed;
 }
+
+// The parts of `mesh`, with a component map that lives while they are used.
+struct Parts {
+  explicit Parts(Mesh& mesh) : owner(mesh), component(mesh.add_property_map<Mesh::Face_index, std::size_t>("f:removal_component", 0).first),
+                      parts(parts_of(mesh, component)) {}
+  ~Parts() { owner.remove_property_map(component); }
+  Parts(const Parts&) = delete;
+  Parts& operator=(const Parts&) = delete;
+
+  Mesh& owner;
+  Mesh::Property_map<Mesh::Face_index, std::size_t> component;
+  std::vector<Part> parts;
+};
 
 std::string said(double x) {
   std::ostringstream out;
@@ -105,10 +107,14 @@ std::string said(double x) {
 
 }  // namespace
 
-SelfIntersectionRemoval remove_self_intersections(Mesh& mesh) {
+SelfIntersectionRemoval remove_self_intersections(Mesh& mesh, const std::vector<FacePair>& crossing) {
   if (mesh.is_empty() || !CGAL::is_closed(mesh)) return {false, "the surface is not closed"};
-  if (const std::string why = unsound_parts(mesh); !why.empty()) return {false, why};
-  const Enclosed before = enclosed_by(mesh);
+  Enclosed before;
+  {
+    const Parts parts(mesh);
+    if (const std::string why = unsound_parts(parts.parts, parts.component, crossing); !why.empty()) return {false, why};
+    before = enclosed_by(parts.parts);
+  }
   Mesh refined = mesh;
   SplitVisitor visitor;
   visitor.split_from = refined.add_property_map<Mesh::Face_index, SplitFrom>(kSplitFromProperty).first;
@@ -127,7 +133,7 @@ SelfIntersectionRemoval remove_self_intersections(Mesh& mesh) {
   if (PMP::does_self_intersect(refined)) return {false, "the surface CGAL's autorefinement gave still crosses itself"};
   // The union of the parts encloses at least the largest and at most all of
   // them; the bounds widened by a relative 1e-9 for the sums' rounding.
-  const double enclosed = enclosed_by(refined).total;
+  const double enclosed = enclosed_by(Parts(refined).parts).total;
   if (enclosed < before.largest * (1.0 - 1e-9) || enclosed > before.all * (1.0 + 1e-9))
     return {false, "the surface CGAL's autorefinement gave encloses " + said(enclosed) + ", where the union of the parts encloses " +
                        said(before.largest) + " to " + said(before.all)};

@@ -9,6 +9,8 @@
 #include <array>
 #include <cstddef>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "mesh/check/repair_mesh_type.hpp"
 
@@ -35,6 +37,9 @@ struct SelfIntersectionRemoval {
 // which the union of overlapping parts does. Otherwise leaves `mesh` as it
 // is and says why: the autorefinement is experimental, and on a shell that
 // crosses only itself it can keep the wrong side.
-SelfIntersectionRemoval remove_self_intersections(repair::SurfaceMesh& mesh);
+// `crossing`: the pairs of its faces that cross, as the repair's search
+// found them (find_self_intersections).
+using FacePair = std::pair<repair::SurfaceMesh::Face_index, repair::SurfaceMesh::Face_index>;
+SelfIntersectionRemoval remove_self_intersections(repair::SurfaceMesh& mesh, const std::vector<FacePair>& crossing);
 
 }  // namespace umbra

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
 #include "mesh/io/polygon_soup.hpp"
@@ -92,6 +93,17 @@ inline double signed_volume(const PolygonSoup& soup, const glm::dvec3& about) {
     }
   }
   return volume / 6.0;
+}
+
+// The area of its faces (triangles and convex polygons as fans).
+inline double area(const PolygonSoup& soup) {
+  double sum = 0.0;
+  for (size_t f = 0; f < soup.polygon_count(); ++f) {
+    const uint32_t* v = soup.polygon(f);
+    for (uint32_t k = 1; k + 1 < soup.corner_count(f); ++k)
+      sum += 0.5 * glm::length(glm::cross(soup.points[v[k]] - soup.points[v[0]], soup.points[v[k + 1]] - soup.points[v[0]]));
+  }
+  return sum;
 }
 
 inline PolygonSoup reversed(PolygonSoup soup, std::vector<size_t> faces) {

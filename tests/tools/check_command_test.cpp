@@ -5,8 +5,6 @@
 
 #include <gtest/gtest.h>
 
-#include <glm/geometric.hpp>
-
 #include <sstream>
 
 #include "mesh/io/mesh_format.hpp"
@@ -488,12 +486,7 @@ TEST_F(CheckCommand, RepairSplitsAKeyholeFaceIntoItsTriangles) {
   EXPECT_NE(r.out.find("  split 1 face that passes more than once through a point into 8 triangles\n"), std::string::npos) << r.out << r.err;
   const PolygonSoup out = read_polygon_soup(path("out.obj"));
   EXPECT_EQ(out.polygon_count(), 8u);
-  double area = 0.0;
-  for (size_t f = 0; f < out.polygon_count(); ++f) {
-    const glm::dvec3 a = out.points[out.polygon(f)[0]], b = out.points[out.polygon(f)[1]], c = out.points[out.polygon(f)[2]];
-    area += 0.5 * std::abs(glm::cross(b - a, c - a).z);
-  }
-  EXPECT_DOUBLE_EQ(area, 8.0);
+  EXPECT_DOUBLE_EQ(test::area(out), 8.0);
 }
 
 // A unit cube whose top is split in two at x = 0.5, the sides left whole: a
@@ -525,13 +518,7 @@ TEST_F(CheckCommand, RepairLeavesTheHolesOfAFlatPartOpen) {
   EXPECT_NE(r.out.find("  left 2 holes of flat parts open: a flat part (a panel, a sheet) has no inside to close\n"), std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("  border             8 edges in 2 loops\n"), std::string::npos) << r.out;
-  const PolygonSoup out = read_polygon_soup(path("out.obj"));
-  double area = 0.0;
-  for (size_t f = 0; f < out.polygon_count(); ++f) {
-    const glm::dvec3 a = out.points[out.polygon(f)[0]], b = out.points[out.polygon(f)[1]], c = out.points[out.polygon(f)[2]];
-    area += 0.5 * glm::length(glm::cross(b - a, c - a));
-  }
-  EXPECT_DOUBLE_EQ(area, 3.0);
+  EXPECT_DOUBLE_EQ(test::area(read_polygon_soup(path("out.obj"))), 3.0);
 }
 
 TEST_F(CheckCommand, RepairIntoAMissingFolderFailsWithoutLeavingAFile) {
