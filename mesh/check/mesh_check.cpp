@@ -1,6 +1,7 @@
 #include "mesh/check/mesh_check.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <array>
 #include <limits>
 #include <unordered_map>
@@ -169,7 +170,11 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   // it uses is declared before it, so that it outlives the search should a
   // stage throw.
   SelfIntersections found;
-  bool searched = options.self_intersection_seconds > 0.0;
+  bool searched = false;
+  // The renderer's search (search_closed_meshes) starts before the stages
+  // say whether every component is closed, and stops when one is not.
+  bool for_culling = false;
+  std::atomic<bool> not_closed{false};
   tbb::task_group search;
   std::optional<EdgeTable> face_edges;  // for the triangles' topology, when asked and all faces are triangles
   bool has_polygons = false;            // faces in the topology with more than three corners
@@ -180,10 +185,13 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
       return ElementRef{f, soup.polygon_line(f), mean_of_distinct({first, last}, merged.positions)};
     };
     triangles = triangulate_faces(soup, faces, merged.positions);
+    for_culling = options.self_intersection_seconds <= 0.0 && options.search_closed_meshes;
+    searched = options.self_intersection_seconds > 0.0 || for_culling;
     if (searched) {
-      search.run([&] {
-        found = find_self_intersections(merged.positions, triangles.triangles, triangles.face,
-                                        options.self_intersection_seconds, options.max_examples);
+      const double seconds = for_culling ? std::numeric_limits<double>::infinity() : options.self_intersection_seconds;
+      search.run([&, seconds] {
+        found = find_self_intersections(merged.positions, triangles.triangles, triangles.face, seconds,
+                                        options.max_examples, &not_closed);
       });
     }
     std::vector<uint8_t> used(vertex_count, 0);
@@ -216,6 +224,7 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
         if (room_for(examples.non_manifold_edges, options.max_examples)) examples.non_manifold_edges.push_back({vertex_ref(e.a), vertex_ref(e.b)});
       }
     }
+    if (for_culling && (report.border_edges > 0 || report.non_manifold_edges > 0)) not_closed = true;
 
     labels = label_components(faces, groups);
     ComponentVertices fans = find_vertex_fans(soup, faces, groups, labels, vertex_count);
@@ -252,14 +261,12 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   search.wait();
   // Only a mesh whose every component is closed can have its back faces
   // culled, and only once the search shows its shells clean: the renderer
-  // asks for the search there (and nowhere else).
-  const bool all_closed = std::all_of(report.components.begin(), report.components.end(),
+  // asks for the search there (and nowhere else), and it ran beside the
+  // stages that found them closed.
+  const bool all_closed = !report.components.empty() &&
+                          std::all_of(report.components.begin(), report.components.end(),
                                       [](const ComponentReport& c) { return c.closed && c.orientable; });
-  if (!searched && options.search_closed_meshes && all_closed && !report.components.empty()) {
-    found = find_self_intersections(merged.positions, triangles.triangles, triangles.face,
-                                    std::numeric_limits<double>::infinity(), options.max_examples);
-    searched = true;
-  }
+  if (for_culling && !all_closed) searched = false;  // the report stays as without it
   // The flips are read, not yet made.
   std::vector<uint8_t> flipped(triangles.triangles.size());
   for (size_t t = 0; t < triangles.triangles.size(); ++t) flipped[t] = flip[triangles.face[t]];

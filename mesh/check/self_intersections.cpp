@@ -104,7 +104,7 @@ bool triangles_intersect(const std::array<Point, 3>& a, const std::array<uint32_
 SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positions,
                                           const std::vector<std::array<uint32_t, 3>>& triangles,
                                           const std::vector<uint32_t>& triangle_face, double time_limit_seconds,
-                                          size_t max_examples) {
+                                          size_t max_examples, const std::atomic<bool>* stop) {
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   // A limit beyond what the clock can count from now (about 292 years of
@@ -148,7 +148,7 @@ SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positio
     WorkerState& state = workers.local();
     if ((state.calls += count) >= 1024) {
       state.calls = 0;
-      if (Clock::now() > deadline) return false;
+      if (Clock::now() > deadline || (stop && stop->load(std::memory_order_relaxed))) return false;
     }
     for (size_t k = 0; k < count; ++k) {
       const uint32_t s = triangle_of_box[pairs[k].first], t = triangle_of_box[pairs[k].second];

@@ -1,8 +1,10 @@
 #pragma once
 // Pairs of faces that cross or touch other than along the vertices and edges
-// they share, found with CGAL's box intersection and exact predicates.
+// they share, found with a hierarchy of boxes (box_overlaps) and CGAL's exact
+// predicates.
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -23,10 +25,11 @@ struct SelfIntersections {
 // vertex has one index); `triangle_face` names each triangle's face, and two
 // triangles of the same face are not tested against each other. Triangles
 // whose corners are collinear are skipped (exact intersection tests are
-// undefined for them; the check reports them as degenerate).
+// undefined for them; the check reports them as degenerate). Setting `*stop`
+// ends the search early, as the time limit does.
 SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positions,
                                           const std::vector<std::array<uint32_t, 3>>& triangles,
                                           const std::vector<uint32_t>& triangle_face, double time_limit_seconds,
-                                          size_t max_examples);
+                                          size_t max_examples, const std::atomic<bool>* stop = nullptr);
 
 }  // namespace umbra
