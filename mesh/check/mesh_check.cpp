@@ -1,8 +1,8 @@
 #include "mesh/check/mesh_check.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <array>
+#include <atomic>
 #include <limits>
 #include <unordered_map>
 

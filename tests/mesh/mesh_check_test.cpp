@@ -3,9 +3,11 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <unistd.h>
 
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -633,6 +635,34 @@ TEST(MeshCheck, SelfIntersectionSearchSkipsTrianglesWithoutAPlane) {
   EXPECT_EQ(crossing.face_pairs, 1u);
   ASSERT_EQ(crossing.examples.size(), 1u);
   EXPECT_EQ(crossing.examples[0], std::make_pair(0u, 1u));
+}
+
+TEST(MeshCheck, SelfIntersectionSearchEndsWhenAskedToStop) {
+  // 128 parallel triangles stacked 0.005 apart, each crossed by each of 128
+  // standing across the stack: 128 * 128 crossing pairs, in many batches of
+  // tests (with two threads, each thread is handed several and looks at the
+  // flag between them).
+  const tbb::global_control two_threads(tbb::global_control::max_allowed_parallelism, 2);
+  constexpr uint32_t kLayers = 128;
+  std::vector<glm::dvec3> points;
+  std::vector<std::array<uint32_t, 3>> triangles;
+  for (uint32_t k = 0; k < kLayers; ++k) {
+    const double z = 0.005 * k, x = 0.002 * k;
+    const auto first = uint32_t(points.size());
+    points.insert(points.end(), {{-1, -1, z}, {1, -1, z}, {0, 1, z}, {x, 0, -1}, {x, 0.2, 2}, {x, -0.2, 2}});
+    triangles.push_back({first, first + 1, first + 2});
+    triangles.push_back({first + 3, first + 4, first + 5});
+  }
+  std::vector<uint32_t> face(triangles.size());
+  for (uint32_t t = 0; t < face.size(); ++t) face[t] = t;
+  std::atomic<bool> stop{false};
+  const SelfIntersections whole = find_self_intersections(points, triangles, face, 10.0, 5, &stop);
+  EXPECT_TRUE(whole.complete);
+  EXPECT_EQ(whole.face_pairs, size_t(kLayers) * kLayers);
+  stop = true;
+  const SelfIntersections stopped = find_self_intersections(points, triangles, face, 10.0, 5, &stop);
+  EXPECT_FALSE(stopped.complete);
+  EXPECT_LT(stopped.face_pairs, whole.face_pairs);
 }
 
 // Random soups over a few points (so that faces share vertices and edges and
