@@ -170,10 +170,10 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   // it uses is declared before it, so that it outlives the search should a
   // stage throw.
   SelfIntersections found;
-  bool searched = false;
   // The renderer's search (search_closed_meshes) starts before the stages
   // say whether every component is closed, and stops when one is not.
-  bool for_culling = false;
+  const bool for_culling = options.self_intersection_seconds <= 0.0 && options.search_closed_meshes;
+  bool searched = options.self_intersection_seconds > 0.0 || for_culling;
   std::atomic<bool> not_closed{false};
   tbb::task_group search;
   std::optional<EdgeTable> face_edges;  // for the triangles' topology, when asked and all faces are triangles
@@ -185,8 +185,6 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
       return ElementRef{f, soup.polygon_line(f), mean_of_distinct({first, last}, merged.positions)};
     };
     triangles = triangulate_faces(soup, faces, merged.positions);
-    for_culling = options.self_intersection_seconds <= 0.0 && options.search_closed_meshes;
-    searched = options.self_intersection_seconds > 0.0 || for_culling;
     if (searched) {
       const double seconds = for_culling ? std::numeric_limits<double>::infinity() : options.self_intersection_seconds;
       search.run([&, seconds] {
