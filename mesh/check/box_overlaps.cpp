@@ -44,18 +44,34 @@ uint64_t spread_bits(uint64_t x) {
   return x;
 }
 
+// What item_of gives for each index in `order`, in that order.
+template <typename Item, typename ItemOf>
+std::vector<Item> gathered(const std::vector<uint32_t>& order, const ItemOf& item_of) {
+  std::vector<Item> items(order.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, order.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i < r.end(); ++i) items[i] = item_of(order[i]);
+  });
+  return items;
+}
+
 struct MortonKeyed {
   std::vector<uint64_t> codes;  // sorted
   std::vector<uint32_t> order;  // the box index of each code
+  std::vector<FloatBox> sorted;  // the box of each code
 };
 
 // Box indices sorted along the Morton curve through their centres, so that
-// boxes near in the order are near in space.
+// boxes near in the order are near in space, and the boxes in that order.
+// Each box is made once, in index order, and kept: a box wanted in Morton
+// order is then one read, not a triangle's and its three corners' from all
+// over memory (the 1.2M-triangle bunny's search: 0.99 s, not 1.10, for
+// 24 bytes a box while both orders are held).
 MortonKeyed morton_order(size_t count, const FloatBox& all, const BoxOf& box_of) {
   std::vector<std::pair<uint64_t, uint32_t>> keyed(count);
+  std::vector<FloatBox> boxes(count);
   tbb::parallel_for(tbb::blocked_range<uint32_t>(0, uint32_t(count), 4096), [&](const tbb::blocked_range<uint32_t>& r) {
     for (uint32_t i = r.begin(); i < r.end(); ++i) {
-      const FloatBox box = box_of(i);
+      const FloatBox box = boxes[i] = box_of(i);
       uint64_t code = 0;
       for (int k = 0; k < 3; ++k) {
         const double extent = double(all.hi[size_t(k)]) - double(all.lo[size_t(k)]);
@@ -74,17 +90,9 @@ MortonKeyed morton_order(size_t count, const FloatBox& all, const BoxOf& box_of)
   result.codes.resize(keyed.size());
   result.order.resize(keyed.size());
   for (size_t i = 0; i < keyed.size(); ++i) result.codes[i] = keyed[i].first, result.order[i] = keyed[i].second;
+  std::vector<std::pair<uint64_t, uint32_t>>().swap(keyed);
+  result.sorted = gathered<FloatBox>(result.order, [&boxes](uint32_t i) { return boxes[i]; });
   return result;
-}
-
-// What item_of gives for each index in `order`, in that order.
-template <typename Item, typename ItemOf>
-std::vector<Item> gathered(const std::vector<uint32_t>& order, const ItemOf& item_of) {
-  std::vector<Item> items(order.size());
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, order.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t i = r.begin(); i < r.end(); ++i) items[i] = item_of(order[i]);
-  });
-  return items;
 }
 
 // A binary tree over the sorted boxes, each node split where the highest bit
@@ -265,7 +273,7 @@ bool for_each_overlapping_pair(size_t count, const FloatBox& bounds, const BoxOf
   const std::vector<uint32_t> order = std::move(keyed.order);
   std::vector<std::array<uint32_t, 3>> corners;
   if (skip.corners_of) corners = gathered<std::array<uint32_t, 3>>(order, skip.corners_of);
-  const Hierarchy hierarchy(gathered<FloatBox>(order, box_of), keyed.codes);
+  const Hierarchy hierarchy(std::move(keyed.sorted), keyed.codes);
   std::vector<uint64_t>().swap(keyed.codes);
   return SelfCollision(hierarchy, order, visit, corners, skip.vertices).run();
 }

@@ -30,8 +30,7 @@ FloatBox enclosing_box(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec
 // concurrently. Returning false stops the search.
 using OverlapVisitor = std::function<bool(const std::pair<uint32_t, uint32_t>* pairs, size_t count)>;
 
-// The box of each index below a count, asked for more than once (twice
-// costs less than holding every box in its first order as well as sorted).
+// The box of each index below a count, asked once each, in index order.
 using BoxOf = std::function<FloatBox(uint32_t)>;
 
 // Pairs of triangles' boxes that need no visit: those whose triangles share
