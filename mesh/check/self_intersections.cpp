@@ -129,8 +129,19 @@ SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positio
   for (uint32_t t = 0; t < triangles.size(); ++t)
     if (has_plane[t]) triangle_of_box.push_back(t);
   std::vector<uint8_t>().swap(has_plane);
+  SelfIntersections result;
+  // Asked to stop between stages (a render's search of a mesh found open),
+  // the search ends at the next.
+  const auto stopped = [&] {
+    if (!stop || !stop->load(std::memory_order_relaxed)) return false;
+    result.complete = false;
+    result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return true;
+  };
+  if (stopped()) return result;
   // Pairs sharing a vertex whose star is simple meet only where they share.
   const std::vector<uint8_t> simple = find_simple_stars(positions, triangles, triangle_of_box);
+  if (stopped()) return result;
   const auto box_of = [&](uint32_t i) {
     const auto& tri = triangles[triangle_of_box[i]];
     return enclosing_box(positions[tri[0]], positions[tri[1]], positions[tri[2]]);
@@ -162,7 +173,6 @@ SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positio
     return true;
   };
 
-  SelfIntersections result;
   result.complete = for_each_overlapping_pair(triangle_of_box.size(), enclosing_box(lo, hi, hi), box_of, test, skip);
   std::vector<std::pair<uint32_t, uint32_t>> face_pairs;
   for (const WorkerState& state : workers) face_pairs.insert(face_pairs.end(), state.face_pairs.begin(), state.face_pairs.end());

@@ -662,7 +662,9 @@ TEST(MeshCheck, SelfIntersectionSearchEndsWhenAskedToStop) {
   stop = true;
   const SelfIntersections stopped = find_self_intersections(points, triangles, face, 10.0, 5, &stop);
   EXPECT_FALSE(stopped.complete);
-  EXPECT_LT(stopped.face_pairs, whole.face_pairs);
+  // Asked before it began, it tests no pair: a render's search of an open
+  // mesh ends at the next stage (simple stars, boxes, pairs) once told.
+  EXPECT_EQ(stopped.face_pairs, 0u);
 }
 
 // Random soups over a few points (so that faces share vertices and edges and
