@@ -75,18 +75,13 @@ bool projects_once_round(const glm::dvec3& v, const std::vector<glm::dvec3>& pos
 std::vector<uint8_t> find_simple_stars(const std::vector<glm::dvec3>& positions,
                                        const std::vector<std::array<uint32_t, 3>>& triangles,
                                        const std::vector<uint32_t>& tested) {
-  // The triangles round each vertex, as their other two corners in turn,
-  // in one array: the walk below then reads each star in one run.
+  // The triangles round each vertex, as offsets into one array.
   const size_t vertex_count = positions.size();
   std::vector<uint32_t> star_begin;
-  UnsetVector<std::array<uint32_t, 2>> star;
-  fill_buckets<std::array<uint32_t, 2>>(tested.size(), vertex_count, [&](uint32_t first, uint32_t end, const auto& put) {
-    for (uint32_t k = first; k < end; ++k) {
-      const std::array<uint32_t, 3>& t = triangles[tested[k]];
-      put(t[0], {t[1], t[2]});
-      put(t[1], {t[2], t[0]});
-      put(t[2], {t[0], t[1]});
-    }
+  UnsetVector<uint32_t> star;
+  fill_buckets<uint32_t>(tested.size(), vertex_count, [&](uint32_t first, uint32_t end, const auto& put) {
+    for (uint32_t k = first; k < end; ++k)
+      for (const uint32_t c : triangles[tested[k]]) put(c, tested[k]);
   }, star_begin, star);
 
   std::vector<uint8_t> simple(vertex_count, 0);
@@ -94,15 +89,20 @@ std::vector<uint8_t> find_simple_stars(const std::vector<glm::dvec3>& positions,
     std::array<uint32_t, kMaxStar> a, b;
     std::array<uint32_t, kMaxStar + 1> ring;
     for (size_t v = range.begin(); v < range.end(); ++v) {
-      // A star's corners lie all over the points: fetched a few vertices ahead.
+      // A star's triangles, and then their corners, lie all over the arrays:
+      // fetched a few vertices ahead, the corners once the triangles are in.
+      if (v + 2 * kAhead < range.end())
+        for (uint32_t i = star_begin[v + 2 * kAhead]; i < star_begin[v + 2 * kAhead + 1]; ++i) __builtin_prefetch(&triangles[star[i]]);
       if (v + kAhead < range.end())
         for (uint32_t i = star_begin[v + kAhead]; i < star_begin[v + kAhead + 1]; ++i)
-          for (const uint32_t c : star[i]) __builtin_prefetch(&positions[c]);
+          for (const uint32_t c : triangles[star[i]]) __builtin_prefetch(&positions[c]);
       const size_t count = star_begin[v + 1] - star_begin[v];
       if (count < 3 || count > kMaxStar) continue;
       for (size_t i = 0; i < count; ++i) {
-        a[i] = star[star_begin[v] + i][0];
-        b[i] = star[star_begin[v] + i][1];
+        const std::array<uint32_t, 3>& tri = triangles[star[star_begin[v] + i]];
+        const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
+        a[i] = tri[size_t((k + 1) % 3)];
+        b[i] = tri[size_t((k + 2) % 3)];
       }
       simple[v] = walk_closed_fan(a, b, count, ring) && projects_once_round(positions[v], positions, ring, count);
     }
