@@ -30,7 +30,8 @@ FloatBox enclosing_box(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec
 // concurrently. Returning false stops the search.
 using OverlapVisitor = std::function<bool(const std::pair<uint32_t, uint32_t>* pairs, size_t count)>;
 
-// The box of each index below a count, asked once each, in index order.
+// The box of each index below a count, asked once each, from several
+// threads at once.
 using BoxOf = std::function<FloatBox(uint32_t)>;
 
 // Pairs of triangles' boxes that need no visit: those whose triangles share
