@@ -65,6 +65,7 @@ std::vector<uint8_t> faces_on_flat_parts(SurfaceMesh& mesh) {
     CGAL::Bbox_3 box;
     Point on;  // one of its points
     bool flat = true;
+    double length = 0.0, size = 0.0;  // of its normal, of its box's diagonal
   };
   std::vector<Part> parts(PMP::connected_components(mesh, component));
   for (const auto f : mesh.faces()) {
@@ -78,17 +79,16 @@ std::vector<uint8_t> faces_on_flat_parts(SurfaceMesh& mesh) {
     part.on = a;
   }
   for (Part& part : parts) {
-    const double length = std::sqrt(part.normal.squared_length());
-    part.flat = part.area > 0.0 && length >= 0.5 * part.area;
+    part.length = std::sqrt(part.normal.squared_length());
+    part.flat = part.area > 0.0 && part.length >= 0.5 * part.area;
+    const CGAL::Bbox_3& box = part.box;
+    part.size = std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin());
   }
   for (const auto f : mesh.faces()) {
     Part& part = parts[component[f]];
     if (!part.flat) continue;
-    const double length = std::sqrt(part.normal.squared_length());
-    const CGAL::Bbox_3& box = part.box;
-    const double size = std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin());
     for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-      part.flat = part.flat && std::abs(CGAL::scalar_product(mesh.point(v) - part.on, part.normal)) / length <= 1e-7 * size;
+      part.flat = part.flat && std::abs(CGAL::scalar_product(mesh.point(v) - part.on, part.normal)) / part.length <= 1e-7 * part.size;
   }
   std::vector<uint8_t> flat(mesh.num_faces(), 0);
   for (const auto f : mesh.faces()) flat[f.idx()] = parts[component[f]].flat;
