@@ -84,6 +84,7 @@ FrameDrawing::FrameDrawing(const Scene& scene, const RenderPlan& plan, DrawSendi
     p->set("shadow_map", int(shaders::kShadowMapUnit));
     p->set("material_texture", int(shaders::kMaterialTextureUnit));  // triangles only
     p->set("volume_count", int(shaders::kVolumeCountUnit));
+    p->set("light_codes", int(shaders::kLightCodeUnit));  // triangles only
   }
   const SceneBounds bounds = surface_bounds(scene);
   if (!bounds.empty()) scene_center_ = 0.5 * (bounds.lo + bounds.hi), scene_radius_ = 0.5 * glm::length(bounds.hi - bounds.lo);
@@ -138,7 +139,10 @@ void FrameDrawing::draw_surfaces(int pass, size_t light, shaders::ShadowTest tes
     p->set("shadow_map_texel", 2.0f / float(plan_.settings.shadow_map_size));
   }
   triangle_program_->use();
-  surfaces_->use_light(light, l.position);
+  // Only the lit passes read a triangle's side of the light. Asked for it
+  // first there, a moved light's sides are worked out while the GL draws the
+  // ambient pass and counts the volumes.
+  if (pass == shaders::kDirect || pass == shaders::kMaskLit) surfaces_->use_light(light, l.position);
   for (const SurfaceBuffers::TriangleGroup& group : surfaces_->triangle_groups()) {
     set_material(*triangle_program_, group.material);
     const unsigned texture = surfaces_->material_texture(group.material);

@@ -16,9 +16,10 @@ enum SurfacePass { kAmbient = 0, kDirect = 1, kMaskLit = 3, kDistance = 4, kMark
 // bound cube shadow map, or by the volumes' count at the fragment's pixel.
 enum ShadowTest { kNoShadowTest = 0, kShadowMapTest = 1, kVolumeCountTest = 2 };
 
-// The texture units the surface shader samples: a triangle's material map,
-// the cube shadow map, the volumes' count. Unit 0 is the one left active.
-enum TextureUnit { kMaterialTextureUnit = 0, kShadowMapUnit = 1, kVolumeCountUnit = 2 };
+// The texture units the surface shaders sample: a triangle's material map,
+// the cube shadow map, the volumes' count, and each triangle's light code
+// (SurfaceBuffers::use_light). Unit 0 is the one left active.
+enum TextureUnit { kMaterialTextureUnit = 0, kShadowMapUnit = 1, kVolumeCountUnit = 2, kLightCodeUnit = 3 };
 
 // Phong shading shared by triangles and spheres; `n` is the surface's unit
 // normal, turned here to the side facing the camera, and `s` the one it is
@@ -143,10 +144,12 @@ layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec3 color;  // white (a constant attribute) when no mesh has vertex colours
 layout(location = 3) in vec2 uv;     // texture coordinates, v down the image; (0, 0) when none
-// The light's side of the triangle's plane, exactly (SurfaceBuffers::use_light),
+// Per triangle (gl_VertexID / 3: the triangles' vertices are drawn as
+// arrays), the light's side of its plane, exactly (SurfaceBuffers::use_light),
 // plus one: 2 where `normal` points, 0 the other side, 1 in the plane; and
-// 4 more where a smooth mesh's vertex is on the terminator (terminator.hpp).
-layout(location = 4) in int light_code;
+// 4 << c more where a smooth mesh's corner c is on the terminator
+// (terminator.hpp).
+uniform usamplerBuffer light_codes;
 #ifdef UMBRA_SMOOTH  // defined where some mesh is smooth: a flat scene interpolates nothing more
 layout(location = 5) in vec3 shading_normal;  // (0, 0, 0): flat
 out vec3 world_shading_normal;
@@ -162,10 +165,11 @@ invariant gl_Position;
 void main() {
   world_position = position;
   world_normal = normal;
-  triangle_light_side = (light_code & 3) - 1;
+  uint light_code = texelFetch(light_codes, gl_VertexID / 3).r;
+  triangle_light_side = int(light_code & 3u) - 1;
 #ifdef UMBRA_SMOOTH
   world_shading_normal = shading_normal;
-  light_reach = (light_code & 4) != 0 ? 0.0 : 1.0;
+  light_reach = (light_code & (4u << uint(gl_VertexID % 3))) != 0u ? 0.0 : 1.0;
 #endif
   vertex_color = color;
   texture_uv = uv;

@@ -14,6 +14,7 @@
 
 #include "mesh/predicates/orientation.hpp"
 #include "render/gl.hpp"
+#include "render/shaders.hpp"
 #include "scene/terminator.hpp"
 
 namespace umbra {
@@ -74,6 +75,11 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
     for (uint32_t t = 0; t < mesh.triangles.size(); ++t) by_material[k][mesh.triangle_materials[t]].push_back(t);
     for (const auto& [material, triangles] : by_material[k]) runs.push_back({material, closed, nullptr, &mesh, &triangles});
   }
+  GLint most_codes = 0;  // the GL promises 65,536; Mesa's and NVIDIA's hold 2^27 or more
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &most_codes);
+  if (triangle_count > size_t(most_codes))
+    throw std::runtime_error("the scene has " + std::to_string(triangle_count) + " triangles, more than the " +
+                             std::to_string(most_codes) + " this GL's texture buffers hold (one light code a triangle)");
   std::stable_sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) {
     return a.material != b.material ? a.material < b.material : (a.closed_mesh != nullptr) < (b.closed_mesh != nullptr);
   });
@@ -177,7 +183,10 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
 SurfaceBuffers::~SurfaceBuffers() {
   const GLuint buffers[] = {triangle_vbo_, box_vbo_, box_ibo_, color_vbo_, uv_vbo_, normal_vbo_};
   glDeleteBuffers(6, buffers);
-  for (const LightSides& sides : light_sides_) glDeleteBuffers(1, &sides.vbo);
+  for (const LightSides& sides : light_sides_) {
+    glDeleteBuffers(1, &sides.buffer);
+    glDeleteTextures(1, &sides.texture);
+  }
   const GLuint arrays[] = {triangle_vao_, box_vao_};
   glDeleteVertexArrays(2, arrays);
   glDeleteTextures(GLsizei(textures_.size()), textures_.data());
@@ -219,52 +228,73 @@ void SurfaceBuffers::use_light(size_t light, const glm::dvec3& position) {
   if (triangle_count_ == 0) return;
   if (light_sides_.size() <= light) light_sides_.resize(light + 1);
   LightSides& sides = light_sides_[light];
-  glBindVertexArray(triangle_vao_);
-  if (sides.vbo == 0 || sides.position != position) {
-    // Per vertex, the triangle's side of the light plus one (bits 0 and 1),
-    // and for a smooth mesh, 4 where its light fades to nothing at the
-    // terminator (terminator.hpp).
-    std::vector<int8_t> code(3 * triangle_count_);
-    const auto put = [&](size_t at, int side, int on_terminator) { code[at] = int8_t((side + 1) | (on_terminator ? 4 : 0)); };
-    struct MeshSides {
-      std::vector<int8_t> sides;
-      std::vector<std::array<uint8_t, 3>> terminator;  // empty for a flat mesh
-    };
-    std::map<const Mesh*, MeshSides> by_mesh;  // each mesh's once, however many runs (materials) it has
-    for (const Run& run : runs_) {
-      if (run.triangle) {
-        const Triangle& t = *run.triangle;
-        const int side = orientation(t.a, t.b, t.c, position);
-        for (size_t c = 0; c < 3; ++c) put(3 * run.first + c, side, 0);
-        continue;
-      }
-      auto [found, first_run] = by_mesh.try_emplace(run.mesh);
-      if (first_run) {
-        found->second.sides = triangle_light_sides(*run.mesh, position);
-        if (!run.mesh->triangle_normals.empty()) found->second.terminator = terminator_corners(*run.mesh, found->second.sides);
-      }
-      const std::vector<int8_t>& mesh_sides = found->second.sides;
-      const std::vector<std::array<uint8_t, 3>>& terminator = found->second.terminator;
-      const size_t count = run.subset ? run.subset->size() : run.mesh->triangles.size();
-      tbb::this_task_arena::isolate([&] {
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 16384), [&](const tbb::blocked_range<size_t>& r) {
-          for (size_t i = r.begin(); i < r.end(); ++i) {
-            const size_t k = run.subset ? (*run.subset)[i] : i;
-            for (size_t c = 0; c < 3; ++c) put(3 * (run.first + i) + c, mesh_sides[k], terminator.empty() ? 0 : terminator[k][c]);
-          }
-        });
-      });
+  glActiveTexture(GL_TEXTURE0 + shaders::kLightCodeUnit);
+  if (!sides.position || *sides.position != position) {
+    write_light_codes(position);
+    if (sides.buffer == 0) glGenBuffers(1, &sides.buffer);
+    glBindBuffer(GL_TEXTURE_BUFFER, sides.buffer);
+    glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(light_codes_.size()), light_codes_.data(), GL_DYNAMIC_DRAW);
+    glBindBuffer(GL_TEXTURE_BUFFER, 0);
+    if (sides.texture == 0) {
+      glGenTextures(1, &sides.texture);
+      glBindTexture(GL_TEXTURE_BUFFER, sides.texture);
+      glTexBuffer(GL_TEXTURE_BUFFER, GL_R8UI, sides.buffer);  // stays attached while the buffer's data is replaced
     }
-    const std::vector<int8_t>& side = code;
-    if (sides.vbo == 0) glGenBuffers(1, &sides.vbo);
-    glBindBuffer(GL_ARRAY_BUFFER, sides.vbo);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(side.size()), side.data(), GL_DYNAMIC_DRAW);
     sides.position = position;
   }
-  glBindBuffer(GL_ARRAY_BUFFER, sides.vbo);
-  glVertexAttribIPointer(4, 1, GL_BYTE, 0, nullptr);
-  glEnableVertexAttribArray(4);
-  glBindVertexArray(0);
+  glBindTexture(GL_TEXTURE_BUFFER, sides.texture);
+  glActiveTexture(GL_TEXTURE0 + shaders::kMaterialTextureUnit);
+}
+
+void SurfaceBuffers::write_light_codes(const glm::dvec3& position) {
+  // Per triangle, its side of the light plus one (bits 0 and 1), and for a
+  // smooth mesh, bit 2 + c where its corner c is on the terminator, where
+  // the light fades to nothing (terminator.hpp).
+  light_codes_.resize(triangle_count_);
+  uint8_t* const codes = light_codes_.data();
+  const auto code = [](int side, const std::array<uint8_t, 3>& terminator) {
+    return uint8_t((side + 1) | terminator[0] << 2 | terminator[1] << 3 | terminator[2] << 4);
+  };
+  constexpr std::array<uint8_t, 3> kNoTerminator{0, 0, 0};
+  // A smooth mesh's sides and terminator, worked out whole, once for all its
+  // runs: the terminator needs the sides round each point. A flat mesh's
+  // sides are worked out below, each triangle in the one run that holds it.
+  struct SmoothSides {
+    std::vector<int8_t> sides;
+    std::vector<std::array<uint8_t, 3>> terminator;
+  };
+  std::map<const Mesh*, SmoothSides> smooth;
+  for (const Run& run : runs_) {
+    if (run.triangle) {
+      const Triangle& t = *run.triangle;
+      codes[run.first] = code(orientation(t.a, t.b, t.c, position), kNoTerminator);
+      continue;
+    }
+    const Mesh& mesh = *run.mesh;
+    const SmoothSides* known = nullptr;
+    if (!mesh.triangle_normals.empty()) {
+      auto [found, first_run] = smooth.try_emplace(&mesh);
+      if (first_run) {
+        found->second.sides = triangle_light_sides(mesh, position);
+        found->second.terminator = terminator_corners(mesh, found->second.sides);
+      }
+      known = &found->second;
+    }
+    const std::vector<glm::dvec3>& p = mesh.positions;
+    const size_t count = run.subset ? run.subset->size() : mesh.triangles.size();
+    // Isolated: while it waits for its share, this thread takes none of the
+    // other work under way (umbra render makes the plan meanwhile).
+    tbb::this_task_arena::isolate([&] {
+      tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 16384), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t i = r.begin(); i < r.end(); ++i) {
+          const size_t k = run.subset ? (*run.subset)[i] : i;
+          const auto& t = mesh.triangles[k];
+          codes[run.first + i] = known ? code(known->sides[k], known->terminator[k])
+                                       : code(orientation(p[t[0]], p[t[1]], p[t[2]], position), kNoTerminator);
+        }
+      });
+    });
+  }
 }
 
 unsigned SurfaceBuffers::material_texture(int material) const {

@@ -4,7 +4,9 @@
 // volumes: those of spheres and triangles re-uploaded each frame as the light
 // moves, those of meshes with static vertices and per-frame indices.
 
+#include <cstdint>
 #include <map>
+#include <optional>
 #include <vector>
 
 #include "render/draw_pacing.hpp"
@@ -63,12 +65,19 @@ class SurfaceBuffers {
   std::vector<Run> runs_;
   std::vector<std::map<int, std::vector<uint32_t>>> mesh_subsets_;  // per mesh, its triangles of each material
   size_t triangle_count_ = 0;
-  // Per light: the position whose sides `vbo` holds, one byte a vertex.
+  // Each triangle's light code for `position` (write_light_codes), into
+  // light_codes_, in the buffer's order.
+  void write_light_codes(const glm::dvec3& position);
+  // Per light: the position whose codes `buffer` holds, one byte a
+  // triangle, which the vertex shader reads through `texture` (a texture
+  // buffer) at its triangle, gl_VertexID / 3: a third of the bytes of an
+  // attribute per vertex to send each time the light moves.
   struct LightSides {
-    glm::dvec3 position{0.0};
-    unsigned vbo = 0;
+    std::optional<glm::dvec3> position;  // none until first written
+    unsigned buffer = 0, texture = 0;
   };
   std::vector<LightSides> light_sides_;
+  std::vector<uint8_t> light_codes_;  // kept so that a moving light allocates nothing
 
   std::vector<TriangleGroup> groups_;
   unsigned triangle_vao_ = 0, triangle_vbo_ = 0;
