@@ -253,6 +253,11 @@ RenderPlan make_render_plan(const Scene& scene, const std::vector<MeshCaster>& m
 }
 
 void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshes, RenderPlan& plan) {
+  update_render_view(scene, plan);
+  update_render_lights(scene, meshes, plan);
+}
+
+void update_render_view(const Scene& scene, RenderPlan& plan) {
   place_camera(scene, plan);
   plan.camera_is_spec_default = !scene.camera_from.has_value();
   plan.lights.resize(scene.lights.size());
@@ -264,6 +269,9 @@ void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshe
     for (const Material& m : scene.materials)
       plan.specular_used = plan.specular_used || (plan.light_adds_direct[i] && (m.specular.x > 0.0 || m.specular.y > 0.0 || m.specular.z > 0.0));
   }
+}
+
+void update_render_lights(const Scene& scene, const std::vector<MeshCaster>& meshes, RenderPlan& plan) {
   MeshCasterScratch& scratch = plan.mesh_scratch;
   // The same for every light.
   const ShadowPass pass = method_pass(plan.settings.method);

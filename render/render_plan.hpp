@@ -120,6 +120,12 @@ void require_caught_shadows_kept(const Scene& scene, RenderMethod method);
 // reusing its buffers, so that mesh volumes cost only classification and
 // extraction.
 void update_render_plan(const Scene& scene, const std::vector<MeshCaster>& meshes, RenderPlan& plan);
+// update_render_plan in its two parts. The view: the camera, the near plane
+// and which lights add direct light, all that a frame's first pass reads.
+void update_render_view(const Scene& scene, RenderPlan& plan);
+// Then every light's volumes, for the view as it now is: a viewer runs this
+// while the GL draws the first pass (ShadowRenderer::draw).
+void update_render_lights(const Scene& scene, const std::vector<MeshCaster>& meshes, RenderPlan& plan);
 
 // "800x800, 3 x 3 samples per pixel, averaged (--antialias)"
 std::string image_phrase(const RenderSettings& settings);

@@ -60,8 +60,10 @@ void ShadowRenderer::show_volumes_pass() {
   baseline_state();
 }
 
-void ShadowRenderer::draw(bool show_volumes) {
+void ShadowRenderer::draw(bool show_volumes, const std::function<void()>& while_first_pass_draws) {
   depth_and_ambient_pass(plan_.settings.frame_samples());
+  glFlush();  // the GL starts on it while the light's passes are prepared (SurfaceBuffers::use_light)
+  if (while_first_pass_draws) while_first_pass_draws();
   for (size_t i = 0; i < plan_.lights.size(); ++i) {
     if (!plan_.light_adds_direct[i]) continue;  // adds nothing but its ambient term, already drawn
     technique().cast(i);

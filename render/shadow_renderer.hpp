@@ -7,6 +7,7 @@
 //      shadow_technique.hpp), then the light's diffuse and specular terms are
 //      added where the technique says the surface is lit.
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -35,7 +36,10 @@ class ShadowRenderer {
   // viewer's overlay can be drawn over it. With show_volumes, every
   // light's volumes are drawn over it translucently, front faces only (the
   // debugging view). The plan's camera, size and method are read each time.
-  void draw(bool show_volumes);
+  // `while_first_pass_draws`, if given, runs once the first pass (depth and
+  // ambient light, which reads no light's volumes) is sent, before any
+  // light's: it may update the plan's lights, but not its camera or size.
+  void draw(bool show_volumes, const std::function<void()>& while_first_pass_draws = nullptr);
   // Copies the frame to the default framebuffer (a window), rounded there.
   void show() const;
   // Waits until the GL has finished every command so far (for timing).

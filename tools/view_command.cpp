@@ -328,8 +328,9 @@ int run_view_command(const std::vector<std::string>& argv) {
       settings.width = width;
       settings.height = height;
       scene.plan->settings = settings;
-      update_render_plan(scene.frame, scene.meshes, *scene.plan);
-      scene.renderer->draw(show_volumes);
+      // A moved light's volumes are made while the GL draws the first pass.
+      update_render_view(scene.frame, *scene.plan);
+      scene.renderer->draw(show_volumes, [&] { update_render_lights(scene.frame, scene.meshes, *scene.plan); });
     }
     // The interval since the previous frame: drawing, the buffer swap and the wait for it.
     const double frame_ms = 1000.0 * (now - last_time);
