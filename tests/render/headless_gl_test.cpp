@@ -56,9 +56,20 @@ TEST(HeadlessGl, NamesComeFromTheTable) {
   EXPECT_FALSE(headless_gl_from_name("glx"));
 }
 
-TEST(HeadlessGl, AnUnknownUmbraGlIsAnErrorNotAGuess) {
+// UMBRA_GL as it was, put back however the test ends: on a machine without
+// OSMesa the test throws, and every later test in the process would have
+// asked for OSMesa.
+struct UmbraGlRestored {
   const char* before = std::getenv("UMBRA_GL");
   const std::string saved = before ? before : "";
+  ~UmbraGlRestored() {
+    if (before) setenv("UMBRA_GL", saved.c_str(), 1);
+    else unsetenv("UMBRA_GL");
+  }
+};
+
+TEST(HeadlessGl, AnUnknownUmbraGlIsAnErrorNotAGuess) {
+  const UmbraGlRestored restored;
   setenv("UMBRA_GL", "vulkan", 1);
   try {
     HeadlessContext context(8, 8);
@@ -68,8 +79,6 @@ TEST(HeadlessGl, AnUnknownUmbraGlIsAnErrorNotAGuess) {
   }
   setenv("UMBRA_GL", "osmesa", 1);
   EXPECT_EQ(HeadlessContext(8, 8).platform(), "OSMesa");
-  if (before) setenv("UMBRA_GL", saved.c_str(), 1);
-  else unsetenv("UMBRA_GL");
 }
 
 TEST(HeadlessGl, ATooLargeImageIsRefusedWithItsLimit) {
