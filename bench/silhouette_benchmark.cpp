@@ -9,9 +9,11 @@
 #include <cmath>
 #include <numeric>
 
+#include "mesh/topology/crease_normals.hpp"
 #include "mesh/topology/half_edge_mesh.hpp"
 #include "mesh/check/mesh_check.hpp"
 #include "scene/scene_parser.hpp"
+#include "scene/terminator.hpp"
 #include "render/headless_context.hpp"
 #include "render/render_plan.hpp"
 #include "render/shadow_renderer.hpp"
@@ -232,6 +234,19 @@ void BM_LightMovePlan(benchmark::State& state) {
   state.counters["side_quads"] = plan.lights[0].side_quads;
 }
 BENCHMARK(BM_LightMovePlan)->Args({250, 200, 0})->Args({800, 640, 0})->Args({800, 640, 1})->Unit(benchmark::kMillisecond);
+
+// What a moved light costs a smooth mesh besides a flat one's: the corners
+// on its terminator (scene/terminator.hpp), from each triangle's side of
+// the light, which SurfaceBuffers::use_light works out for each new light
+// position. The torus of BM_RenderFrame, shaded smooth.
+void BM_SmoothTerminator(benchmark::State& state) {
+  Scene scene = torus_over_a_floor(int(state.range(0)), int(state.range(1)), false);
+  Mesh& mesh = scene.meshes[0];
+  mesh.triangle_normals = crease_normals(mesh.positions, mesh.triangles, 40.0);
+  const std::vector<int8_t> sides = triangle_light_sides(mesh, scene.lights[0].position);
+  for (auto _ : state) benchmark::DoNotOptimize(terminator_corners(mesh, sides).data());
+}
+BENCHMARK(BM_SmoothTerminator)->Args({800, 640})->Unit(benchmark::kMillisecond);
 
 // A frame of `umbra view` on the headless GL that auto picks (UMBRA_GL
 // chooses another): 400 x 400, a torus over a floor, its shadow from

@@ -1,6 +1,8 @@
 #include "scene/terminator.hpp"
 
-#include <unordered_map>
+#include <algorithm>
+#include <atomic>
+#include <utility>
 
 #include <glm/geometric.hpp>
 #include <tbb/blocked_range.h>
@@ -28,26 +30,49 @@ std::vector<int8_t> triangle_light_sides(const Mesh& mesh, const glm::dvec3& lig
 }
 
 std::vector<std::array<uint8_t, 3>> terminator_corners(const Mesh& mesh, const std::vector<int8_t>& sides) {
-  std::vector<std::array<uint8_t, 3>> fade(mesh.triangles.size(), {0, 0, 0});
-  // The points whose triangles have the light on more than one side (bit 0:
-  // in front, bit 1: behind or in the plane), and the corners at them.
-  std::vector<uint8_t> seen(mesh.positions.size(), 0);
-  for (size_t t = 0; t < mesh.triangles.size(); ++t)
-    for (const uint32_t v : mesh.triangles[t]) seen[v] |= sides[t] > 0 ? 1 : 2;
-  std::unordered_map<uint32_t, std::vector<uint32_t>> corners_at;  // point: 3 t + k
-  for (uint32_t t = 0; t < mesh.triangles.size(); ++t)
-    for (uint32_t k = 0; k < 3; ++k)
-      if (seen[mesh.triangles[t][k]] == 3) corners_at[mesh.triangles[t][k]].push_back(3 * t + k);
+  const size_t count = mesh.triangles.size();
+  std::vector<std::array<uint8_t, 3>> fade(count, {0, 0, 0});
+  // The points round which the triangles have the light both strictly in
+  // front and not, marked on every core (racing marks all write 1).
+  std::vector<std::atomic<uint8_t>> in_front(mesh.positions.size()), not_in_front(mesh.positions.size());
+  // The corners at those points, (point, 3 t + k), each block's in
+  // triangle order: a few per point of the terminator, a curve.
+  constexpr size_t kBlock = 16384;
+  std::vector<std::vector<std::pair<uint32_t, uint32_t>>> found((count + kBlock - 1) / kBlock);
+  // Isolated, as triangle_light_sides is.
+  tbb::this_task_arena::isolate([&] {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, count, kBlock), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t t = r.begin(); t < r.end(); ++t)
+        for (const uint32_t v : mesh.triangles[t]) (sides[t] > 0 ? in_front : not_in_front)[v].store(1, std::memory_order_relaxed);
+    });
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, found.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t b = r.begin(); b < r.end(); ++b)
+        for (size_t t = b * kBlock; t < std::min(count, (b + 1) * kBlock); ++t)
+          for (uint32_t k = 0; k < 3; ++k) {
+            const uint32_t v = mesh.triangles[t][k];
+            if (in_front[v].load(std::memory_order_relaxed) && not_in_front[v].load(std::memory_order_relaxed))
+              found[b].push_back({v, uint32_t(3 * t + k)});
+          }
+    });
+  });
+  std::vector<std::pair<uint32_t, uint32_t>> corners;
+  for (const auto& block : found) corners.insert(corners.end(), block.begin(), block.end());
+  std::sort(corners.begin(), corners.end());  // by point: each point's corners in a run
   const float kSameShading = 0.98480775f;  // cos 10 degrees
-  for (const auto& [point, corners] : corners_at)
-    for (const uint32_t c : corners)
-      for (const uint32_t d : corners) {
+  for (size_t first = 0; first < corners.size();) {
+    size_t end = first;
+    while (end < corners.size() && corners[end].first == corners[first].first) ++end;
+    for (size_t i = first; i < end; ++i)
+      for (size_t j = first; j < end; ++j) {
+        const uint32_t c = corners[i].second, d = corners[j].second;
         const uint32_t t = c / 3, u = d / 3;
         if ((sides[t] > 0) == (sides[u] > 0)) continue;
         if (glm::dot(mesh.triangle_normals[t][c % 3], mesh.triangle_normals[u][d % 3]) < kSameShading) continue;
         fade[t][c % 3] = 1;
         break;
       }
+    first = end;
+  }
   return fade;
 }
 

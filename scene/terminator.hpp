@@ -29,7 +29,7 @@ std::vector<int8_t> triangle_light_sides(const Mesh& mesh, const glm::dvec3& lig
 // nothing: a triangle round the corner's point does not have the light
 // strictly on the side `sides` (of triangle_light_sides) gives this one, and
 // is shaded alike there (its normal at the point within 10 degrees of this
-// corner's: smoothed together).
+// corner's: smoothed together). On every core.
 std::vector<std::array<uint8_t, 3>> terminator_corners(const Mesh& mesh, const std::vector<int8_t>& sides);
 
 }  // namespace umbra
