@@ -75,7 +75,7 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
     for (uint32_t t = 0; t < mesh.triangles.size(); ++t) by_material[k][mesh.triangle_materials[t]].push_back(t);
     for (const auto& [material, triangles] : by_material[k]) runs.push_back({material, closed, nullptr, &mesh, &triangles});
   }
-  GLint most_codes = 0;  // the GL promises 65,536; Mesa's and NVIDIA's hold 2^27 or more
+  GLint most_codes = 0;  // the GL promises 65,536; llvmpipe holds 2^27, as NVIDIA's GPUs commonly do
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &most_codes);
   if (triangle_count > size_t(most_codes))
     throw std::runtime_error("the scene has " + std::to_string(triangle_count) + " triangles, more than the " +
