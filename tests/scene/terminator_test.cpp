@@ -12,27 +12,17 @@
 #include "mesh/topology/crease_normals.hpp"
 #include "scene/scene.hpp"
 #include "scene/terminator.hpp"
+#include "tests/mesh/mesh_builders.hpp"
 
 namespace umbra {
 namespace {
 
-// A torus of n x m quads, each split into two triangles (radii 1 and 0.35).
+// The tests' torus of n x m quads, fanned into triangles, as a mesh.
 Mesh torus(int n, int m) {
+  const PolygonSoup soup = test::triangulated(test::quad_torus(n, m, 1.0, 0.35));
   Mesh mesh;
-  std::vector<glm::dvec3> points;
-  const double tau = 6.283185307179586;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < m; ++j) {
-      const double u = tau * i / n, v = tau * j / m;
-      points.push_back({(1 + 0.35 * std::cos(v)) * std::cos(u), (1 + 0.35 * std::cos(v)) * std::sin(u), 0.35 * std::sin(v)});
-    }
-  mesh.positions = std::move(points);
-  const auto at = [&](int i, int j) { return uint32_t((i % n) * m + (j % m)); };
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < m; ++j) {
-      mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
+  mesh.positions = soup.points;
+  for (size_t p = 0; p < soup.polygon_count(); ++p) mesh.triangles.push_back({soup.polygon(p)[0], soup.polygon(p)[1], soup.polygon(p)[2]});
   return mesh;
 }
 
