@@ -8,8 +8,8 @@
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 commit=$(git -C "$repo" rev-parse --short "${1:-HEAD}")
-# The archive this machine's apt uses (files that are absent are skipped).
-mirror=$(cat /etc/apt/sources.list /etc/apt/sources.list.d/* 2>/dev/null | grep -oE "https?://[^ ]+/debian/?( |$)" | head -1 | tr -d ' ' || true)
+# The archive this machine's apt uses (absent files and comments skipped).
+mirror=$(cat /etc/apt/sources.list /etc/apt/sources.list.d/* 2>/dev/null | grep -v "^[[:space:]]*#" | grep -oE "https?://[^ ]+/debian/?( |$)" | head -1 | tr -d ' ' || true)
 [ -n "$mirror" ] || { echo "fresh_demo.sh: no Debian archive in /etc/apt/sources*" >&2; exit 1; }
 root=$(mktemp -d /tmp/umbra-fresh-XXXXXX)
 cleanup() {
