@@ -146,16 +146,34 @@ struct Hierarchy {
   bool is_leaf(const Node& node) const { return node.right == 0; }
 };
 
+// Each box's triangle's corners in `order`, with every corner whose vertex
+// `skip` does not mark replaced by a number of the box's own, beyond every
+// vertex's: two boxes then hold an equal corner exactly where their
+// triangles share a marked vertex, which nine comparisons tell without
+// reading the marks for each of the millions of neighbouring pairs. Empty
+// (nothing skipped) where those numbers would not fit in 32 bits.
+std::vector<std::array<uint32_t, 3>> marked_corners(const std::vector<uint32_t>& order, const SharedVertexSkip& skip) {
+  const std::vector<uint8_t>& marked = *skip.vertices;
+  if (uint64_t(marked.size()) + order.size() > std::numeric_limits<uint32_t>::max()) return {};
+  std::vector<std::array<uint32_t, 3>> corners = gathered<std::array<uint32_t, 3>>(order, skip.corners_of);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, corners.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t p = r.begin(); p < r.end(); ++p)
+      for (uint32_t& v : corners[p])
+        if (!marked[v]) v = uint32_t(marked.size() + p);
+  });
+  return corners;
+}
+
 // Every overlapping pair, by descending the hierarchy against itself: a
 // node's pairs are its children's own and those between the two children,
 // and two nodes whose boxes do not overlap hold no pair between them. The top
 // levels run as parallel tasks; pairs are handed over in batches.
 class SelfCollision {
  public:
-  // `corners` in the hierarchy's order, or none.
+  // `corners` in the hierarchy's order, marked (marked_corners), or none.
   SelfCollision(const Hierarchy& hierarchy, const std::vector<uint32_t>& order, const OverlapVisitor& visit,
-                const std::vector<std::array<uint32_t, 3>>& corners, const std::vector<uint8_t>* skipped_vertices)
-      : h_(hierarchy), order_(order), visit_(visit), corners_(corners), skipped_vertices_(skipped_vertices) {}
+                const std::vector<std::array<uint32_t, 3>>& corners)
+      : h_(hierarchy), order_(order), visit_(visit), corners_(corners) {}
 
   bool run() {
     within(0, 0);
@@ -170,12 +188,14 @@ class SelfCollision {
     std::vector<std::pair<uint32_t, uint32_t>> pairs;
   };
 
+  // Whether p and q share a corner: the corners are marked (marked_corners),
+  // so that equal corners are a shared vertex whose pairs are skipped.
   bool skipped(uint32_t p, uint32_t q) const {
     if (corners_.empty()) return false;
     const std::array<uint32_t, 3>&s = corners_[p], &t = corners_[q];
-    for (const uint32_t v : s)
-      if ((*skipped_vertices_)[v] && (v == t[0] || v == t[1] || v == t[2])) return true;
-    return false;
+    bool shared = false;
+    for (const uint32_t v : s) shared |= (v == t[0]) | (v == t[1]) | (v == t[2]);
+    return shared;
   }
   void emit(Batch& out, uint32_t p, uint32_t q) {
     if (skipped(p, q)) return;
@@ -251,7 +271,6 @@ class SelfCollision {
   const std::vector<uint32_t>& order_;
   const OverlapVisitor& visit_;
   const std::vector<std::array<uint32_t, 3>>& corners_;
-  const std::vector<uint8_t>* skipped_vertices_;
   std::atomic<bool> stopped_{false};
 };
 
@@ -272,10 +291,10 @@ bool for_each_overlapping_pair(size_t count, const FloatBox& bounds, const BoxOf
   MortonKeyed keyed = morton_order(count, bounds, box_of);
   const std::vector<uint32_t> order = std::move(keyed.order);
   std::vector<std::array<uint32_t, 3>> corners;
-  if (skip.corners_of) corners = gathered<std::array<uint32_t, 3>>(order, skip.corners_of);
+  if (skip.corners_of) corners = marked_corners(order, skip);
   const Hierarchy hierarchy(std::move(keyed.sorted), keyed.codes);
   std::vector<uint64_t>().swap(keyed.codes);
-  return SelfCollision(hierarchy, order, visit, corners, skip.vertices).run();
+  return SelfCollision(hierarchy, order, visit, corners).run();
 }
 
 bool for_each_overlapping_pair(const std::vector<FloatBox>& boxes, const OverlapVisitor& visit) {

@@ -1,6 +1,7 @@
 #include "mesh/check/box_overlaps.hpp"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <atomic>
 #include <mutex>
@@ -54,6 +55,60 @@ TEST(BoxOverlaps, RandomBoxesOfMixedSizesGiveExactlyTheBruteForcePairsEachOnce) 
   EXPECT_EQ(found.size(), expected.size());  // none twice
   EXPECT_EQ(PairSet(found.begin(), found.end()), expected);
   EXPECT_GT(expected.size(), boxes.size());
+}
+
+// Boxes of triangles whose corners come from a few vertices, so that many
+// overlapping pairs share one: the pairs sharing a marked vertex are left
+// out, and every other overlapping pair is visited, even where its two
+// triangles share vertices that are not marked.
+TEST(BoxOverlaps, PairsSharingAMarkedVertexAreLeftOutAndNoOthers) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> where(-3.0, 3.0), small(0.0, 0.8);
+  std::uniform_int_distribution<uint32_t> vertex(0, 29);
+  std::vector<FloatBox> boxes;
+  std::vector<std::array<uint32_t, 3>> corners;
+  for (int i = 0; i < 2000; ++i) {
+    boxes.push_back(box_at({where(rng), where(rng), where(rng)}, {small(rng), small(rng), small(rng)}));
+    std::array<uint32_t, 3> c{vertex(rng), vertex(rng), vertex(rng)};
+    while (c[1] == c[0]) c[1] = vertex(rng);
+    while (c[2] == c[0] || c[2] == c[1]) c[2] = vertex(rng);
+    corners.push_back(c);
+  }
+  std::vector<uint8_t> marked(30, 0);
+  for (uint32_t v = 0; v < 30; v += 3) marked[v] = 1;
+  const PairSet overlapping = brute_force_pairs(boxes);
+  PairSet expected;
+  size_t shared_unmarked = 0;  // expected pairs whose triangles share only unmarked vertices
+  for (const auto& [i, j] : overlapping) {
+    bool marked_shared = false, shared = false;
+    for (const uint32_t v : corners[i])
+      for (const uint32_t w : corners[j])
+        if (v == w) shared = true, marked_shared = marked_shared || marked[v];
+    if (marked_shared) continue;
+    expected.insert({i, j});
+    shared_unmarked += shared;
+  }
+  FloatBox bounds = boxes[0];
+  for (const FloatBox& b : boxes)
+    for (int k = 0; k < 3; ++k)
+      bounds.lo[size_t(k)] = std::min(bounds.lo[size_t(k)], b.lo[size_t(k)]), bounds.hi[size_t(k)] = std::max(bounds.hi[size_t(k)], b.hi[size_t(k)]);
+  std::mutex lock;
+  std::multiset<std::pair<uint32_t, uint32_t>> found;
+  const SharedVertexSkip skip{[&](uint32_t i) { return corners[i]; }, &marked};
+  EXPECT_TRUE(for_each_overlapping_pair(
+      boxes.size(), bounds, [&](uint32_t i) { return boxes[i]; },
+      [&](const std::pair<uint32_t, uint32_t>* pairs, size_t count) {
+        std::lock_guard<std::mutex> guard(lock);
+        for (size_t k = 0; k < count; ++k) found.insert({std::min(pairs[k].first, pairs[k].second), std::max(pairs[k].first, pairs[k].second)});
+        return true;
+      },
+      skip));
+  EXPECT_EQ(found.size(), expected.size());  // none twice
+  EXPECT_EQ(PairSet(found.begin(), found.end()), expected);
+  // The data hold both kinds: neighbours through unmarked vertices, which are
+  // visited, and hundreds through marked ones, which are not.
+  EXPECT_GT(shared_unmarked, 500u);
+  EXPECT_LT(expected.size(), overlapping.size() - 300);
 }
 
 TEST(BoxOverlaps, BoxesThatOnlyTouchOverlapAndBoxesApartByOneFloatDoNot) {
