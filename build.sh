@@ -72,10 +72,10 @@ if ((${#missing[@]})); then
 fi
 
 # Configures a build folder: with Ninja where the folder is new, which
-# compiles a target's files without waiting for the libraries it links, as
-# CMake's make files do (a fresh build here: 176 s against 192 s,
-# docs/performance.md "Building"). A folder configured before keeps its
-# generator.
+# compiles a target's files without waiting for the libraries it links,
+# where CMake's make files wait for them (a fresh build here: 176 s against
+# 192 s, docs/performance.md "Building"). A folder configured before keeps
+# its generator.
 configure() {
   local folder=$1 generator=()
   shift
