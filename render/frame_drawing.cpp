@@ -110,6 +110,7 @@ void FrameDrawing::apply_view(int samples) {
 
 void FrameDrawing::view_from(const glm::dvec3& viewpoint, const glm::dmat4& view_projection, int width, int height) {
   viewpoint_ = viewpoint;
+  view_ = {view_projection, width, height};
   for (ShaderProgram* p : {triangle_program_.get(), sphere_program_.get()}) {
     p->use();
     p->set("view_projection", glm::mat4(view_projection));
@@ -160,6 +161,28 @@ void FrameDrawing::draw_surfaces(int pass, size_t light, shaders::ShadowTest tes
     sphere_program_->set("sphere_radius", float(sphere.radius));
     surfaces_->draw_sphere_box();
   }
+}
+
+void FrameDrawing::draw_nearest_surfaces(int pass, size_t light, shaders::ShadowTest test, const std::function<void()>& clear) {
+  draw_surfaces(pass, light, test);
+  if (std::find(views_without_back_faces_.begin(), views_without_back_faces_.end(), view_) != views_without_back_faces_.end()) return;
+  GLboolean colour_writes[4], depth_writes = GL_TRUE;
+  glGetBooleanv(GL_COLOR_WRITEMASK, colour_writes);
+  glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_writes);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glDepthMask(GL_FALSE);
+  triangle_program_->use();  // the depth passes discard nothing: no material needed
+  bool shown = false;
+  for (const SurfaceBuffers::TriangleGroup& group : surfaces_->triangle_groups())
+    shown = surfaces_->back_faces_show(group, viewpoint_, pacing_) || shown;
+  glColorMask(colour_writes[0], colour_writes[1], colour_writes[2], colour_writes[3]);
+  glDepthMask(depth_writes);
+  if (!shown) {
+    if (views_without_back_faces_.size() < 16) views_without_back_faces_.push_back(view_);  // the eye's, and a few lights' six
+    return;
+  }
+  clear();
+  draw_surfaces(pass, light, test);
 }
 
 void FrameDrawing::draw_volumes(size_t light, const glm::vec4& tint) {

@@ -3,6 +3,7 @@
 // surface and volume buffers, and the view. ShadowRenderer owns one; each
 // technique (stencil volumes, shadow maps, planar projection) borrows it.
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -55,6 +56,12 @@ class FrameDrawing {
   // Every surface with the shading pass `pass` (shaders.hpp) for light
   // `light`; its lit passes test for shadow as `test` says.
   void draw_surfaces(int pass, size_t light, shaders::ShadowTest test);
+  // As draw_surfaces, for a pass that draws the surfaces' depth (the first
+  // from a viewpoint); then, where a mesh's back faces were culled on trust
+  // (BackFaces::kHiddenUnlessSeen), asks whether one would have shown
+  // (SurfaceBuffers::back_faces_show), and where one would, calls `clear`
+  // and draws again, that mesh whole.
+  void draw_nearest_surfaces(int pass, size_t light, shaders::ShadowTest test, const std::function<void()>& clear);
   // The surfaces from another viewpoint: a shadow map's face, drawn into a
   // viewport of width x height.
   void view_from(const glm::dvec3& viewpoint, const glm::dmat4& view_projection, int width, int height);
@@ -91,6 +98,15 @@ class FrameDrawing {
   std::unique_ptr<VolumeBuffer> volumes_;
   std::vector<std::unique_ptr<VolumeBuffer>> mesh_volumes_;  // per scene mesh; made when first drawn
   glm::dvec3 viewpoint_{0.0};  // where the surfaces are drawn from: the eye, or a light for its shadow map
+  // The view drawn from (view_from), and those from which
+  // draw_nearest_surfaces found no back face showing: a still camera asks once.
+  struct View {
+    glm::dmat4 view_projection{1.0};
+    int width = 0, height = 0;
+    bool operator==(const View& o) const { return view_projection == o.view_projection && width == o.width && height == o.height; }
+  };
+  View view_;
+  std::vector<View> views_without_back_faces_;
   glm::dvec3 scene_center_{0.0};
   double scene_radius_ = 0.0;
 };

@@ -35,9 +35,10 @@ void ShadowRenderer::depth_and_ambient_pass(int samples) {
   const glm::vec4 clear(background_sample(background.color, background.transparent));
   glClearColor(clear.r, clear.g, clear.b, clear.a);
   glClearDepth(1.0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  const auto clear_frame = [] { glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT); };
+  clear_frame();
   last_cast_light_.reset();
-  drawing_->draw_surfaces(shaders::kAmbient, 0, technique().shadow_test());
+  drawing_->draw_nearest_surfaces(shaders::kAmbient, 0, technique().shadow_test(), clear_frame);
 }
 
 void ShadowRenderer::direct_light_pass(size_t light) {

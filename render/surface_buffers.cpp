@@ -66,7 +66,7 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
   for (const Triangle& t : scene.triangles) runs.push_back({t.material, nullptr, &t, nullptr, nullptr});
   for (size_t k = 0; k < scene.meshes.size(); ++k) {
     const Mesh& mesh = scene.meshes[k];
-    const Mesh* closed = mesh.culls_back_faces ? &mesh : nullptr;
+    const Mesh* closed = mesh.back_faces != BackFaces::kDrawn ? &mesh : nullptr;
     triangle_count += mesh.triangles.size();
     if (mesh.triangle_materials.empty()) {
       runs.push_back({mesh.material, closed, nullptr, &mesh, nullptr});
@@ -80,8 +80,9 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
   if (triangle_count > size_t(most_codes))
     throw std::runtime_error("the scene has " + std::to_string(triangle_count) + " triangles, more than the " +
                              std::to_string(most_codes) + " this GL's texture buffers hold (one light code a triangle)");
-  std::stable_sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) {
-    return a.material != b.material ? a.material < b.material : (a.closed_mesh != nullptr) < (b.closed_mesh != nullptr);
+  const auto back_faces_of = [](const Run& run) { return run.closed_mesh ? run.closed_mesh->back_faces : BackFaces::kDrawn; };
+  std::stable_sort(runs.begin(), runs.end(), [&](const Run& a, const Run& b) {
+    return a.material != b.material ? a.material < b.material : back_faces_of(a) < back_faces_of(b);
   });
   // Each triangle's three vertices (position xyz, normal xyz) written at its
   // place straight into the GL's buffer, mapped, on every core: no copy of
@@ -121,8 +122,8 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
   for (Run& run : runs) {
     run.first = placed;
     const bool closed = run.closed_mesh != nullptr;
-    if (groups_.empty() || groups_.back().material != run.material || groups_.back().closed != closed) {
-      groups_.push_back({run.material, closed, glm::dvec3(0.0), glm::dvec3(0.0), int(3 * placed), 0});
+    if (groups_.empty() || groups_.back().material != run.material || groups_.back().back_faces != back_faces_of(run)) {
+      groups_.push_back({run.material, back_faces_of(run), glm::dvec3(0.0), glm::dvec3(0.0), int(3 * placed), 0});
       if (closed) groups_.back().closed_lo = run.closed_mesh->bounds_min, groups_.back().closed_hi = run.closed_mesh->bounds_max;
     }
     TriangleGroup& group = groups_.back();
@@ -153,6 +154,7 @@ SurfaceBuffers::SurfaceBuffers(const Scene& scene) {
     placed += count;
     group.vertex_count += 3 * int(count);
   }
+  back_faces_seen_.assign(groups_.size(), 0);
   if (data && glUnmapBuffer(GL_ARRAY_BUFFER) != GL_TRUE)
     throw std::runtime_error("the GL lost the vertex buffer's contents while it was mapped");
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
@@ -190,6 +192,7 @@ SurfaceBuffers::~SurfaceBuffers() {
   const GLuint arrays[] = {triangle_vao_, box_vao_};
   glDeleteVertexArrays(2, arrays);
   glDeleteTextures(GLsizei(textures_.size()), textures_.data());
+  if (query_ != 0) glDeleteQueries(1, &query_);
 }
 
 // Each material's texture map, once (materials may share one), for the
@@ -301,12 +304,38 @@ unsigned SurfaceBuffers::material_texture(int material) const {
   return size_t(material) < textures_.size() ? textures_[size_t(material)] : 0;
 }
 
-void SurfaceBuffers::draw_triangle_group(const TriangleGroup& group, const glm::dvec3& viewpoint, DrawPacing& pacing) const {
+bool SurfaceBuffers::culls(const TriangleGroup& group, const glm::dvec3& viewpoint) const {
   const bool outside = glm::any(glm::lessThan(viewpoint, group.closed_lo)) || glm::any(glm::greaterThan(viewpoint, group.closed_hi));
-  if (group.closed && outside) {
+  const bool seen = back_faces_seen_[size_t(&group - groups_.data())];
+  return outside && (group.back_faces == BackFaces::kHidden || (group.back_faces == BackFaces::kHiddenUnlessSeen && !seen));
+}
+
+bool SurfaceBuffers::back_faces_show(const TriangleGroup& group, const glm::dvec3& viewpoint, DrawPacing& pacing) {
+  if (group.back_faces != BackFaces::kHiddenUnlessSeen || !culls(group, viewpoint)) return false;
+  if (query_ == 0) glGenQueries(1, &query_);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.0f, 4.0f);  // a slope's worth and a few units of depth, as the volumes' caps are pushed
+  glBeginQuery(GL_ANY_SAMPLES_PASSED, query_);
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_FRONT);
+  draw_triangles(group, pacing);
+  glEndQuery(GL_ANY_SAMPLES_PASSED);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  GLuint shown = 0;
+  glGetQueryObjectuiv(query_, GL_QUERY_RESULT, &shown);
+  if (shown) back_faces_seen_[size_t(&group - groups_.data())] = 1;
+  return shown != 0;
+}
+
+void SurfaceBuffers::draw_triangle_group(const TriangleGroup& group, const glm::dvec3& viewpoint, DrawPacing& pacing) const {
+  if (culls(group, viewpoint)) {
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
   }
+  draw_triangles(group, pacing);
+}
+
+void SurfaceBuffers::draw_triangles(const TriangleGroup& group, DrawPacing& pacing) const {
   glBindVertexArray(triangle_vao_);
   pacing.draw(size_t(group.vertex_count / 3), [&](size_t first, size_t count) {
     const GLint first_vertex = group.first_vertex + GLint(3 * first);

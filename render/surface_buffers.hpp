@@ -24,10 +24,9 @@ class SurfaceBuffers {
 
   struct TriangleGroup {
     int material = 0;
-    // From meshes whose every shell hides its back faces
-    // (Mesh::culls_back_faces): their back faces are culled when seen from
-    // outside the box [closed_lo, closed_hi] round those meshes.
-    bool closed = false;
+    // Its meshes' Mesh::back_faces: where not kDrawn, their back faces are
+    // culled when seen from outside the box [closed_lo, closed_hi] round them.
+    BackFaces back_faces = BackFaces::kDrawn;
     glm::dvec3 closed_lo{0.0}, closed_hi{0.0};
     int first_vertex = 0;
     int vertex_count = 0;
@@ -40,6 +39,15 @@ class SurfaceBuffers {
   // when a viewer zooms into a mesh, they are drawn.
   // They are sent through `pacing`.
   void draw_triangle_group(const TriangleGroup& group, const glm::dvec3& viewpoint, DrawPacing& pacing) const;
+  // Where `group`'s back faces are culled on trust (BackFaces::kHiddenUnlessSeen)
+  // from `viewpoint`: whether one would show, with every surface's depth
+  // already drawn. Its back faces are drawn a little behind where they are
+  // (a polygon offset, which a back face folded against a front face along
+  // a silhouette edge never beats), with the depth test and no writes, and
+  // an occlusion query counts the samples that pass. Where any does, a shell
+  // crosses itself in sight: the group is drawn whole from then on, and
+  // true is returned for the caller to draw again.
+  bool back_faces_show(const TriangleGroup& group, const glm::dvec3& viewpoint, DrawPacing& pacing);
   void draw_sphere_box() const;
   // Light `light`, at `position`, for the triangles drawn next: each
   // triangle's exact side of it (the orientation predicate), for the shader
@@ -56,7 +64,7 @@ class SurfaceBuffers {
   // or a mesh's triangles (all, or those listed in `subset`).
   struct Run {
     int material;
-    const Mesh* closed_mesh;  // the closed mesh it is, if any
+    const Mesh* closed_mesh;  // the mesh it is, if its back faces are ever culled
     const Triangle* triangle;
     const Mesh* mesh;
     const std::vector<uint32_t>* subset;  // into mesh_subsets_
@@ -80,6 +88,10 @@ class SurfaceBuffers {
   std::vector<uint8_t> light_codes_;  // kept so that a moving light allocates nothing
 
   std::vector<TriangleGroup> groups_;
+  std::vector<uint8_t> back_faces_seen_;  // per group: back_faces_show found some
+  bool culls(const TriangleGroup& group, const glm::dvec3& viewpoint) const;
+  void draw_triangles(const TriangleGroup& group, DrawPacing& pacing) const;  // with the culling as it is set
+  unsigned query_ = 0;  // back_faces_show's, made when first asked
   unsigned triangle_vao_ = 0, triangle_vbo_ = 0;
   unsigned color_vbo_ = 0;  // per vertex, parallel to triangle_vbo_; only when some mesh has vertex colours
   unsigned uv_vbo_ = 0;     // likewise, texture coordinates; only when some mesh has them

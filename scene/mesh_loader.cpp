@@ -103,7 +103,7 @@ LoadedMesh load_mesh(MeshStatement statement, const TextureMaps& maps) {
     CheckOptions topology_only;
     topology_only.self_intersection_seconds = 0.0;
     topology_only.triangle_topology = true;
-    topology_only.search_closed_meshes = true;
+    topology_only.decide_back_faces = true;
     analysis = statement.soup ? analyse_mesh(*statement.soup, topology_only)
                               : analyse_mesh(read_polygon_soup(m.path, maps), topology_only);
   } catch (const InputError& e) {
@@ -119,7 +119,7 @@ LoadedMesh load_mesh(MeshStatement statement, const TextureMaps& maps) {
       for (const uint32_t v : t) m.bounds_min = glm::min(m.bounds_min, m.positions[v]), m.bounds_max = glm::max(m.bounds_max, m.positions[v]);
   }
   m.loading_changes = analysis.report.loading_changes();
-  m.culls_back_faces = analysis.report.back_faces_hidden();
+  m.back_faces = analysis.back_faces;
   m.triangle_materials = std::move(analysis.triangle_materials);
   m.triangle_colors = std::move(analysis.triangle_colors);
   m.triangle_uvs = std::move(analysis.triangle_uvs);

@@ -19,6 +19,7 @@
 #include "mesh/input_error.hpp"
 #include "mesh/shared_positions.hpp"
 #include "mesh/texture_image.hpp"
+#include "mesh/topology/back_faces.hpp"
 #include "mesh/topology/silhouette_components.hpp"
 #include "mesh/topology/edge_table.hpp"
 
@@ -111,9 +112,8 @@ struct Mesh {
   // What loading changed, as the check reports it: "2 duplicate faces
   // dropped, 588 faces flipped to agree"; "" when nothing.
   std::string loading_changes;
-  // Every shell hides its back faces (the check's back_faces_hidden): seen
-  // from outside the mesh's box, they may be culled.
-  bool culls_back_faces = false;
+  // Whether, seen from outside the mesh's box, its back faces may be culled.
+  BackFaces back_faces = BackFaces::kDrawn;
 
   int material_of(size_t triangle) const { return triangle_materials.empty() ? material : triangle_materials[triangle]; }
 };

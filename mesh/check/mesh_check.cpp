@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <limits>
 #include <unordered_map>
 
@@ -170,11 +169,8 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   // it uses is declared before it, so that it outlives the search should a
   // stage throw.
   SelfIntersections found;
-  // The renderer's search (search_closed_meshes) starts before the stages
-  // say whether every component is closed, and stops when one is not.
-  const bool for_culling = options.self_intersection_seconds <= 0.0 && options.search_closed_meshes;
-  bool searched = options.self_intersection_seconds > 0.0 || for_culling;
-  std::atomic<bool> not_closed{false};
+  const bool for_culling = options.self_intersection_seconds <= 0.0 && options.decide_back_faces;
+  bool searched = options.self_intersection_seconds > 0.0;
   tbb::task_group search;
   std::optional<EdgeTable> face_edges;  // for the triangles' topology, when asked and all faces are triangles
   bool has_polygons = false;            // faces in the topology with more than three corners
@@ -185,13 +181,11 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
       return ElementRef{f, soup.polygon_line(f), mean_of_distinct({first, last}, merged.positions)};
     };
     triangles = triangulate_faces(soup, faces, merged.positions);
-    if (searched) {
-      const double seconds = for_culling ? std::numeric_limits<double>::infinity() : options.self_intersection_seconds;
-      search.run([&, seconds] {
-        found = find_self_intersections(merged.positions, triangles.triangles, triangles.face, seconds,
-                                        options.max_examples, &not_closed);
+    if (searched)
+      search.run([&] {
+        found = find_self_intersections(merged.positions, triangles.triangles, triangles.face,
+                                        options.self_intersection_seconds, options.max_examples);
       });
-    }
     std::vector<uint8_t> used(vertex_count, 0);
     for (const uint32_t v : faces.corners) used[v] = 1;
     report.vertices = size_t(std::count(used.begin(), used.end(), 1));
@@ -222,7 +216,6 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
         if (room_for(examples.non_manifold_edges, options.max_examples)) examples.non_manifold_edges.push_back({vertex_ref(e.a), vertex_ref(e.b)});
       }
     }
-    if (for_culling && (report.border_edges > 0 || report.non_manifold_edges > 0)) not_closed = true;
 
     labels = label_components(faces, groups);
     ComponentVertices fans = find_vertex_fans(soup, faces, groups, labels, vertex_count);
@@ -257,18 +250,39 @@ MeshAnalysis analyse(const PolygonSoup& soup, PolygonSoup* disposable, const Che
   for (size_t t = 0; t < triangles.triangles.size(); ++t) component_of_triangle[t] = labels.of_face[triangles.face[t]];
   summarise_components(labels, report);
   search.wait();
-  // Only a mesh whose every component is closed can have its back faces
-  // culled, and only once the search shows its shells clean: the renderer
-  // asks for the search there (and nowhere else), and it ran beside the
-  // stages that found them closed.
-  const bool all_closed = !report.components.empty() &&
-                          std::all_of(report.components.begin(), report.components.end(),
-                                      [](const ComponentReport& c) { return c.closed && c.orientable; });
-  if (for_culling && !all_closed) searched = false;  // the report stays as without it
   // The flips are read, not yet made.
   std::vector<uint8_t> flipped(triangles.triangles.size());
   for (size_t t = 0; t < triangles.triangles.size(); ++t) flipped[t] = flip[triangles.face[t]];
-  decide_facing(merged.positions, triangles, flipped, component_of_triangle, labels.of_face, searched ? &found : nullptr, report);
+  const auto decide = [&](const SelfIntersections* search_found) {
+    decide_facing(merged.positions, triangles, flipped, component_of_triangle, labels.of_face, search_found, report);
+  };
+  // Only a mesh whose every component is closed can have its back faces
+  // culled (BackFaces). Where each would face out as loaded, none turned and
+  // none nested, were no shell to cross itself, the picture asks the one
+  // question left (kHiddenUnlessSeen) at the cost of drawing the back faces
+  // once: no search. Else a search decides the facing, as the check's does.
+  const bool all_closed = !report.components.empty() &&
+                          std::all_of(report.components.begin(), report.components.end(),
+                                      [](const ComponentReport& c) { return c.closed && c.orientable; });
+  if (for_culling && all_closed) {
+    const MeshReport before = report;
+    SelfIntersections none;  // as a complete search that found nothing would say
+    decide(&none);
+    if (report.back_faces_hidden() && report.inward_components == 0) {
+      analysis.back_faces = BackFaces::kHiddenUnlessSeen;
+      // Unknown without a search (the facings stand as they would without crossings).
+      for (ComponentReport& c : report.components) c.hides_back_faces = false;
+    } else {
+      report = before;
+      found = find_self_intersections(merged.positions, triangles.triangles, triangles.face,
+                                      std::numeric_limits<double>::infinity(), options.max_examples);
+      searched = true;
+      decide(&found);
+      if (report.back_faces_hidden()) analysis.back_faces = BackFaces::kHidden;
+    }
+  } else {
+    decide(searched ? &found : nullptr);
+  }
   turn_flipped(triangles, flip);
   // The renderer gets closed components facing outward, so that it can cull
   // their back faces (the file's orientation stays in the report).

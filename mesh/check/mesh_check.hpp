@@ -10,6 +10,7 @@
 #include "mesh/check/mesh_report.hpp"
 #include "mesh/check/triangle_topology.hpp"
 #include "mesh/io/polygon_soup.hpp"
+#include "mesh/topology/back_faces.hpp"
 
 namespace umbra {
 
@@ -20,11 +21,13 @@ struct CheckOptions {
   // Also hand over the triangles' edge table and which components cast from
   // their silhouette, for the renderer (triangle_topology.hpp).
   bool triangle_topology = false;
-  // With the search skipped (self_intersection_seconds 0): search all the
-  // same, without a time limit, when every component is closed, so that
-  // which way its shells face is decided and the renderer may cull their
-  // back faces (MeshReport::back_faces_hidden).
-  bool search_closed_meshes = false;
+  // With the search skipped (self_intersection_seconds 0): decide for the
+  // renderer whether it may cull the mesh's back faces
+  // (MeshAnalysis::back_faces). Where every component is closed, and would
+  // face out as loaded were none to cross itself, that is left to the
+  // picture; where some would be turned round, search all the same, without
+  // a time limit, so that which way they face is decided.
+  bool decide_back_faces = false;
   // How many offending elements of each kind the report lists
   // (MeshReport::examples): a few to find in the file, or every one for a
   // caller that marks them all (the Python module's defect arrays).
@@ -55,6 +58,7 @@ struct MeshAnalysis {
   // (PolygonSoup::corner_normals), (0, 0, 0) where it gives none. Empty: none.
   std::vector<std::array<glm::vec3, 3>> triangle_normals;
   std::optional<TriangleTopology> topology;  // of `triangles`, with CheckOptions::triangle_topology
+  BackFaces back_faces = BackFaces::kDrawn;  // with CheckOptions::decide_back_faces
 };
 
 MeshAnalysis analyse_mesh(const PolygonSoup& soup, const CheckOptions& options = {});

@@ -104,7 +104,7 @@ bool triangles_intersect(const std::array<Point, 3>& a, const std::array<uint32_
 SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positions,
                                           const std::vector<std::array<uint32_t, 3>>& triangles,
                                           const std::vector<uint32_t>& triangle_face, double time_limit_seconds,
-                                          size_t max_examples, const std::atomic<bool>* stop) {
+                                          size_t max_examples) {
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   // A limit beyond what the clock can count from now (about 292 years of
@@ -130,18 +130,8 @@ SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positio
     if (has_plane[t]) triangle_of_box.push_back(t);
   std::vector<uint8_t>().swap(has_plane);
   SelfIntersections result;
-  // Asked to stop between stages (a render's search of a mesh found open),
-  // the search ends at the next.
-  const auto stopped = [&] {
-    if (!stop || !stop->load(std::memory_order_relaxed)) return false;
-    result.complete = false;
-    result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    return true;
-  };
-  if (stopped()) return result;
   // Pairs sharing a vertex whose star is simple meet only where they share.
   const std::vector<uint8_t> simple = find_simple_stars(positions, triangles, triangle_of_box);
-  if (stopped()) return result;
   const auto box_of = [&](uint32_t i) {
     const auto& tri = triangles[triangle_of_box[i]];
     return enclosing_box(positions[tri[0]], positions[tri[1]], positions[tri[2]]);
@@ -159,7 +149,7 @@ SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positio
     WorkerState& state = workers.local();
     if ((state.calls += count) >= 1024) {
       state.calls = 0;
-      if (Clock::now() > deadline || (stop && stop->load(std::memory_order_relaxed))) return false;
+      if (Clock::now() > deadline) return false;
     }
     for (size_t k = 0; k < count; ++k) {
       const uint32_t s = triangle_of_box[pairs[k].first], t = triangle_of_box[pairs[k].second];

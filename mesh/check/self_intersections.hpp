@@ -4,7 +4,6 @@
 // predicates.
 
 #include <array>
-#include <atomic>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -25,11 +24,10 @@ struct SelfIntersections {
 // vertex has one index); `triangle_face` names each triangle's face, and two
 // triangles of the same face are not tested against each other. Triangles
 // whose corners are collinear are skipped (exact intersection tests are
-// undefined for them; the check reports them as degenerate). Setting `*stop`
-// ends the search early, as the time limit does.
+// undefined for them; the check reports them as degenerate).
 SelfIntersections find_self_intersections(const std::vector<glm::dvec3>& positions,
                                           const std::vector<std::array<uint32_t, 3>>& triangles,
                                           const std::vector<uint32_t>& triangle_face, double time_limit_seconds,
-                                          size_t max_examples, const std::atomic<bool>* stop = nullptr);
+                                          size_t max_examples);
 
 }  // namespace umbra

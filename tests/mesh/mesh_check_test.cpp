@@ -7,7 +7,6 @@
 
 #include <unistd.h>
 
-#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -369,7 +368,7 @@ TEST(MeshCheck, OneFlippedFaceIsNamedAsTheFaceToFlip) {
 }
 
 TEST(MeshCheck, AHollowSolidsInnerShellFacingItsCavityIsNotInward) {
-  const MeshReport right = check_mesh(test::hollow_cube());
+  const MeshReport right = check_mesh(hollow_cube());
   ASSERT_EQ(right.components.size(), 2u);
   EXPECT_EQ(right.inward_components, 0u);
   EXPECT_EQ(right.components[0].outward, true);
@@ -381,7 +380,7 @@ TEST(MeshCheck, AHollowSolidsInnerShellFacingItsCavityIsNotInward) {
   EXPECT_EQ(wrong.components[0].outward, true);
   EXPECT_EQ(wrong.components[1].outward, false);
   // Three nested shells: the innermost (depth 2) is solid again and faces out.
-  const MeshReport three = check_mesh(test::combine(test::hollow_cube(), test::box_triangles(glm::dvec3(1.25), glm::dvec3(1.75))));
+  const MeshReport three = check_mesh(test::combine(hollow_cube(), test::box_triangles(glm::dvec3(1.25), glm::dvec3(1.75))));
   EXPECT_EQ(three.inward_components, 0u);
 }
 
@@ -403,7 +402,7 @@ TEST(MeshCheck, ShellsThatCrossHaveNoDecidedFacing) {
       EXPECT_FALSE(c.outward.has_value());
     }
   }
-  const MeshReport bow_tie = check_mesh(test::bow_tie_prism());
+  const MeshReport bow_tie = check_mesh(bow_tie_prism());
   ASSERT_EQ(bow_tie.components.size(), 1u);
   EXPECT_TRUE(bow_tie.components[0].closed);
   EXPECT_GT(bow_tie.self_intersections.face_pairs, 0u);
@@ -412,7 +411,7 @@ TEST(MeshCheck, ShellsThatCrossHaveNoDecidedFacing) {
   // Without the search nothing shows that a shell is clean: undecided too.
   CheckOptions no_search;
   no_search.self_intersection_seconds = 0.0;
-  const MeshReport unsearched = check_mesh(test::hollow_cube(), no_search);
+  const MeshReport unsearched = check_mesh(hollow_cube(), no_search);
   EXPECT_EQ(unsearched.undecided_components, 2u);
   EXPECT_EQ(unsearched.inward_components, 0u);
 }
@@ -637,11 +636,10 @@ TEST(MeshCheck, SelfIntersectionSearchSkipsTrianglesWithoutAPlane) {
   EXPECT_EQ(crossing.examples[0], std::make_pair(0u, 1u));
 }
 
-TEST(MeshCheck, SelfIntersectionSearchEndsWhenAskedToStop) {
+TEST(MeshCheck, SelfIntersectionSearchFindsEveryPairOverManyBatches) {
   // 128 parallel triangles stacked 0.005 apart, each crossed by each of 128
   // standing across the stack: 128 * 128 crossing pairs, in many batches of
-  // tests (with two threads, each thread is handed several and looks at the
-  // flag between them).
+  // tests (with two threads, each thread is handed several).
   const tbb::global_control two_threads(tbb::global_control::max_allowed_parallelism, 2);
   constexpr uint32_t kLayers = 128;
   std::vector<glm::dvec3> points;
@@ -655,16 +653,38 @@ TEST(MeshCheck, SelfIntersectionSearchEndsWhenAskedToStop) {
   }
   std::vector<uint32_t> face(triangles.size());
   for (uint32_t t = 0; t < face.size(); ++t) face[t] = t;
-  std::atomic<bool> stop{false};
-  const SelfIntersections whole = find_self_intersections(points, triangles, face, 10.0, 5, &stop);
+  const SelfIntersections whole = find_self_intersections(points, triangles, face, 10.0, 5);
   EXPECT_TRUE(whole.complete);
   EXPECT_EQ(whole.face_pairs, size_t(kLayers) * kLayers);
-  stop = true;
-  const SelfIntersections stopped = find_self_intersections(points, triangles, face, 10.0, 5, &stop);
-  EXPECT_FALSE(stopped.complete);
-  // Asked before it began, it tests no pair: a render's search of an open
-  // mesh ends at the next stage (simple stars, boxes, pairs) once told.
-  EXPECT_EQ(stopped.face_pairs, 0u);
+}
+
+// What loading for the renderer decides about back faces
+// (CheckOptions::decide_back_faces): with every shell facing out as loaded,
+// the picture decides, and no search runs; a shell to turn round, or one in
+// a cavity, takes the search; an open mesh, neither.
+TEST(MeshCheck, TheRenderersLoadingSearchesOnlyWhereAShellWouldBeTurned) {
+  CheckOptions for_rendering;
+  for_rendering.self_intersection_seconds = 0.0;
+  for_rendering.decide_back_faces = true;
+  const MeshAnalysis clean = analyse_mesh(unit_cube(), for_rendering);
+  EXPECT_EQ(clean.back_faces, BackFaces::kHiddenUnlessSeen);
+  EXPECT_FALSE(clean.report.self_intersections.checked);
+  // A lobe turned inside out: each shell faces out were it not to cross itself.
+  EXPECT_EQ(analyse_mesh(bow_tie_prism(), for_rendering).back_faces, BackFaces::kHiddenUnlessSeen);
+
+  const MeshAnalysis inward = analyse_mesh(all_reversed(unit_cube()), for_rendering);
+  EXPECT_EQ(inward.back_faces, BackFaces::kHidden);
+  EXPECT_TRUE(inward.report.self_intersections.checked);
+  EXPECT_EQ(inward.report.inward_components, 1u);
+  const MeshAnalysis hollow = analyse_mesh(hollow_cube(), for_rendering);
+  EXPECT_EQ(hollow.back_faces, BackFaces::kDrawn);
+  EXPECT_TRUE(hollow.report.self_intersections.checked);
+
+  const MeshAnalysis opened = analyse_mesh(without_faces(unit_cube(), {4, 5}), for_rendering);
+  EXPECT_EQ(opened.back_faces, BackFaces::kDrawn);
+  EXPECT_FALSE(opened.report.self_intersections.checked);
+  // Without the option, as umbra check loads: nothing is decided for the renderer.
+  EXPECT_EQ(analyse_mesh(unit_cube()).back_faces, BackFaces::kDrawn);
 }
 
 // Random soups over a few points (so that faces share vertices and edges and

@@ -1,9 +1,11 @@
 // Back faces of a closed mesh are culled only where culling is provably
 // invisible: every shell closed, crossing none of its own faces, and
-// enclosing positive volume as drawn. Two such shells that cross each other
-// are culled as they are, neither turned; a shell whose walls cross (a lobe
-// turned inside out) is drawn whole; either way the picture is the ray-cast
-// reference's.
+// enclosing positive volume as drawn. Where every shell faces out as
+// loaded, whether one crosses itself is left to the picture
+// (BackFaces::kHiddenUnlessSeen); where one must be turned, a search decides.
+// Two shells that cross each other are culled as they are, neither turned; a
+// shell whose walls cross (a lobe turned inside out) is drawn whole once its
+// back faces show; either way the picture is the ray-cast reference's.
 #include <gtest/gtest.h>
 
 #include "scene/scene_parser.hpp"
@@ -29,26 +31,28 @@ class ShellCulling : public test::ScratchFolder {
 
 TEST_F(ShellCulling, CrossingShellsAreCulledAsTheyAreNotTurned) {
   const Scene scene = scene_of(test::box_through_l_prism());
-  EXPECT_TRUE(scene.meshes[0].culls_back_faces);
+  // Were they not to cross, the box would lie in the prism: a search decides.
+  EXPECT_EQ(scene.meshes[0].back_faces, BackFaces::kHidden);
   test::expect_images_agree(scene, test::render_gl_and_ray_cast(scene, 120));
 }
 
 TEST_F(ShellCulling, AShellWithAnInsideOutLobeIsDrawnWhole) {
   const Scene scene = scene_of(test::bow_tie_prism());
-  EXPECT_FALSE(scene.meshes[0].culls_back_faces);
+  EXPECT_EQ(scene.meshes[0].back_faces, BackFaces::kHiddenUnlessSeen);
   test::expect_images_agree(scene, test::render_gl_and_ray_cast(scene, 120));
 }
 
 TEST_F(ShellCulling, ACleanSolidIsCulledAndAnInwardOneTurnedFirst) {
-  for (const PolygonSoup& soup : {test::unit_cube(), test::all_reversed(test::unit_cube())}) {
-    const Scene scene = scene_of(soup);
-    EXPECT_TRUE(scene.meshes[0].culls_back_faces);
-    test::expect_images_agree(scene, test::render_gl_and_ray_cast(scene, 120));
-  }
+  const Scene clean = scene_of(test::unit_cube());
+  EXPECT_EQ(clean.meshes[0].back_faces, BackFaces::kHiddenUnlessSeen);
+  test::expect_images_agree(clean, test::render_gl_and_ray_cast(clean, 120));
+  const Scene inward = scene_of(test::all_reversed(test::unit_cube()));  // searched, then turned
+  EXPECT_EQ(inward.meshes[0].back_faces, BackFaces::kHidden);
+  test::expect_images_agree(inward, test::render_gl_and_ray_cast(inward, 120));
   // A hollow solid's cavity encloses negative volume: drawn whole (it is
   // hidden from outside all the same).
   const Scene hollow = scene_of(test::hollow_cube());
-  EXPECT_FALSE(hollow.meshes[0].culls_back_faces);
+  EXPECT_EQ(hollow.meshes[0].back_faces, BackFaces::kDrawn);
   test::expect_images_agree(hollow, test::render_gl_and_ray_cast(hollow, 120));
 }
 
