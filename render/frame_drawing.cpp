@@ -163,26 +163,36 @@ void FrameDrawing::draw_surfaces(int pass, size_t light, shaders::ShadowTest tes
   }
 }
 
-void FrameDrawing::draw_nearest_surfaces(int pass, size_t light, shaders::ShadowTest test, const std::function<void()>& clear) {
+void FrameDrawing::draw_nearest_surfaces(int pass, size_t light, shaders::ShadowTest test) {
   draw_surfaces(pass, light, test);
-  if (std::find(views_without_back_faces_.begin(), views_without_back_faces_.end(), view_) != views_without_back_faces_.end()) return;
+  std::vector<const SurfaceBuffers::TriangleGroup*> to_ask;
+  for (const SurfaceBuffers::TriangleGroup& group : surfaces_->triangle_groups())
+    if (surfaces_->culls_on_trust(group, viewpoint_)) to_ask.push_back(&group);
+  const auto known = [&](const std::vector<View>& views) { return std::find(views.begin(), views.end(), view_) != views.end(); };
+  if (to_ask.empty() || known(views_without_back_faces_)) return;
   GLboolean colour_writes[4], depth_writes = GL_TRUE;
   glGetBooleanv(GL_COLOR_WRITEMASK, colour_writes);
   glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_writes);
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glDepthMask(GL_FALSE);
-  triangle_program_->use();  // the depth passes discard nothing: no material needed
-  bool shown = false;
-  for (const SurfaceBuffers::TriangleGroup& group : surfaces_->triangle_groups())
-    shown = surfaces_->back_faces_show(group, viewpoint_, pacing_) || shown;
+  // Depth alone: on llvmpipe, drawing a mesh's back faces with the
+  // triangle shader cost about as much as the pass itself.
+  if (!depth_program_) depth_program_ = std::make_unique<ShaderProgram>("depth", shaders::kDepthVertex, shaders::kDepthFragment);
+  depth_program_->use();
+  depth_program_->set("view_projection", glm::mat4(view_.view_projection));
+  for (const SurfaceBuffers::TriangleGroup* group : to_ask) surfaces_->ask_whether_back_faces_show(*group, pacing_);
   glColorMask(colour_writes[0], colour_writes[1], colour_writes[2], colour_writes[3]);
   glDepthMask(depth_writes);
-  if (!shown) {
-    if (views_without_back_faces_.size() < 16) views_without_back_faces_.push_back(view_);  // the eye's, and a few lights' six
-    return;
-  }
-  clear();
-  draw_surfaces(pass, light, test);
+  if (!known(views_asked_)) views_asked_.push_back(view_);
+}
+
+bool FrameDrawing::back_faces_showed() {
+  const bool shown = surfaces_->back_faces_showed();
+  // Clean views are not asked again: the eye's, and a few lights' six.
+  if (!shown && views_without_back_faces_.size() + views_asked_.size() <= 64)
+    views_without_back_faces_.insert(views_without_back_faces_.end(), views_asked_.begin(), views_asked_.end());
+  views_asked_.clear();
+  return shown;
 }
 
 void FrameDrawing::draw_volumes(size_t light, const glm::vec4& tint) {

@@ -3,7 +3,6 @@
 // surface and volume buffers, and the view. ShadowRenderer owns one; each
 // technique (stencil volumes, shadow maps, planar projection) borrows it.
 
-#include <functional>
 #include <memory>
 #include <vector>
 
@@ -59,9 +58,13 @@ class FrameDrawing {
   // As draw_surfaces, for a pass that draws the surfaces' depth (the first
   // from a viewpoint); then, where a mesh's back faces were culled on trust
   // (BackFaces::kHiddenUnlessSeen), asks whether one would have shown
-  // (SurfaceBuffers::back_faces_show), and where one would, calls `clear`
-  // and draws again, that mesh whole.
-  void draw_nearest_surfaces(int pass, size_t light, shaders::ShadowTest test, const std::function<void()>& clear);
+  // (SurfaceBuffers::ask_whether_back_faces_show), unless this view was
+  // found clean before. The answer waits for back_faces_showed.
+  void draw_nearest_surfaces(int pass, size_t light, shaders::ShadowTest test);
+  // Whether a back face showed in any view asked about since last time:
+  // then those meshes are drawn whole from now on, and the caller draws its
+  // picture again. Read once the picture is drawn, the answers cost no wait.
+  bool back_faces_showed();
   // The surfaces from another viewpoint: a shadow map's face, drawn into a
   // viewport of width x height.
   void view_from(const glm::dvec3& viewpoint, const glm::dmat4& view_projection, int width, int height);
@@ -94,6 +97,7 @@ class FrameDrawing {
   int samples_per_side_ = 1;
   std::unique_ptr<ShaderProgram> triangle_program_, sphere_program_, volume_program_, count_program_,
       planar_program_;
+  std::unique_ptr<ShaderProgram> depth_program_;  // made when draw_nearest_surfaces first asks
   std::unique_ptr<SurfaceBuffers> surfaces_;
   std::unique_ptr<VolumeBuffer> volumes_;
   std::vector<std::unique_ptr<VolumeBuffer>> mesh_volumes_;  // per scene mesh; made when first drawn
@@ -106,7 +110,7 @@ class FrameDrawing {
     bool operator==(const View& o) const { return view_projection == o.view_projection && width == o.width && height == o.height; }
   };
   View view_;
-  std::vector<View> views_without_back_faces_;
+  std::vector<View> views_asked_, views_without_back_faces_;
   glm::dvec3 scene_center_{0.0};
   double scene_radius_ = 0.0;
 };

@@ -337,6 +337,19 @@ out vec4 frag_color;
 void main() { frag_color = tint; }
 )";
 
+// Triangles' depth alone, where only whether samples pass the depth test
+// matters (FrameDrawing::draw_nearest_surfaces's question): the position
+// exactly as kTriangleVertex places it (invariant, the same expression).
+inline constexpr const char* kDepthVertex = R"(#version 330 core
+layout(location = 0) in vec3 position;
+uniform mat4 view_projection;
+invariant gl_Position;
+void main() { gl_Position = view_projection * vec4(position, 1.0); }
+)";
+inline constexpr const char* kDepthFragment = R"(#version 330 core
+void main() {}
+)";
+
 // The volume pass: each volume face adds +1 or -1 to the count at its pixel
 // by additive blending, into a 32-bit float target, where whole numbers stay
 // exact far past any count a frame can reach.

@@ -28,7 +28,7 @@ void ShadowMapShadows::cast(size_t light) {
   for (int face = 0; face < 6; ++face) {
     map_->begin_face(face);
     drawing_.view_from(position, cube_face_view_projection(position, face, near), size, size);
-    drawing_.draw_nearest_surfaces(shaders::kDistance, light, shaders::kNoShadowTest, [&] { map_->begin_face(face); });
+    drawing_.draw_nearest_surfaces(shaders::kDistance, light, shaders::kNoShadowTest);
   }
   map_->end();
   drawing_.apply_view(drawing_.samples_per_side());  // back to the frame

@@ -35,10 +35,9 @@ void ShadowRenderer::depth_and_ambient_pass(int samples) {
   const glm::vec4 clear(background_sample(background.color, background.transparent));
   glClearColor(clear.r, clear.g, clear.b, clear.a);
   glClearDepth(1.0);
-  const auto clear_frame = [] { glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT); };
-  clear_frame();
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
   last_cast_light_.reset();
-  drawing_->draw_nearest_surfaces(shaders::kAmbient, 0, technique().shadow_test(), clear_frame);
+  drawing_->draw_nearest_surfaces(shaders::kAmbient, 0, technique().shadow_test());
 }
 
 void ShadowRenderer::direct_light_pass(size_t light) {
@@ -62,16 +61,20 @@ void ShadowRenderer::show_volumes_pass() {
 }
 
 void ShadowRenderer::draw(bool show_volumes, const std::function<void()>& while_first_pass_draws) {
-  depth_and_ambient_pass(plan_.settings.frame_samples());
-  glFlush();  // the GL starts on it while the light's passes are prepared (SurfaceBuffers::use_light)
-  if (while_first_pass_draws) while_first_pass_draws();
-  for (size_t i = 0; i < plan_.lights.size(); ++i) {
-    if (!plan_.light_adds_direct[i]) continue;  // adds nothing but its ambient term, already drawn
-    technique().cast(i);
-    last_cast_light_ = i;
-    direct_light_pass(i);
-  }
-  if (show_volumes) show_volumes_pass();
+  bool first = true;
+  do {  // again, those meshes drawn whole, where a back face culled on trust showed
+    depth_and_ambient_pass(plan_.settings.frame_samples());
+    glFlush();  // the GL starts on it while the light's passes are prepared (SurfaceBuffers::use_light)
+    if (first && while_first_pass_draws) while_first_pass_draws();
+    first = false;
+    for (size_t i = 0; i < plan_.lights.size(); ++i) {
+      if (!plan_.light_adds_direct[i]) continue;  // adds nothing but its ambient term, already drawn
+      technique().cast(i);
+      last_cast_light_ = i;
+      direct_light_pass(i);
+    }
+    if (show_volumes) show_volumes_pass();
+  } while (drawing_->back_faces_showed());
 }
 
 void ShadowRenderer::show() const { drawing_->target().show(plan_.settings.width, plan_.settings.height); }
@@ -98,7 +101,9 @@ Image ShadowRenderer::read_image() const {
 std::vector<float> ShadowRenderer::read_depth() const { return drawing_->target().read_depth(); }
 
 std::vector<float> ShadowRenderer::view_depth() {
-  if (drawing_->samples_per_side() != 1) depth_and_ambient_pass(1);
+  if (drawing_->samples_per_side() != 1) do {
+      depth_and_ambient_pass(1);
+    } while (drawing_->back_faces_showed());
   const std::vector<float> window = read_depth();
   const RenderSettings& s = plan_.settings;
   const glm::dmat4 projection = infinite_perspective(plan_.camera.fovy_deg, double(s.width) / s.height, plan_.near_plane);
@@ -119,9 +124,11 @@ std::vector<float> ShadowRenderer::view_depth() {
 void ShadowRenderer::finish() const { glFinish(); }
 
 Image ShadowRenderer::render_mask(size_t light) {
-  depth_and_ambient_pass(1);  // one sample, at the pixel's centre
-  technique().cast(light);
-  mask_passes(light);
+  do {
+    depth_and_ambient_pass(1);  // one sample, at the pixel's centre
+    technique().cast(light);
+    mask_passes(light);
+  } while (drawing_->back_faces_showed());
   return read_mask();
 }
 

@@ -192,7 +192,7 @@ SurfaceBuffers::~SurfaceBuffers() {
   const GLuint arrays[] = {triangle_vao_, box_vao_};
   glDeleteVertexArrays(2, arrays);
   glDeleteTextures(GLsizei(textures_.size()), textures_.data());
-  if (query_ != 0) glDeleteQueries(1, &query_);
+  glDeleteQueries(GLsizei(queries_.size()), queries_.data());
 }
 
 // Each material's texture map, once (materials may share one), for the
@@ -310,21 +310,36 @@ bool SurfaceBuffers::culls(const TriangleGroup& group, const glm::dvec3& viewpoi
   return outside && (group.back_faces == BackFaces::kHidden || (group.back_faces == BackFaces::kHiddenUnlessSeen && !seen));
 }
 
-bool SurfaceBuffers::back_faces_show(const TriangleGroup& group, const glm::dvec3& viewpoint, DrawPacing& pacing) {
-  if (group.back_faces != BackFaces::kHiddenUnlessSeen || !culls(group, viewpoint)) return false;
-  if (query_ == 0) glGenQueries(1, &query_);
+bool SurfaceBuffers::culls_on_trust(const TriangleGroup& group, const glm::dvec3& viewpoint) const {
+  return group.back_faces == BackFaces::kHiddenUnlessSeen && culls(group, viewpoint);
+}
+
+void SurfaceBuffers::ask_whether_back_faces_show(const TriangleGroup& group, DrawPacing& pacing) {
+  if (asked_ == queries_.size()) {
+    queries_.push_back(0);
+    glGenQueries(1, &queries_.back());
+    asked_group_.push_back(0);
+  }
+  asked_group_[asked_] = size_t(&group - groups_.data());
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 4.0f);  // a slope's worth and a few units of depth, as the volumes' caps are pushed
-  glBeginQuery(GL_ANY_SAMPLES_PASSED, query_);
   glEnable(GL_CULL_FACE);
   glCullFace(GL_FRONT);
+  glBeginQuery(GL_ANY_SAMPLES_PASSED, queries_[asked_++]);
   draw_triangles(group, pacing);
   glEndQuery(GL_ANY_SAMPLES_PASSED);
   glDisable(GL_POLYGON_OFFSET_FILL);
-  GLuint shown = 0;
-  glGetQueryObjectuiv(query_, GL_QUERY_RESULT, &shown);
-  if (shown) back_faces_seen_[size_t(&group - groups_.data())] = 1;
-  return shown != 0;
+}
+
+bool SurfaceBuffers::back_faces_showed() {
+  bool shown = false;
+  for (size_t k = 0; k < asked_; ++k) {
+    GLuint passed = 0;
+    glGetQueryObjectuiv(queries_[k], GL_QUERY_RESULT, &passed);
+    if (passed) back_faces_seen_[asked_group_[k]] = 1, shown = true;
+  }
+  asked_ = 0;
+  return shown;
 }
 
 void SurfaceBuffers::draw_triangle_group(const TriangleGroup& group, const glm::dvec3& viewpoint, DrawPacing& pacing) const {

@@ -40,14 +40,18 @@ class SurfaceBuffers {
   // They are sent through `pacing`.
   void draw_triangle_group(const TriangleGroup& group, const glm::dvec3& viewpoint, DrawPacing& pacing) const;
   // Where `group`'s back faces are culled on trust (BackFaces::kHiddenUnlessSeen)
-  // from `viewpoint`: whether one would show, with every surface's depth
-  // already drawn. Its back faces are drawn a little behind where they are
+  // from `viewpoint`, with every surface's depth already drawn: asks whether
+  // one would show. Its back faces are drawn a little behind where they are
   // (a polygon offset, which a back face folded against a front face along
-  // a silhouette edge never beats), with the depth test and no writes, and
-  // an occlusion query counts the samples that pass. Where any does, a shell
-  // crosses itself in sight: the group is drawn whole from then on, and
-  // true is returned for the caller to draw again.
-  bool back_faces_show(const TriangleGroup& group, const glm::dvec3& viewpoint, DrawPacing& pacing);
+  // a silhouette edge never beats), with the depth test and no writes, under
+  // an occlusion query. Only where culls_on_trust, with a program that
+  // places the triangles as the triangle shader does.
+  bool culls_on_trust(const TriangleGroup& group, const glm::dvec3& viewpoint) const;
+  void ask_whether_back_faces_show(const TriangleGroup& group, DrawPacing& pacing);
+  // The answers to every question asked since last time, waiting for them:
+  // whether some back face showed. Where one did, a shell crosses itself in
+  // sight, and its group is drawn whole from then on.
+  bool back_faces_showed();
   void draw_sphere_box() const;
   // Light `light`, at `position`, for the triangles drawn next: each
   // triangle's exact side of it (the orientation predicate), for the shader
@@ -88,10 +92,14 @@ class SurfaceBuffers {
   std::vector<uint8_t> light_codes_;  // kept so that a moving light allocates nothing
 
   std::vector<TriangleGroup> groups_;
-  std::vector<uint8_t> back_faces_seen_;  // per group: back_faces_show found some
+  std::vector<uint8_t> back_faces_seen_;  // per group: some showed, so it is drawn whole
   bool culls(const TriangleGroup& group, const glm::dvec3& viewpoint) const;
   void draw_triangles(const TriangleGroup& group, DrawPacing& pacing) const;  // with the culling as it is set
-  unsigned query_ = 0;  // back_faces_show's, made when first asked
+  // Occlusion queries, made as needed and kept; the first `asked_` are
+  // waiting for their answers, each about group `asked_group_[k]`.
+  std::vector<unsigned> queries_;
+  std::vector<size_t> asked_group_;
+  size_t asked_ = 0;
   unsigned triangle_vao_ = 0, triangle_vbo_ = 0;
   unsigned color_vbo_ = 0;  // per vertex, parallel to triangle_vbo_; only when some mesh has vertex colours
   unsigned uv_vbo_ = 0;     // likewise, texture coordinates; only when some mesh has them

@@ -11,6 +11,7 @@
 #include "scene/scene_parser.hpp"
 #include "tests/mesh/mesh_builders.hpp"
 #include "tests/render/image_agreement.hpp"
+#include "tests/render/mask_comparison.hpp"
 #include "tests/scratch_folder.hpp"
 
 namespace umbra {
@@ -38,8 +39,10 @@ TEST_F(ShellCulling, CrossingShellsAreCulledAsTheyAreNotTurned) {
 
 TEST_F(ShellCulling, AShellWithAnInsideOutLobeIsDrawnWhole) {
   const Scene scene = scene_of(test::bow_tie_prism());
-  EXPECT_EQ(scene.meshes[0].back_faces, BackFaces::kHiddenUnlessSeen);
+  EXPECT_EQ(scene.meshes[0].back_faces, BackFaces::kHiddenUnlessSeen);  // the picture finds the lobe
   test::expect_images_agree(scene, test::render_gl_and_ray_cast(scene, 120));
+  test::expect_masks_match_reference(scene, 120, 120, 48);
+  test::expect_images_agree(scene, test::render_gl_and_ray_cast(scene, 120, RenderMethod::kShadowMap));
 }
 
 TEST_F(ShellCulling, ACleanSolidIsCulledAndAnInwardOneTurnedFirst) {
