@@ -12,10 +12,14 @@
 # glTF binary (GLB).
 # The folder: CGAL's 143 data meshes.
 #
-#   bench/check_benchmark.sh [RUNS]     (after ./build.sh; default 5 rounds)
+#   bench/check_benchmark.sh [RUNS] [render]   (after ./build.sh; default 5 rounds)
+# With `render`, only admesh and the two renders run: rounds of three rows,
+# so that admesh and the 1.2M render run next to each other.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=${1:-5}
+only=${2:-}
+[ -z "$only" ] || [ "$only" = render ] || { echo "usage: bench/check_benchmark.sh [RUNS] [render]" >&2; exit 2; }
 build=build
 data=$build/bench-data
 mkdir -p "$data"
@@ -58,6 +62,12 @@ rows=(
   "umbra check --jobs 1 on CGAL's 143 data meshes|$build/umbra check --jobs 1 $data/data/meshes"
   "umbra check --jobs $(nproc) on CGAL's 143 data meshes|$build/umbra check $data/data/meshes"
 )
+# The rows `render` keeps (their numbers stay, as the ratios below name them).
+if [ "$only" = render ]; then
+  for k in "${!rows[@]}"; do
+    case $k in 0 | 6 | 7) ;; *) unset "rows[$k]" ;; esac
+  done
+fi
 rm -f "$data"/time-*.txt
 for ((i = 0; i < runs; i++)); do
   # The 1.2M inputs read once, untimed, so that the kernel's cache holds
@@ -82,14 +92,19 @@ ratio() {
   paste -d' ' "$data/time-$1.txt" "$data/time-$2.txt" |
     awk -v c="${3:-1}" '{printf "%.4f\n", $c / $(c + NF / 2)}' | median | awk '{printf "%.2f", $1}'
 }
+# ratio_row NAME A B [COLUMN]: a table row, where both rows ran
+ratio_row() {
+  [ -n "${rows[$2]+x}" ] && [ -n "${rows[$3]+x}" ] || return 0
+  echo "| $1 | $(ratio "$2" "$3" "${4:-1}") |"
+}
 echo
 echo "| ratio (median of the rounds' ratios) | measured |"
 echo "|---|---|"
-echo "| umbra check / admesh, time (1.2M triangles, STL) | $(ratio 1 0) |"
-echo "| umbra check / admesh, memory | $(ratio 1 0 2) |"
-echo "| umbra check, every core / one core | $(ratio 1 2) |"
-echo "| umbra check without the self-intersection search / admesh, time | $(ratio 3 0) |"
-echo "| umbra render (1.2M, OBJ, 800x800) / admesh, time | $(ratio 6 0) |"
-echo "| umbra render (1.2M) / admesh, memory | $(ratio 6 0 2) |"
-echo "| umbra render, 4.8M / 1.2M triangles, time | $(ratio 7 6) |"
-echo "| umbra check on a folder, --jobs $(nproc) / --jobs 1, time | $(ratio 9 8) |"
+ratio_row "umbra check / admesh, time (1.2M triangles, STL)" 1 0
+ratio_row "umbra check / admesh, memory" 1 0 2
+ratio_row "umbra check, every core / one core" 1 2
+ratio_row "umbra check without the self-intersection search / admesh, time" 3 0
+ratio_row "umbra render (1.2M, OBJ, 800x800) / admesh, time" 6 0
+ratio_row "umbra render (1.2M) / admesh, memory" 6 0 2
+ratio_row "umbra render, 4.8M / 1.2M triangles, time" 7 6
+ratio_row "umbra check on a folder, --jobs $(nproc) / --jobs 1, time" 9 8
