@@ -368,7 +368,7 @@ TEST(MeshCheck, OneFlippedFaceIsNamedAsTheFaceToFlip) {
 }
 
 TEST(MeshCheck, AHollowSolidsInnerShellFacingItsCavityIsNotInward) {
-  const MeshReport right = check_mesh(hollow_cube());
+  const MeshReport right = check_mesh(test::hollow_cube());
   ASSERT_EQ(right.components.size(), 2u);
   EXPECT_EQ(right.inward_components, 0u);
   EXPECT_EQ(right.components[0].outward, true);
@@ -380,7 +380,7 @@ TEST(MeshCheck, AHollowSolidsInnerShellFacingItsCavityIsNotInward) {
   EXPECT_EQ(wrong.components[0].outward, true);
   EXPECT_EQ(wrong.components[1].outward, false);
   // Three nested shells: the innermost (depth 2) is solid again and faces out.
-  const MeshReport three = check_mesh(test::combine(hollow_cube(), test::box_triangles(glm::dvec3(1.25), glm::dvec3(1.75))));
+  const MeshReport three = check_mesh(test::combine(test::hollow_cube(), test::box_triangles(glm::dvec3(1.25), glm::dvec3(1.75))));
   EXPECT_EQ(three.inward_components, 0u);
 }
 
@@ -402,7 +402,7 @@ TEST(MeshCheck, ShellsThatCrossHaveNoDecidedFacing) {
       EXPECT_FALSE(c.outward.has_value());
     }
   }
-  const MeshReport bow_tie = check_mesh(bow_tie_prism());
+  const MeshReport bow_tie = check_mesh(test::bow_tie_prism());
   ASSERT_EQ(bow_tie.components.size(), 1u);
   EXPECT_TRUE(bow_tie.components[0].closed);
   EXPECT_GT(bow_tie.self_intersections.face_pairs, 0u);
@@ -411,7 +411,7 @@ TEST(MeshCheck, ShellsThatCrossHaveNoDecidedFacing) {
   // Without the search nothing shows that a shell is clean: undecided too.
   CheckOptions no_search;
   no_search.self_intersection_seconds = 0.0;
-  const MeshReport unsearched = check_mesh(hollow_cube(), no_search);
+  const MeshReport unsearched = check_mesh(test::hollow_cube(), no_search);
   EXPECT_EQ(unsearched.undecided_components, 2u);
   EXPECT_EQ(unsearched.inward_components, 0u);
 }
