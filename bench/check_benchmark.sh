@@ -34,7 +34,7 @@ subdivided_bunny "$data" 1M
 subdivided_bunny "$data" 4M
 # The folder the last two rows check: every one of CGAL's data meshes
 # (subdivided_bunny takes only the bunny from the archive).
-tar xzf /usr/share/doc/libcgal-dev/data.tar.gz -C "$data" data/meshes
+[ "$only" = render ] || tar xzf /usr/share/doc/libcgal-dev/data.tar.gz -C "$data" data/meshes
 # The bunny just above a floor under one light, as in the bundled mesh scenes,
 # inside the cube [-1,1]^3 that scenes are made for.
 for size in 1M 4M; do
