@@ -9,9 +9,12 @@
 #include <cmath>
 #include <numeric>
 
+#include <glm/trigonometric.hpp>
+
 #include "mesh/topology/crease_normals.hpp"
 #include "mesh/topology/half_edge_mesh.hpp"
 #include "mesh/check/mesh_check.hpp"
+#include "scene/mesh_loader.hpp"
 #include "scene/scene_parser.hpp"
 #include "scene/terminator.hpp"
 #include "render/headless_context.hpp"
@@ -284,6 +287,35 @@ BENCHMARK(BM_RenderFrame)
     ->Args({800, 640, 1, 1})  // 1.02M triangles: the light orbiting, and still
     ->Args({800, 640, 1, 0})
     ->Unit(benchmark::kMillisecond);
+
+// A frame of `umbra view` with the camera orbiting (a degree about the z
+// axis a frame), the light still: the 1M-triangle torus as loading leaves a
+// closed mesh, its back faces culled and the picture asked at each new view
+// whether one shows (argument 0), or settled by a search before the first
+// frame, as umbra view does (argument 1: nothing asked).
+void BM_ViewFrameCameraOrbiting(benchmark::State& state) {
+  Scene scene = torus_over_a_floor(800, 640, false);
+  scene.camera = {{1.6, -2.2, 1.4}, {0.0, 0.0, -0.3}, {0.0, 0.0, 1.0}, 45.0};
+  scene.meshes[0].back_faces = BackFaces::kHiddenUnlessSeen;  // closed, facing out, not searched
+  if (state.range(0) == 1) settle_back_faces_by_search(scene);
+  const std::vector<MeshCaster> casters = prepare_mesh_casters(scene);
+  RenderSettings settings;
+  settings.width = settings.height = 400;
+  HeadlessContext context(400, 400);
+  RenderPlan plan = make_render_plan(scene, casters, settings);
+  ShadowRenderer renderer(scene, plan, DrawSending::kWhole);
+  const glm::dvec3 target = scene.camera.target;
+  for (auto _ : state) {
+    const glm::dvec3 arm = scene.camera.eye - target;
+    const double turn = glm::radians(1.0);
+    scene.camera.eye = target + glm::dvec3(arm.x * std::cos(turn) - arm.y * std::sin(turn),
+                                           arm.x * std::sin(turn) + arm.y * std::cos(turn), arm.z);
+    update_render_view(scene, plan);
+    renderer.draw(false, [&] { update_render_lights(scene, casters, plan); });
+    renderer.finish();
+  }
+}
+BENCHMARK(BM_ViewFrameCameraOrbiting)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace umbra

@@ -7,6 +7,7 @@
 #include <exception>
 #include <filesystem>
 #include <limits>
+#include <numeric>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -16,6 +17,7 @@
 #include <tbb/parallel_for.h>
 
 #include "mesh/check/mesh_check.hpp"
+#include "mesh/check/self_intersections.hpp"
 #include "mesh/io/mesh_file.hpp"
 #include "mesh/predicates/orientation.hpp"
 #include "mesh/topology/crease_normals.hpp"
@@ -211,6 +213,19 @@ void load_scene_meshes(std::vector<MeshStatement> statements, Scene& scene, cons
       if (!m.components.all_cast_from_silhouette()) warn(m.where, named + " is " + m.components.phrase() + ": " + m.components.volume_phrase());
     }
     scene.meshes.push_back(std::move(m));
+  }
+}
+
+void settle_back_faces_by_search(Scene& scene) {
+  for (Mesh& m : scene.meshes) {
+    if (m.back_faces != BackFaces::kHiddenUnlessSeen) continue;
+    // Each triangle its own face: two triangles of one polygon lie side by
+    // side, and cross only where the polygon does.
+    std::vector<uint32_t> own_face(m.triangles.size());
+    std::iota(own_face.begin(), own_face.end(), 0u);
+    const SelfIntersections found =
+        find_self_intersections(m.positions, m.triangles, own_face, std::numeric_limits<double>::infinity(), 0);
+    m.back_faces = found.face_pairs == 0 ? BackFaces::kHidden : BackFaces::kDrawn;
   }
 }
 

@@ -37,4 +37,13 @@ struct MeshStatement {
 void load_scene_meshes(std::vector<MeshStatement> statements, Scene& scene, const MeshLoadProgress& progress,
                        const TextureMaps& maps = {});
 
+// For a caller that draws one scene from many views (umbra view's window).
+// Loading leaves a closed mesh's self-crossings to the picture
+// (BackFaces::kHiddenUnlessSeen): an occlusion query at each new view,
+// whose answer a frame waits for. Instead, each such mesh is searched
+// once, on every core: kHidden where no two of its triangles cross, kDrawn
+// where some do (drawn whole, as the picture would draw it where a back
+// face showed). The pictures are the same either way.
+void settle_back_faces_by_search(Scene& scene);
+
 }  // namespace umbra

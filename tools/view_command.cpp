@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "scene/mesh_loader.hpp"
 #include "scene/scene_checks.hpp"
 #include "scene/scene_parser.hpp"
 #include "scene/staged_scene.hpp"
@@ -214,6 +215,13 @@ int run_view_command(const std::vector<std::string>& argv) {
     }, nullptr, staging_for(options.staging, options.settings), TextureMaps{true, "", options.any_texture_path});
     progress->clear();
     for (const Warning& w : parsed.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
+    // The camera moves, so the picture would be asked about back faces at
+    // every new view: one search now instead (mesh_loader.hpp).
+    if (std::any_of(parsed.meshes.begin(), parsed.meshes.end(),
+                    [](const Mesh& m) { return m.back_faces == BackFaces::kHiddenUnlessSeen; })) {
+      progress->update(1, "searching the meshes for faces that cross");
+      settle_back_faces_by_search(parsed);
+    }
     progress->update(1, "preparing shadow volumes");
     Scene check = parsed;
     rotate_lights_about_z(check, angle);

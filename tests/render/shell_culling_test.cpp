@@ -5,9 +5,11 @@
 // (BackFaces::kHiddenUnlessSeen); where one must be turned, a search decides.
 // Two shells that cross each other are culled as they are, neither turned; a
 // shell whose walls cross (a lobe turned inside out) is drawn whole once its
-// back faces show; either way the picture is the ray-cast reference's.
+// back faces show; either way the picture is the ray-cast reference's. A
+// caller drawing many views searches once instead of asking at each.
 #include <gtest/gtest.h>
 
+#include "scene/mesh_loader.hpp"
 #include "scene/scene_parser.hpp"
 #include "tests/mesh/mesh_builders.hpp"
 #include "tests/render/image_agreement.hpp"
@@ -57,6 +59,20 @@ TEST_F(ShellCulling, ACleanSolidIsCulledAndAnInwardOneTurnedFirst) {
   const Scene hollow = scene_of(test::hollow_cube());
   EXPECT_EQ(hollow.meshes[0].back_faces, BackFaces::kDrawn);
   test::expect_images_agree(hollow, test::render_gl_and_ray_cast(hollow, 120));
+}
+
+// umbra view searches once before its first frame rather than asking the
+// picture at every view: the same pictures, with nothing left to ask.
+TEST_F(ShellCulling, ASearchSettlesWhatThePictureWouldHaveAsked) {
+  Scene clean = scene_of(test::unit_cube()), lobed = scene_of(test::bow_tie_prism());
+  Scene inward = scene_of(test::all_reversed(test::unit_cube())), hollow = scene_of(test::hollow_cube());
+  for (Scene* scene : {&clean, &lobed, &inward, &hollow}) settle_back_faces_by_search(*scene);
+  EXPECT_EQ(clean.meshes[0].back_faces, BackFaces::kHidden);
+  EXPECT_EQ(lobed.meshes[0].back_faces, BackFaces::kDrawn);  // its lobe's walls cross
+  EXPECT_EQ(inward.meshes[0].back_faces, BackFaces::kHidden);  // searched at load: as it was
+  EXPECT_EQ(hollow.meshes[0].back_faces, BackFaces::kDrawn);
+  test::expect_images_agree(clean, test::render_gl_and_ray_cast(clean, 120));
+  test::expect_images_agree(lobed, test::render_gl_and_ray_cast(lobed, 120));
 }
 
 }  // namespace
