@@ -14,10 +14,13 @@ namespace umbra {
 // 0.98 takes 1.26 of light.
 enum class ToneCurve { kClip, kSoft };
 
+// Where kSoft's shoulder starts. (The window's picture takes the same curve
+// in a shader, render/shaders.hpp's kShowFragment, with this knee.)
+constexpr double kToneKnee = 0.8;
+
 inline double toned(double light, ToneCurve curve) {
-  constexpr double kKnee = 0.8;
-  if (curve == ToneCurve::kClip || light <= kKnee) return light;
-  return kKnee + (1.0 - kKnee) * (1.0 - std::exp(-(light - kKnee) / (1.0 - kKnee)));
+  if (curve == ToneCurve::kClip || light <= kToneKnee) return light;
+  return kToneKnee + (1.0 - kToneKnee) * (1.0 - std::exp(-(light - kToneKnee) / (1.0 - kToneKnee)));
 }
 
 }  // namespace umbra

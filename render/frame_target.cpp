@@ -8,14 +8,19 @@
 #include "image/image.hpp"
 #include "render/gl.hpp"
 #include "render/gl_functions.hpp"
+#include "render/shader_program.hpp"
+#include "render/shaders.hpp"
 
 namespace umbra {
 
-FrameTarget::~FrameTarget() { release(); }
+FrameTarget::~FrameTarget() {
+  release();
+  if (show_vao_) glDeleteVertexArrays(1, &show_vao_);
+}
 
 void FrameTarget::release() {
   if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
-  if (colour_) glDeleteRenderbuffers(1, &colour_);
+  if (colour_) glDeleteTextures(1, &colour_);
   if (depth_stencil_) glDeleteRenderbuffers(1, &depth_stencil_);
   if (count_framebuffer_) glDeleteFramebuffers(1, &count_framebuffer_);
   if (count_) glDeleteTextures(1, &count_);
@@ -30,15 +35,19 @@ void FrameTarget::bind(int width, int height) {
   }
   release();
   require_image_size(width, height, "OpenGL");
-  glGenRenderbuffers(1, &colour_);
-  glBindRenderbuffer(GL_RENDERBUFFER, colour_);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA32F, width, height);
+  glGenTextures(1, &colour_);
+  glBindTexture(GL_TEXTURE_2D, colour_);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+  glBindTexture(GL_TEXTURE_2D, 0);
   glGenRenderbuffers(1, &depth_stencil_);
   glBindRenderbuffer(GL_RENDERBUFFER, depth_stencil_);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
   glGenFramebuffers(1, &framebuffer_);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour_, 0);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_stencil_);
   require_complete("the frame's framebuffer (RGBA32F, 24-bit depth, 8-bit stencil)", width, height);
   width_ = width;
@@ -78,11 +87,35 @@ void FrameTarget::bind_count() {
 
 void FrameTarget::bind_colour() const { glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_); }
 
-void FrameTarget::show(int width, int height) const {
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
-                    width == width_ && height == height_ ? GL_NEAREST : GL_LINEAR);
+void FrameTarget::show(int width, int height, ToneCurve curve, const glm::vec3& nothing, unsigned into) const {
+  if (!show_program_) {
+    show_program_ = std::make_unique<ShaderProgram>("show", shaders::kShowVertex, shaders::kShowFragment);
+    glGenVertexArrays(1, &show_vao_);  // a core profile draws only with one bound; the triangle needs no attributes
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, into);
+  glViewport(0, 0, width, height);
+  GLboolean enabled[4];
+  const GLenum states[4] = {GL_DEPTH_TEST, GL_STENCIL_TEST, GL_BLEND, GL_CULL_FACE};
+  for (int k = 0; k < 4; ++k) {
+    enabled[k] = glIsEnabled(states[k]);
+    glDisable(states[k]);
+  }
+  glActiveTexture(GL_TEXTURE0 + shaders::kShownFrameUnit);
+  glBindTexture(GL_TEXTURE_2D, colour_);
+  show_program_->use();
+  show_program_->set("frame", int(shaders::kShownFrameUnit));
+  show_program_->set("samples", width > 0 ? width_ / width : 1);
+  show_program_->set("soft", curve == ToneCurve::kSoft ? 1 : 0);
+  show_program_->set("knee", float(kToneKnee));
+  show_program_->set("nothing", nothing);
+  glBindVertexArray(show_vao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glActiveTexture(GL_TEXTURE0 + shaders::kMaterialTextureUnit);
+  for (int k = 0; k < 4; ++k)
+    if (enabled[k]) glEnable(states[k]);
+  glViewport(0, 0, width_, height_);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
 }
 

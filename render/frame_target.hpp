@@ -18,11 +18,17 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "image/tone_curve.hpp"
+
 namespace umbra {
+
+class ShaderProgram;
 
 class FrameTarget {
  public:
@@ -40,10 +46,12 @@ class FrameTarget {
   void bind_colour() const;
   // The count as a texture, for the lit passes to read (texelFetch).
   unsigned count_texture() const { return count_; }
-  // Copies the colour to the default framebuffer (the window) at width x
-  // height, converted to its format by the GL (and scaled, filtered, when
-  // supersampled), and leaves the target bound.
-  void show(int width, int height) const;
+  // Draws the colour into framebuffer `into` (0: the window) at width x
+  // height, each block of samples x samples pixels averaged into one and
+  // toned by `curve` as a picture's pixels are (put_pixel_mean, over
+  // `nothing`, the sample that sees no surface), rounded by the GL to the
+  // window's format; leaves the target bound.
+  void show(int width, int height, ToneCurve curve, const glm::vec3& nothing, unsigned into = 0) const;
   // The colour, each block of samples x samples pixels averaged (in double)
   // into one: `pixel` gets each mean with its column and its row counted
   // from the top, to round once (pixel_mean.hpp, as the ray-cast reference
@@ -65,7 +73,9 @@ class FrameTarget {
   // Throws, naming `what`, unless the bound framebuffer is complete.
   void require_complete(const char* what, int width, int height);  // throws, saying the frame's size, unless complete
   int width_ = 0, height_ = 0;
-  unsigned framebuffer_ = 0, colour_ = 0, depth_stencil_ = 0;
+  unsigned framebuffer_ = 0, colour_ = 0, depth_stencil_ = 0;  // the colour a texture, which show reads
+  mutable std::unique_ptr<ShaderProgram> show_program_;  // made on first show
+  mutable unsigned show_vao_ = 0;
   unsigned count_framebuffer_ = 0, count_ = 0;
 };
 

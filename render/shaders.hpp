@@ -19,7 +19,7 @@ enum ShadowTest { kNoShadowTest = 0, kShadowMapTest = 1, kVolumeCountTest = 2 };
 // The texture units the surface shaders sample: a triangle's material map,
 // the cube shadow map, the volumes' count, and each triangle's light code
 // (SurfaceBuffers::use_light). Unit 0 is the one left active.
-enum TextureUnit { kMaterialTextureUnit = 0, kShadowMapUnit = 1, kVolumeCountUnit = 2, kLightCodeUnit = 3 };
+enum TextureUnit { kMaterialTextureUnit = 0, kShadowMapUnit = 1, kVolumeCountUnit = 2, kLightCodeUnit = 3, kShownFrameUnit = 4 };
 
 // Phong shading shared by triangles and spheres; `n` is the surface's unit
 // normal, turned here to the side facing the camera, and `s` the one it is
@@ -348,6 +348,40 @@ void main() { gl_Position = view_projection * vec4(position, 1.0); }
 )";
 inline constexpr const char* kDepthFragment = R"(#version 330 core
 void main() {}
+)";
+
+// What the window shows of the frame (FrameTarget::show): each pixel the
+// mean of its block of samples x samples, and with the soft curve, the
+// surfaces' part of it toned as image/pixel_mean.hpp's put_pixel_mean tones
+// a picture's (the curve of image/tone_curve.hpp, in float), over the
+// colour of a sample that sees nothing. One triangle covers the window.
+inline constexpr const char* kShowVertex = R"(#version 330 core
+void main() { gl_Position = vec4(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0, 0.0, 1.0); }
+)";
+inline constexpr const char* kShowFragment = R"(#version 330 core
+uniform sampler2D frame;
+uniform int samples;     // per side of a pixel's block
+uniform int soft;        // 1: ToneCurve::kSoft; 0: kClip, the mean as it is
+uniform float knee;      // kToneKnee
+uniform vec3 nothing;    // a sample that sees no surface
+out vec4 shown;
+float toned(float light) {
+  return light <= knee ? light : knee + (1.0 - knee) * (1.0 - exp(-(light - knee) / (1.0 - knee)));
+}
+void main() {
+  ivec2 first = ivec2(gl_FragCoord.xy) * samples;
+  vec4 sum = vec4(0.0);
+  for (int j = 0; j < samples; ++j)
+    for (int i = 0; i < samples; ++i) sum += texelFetch(frame, first + ivec2(i, j), 0);
+  vec4 mean = sum / float(samples * samples);
+  vec3 colour = mean.rgb;
+  if (soft == 1) {
+    vec3 behind = (1.0 - mean.a) * nothing;
+    vec3 surface = mean.a > 0.0 ? (colour - behind) / mean.a : vec3(0.0);
+    colour = mean.a * vec3(toned(surface.r), toned(surface.g), toned(surface.b)) + behind;
+  }
+  shown = vec4(colour, 1.0);
+}
 )";
 
 // The volume pass: each volume face adds +1 or -1 to the count at its pixel

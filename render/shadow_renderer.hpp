@@ -40,8 +40,13 @@ class ShadowRenderer {
   // ambient light, which reads no light's volumes) is sent, before any
   // light's: it may update the plan's lights, but not its camera or size.
   void draw(bool show_volumes, const std::function<void()>& while_first_pass_draws = nullptr);
-  // Copies the frame to the default framebuffer (a window), rounded there.
-  void show() const;
+  // Draws the frame into framebuffer `into` (0: the default one, a window)
+  // as the picture read back from it would be: the mean of each pixel's
+  // samples, toned by the scene's curve, rounded there.
+  void show(unsigned into = 0) const;
+  // What show draws, read back from an 8-bit framebuffer of the frame's
+  // size (as a window holds it): how a headless test sees the window.
+  Image read_shown() const;
   // Waits until the GL has finished every command so far (for timing).
   void finish() const;
   // The shaded image (RGB, or RGBA where the scene's background is
