@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # What a moving light costs `umbra view`: the median frame time of the
 # 1.2M-triangle bunny (that check_benchmark.sh makes) at 800x800 under Xvfb,
-# with the light orbiting and with it paused, rows alternating, and against
-# an earlier build when BEFORE names its umbra executable:
+# one sample a pixel (--antialias 1: a still view would be drawn with the
+# staged model's 3 x 3), with the light orbiting and with it paused, rows
+# alternating, and against an earlier build when BEFORE names its umbra
+# executable:
 #   bench/view_orbit_benchmark.sh [RUNS] [FRAMES]   (after ./build.sh; defaults 5, 30)
 #   BEFORE=/tmp/umbra-old bench/view_orbit_benchmark.sh
 # Each run prints its median over FRAMES - 1 frames (umbra view --frames);
@@ -29,7 +31,7 @@ for ((i = 0; i < runs; i++)); do
   for k in "${!rows[@]}"; do
     IFS='|' read -r _ exe flag <<< "${rows[$k]}"
     # shellcheck disable=SC2086 # the flag is empty or one word
-    xvfb-run -a -s "-screen 0 1024x1024x24" "$exe" view "$data/bunny-1M.glb" --size 800x800 --frames "$frames" $flag 2>&1 |
+    xvfb-run -a -s "-screen 0 1024x1024x24" "$exe" view "$data/bunny-1M.glb" --size 800x800 --antialias 1 --frames "$frames" $flag 2>&1 |
       sed -n 's/.*median \([0-9.]*\) ms.*/\1/p' >> "$data/orbit-$k.txt"
   done
 done

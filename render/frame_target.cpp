@@ -115,8 +115,6 @@ void FrameTarget::show(int width, int height, ToneCurve curve, const glm::vec3& 
   glActiveTexture(GL_TEXTURE0 + shaders::kMaterialTextureUnit);
   for (int k = 0; k < 4; ++k)
     if (enabled[k]) glEnable(states[k]);
-  glViewport(0, 0, width_, height_);
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
 }
 
 void FrameTarget::for_each_pixel_mean(int samples, const std::function<void(int, int, const glm::dvec4&)>& pixel,

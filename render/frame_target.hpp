@@ -50,7 +50,8 @@ class FrameTarget {
   // height, each block of samples x samples pixels averaged into one and
   // toned by `curve` as a picture's pixels are (put_pixel_mean, over
   // `nothing`, the sample that sees no surface), rounded by the GL to the
-  // window's format; leaves the target bound.
+  // window's format. Leaves `into` bound, at its size (for an overlay over
+  // it); the next bind binds the target again.
   void show(int width, int height, ToneCurve curve, const glm::vec3& nothing, unsigned into = 0) const;
   // The colour, each block of samples x samples pixels averaged (in double)
   // into one: `pixel` gets each mean with its column and its row counted

@@ -103,6 +103,7 @@ bool WindowContext::should_close() const { return glfwWindowShouldClose(glfw_->w
 void WindowContext::close() { glfwSetWindowShouldClose(glfw_->window, GLFW_TRUE); }
 void WindowContext::swap_buffers() { glfwSwapBuffers(glfw_->window); }
 void WindowContext::poll_events() { glfwPollEvents(); }
+void WindowContext::wait_events(double seconds) { glfwWaitEventsTimeout(seconds); }
 void WindowContext::set_title(const std::string& title) { glfwSetWindowTitle(glfw_->window, title.c_str()); }
 void WindowContext::framebuffer_size(int& width, int& height) const { glfwGetFramebufferSize(glfw_->window, &width, &height); }
 double WindowContext::time_seconds() const { return glfwGetTime(); }

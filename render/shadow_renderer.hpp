@@ -42,7 +42,8 @@ class ShadowRenderer {
   void draw(bool show_volumes, const std::function<void()>& while_first_pass_draws = nullptr);
   // Draws the frame into framebuffer `into` (0: the default one, a window)
   // as the picture read back from it would be: the mean of each pixel's
-  // samples, toned by the scene's curve, rounded there.
+  // samples, toned by the scene's curve, rounded there. Leaves `into`
+  // bound, for an overlay; the next draw binds the frame again.
   void show(unsigned into = 0) const;
   // What show draws, read back from an 8-bit framebuffer of the frame's
   // size (as a window holds it): how a headless test sees the window.

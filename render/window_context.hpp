@@ -21,6 +21,8 @@ class WindowContext {
   void close();
   void swap_buffers();
   void poll_events();
+  // Waits for an event, at most `seconds`, then handles what came.
+  void wait_events(double seconds);
   void set_title(const std::string& title);
   void framebuffer_size(int& width, int& height) const;
   double time_seconds() const;

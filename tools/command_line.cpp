@@ -235,6 +235,10 @@ void add_map_size_option(CommandOptions& options, int& texels) {
   options.value("--map-size", [&](const std::string& o, const std::string& t) { texels = parse_int_in(o, t, 16, 8192); });
 }
 
+void add_antialias_option(CommandOptions& options, std::optional<int>& samples) {
+  options.value("--antialias", [&](const std::string& o, const std::string& t) { samples = parse_int_in(o, t, 1, 4); });
+}
+
 namespace {
 
 // "X,Y,Z": three finite numbers.

@@ -102,6 +102,7 @@ void add_light_angle_option(CommandOptions& options, double& degrees);          
 void add_segments_option(CommandOptions& options, int& segments);                     // --segments N
 void add_method_option(CommandOptions& options, RenderMethod& method);                // --method M
 void add_map_size_option(CommandOptions& options, int& texels);                       // --map-size N
+void add_antialias_option(CommandOptions& options, std::optional<int>& samples);       // --antialias N (1 to 4)
 void add_output_option(CommandOptions& options, std::string& path);                   // -o, --output
 void add_gl_option(CommandOptions& options, HeadlessGl& gl);                         // --gl auto|egl|osmesa
 // The platform --gl chose, where auto takes UMBRA_GL's: checked once, before

@@ -11,7 +11,7 @@ void add_picture_choices(CommandOptions& options, PictureChoices& c) {
   add_method_option(options, c.settings.method);
   add_map_size_option(options, c.settings.shadow_map_size);
   add_gl_option(options, c.gl);
-  options.value("--antialias", [&](const std::string& n, const std::string& t) { c.antialias = parse_int_in(n, t, 1, 4); });
+  add_antialias_option(options, c.antialias);
   options.flag("--antialias-all", c.antialias_all);
   options.flag("--show-volumes", c.show_volumes);
   add_staging_options(options, c.staging, c.staging_given);

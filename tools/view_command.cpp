@@ -64,6 +64,16 @@ options:
   --speed DEG          degrees per second the light turns (default 30)
   --paused             start with the light paused
   --segments N         sphere segments (default 64)
+  --antialias N        N x N samples per pixel (1 to 4) for a view that
+                       stands still: while the light or the camera moves,
+                       each frame is one sample a pixel; once a frame would
+                       be drawn as the last was, it is drawn once more with
+                       N x N samples at every pixel, averaged (as umbra
+                       render --antialias-all draws it), and shown as it is
+                       until something changes (--frames draws every
+                       frame). Default as umbra render's: 3
+                       for a MESH, the scene's antialias statement (else 1)
+                       for a SCENE
   --up AXIS            for a MESH: its axis that points up (see umbra render
                        --help)
   --camera-azimuth DEG, --camera-elevation DEG, --camera-zoom F, --fov DEG,
@@ -92,6 +102,7 @@ struct ViewOptions {
   std::vector<std::string> staging_given;
   bool any_texture_path = false;
   RenderSettings settings;
+  std::optional<int> antialias;  // a still view's samples per side; unset: the scene's (default_antialias)
   double light_angle_deg = 0.0;
   double speed_deg_per_s = 30.0;
   bool paused = false;
@@ -113,6 +124,7 @@ ViewOptions parse_view_options(const std::vector<std::string>& argv) {
   add_segments_option(options, o.settings.sphere_segments);
   add_method_option(options, o.settings.method);
   add_map_size_option(options, o.settings.shadow_map_size);
+  add_antialias_option(options, o.antialias);
   options.value("--frames", [&](const std::string& n, const std::string& t) { o.frames = parse_int_in(n, t, 1, 1 << 30); });
   options.value("--screenshot", [&](const std::string&, const std::string& t) { o.screenshot = t; });
   options.flag("--overlay-in-screenshot", o.overlay_in_screenshot);
@@ -151,6 +163,21 @@ struct LoadedScene {
   std::vector<MeshCaster> meshes;
   std::unique_ptr<RenderPlan> plan;
   std::unique_ptr<ShadowRenderer> renderer;
+  int still_samples = 1;  // per side, for a view that stands still
+  int generation = 0;     // how many loads made it
+};
+
+// What a frame shows: where it is the last frame's, the view stands still.
+struct ViewState {
+  Camera camera;
+  double light_angle_deg = 0.0;
+  RenderSettings settings;  // one sample
+  bool show_volumes = false;
+  int generation = 0;
+  bool operator==(const ViewState& o) const {
+    return camera == o.camera && light_angle_deg == o.light_angle_deg && settings == o.settings &&
+           show_volumes == o.show_volumes && generation == o.generation;
+  }
 };
 
 // Turns `camera` about its target: yaw about its up vector, pitch about its right.
@@ -174,13 +201,15 @@ void orbit(Camera& camera, double yaw_deg, double pitch_deg) {
 // What the overlay shows: the frame, the volumes, a message (an error), the keys.
 std::vector<std::string> status_lines(const std::string& path, const RenderPlan& plan, double frame_ms, double angle,
                                       bool paused, double speed, const std::string& message) {
+  const int samples = plan.settings.antialias;
   char line[256];
   std::vector<std::string> lines = {path};
   const LightPlan& light = plan.lights[0];
   const int segments = plan.settings.sphere_segments;
   const RenderMethod method = plan.settings.method;
-  std::snprintf(line, sizeof line, "method %s (light 1 %s)   frame time %.1f ms", method_name(method),
-                !counts_volumes(method) ? method_technique(method) : light.count == DepthCount::kWhereDepthPasses ? "z-pass" : "z-fail", frame_ms);
+  std::snprintf(line, sizeof line, "method %s (light 1 %s)   frame time %.1f ms at %d x %d samples", method_name(method),
+                !counts_volumes(method) ? method_technique(method) : light.count == DepthCount::kWhereDepthPasses ? "z-pass" : "z-fail", frame_ms,
+                samples, samples);
   lines.push_back(line);
   std::snprintf(line, sizeof line, "light 1 at %.1f deg, %s%.3g deg/s   sphere N = %d", std::fmod(angle, 360.0),
                 paused ? "paused, " : "", speed, segments);
@@ -238,6 +267,8 @@ int run_view_command(const std::vector<std::string>& argv) {
     scene.meshes = prepare_mesh_casters(scene.frame);
     scene.plan = std::make_unique<RenderPlan>(make_render_plan(scene.frame, scene.meshes, options.settings));
     scene.renderer = std::make_unique<ShadowRenderer>(scene.frame, *scene.plan, DrawSending::kWhole);
+    scene.still_samples = options.antialias.value_or(scene.file.antialias.value_or(1));
+    ++scene.generation;
     progress.reset();
   };
 
@@ -297,6 +328,10 @@ int run_view_command(const std::vector<std::string>& argv) {
 
   auto file_time = file_signature(options.scene_path);
   double last_time = window->time_seconds();
+  std::optional<ViewState> drawn_state;  // what the last frame drawn shows
+  int drawn_samples = 1;                 // and its samples per side
+  double frame_ms = 0.0;                 // as the overlay shows it
+  bool drew_before = false;
   std::vector<double> frame_times_ms;  // with --frames: each frame's plan, drawing and buffer swap
   for (int frame = 1; !window->should_close(); ++frame) {
     // Reload when the file changed; keep the last good scene on an error.
@@ -329,21 +364,50 @@ int run_view_command(const std::vector<std::string>& argv) {
     }
     int width = 0, height = 0;
     window->framebuffer_size(width, height);
-    if (width > 0 && height > 0) {
+    const bool last_frame = options.frames > 0 && frame == options.frames;
+    const bool shows = width > 0 && height > 0;
+    bool drew = false;
+    if (shows) {
       // Every setting as the keys left it, at the window's size: the plan is
       // remade only when one of them differs from what it was made for.
       RenderSettings settings = options.settings;
       settings.width = width;
       settings.height = height;
-      scene.plan->settings = settings;
-      // A moved light's volumes are made while the GL draws the first pass.
-      update_render_view(scene.frame, *scene.plan);
-      scene.renderer->draw(show_volumes, [&] { update_render_lights(scene.frame, scene.meshes, *scene.plan); });
+      // A view that moves is drawn one sample a pixel. Once a frame would be
+      // drawn as the last was, the view stands still: it is drawn once more
+      // with its samples at every pixel, then shown as it is (a scripted
+      // run, --frames, draws every frame, to time it).
+      const ViewState state{scene.frame.camera, angle, settings, show_volumes, scene.generation};
+      const bool still = drawn_state && *drawn_state == state;
+      const int samples = still ? scene.still_samples : 1;
+      if (!still || drawn_samples != samples || options.frames > 0) {
+        const auto draw_at = [&](int samples_per_side) {
+          settings.antialias = samples_per_side;
+          settings.antialiased = AntialiasedPixels::kAll;
+          scene.plan->settings = settings;
+          // A moved light's volumes are made while the GL draws the first pass.
+          update_render_view(scene.frame, *scene.plan);
+          scene.renderer->draw(show_volumes, [&] { update_render_lights(scene.frame, scene.meshes, *scene.plan); });
+          drawn_samples = samples_per_side;
+        };
+        try {
+          draw_at(samples);
+        } catch (const std::runtime_error& e) {
+          if (samples == 1) throw;
+          // A frame N x N times larger than the GL can make: still views stay one sample.
+          std::cerr << "umbra view: " << e.what() << "; still views stay at one sample\n";
+          scene.still_samples = 1;
+          draw_at(1);
+        }
+        drawn_state = state;
+        drew = true;
+      }
     }
-    // The interval since the previous frame: drawing, the buffer swap and the wait for it.
-    const double frame_ms = 1000.0 * (now - last_time);
+    // The interval since the previous frame: drawing, the buffer swap and the
+    // wait for it; the overlay keeps the last one that followed a drawn frame.
+    if (drew_before) frame_ms = 1000.0 * (now - last_time);
+    drew_before = drew;
 
-    const bool last_frame = options.frames > 0 && frame == options.frames;
     const auto draw_overlay = [&] {
       if (overlay && show_overlay)
         overlay->draw(status_lines(options.scene_path, *scene.plan, frame_ms, angle, paused, speed,
@@ -353,7 +417,7 @@ int run_view_command(const std::vector<std::string>& argv) {
     };
     if (last_frame) {
       if (options.screenshot) {
-        if (options.overlay_in_screenshot) draw_overlay();
+        if (options.overlay_in_screenshot) draw_overlay();  // into the frame, drawn this time and still bound
         try {
           write_picture(scene.renderer->read_image(), *options.screenshot);
         } catch (const std::exception& e) {
@@ -364,11 +428,16 @@ int run_view_command(const std::vector<std::string>& argv) {
       }
       break;
     }
-    draw_overlay();  // into the frame, still bound
-    if (width > 0 && height > 0) scene.renderer->show();
+    if (shows) {
+      scene.renderer->show();  // leaves the window bound
+      draw_overlay();          // over the frame as shown, untoned
+    }
     window->swap_buffers();
     if (options.frames > 0) frame_times_ms.push_back(1000.0 * (window->time_seconds() - now));
-    window->poll_events();
+    // A window that shows a finished still view waits for something to do
+    // (a key, the mouse; or half a second, to see whether the file changed).
+    if (!drew && paused && options.frames == 0) window->wait_events(0.5);
+    else window->poll_events();
     // Scripted runs advance by a fixed 1/60 s a frame, interactive ones by the clock.
     const double dt = options.frames > 0 ? 1.0 / 60.0 : now - last_time;
     last_time = now;

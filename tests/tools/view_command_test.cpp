@@ -54,9 +54,32 @@ TEST_F(ViewCommand, AMeshFileIsStagedAsRenderStagesIt) {
   const std::string mesh = std::string(UMBRA_SOURCE_DIR) + "/scenes/meshes/torus.obj";
   const CommandResult view = run_in_xvfb("view " + mesh + " --size 160x120 --paused --frames 2 --screenshot " + path("v.png"));
   ASSERT_EQ(view.status, 0) << view.err;
-  // The viewer draws one sample per pixel; render antialiases a staged mesh unless told not to.
-  ASSERT_EQ(run("render " + mesh + " --size 160x120 --antialias 1 -o " + path("h.png")).status, 0);
+  // Still from the first frame on, so the second is drawn with the staged
+  // model's 3 x 3 samples at every pixel.
+  ASSERT_EQ(run("render " + mesh + " --size 160x120 --antialias-all -o " + path("h.png")).status, 0);
   expect_same_pixels(read_png(path("v.png")), read_png(path("h.png")));
+}
+
+// A view that moves is drawn one sample a pixel; one that stands still, with
+// its samples (the scene's antialias statement, or --antialias) at every
+// pixel.
+TEST_F(ViewCommand, AStillViewTakesItsSamplesAndAMovingOneOne) {
+  const std::string torus = write("torus.scene", "antialias 3\nlight 0.5 0.9 1.8\n"
+                                                 "triangle -1 -1 -1   1 -1 -1   1 1 -1\ntriangle -1 -1 -1   1 1 -1   -1 1 -1\n"
+                                                 "mesh " + std::string(UMBRA_SOURCE_DIR) + "/scenes/meshes/torus.obj scale 0.5 "
+                                                 "rotate 1 0.3 0 50 translate 0 0 -0.25\n");
+  const auto expect_view_is_render = [&](const std::string& view_options, const std::string& render_options) {
+    SCOPED_TRACE(view_options);
+    const CommandResult view = run_in_xvfb("view " + torus + " --size 120x90 " + view_options + " --screenshot " + path("v.png"));
+    ASSERT_EQ(view.status, 0) << view.err;
+    ASSERT_EQ(run("render " + torus + " --size 120x90 " + render_options + " -o " + path("h.png")).status, 0);
+    expect_same_pixels(read_png(path("v.png")), read_png(path("h.png")));
+  };
+  // 60 degrees a second at 1/60 s a frame: frame 3 is drawn with the light at 2 degrees.
+  expect_view_is_render("--speed 60 --frames 3", "--light-angle 2 --antialias 1");
+  expect_view_is_render("--paused --frames 3", "--antialias-all");
+  expect_view_is_render("--paused --frames 3 --antialias 2", "--antialias 2 --antialias-all");
+  expect_view_is_render("--paused --frames 3 --antialias 1", "--antialias 1");
 }
 
 TEST_F(ViewCommand, OrbitingLightScreenshotIsTheHeadlessRenderAtItsAngle) {
