@@ -117,6 +117,28 @@ void FrameTarget::show(int width, int height, ToneCurve curve, const glm::vec3& 
     if (enabled[k]) glEnable(states[k]);
 }
 
+Image FrameTarget::read_shown(int width, int height, ToneCurve curve, const glm::vec3& nothing) const {
+  GLuint framebuffer = 0, colour = 0;
+  glGenRenderbuffers(1, &colour);
+  glBindRenderbuffer(GL_RENDERBUFFER, colour);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+  glGenFramebuffers(1, &framebuffer);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour);
+  show(width, height, curve, nothing, framebuffer);
+  std::vector<uint8_t> rgba(size_t(width) * size_t(height) * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  bind_colour();
+  glDeleteFramebuffers(1, &framebuffer);
+  glDeleteRenderbuffers(1, &colour);
+  Image image(width, height, 3);
+  for (int y = 0; y < height; ++y)  // the GL's row 0 is the bottom
+    for (int x = 0; x < width; ++x)
+      for (int c = 0; c < 3; ++c) image.at(x, y, c) = rgba[(size_t(height - 1 - y) * size_t(width) + size_t(x)) * 4 + size_t(c)];
+  return image;
+}
+
 void FrameTarget::for_each_pixel_mean(int samples, const std::function<void(int, int, const glm::dvec4&)>& pixel,
                                       const std::function<glm::dvec4(const glm::dvec4&)>& resolve) const {
   // In strips of 32 output rows: the floats of a whole 800x800 frame would

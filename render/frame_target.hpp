@@ -24,6 +24,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "image/image.hpp"
 #include "image/tone_curve.hpp"
 
 namespace umbra {
@@ -53,6 +54,9 @@ class FrameTarget {
   // window's format. Leaves `into` bound, at its size (for an overlay over
   // it); the next bind binds the target again.
   void show(int width, int height, ToneCurve curve, const glm::vec3& nothing, unsigned into = 0) const;
+  // What show draws, read back (RGB, rows from the top) from an 8-bit
+  // framebuffer of width x height, as a window would hold it.
+  Image read_shown(int width, int height, ToneCurve curve, const glm::vec3& nothing) const;
   // The colour, each block of samples x samples pixels averaged (in double)
   // into one: `pixel` gets each mean with its column and its row counted
   // from the top, to round once (pixel_mean.hpp, as the ray-cast reference

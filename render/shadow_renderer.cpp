@@ -79,32 +79,16 @@ void ShadowRenderer::draw(bool show_volumes, const std::function<void()>& while_
 
 void ShadowRenderer::show(unsigned into) const {
   const Scene& scene = drawing_->scene();
-  drawing_->target().show(plan_.settings.width, plan_.settings.height, scene.tone,
-                          glm::vec3(background_sample(scene.background.color, scene.background.transparent)), into);
+  drawing_->target().show(plan_.settings.width, plan_.settings.height, scene.tone, nothing_seen(), into);
 }
 
 Image ShadowRenderer::read_shown() const {
-  const int width = plan_.settings.width, height = plan_.settings.height;
-  GLuint framebuffer = 0, colour = 0;
-  glGenRenderbuffers(1, &colour);
-  glBindRenderbuffer(GL_RENDERBUFFER, colour);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-  glGenFramebuffers(1, &framebuffer);
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour);
-  show(framebuffer);
-  std::vector<uint8_t> rgba(size_t(width) * size_t(height) * 4);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-  drawing_->target().bind_colour();
-  glDeleteFramebuffers(1, &framebuffer);
-  glDeleteRenderbuffers(1, &colour);
-  Image image(width, height, 3);
-  for (int y = 0; y < height; ++y)  // the GL's row 0 is the bottom
-    for (int x = 0; x < width; ++x)
-      for (int c = 0; c < 3; ++c) image.at(x, y, c) = rgba[(size_t(height - 1 - y) * size_t(width) + size_t(x)) * 4 + size_t(c)];
-  return image;
+  return drawing_->target().read_shown(plan_.settings.width, plan_.settings.height, drawing_->scene().tone, nothing_seen());
+}
+
+glm::vec3 ShadowRenderer::nothing_seen() const {
+  const Background& background = drawing_->scene().background;
+  return glm::vec3(background_sample(background.color, background.transparent));
 }
 
 Image ShadowRenderer::render_image(bool show_volumes) {

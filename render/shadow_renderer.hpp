@@ -81,6 +81,7 @@ class ShadowRenderer {
   void show_volumes_pass();
   void mask_passes(size_t light);
   Image read_mask() const;  // after mask_passes
+  glm::vec3 nothing_seen() const;  // a sample that sees no surface (pixel_mean.hpp), as the window shows it
 
   const RenderPlan& plan_;
   std::unique_ptr<FrameDrawing> drawing_;
