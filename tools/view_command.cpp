@@ -66,14 +66,14 @@ options:
   --segments N         sphere segments (default 64)
   --antialias N        N x N samples per pixel (1 to 4) for a view that
                        stands still: while the light or the camera moves,
-                       each frame is one sample a pixel; once a frame would
-                       be drawn as the last was, it is drawn once more with
+                       each frame is one sample a pixel; once the view has
+                       not changed for a quarter of a second (in a --frames
+                       run, from the next frame), it is drawn once more with
                        N x N samples at every pixel, averaged (as umbra
-                       render --antialias-all draws it), and shown as it is
-                       until something changes (--frames draws every
-                       frame). Default as umbra render's: 3
-                       for a MESH, the scene's antialias statement (else 1)
-                       for a SCENE
+                       render --antialias-all draws it), then shown as it is
+                       until something changes (--frames draws every frame).
+                       Default as umbra render's: 3 for a MESH, the scene's
+                       antialias statement (else 1) for a SCENE
   --up AXIS            for a MESH: its axis that points up (see umbra render
                        --help)
   --camera-azimuth DEG, --camera-elevation DEG, --camera-zoom F, --fov DEG,
@@ -167,7 +167,10 @@ struct LoadedScene {
   int generation = 0;     // how many loads made it
 };
 
-// What a frame shows: where it is the last frame's, the view stands still.
+// How long a view must stay unchanged before it is drawn with its samples.
+constexpr double kSettleSeconds = 0.25;
+
+// What a frame shows: where it stays the last frame's, the view stands still.
 struct ViewState {
   Camera camera;
   double light_angle_deg = 0.0;
@@ -329,6 +332,7 @@ int run_view_command(const std::vector<std::string>& argv) {
   auto file_time = file_signature(options.scene_path);
   double last_time = window->time_seconds();
   std::optional<ViewState> drawn_state;  // what the last frame drawn shows
+  double changed_at = 0.0;               // when the view last changed (window time)
   int drawn_samples = 1;                 // and its samples per side
   double frame_ms = 0.0;                 // as the overlay shows it
   bool drew_before = false;
@@ -373,14 +377,17 @@ int run_view_command(const std::vector<std::string>& argv) {
       RenderSettings settings = options.settings;
       settings.width = width;
       settings.height = height;
-      // A view that moves is drawn one sample a pixel. Once a frame would be
-      // drawn as the last was, the view stands still: it is drawn once more
-      // with its samples at every pixel, then shown as it is (a scripted
-      // run, --frames, draws every frame, to time it).
+      // A view that moves is drawn one sample a pixel. Once frames would be
+      // drawn as the last was for kSettleSeconds (a pause in a drag is no
+      // stop), the view stands still: it is drawn once more with its samples
+      // at every pixel, then shown as it is. A scripted run (--frames) takes
+      // its samples at once, and draws every frame, to time it.
       const ViewState state{scene.frame.camera, angle, settings, show_volumes, scene.generation};
-      const bool still = drawn_state && *drawn_state == state;
+      const bool same = drawn_state && *drawn_state == state;
+      if (!same) changed_at = now;
+      const bool still = same && (options.frames > 0 || now - changed_at >= kSettleSeconds);
       const int samples = still ? scene.still_samples : 1;
-      if (!still || drawn_samples != samples || options.frames > 0) {
+      if (!same || drawn_samples != samples || options.frames > 0) {
         const auto draw_at = [&](int samples_per_side) {
           settings.antialias = samples_per_side;
           settings.antialiased = AntialiasedPixels::kAll;
@@ -434,9 +441,11 @@ int run_view_command(const std::vector<std::string>& argv) {
     }
     window->swap_buffers();
     if (options.frames > 0) frame_times_ms.push_back(1000.0 * (window->time_seconds() - now));
-    // A window that shows a finished still view waits for something to do
-    // (a key, the mouse; or half a second, to see whether the file changed).
-    if (!drew && paused && options.frames == 0) window->wait_events(0.5);
+    // A window that shows a view standing still waits for something to do
+    // (a key, the mouse; the view to settle; or half a second, to see
+    // whether the file changed).
+    if (!drew && paused && options.frames == 0)
+      window->wait_events(drawn_samples == scene.still_samples ? 0.5 : std::max(0.0, kSettleSeconds - (now - changed_at)));
     else window->poll_events();
     // Scripted runs advance by a fixed 1/60 s a frame, interactive ones by the clock.
     const double dt = options.frames > 0 ? 1.0 / 60.0 : now - last_time;
