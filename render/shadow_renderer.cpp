@@ -78,8 +78,7 @@ void ShadowRenderer::draw(bool show_volumes, const std::function<void()>& while_
 }
 
 void ShadowRenderer::show(unsigned into) const {
-  const Scene& scene = drawing_->scene();
-  drawing_->target().show(plan_.settings.width, plan_.settings.height, scene.tone, nothing_seen(), into);
+  drawing_->target().show(plan_.settings.width, plan_.settings.height, drawing_->scene().tone, nothing_seen(), into);
 }
 
 Image ShadowRenderer::read_shown() const {
