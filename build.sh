@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # umbra's whole set-up on a fresh Debian 12 machine: installs the Debian
-# packages it needs (only those missing: for a plain build or the demo, what
-# building and rendering need; for the tests, the rest too), configures and
-# builds, then
+# packages it needs (only those missing: for the demo, what building and
+# rendering need; for a plain build, the Python module's too; for the tests,
+# the rest), configures and builds, then
 #   ./build.sh demo   renders scenes/demo.scene to build/demo.png
 #   ./build.sh test   runs the whole test suite (CTest)
 #   ./build.sh sanitize   builds into build-sanitize/ with AddressSanitizer and
@@ -12,9 +12,14 @@
 #   ./build.sh        only builds
 set -euo pipefail
 cd "$(dirname "$0")"
+usage="usage: ./build.sh [demo|test|sanitize|fuzz [SECONDS]]"
+case "${1:-}" in  # before anything is installed
+  demo|test|sanitize|fuzz|"") ;;
+  *) echo "$usage" >&2; exit 2 ;;
+esac
 
-# What building umbra and rendering with it need: all that ./build.sh and
-# ./build.sh demo install, so that a first run is quick.
+# What building umbra and rendering with it need: all that ./build.sh demo
+# installs, so that a first run is quick.
 packages=(
   cmake ninja-build g++ pkg-config   # toolchain
   python3-glad                       # generates the OpenGL loader at build time
@@ -35,8 +40,10 @@ packages=(
   nlohmann-json3-dev                 # umbra check --json (nlohmann/json)
   libtinygltf-dev                    # glTF 2.0 and GLB meshes (tinygltf)
   lib3mf-dev libzip-dev              # 3MF meshes (lib3mf; its pkg-config names libzip)
-  python3-dev pybind11-dev python3-numpy  # the Python module umbra (docs/python.md)
 )
+# The Python module umbra (docs/python.md): built and installed by every
+# command but the demo.
+python_packages=(python3-dev pybind11-dev python3-numpy)
 # What the tests, benchmarks, sanitizers and fuzzers need besides: installed
 # by ./build.sh test, sanitize and fuzz.
 test_packages=(
@@ -57,7 +64,10 @@ test_packages=(
   chromium                           # umbra check --report's page, opened in a real browser (tested)
 )
 case "${1:-}" in
-  test|sanitize|fuzz) packages+=("${test_packages[@]}") ;;
+  test) packages+=("${python_packages[@]}" "${test_packages[@]}") ;;
+  sanitize|fuzz) packages+=("${test_packages[@]}") ;;  # these build no Python module
+  demo) ;;
+  *) packages+=("${python_packages[@]}") ;;
 esac
 missing=()
 for p in "${packages[@]}"; do
@@ -127,19 +137,24 @@ case "${1:-}" in
     ;;
 esac
 
-# The tests and benchmarks only for ./build.sh test, whose packages they need.
+# The tests and benchmarks only for ./build.sh test, whose packages they need;
+# the Python module for all but the demo, which renders with umbra alone.
 tests=OFF
 [ "${1:-}" = test ] && tests=ON
+python=ON
+[ "${1:-}" = demo ] && python=OFF
 # Debug information as line tables only (-g1): backtraces and perf still name
 # file and line, and CGAL's templates compile in three quarters of the time
 # (docs/performance.md, "Building").
 release="-O2 -g1 -DNDEBUG"
-configure build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DUMBRA_BUILD_TESTS=$tests \
+configure build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DUMBRA_BUILD_TESTS=$tests -DUMBRA_PYTHON=$python \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$release" -DCMAKE_C_FLAGS_RELWITHDEBINFO="$release"
 cmake --build build -j"$(nproc)"
 # The Python module where Debian's python3 finds it (docs/python.md):
 # /usr/local/lib/python3.X/dist-packages/umbra.
-$sudo cmake --install build --component python > /dev/null
+if [ "$python" = ON ]; then
+  $sudo cmake --install build --component python > /dev/null
+fi
 
 case "${1:-}" in
   demo)
@@ -150,5 +165,4 @@ case "${1:-}" in
     cd build && ctest --output-on-failure -j"$(nproc)"
     ;;
   "") ;;
-  *) echo "usage: ./build.sh [demo|test|sanitize|fuzz [SECONDS]]" >&2; exit 2 ;;
 esac
