@@ -12,10 +12,9 @@
 #   ./build.sh        only builds
 set -euo pipefail
 cd "$(dirname "$0")"
-usage="usage: ./build.sh [demo|test|sanitize|fuzz [SECONDS]]"
 case "${1:-}" in  # before anything is installed
   demo|test|sanitize|fuzz|"") ;;
-  *) echo "$usage" >&2; exit 2 ;;
+  *) echo "usage: ./build.sh [demo|test|sanitize|fuzz [SECONDS]]" >&2; exit 2 ;;
 esac
 
 # What building umbra and rendering with it need: all that ./build.sh demo
@@ -41,8 +40,8 @@ packages=(
   libtinygltf-dev                    # glTF 2.0 and GLB meshes (tinygltf)
   lib3mf-dev libzip-dev              # 3MF meshes (lib3mf; its pkg-config names libzip)
 )
-# The Python module umbra (docs/python.md): built and installed by every
-# command but the demo.
+# The Python module umbra (docs/python.md): built and installed by a plain
+# ./build.sh and by ./build.sh test (python, below).
 python_packages=(python3-dev pybind11-dev python3-numpy)
 # What the tests, benchmarks, sanitizers and fuzzers need besides: installed
 # by ./build.sh test, sanitize and fuzz.
@@ -64,10 +63,14 @@ test_packages=(
   chromium                           # umbra check --report's page, opened in a real browser (tested)
 )
 case "${1:-}" in
-  test) packages+=("${python_packages[@]}" "${test_packages[@]}") ;;
-  sanitize|fuzz) packages+=("${test_packages[@]}") ;;  # these build no Python module
-  demo) ;;
-  *) packages+=("${python_packages[@]}") ;;
+  test|sanitize|fuzz) packages+=("${test_packages[@]}") ;;
+esac
+# Whether this command builds the Python module: not the demo, which renders
+# with umbra alone, nor the sanitizers' and fuzzers' builds (configured below
+# without it).
+python=OFF
+case "${1:-}" in
+  test|"") python=ON; packages+=("${python_packages[@]}") ;;
 esac
 missing=()
 for p in "${packages[@]}"; do
@@ -137,12 +140,9 @@ case "${1:-}" in
     ;;
 esac
 
-# The tests and benchmarks only for ./build.sh test, whose packages they need;
-# the Python module for all but the demo, which renders with umbra alone.
+# The tests and benchmarks only for ./build.sh test, whose packages they need.
 tests=OFF
 [ "${1:-}" = test ] && tests=ON
-python=ON
-[ "${1:-}" = demo ] && python=OFF
 # Debug information as line tables only (-g1): backtraces and perf still name
 # file and line, and CGAL's templates compile in three quarters of the time
 # (docs/performance.md, "Building").
