@@ -18,15 +18,23 @@ class BenchCommand : public test::CommandTest {};
 
 const std::string kTwoSpheres = std::string(UMBRA_SOURCE_DIR) + "/scenes/two_spheres.scene";
 
+// CSV as RFC 4180 reads it: a quoted field may hold commas, doubled quotes
+// and line breaks.
 std::vector<std::vector<std::string>> read_csv(const std::string& path) {
-  std::vector<std::vector<std::string>> rows;
   std::ifstream in(path);
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> cells;
-    std::stringstream s(line);
-    for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
-    rows.push_back(cells);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::vector<std::vector<std::string>> rows(1);
+  std::string cell;
+  bool quoted = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quoted && c == '"' && i + 1 < text.size() && text[i + 1] == '"') cell += '"', ++i;
+    else if (c == '"') quoted = !quoted;
+    else if (!quoted && c == ',') rows.back().push_back(cell), cell.clear();
+    else if (!quoted && c == '\n') rows.back().push_back(cell), cell.clear(), rows.emplace_back();
+    else cell += c;
   }
+  if (rows.back().empty()) rows.pop_back();
   return rows;
 }
 
@@ -93,6 +101,38 @@ TEST_F(BenchCommand, PlotsAsText) {
   EXPECT_NE(plot.find("two_spheres.scene"), std::string::npos);
   EXPECT_NE(plot.find("median frame time"), std::string::npos);
   EXPECT_FALSE(fs::exists(path("p.txt.gnuplot")));
+}
+
+// A scene's file name is data: a line break or a backquote in it once ended
+// the plot's gnuplot string and ran a shell command, and a comma or a line
+// break split the CSV's rows.
+TEST_F(BenchCommand, AHostileSceneNameRunsNothingAndStaysOneCsvField) {
+  if (std::system("gnuplot --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "gnuplot is not installed";
+  const std::string scene = read(kTwoSpheres);
+  const std::vector<std::string> names = {"a\nsystem 'touch pwned-by-newline'\n#, b.scene", "`touch pwned-by-backquote`.scene",
+                                          "c\"'d.scene"};
+  std::string given;
+  for (const std::string& name : names) given += " " + shell_quoted(write(name, scene));
+  for (const std::string plot : {"p.png", "p.txt"}) {
+    const CommandResult r = run("bench" + given + " --size 16x16 --frames 1 --segments 8 --map-sizes 16 --csv b.csv --plot " + plot,
+                                "cd " + shell_quoted(path("")) + " && ");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_FALSE(fs::exists(path("pwned-by-newline")));
+    EXPECT_FALSE(fs::exists(path("pwned-by-backquote")));
+    EXPECT_GT(fs::file_size(path(plot)), 100u);
+  }
+  const auto rows = read_csv(path("b.csv"));
+  ASSERT_GT(rows.size(), 3u);
+  std::vector<std::string> scenes;
+  for (size_t i = 1; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i].size(), rows[0].size()) << "row " << i;
+    if (scenes.empty() || scenes.back() != rows[i][0]) scenes.push_back(rows[i][0]);
+  }
+  EXPECT_EQ(scenes, names);
+  // The text plot shows each name, a control character as '?'.
+  const std::string text = read(path("p.txt"));
+  EXPECT_NE(text.find("`touch pwned-by-backquote`.scene"), std::string::npos) << text;
+  EXPECT_NE(text.find("c\"'d.scene"), std::string::npos) << text;
 }
 
 TEST_F(BenchCommand, ABadSceneStopsItBeforeAnythingIsMeasured) {

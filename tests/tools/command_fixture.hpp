@@ -38,6 +38,14 @@ class CommandTest : public ScratchFolder {
     return r;
   }
 
+  // `text` as one word of a shell command: file names with quotes, line
+  // breaks or backquotes pass through run() as they are.
+  static std::string shell_quoted(const std::string& text) {
+    std::string q = "'";
+    for (const char c : text) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+  }
+
   static std::string read(const std::string& p) {
     std::ifstream in(p);
     return std::string(std::istreambuf_iterator<char>(in), {});
