@@ -208,6 +208,24 @@ std::string script_safe(const std::string& json) {
   return out;
 }
 
+// A relative path as a URL's path (RFC 3986): each byte but the unreserved
+// ones and the '/' between segments percent-encoded, so that a name is
+// never read as a scheme ("javascript:..."), a query ('?'), a fragment
+// ('#') or an escape ('%'), and a byte that is not UTF-8 still leads to
+// its file.
+std::string url_path(const std::string& path) {
+  static const char* const kHex = "0123456789ABCDEF";
+  std::string url;
+  for (const char c : path) {
+    const unsigned char b = static_cast<unsigned char>(c);
+    const bool unreserved = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '.' ||
+                            c == '_' || c == '~';
+    if (unreserved || c == '/') url += c;
+    else url += '%', url += kHex[b >> 4], url += kHex[b & 15];
+  }
+  return url;
+}
+
 // A report's JSON line as the page holds it: without the component list and
 // the examples, which its table does not show and which make most of a
 // large mesh's line.
@@ -231,7 +249,8 @@ void write_check_report_page(const std::string& path, const std::vector<std::str
     reports += (i ? ",\n" : "\n") + page_record(i < records.size() ? records[i] : "", meshes[i]);
     std::error_code ec;
     const bool drawn = i < pictures.size() && !pictures[i].empty() && fs::is_regular_file(pictures[i], ec);
-    links.push_back(drawn ? nlohmann::json(fs::absolute(pictures[i]).lexically_relative(folder).generic_string()) : nlohmann::json());
+    links.push_back(drawn ? nlohmann::json(url_path(fs::absolute(pictures[i]).lexically_relative(folder).generic_string()))
+                         : nlohmann::json());
   }
   reports += "\n]";
   PartialFile partial(path, "the report");

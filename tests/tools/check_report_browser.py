@@ -10,12 +10,14 @@ per mesh that has one, the sort the address asks for (by triangles,
 descending) and the verdict filter; and that a page of 10,000 meshes makes
 its 10,000 rows. Exits 77 (skipped) where Chromium is not installed."""
 import html
+import os
 import json
 import pathlib
 import re
 import shutil
 import subprocess
 import sys
+import urllib.parse
 
 umbra, meshes, work = sys.argv[1], pathlib.Path(sys.argv[2]), pathlib.Path(sys.argv[3])
 browser = shutil.which("chromium")
@@ -47,6 +49,11 @@ def rows(text):
             for path, attributes in re.findall(r'<tr data-path="([^"]*)"([^>]*)>', text)]
 
 
+def linked_file(folder, url):
+    """The file a relative link in the page leads to, as the browser finds it."""
+    return folder / os.fsdecode(urllib.parse.unquote_to_bytes(html.unescape(url)))
+
+
 def embedded_reports(page):
     text = page.read_text()
     data = re.search(r'<script type="application/json" id="reports">(.*?)</script>', text, re.S).group(1)
@@ -69,7 +76,7 @@ expect([p for p, _ in shown] == [reports[i]["path"] for i in by_triangles], "the
 pictures = re.findall(r'<img [^>]*src="([^"]*)"', page)
 drawn = sum(1 for p in (report.parent / "report-pictures").rglob("*.png"))
 expect(len(pictures) == drawn and drawn >= count - 1, f"{len(pictures)} pictures shown, {drawn} drawn, for {count} meshes")
-expect(all((report.parent / html.unescape(p)).is_file() for p in pictures), "a picture's link leads nowhere")
+expect(all(linked_file(report.parent, p).is_file() for p in pictures), "a picture's link leads nowhere")
 expect('aria-sort="descending"' in page, "the triangles heading does not say it sorts")
 
 page = dom(report, "#verdict=closed")
@@ -78,6 +85,27 @@ visible = [p for p, hidden in rows(page) if not hidden]
 expect(len(visible) == closed, f"{len(visible)} rows shown for {closed} closed 2-manifolds")
 summary = re.search(r'id="summary">([^<]*)<', page).group(1)
 expect(f"{count} meshes" in summary and f"{closed} closed 2-manifolds" in summary, f"the summary says: {summary}")
+
+# Hostile and awkward file names, each picture drawn into the report's own
+# folder (--picture): a name once became a "javascript:" link, and '#', '?',
+# '%' and bytes that are not UTF-8 made thumbnails that lead nowhere.
+tetrahedron = "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"
+hostile = work / "hostile"
+hostile.mkdir()
+names = [b"javascript:alert(document.title).off", b"a#b.off", b"c?d.off", b"e%41.off", b"f\xff.off", b"g h&amp;.off"]
+for name in names:
+    (hostile / os.fsdecode(name)).write_text(tetrahedron)
+shown_folder = work / "hostile-report"
+run = subprocess.run([umbra, "check", "--brief", str(hostile), "--picture", str(shown_folder), "--report",
+                      str(shown_folder / "report.html")], capture_output=True, text=True, errors="replace")
+expect(run.returncode == 0, f"umbra check of the hostile names exited {run.returncode}: {run.stderr[-2000:]}")
+page = dom(shown_folder / "report.html")
+links = re.findall(r'<a href="([^"]*)"', page)
+sources = re.findall(r'<img [^>]*src="([^"]*)"', page)
+expect(len(links) == len(names) and links == sources, f"{len(links)} links and {len(sources)} pictures for {len(names)} meshes")
+for url in links:
+    expect(urllib.parse.urlsplit(html.unescape(url)).scheme == "", f"the link {url!r} has a scheme: clicking it would not open a picture")
+    expect(linked_file(shown_folder, url).is_file(), f"the link {url!r} leads nowhere")
 
 # 10,000 meshes (tetrahedra, every hundredth with a face missing), without pictures.
 many = work / "many"
