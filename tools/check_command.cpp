@@ -327,13 +327,21 @@ void require_companion_may_replace(const CompanionFile& companion, const std::st
     if (std::filesystem::equivalent(companion.path, file, ec))
       throw InputError({companion.path, 0, 0}, "the repair would overwrite this file, which the mesh reads, with " + companion.what +
                                                     ": name the output otherwise");
-  std::ifstream existing(companion.path);
-  std::string first_line;
-  std::getline(existing, first_line);
-  if (companion.path.size() > 4 && companion.path.substr(companion.path.size() - 4) == ".mtl" &&
-      first_line.find("written by umbra check --repair") == std::string::npos)
-    throw InputError({companion.path, 0, 0},
-                     "the repair would overwrite this material library, which umbra did not write: name the output otherwise");
+  std::ifstream existing(companion.path, std::ios::binary);
+  if (companion.path.size() > 4 && companion.path.substr(companion.path.size() - 4) == ".mtl") {
+    std::string first_line;
+    std::getline(existing, first_line);
+    if (first_line.find("written by umbra check --repair") == std::string::npos)
+      throw InputError({companion.path, 0, 0},
+                       "the repair would overwrite this material library, which umbra did not write: name the output otherwise");
+    return;
+  }
+  // A map's copy: a file of the same bytes (an earlier repair's copy) is
+  // left as it is in effect; any other file is somebody's.
+  const std::string bytes(std::istreambuf_iterator<char>(existing), {});
+  if (bytes != companion.bytes)
+    throw InputError({companion.path, 0, 0}, "the repair would overwrite this file, which is not " + companion.what +
+                                                  ", with a copy of it: name the output otherwise");
 }
 
 int repair_one(const std::string& path, const std::string& output, const CheckCommandOptions& options) {

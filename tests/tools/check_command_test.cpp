@@ -7,6 +7,7 @@
 
 #include <sstream>
 
+#include "image/image.hpp"
 #include "mesh/io/mesh_format.hpp"
 #include "mesh/io/mesh_file.hpp"
 #include "tests/mesh/mesh_builders.hpp"
@@ -473,6 +474,32 @@ TEST_F(CheckCommand, RepairNeverOverwritesAMaterialLibraryItDidNotWrite) {
   ASSERT_EQ(run("check " + input + " --repair " + path("other.obj")).status, 0);
   ASSERT_EQ(run("check " + input + " --repair " + path("other.obj")).status, 0);
   EXPECT_EQ(read_polygon_soup(path("other.obj")).materials.at(0).diffuse, glm::dvec3(1, 0, 0));
+}
+
+// A map's copy beside the repaired OBJ (OUTSTEM.MAPNAME) once overwrote
+// whatever file had that name, where a material library is refused.
+TEST_F(CheckCommand, RepairNeverOverwritesAFileWithAMapsCopy) {
+  fs::create_directories(path("in"));
+  fs::create_directories(path("out"));
+  Image map(1, 1, 3);
+  map.at(0, 0, 0) = 255;
+  write_png(map, path("in/wood.png"));
+  write("in/m.mtl", "newmtl a\nmap_Kd wood.png\n");
+  const std::string input = write("in/m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nusemtl a\n"
+                                              "f 1/1 3/1 2/1\nf 1/1 2/1 4/1\nf 2/1 3/1 4/1\nf 1/1 4/1 3/1\n");
+  const std::string theirs = write("out/x.wood.png", "somebody's picture");
+  CommandResult r = run("check " + input + " --repair " + path("out/x.obj"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, theirs + ": the repair would overwrite this file, which is not material \"a\"'s texture map, with a copy of it: "
+                            "name the output otherwise\n");
+  EXPECT_EQ(read(theirs), "somebody's picture");
+  EXPECT_FALSE(fs::exists(path("out/x.obj")));
+  // An earlier repair's copy, the same bytes, is no obstacle.
+  fs::remove(theirs);
+  ASSERT_EQ(run("check " + input + " --repair " + path("out/x.obj")).status, 0);
+  r = run("check " + input + " --repair " + path("out/x.obj"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(read(theirs), read(path("in/wood.png")));
 }
 
 // A face drawn round a hole as one keyhole polygon (the outline, a bridge
