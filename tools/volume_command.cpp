@@ -1,6 +1,11 @@
 #include "tools/volume_command.hpp"
 
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 
@@ -74,6 +79,14 @@ VolumeOptions parse_volume_options(const std::vector<std::string>& argv) {
   if (!o.up.empty()) require_staged({"--up"}, o.scene_path);
   if (o.output.empty()) throw UsageError("no output file given (-o OUT.obj)");
   require_other_than_input("-o", o.output, o.scene_path);
+  // An OBJ file under another format's name (x.png, x.stl) would mislead
+  // whatever opens it by its name.
+  std::string extension = std::filesystem::path(o.output).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  struct stat there {};
+  const bool device = ::stat(o.output.c_str(), &there) == 0 && (S_ISFIFO(there.st_mode) || S_ISCHR(there.st_mode));
+  if (extension != ".obj" && !device)
+    throw UsageError("-o " + o.output + ": umbra volume writes an OBJ file; name a .obj file");
   return o;
 }
 

@@ -67,6 +67,15 @@ TEST_F(VolumeCommand, BadLightAndUsageErrors) {
   const CommandResult far = run("volume " + scene + " -o x.obj --far 0");
   EXPECT_EQ(far.status, 2);
   EXPECT_EQ(far.err, "umbra volume: --far must be positive\n(see umbra volume --help)\n");
+  // OBJ text under a picture's name would overwrite the picture with what
+  // no image viewer reads.
+  const std::string picture = write("keep.png", "a picture");
+  const CommandResult png = run("volume " + scene + " -o " + picture);
+  EXPECT_EQ(png.status, 2);
+  EXPECT_EQ(png.err, "umbra volume: -o " + picture + ": umbra volume writes an OBJ file; name a .obj file\n(see umbra volume --help)\n");
+  EXPECT_EQ(read(picture), "a picture");
+  EXPECT_EQ(run("volume " + scene + " -o " + path("V.OBJ")).status, 0);
+  EXPECT_EQ(run("volume " + scene + " -o /dev/null").status, 0);
 }
 
 }  // namespace
