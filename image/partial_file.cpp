@@ -85,12 +85,22 @@ PartialFile::PartialFile(const std::string& path, const std::string& what, Endin
     throw std::runtime_error(path + ": cannot write " + what + ": it is " +
                              (S_ISDIR(there.st_mode) ? "a folder" : S_ISBLK(there.st_mode) ? "a block device" : "not a file"));
   }
-  std::vector<char> name(path.begin(), path.end());
   const size_t slash = path.rfind('/'), dot = path.rfind('.');
   const std::string extension =
       ending == Ending::kKeepExtension && dot != std::string::npos && (slash == std::string::npos || dot > slash) ? path.substr(dot) : "";
   const std::string suffix = ".partial" + extension;
   const std::string random = ".XXXXXX";
+  // The final name, cut short where the random part and the ending would
+  // take it past the longest name the folder allows (255 bytes on Linux's
+  // file systems): a legal final name always gets a temporary one.
+  const std::string folder = slash == std::string::npos ? "" : path.substr(0, slash + 1);
+  std::string base = path.substr(folder.size());
+  long longest = ::pathconf(folder.empty() ? "." : folder.c_str(), _PC_NAME_MAX);
+  if (longest <= 0) longest = 255;
+  const size_t added = random.size() + suffix.size();
+  if (base.size() + added > size_t(longest)) base.resize(size_t(longest) > added ? size_t(longest) - added : 1);
+  std::vector<char> name(folder.begin(), folder.end());
+  name.insert(name.end(), base.begin(), base.end());
   name.insert(name.end(), random.begin(), random.end());
   name.insert(name.end(), suffix.begin(), suffix.end());
   name.push_back('\0');
@@ -115,11 +125,6 @@ void PartialFile::commit() {
   committed_ = true;
   unlist(slot_);
   slot_ = -1;
-}
-
-void remove_written_output(const std::string& path) {
-  struct stat there {};
-  if (path != "-" && ::lstat(path.c_str(), &there) == 0 && S_ISREG(there.st_mode)) std::remove(path.c_str());
 }
 
 void remove_partial_files_on_signals() {

@@ -1,8 +1,8 @@
 #pragma once
 // An output file written under a temporary name beside its final one and
 // renamed into place once whole, so that nobody ever sees part of it. Each
-// writer's temporary name is its own (the final name, a random part and
-// ".partial"), so that two writers of one name never meet, and a process
+// writer's temporary name is its own (the final name, cut short where it
+// must be to stay a legal name, a random part and ".partial"), so that two writers of one name never meet, and a process
 // stopped by SIGINT or SIGTERM removes every temporary file it had open
 // (remove_partial_files_on_signals).
 
@@ -26,6 +26,8 @@ class PartialFile {
 
   // Where to write: an empty file, created for this writer alone.
   const std::string& temporary_path() const { return temporary_; }
+  // The final path, as given.
+  const std::string& path() const { return path_; }
   // Renames the temporary file to the final path; throws std::runtime_error.
   void commit();
 
@@ -35,11 +37,6 @@ class PartialFile {
   bool committed_ = false;
   bool in_place_ = false;  // a FIFO or device, written as it is
 };
-
-// Takes back an output written whole, when a later one of the same command
-// fails: removes `path` if it is a regular file, never a device or FIFO
-// written in place (-o /dev/null), nor standard output ("-").
-void remove_written_output(const std::string& path);
 
 // Makes SIGINT and SIGTERM remove every PartialFile's temporary file before
 // the process ends as the signal would end it. Called once, by main.

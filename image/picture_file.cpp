@@ -117,34 +117,53 @@ std::string picture_extensions() {
 
 namespace {
 
-// `image` in `format` to `path`: "-" for standard output, else through a
-// temporary file renamed into place (PartialFile).
-void write_as(PictureFormat format, const Image& image, const std::string& path, const PictureOptions& options) {
+void require_writable(PictureFormat format, const Image& image, const std::string& path) {
   if (image.channels != 1 && image.channels != 3 && image.channels != 4)
     throw std::runtime_error(path + ": cannot write an image of " + std::to_string(image.channels) + " channels");
   if (image.channels == 4 && !picture_format_keeps_alpha(format))
     throw std::runtime_error(path + ": a " + std::string(format_row(format).name) + " picture has no alpha channel for a transparent background");
+}
+
+// `image` in `format` into `file_path`, the temporary file of `path`.
+void write_file(PictureFormat format, const Image& image, const std::string& path, const std::string& file_path,
+                const PictureOptions& options) {
+  require_writable(format, image, path);
+  std::FILE* file = std::fopen(file_path.c_str(), "wb");
+  if (!file) throw std::runtime_error(path + ": cannot write the image: " + std::strerror(errno));
+  std::string reason = write_in(format, image, file, options);
+  if (std::fclose(file) != 0 && reason.empty()) reason = std::strerror(errno);
+  if (!reason.empty()) throw std::runtime_error(path + ": cannot write the image: " + reason);
+}
+
+// `image` in `format` to `path`: "-" for standard output, else through a
+// temporary file renamed into place (PartialFile).
+void write_as(PictureFormat format, const Image& image, const std::string& path, const PictureOptions& options) {
   if (path == "-") {
+    require_writable(format, image, path);
     const std::string reason = write_in(format, image, stdout, options);
     if (!reason.empty() || std::fflush(stdout) != 0)
       throw std::runtime_error("cannot write the image to standard output: " + (reason.empty() ? std::strerror(errno) : reason));
     return;
   }
   PartialFile partial(path, "the image");
-  std::FILE* file = std::fopen(partial.temporary_path().c_str(), "wb");
-  if (!file) throw std::runtime_error(path + ": cannot write the image: " + std::strerror(errno));
-  std::string reason = write_in(format, image, file, options);
-  if (std::fclose(file) != 0 && reason.empty()) reason = std::strerror(errno);
-  if (!reason.empty()) throw std::runtime_error(path + ": cannot write the image: " + reason);
+  write_file(format, image, path, partial.temporary_path(), options);
   partial.commit();
+}
+
+PictureFormat format_for(const std::string& path) {
+  const std::optional<PictureFormat> format = picture_format_of(path);
+  if (!format) throw std::runtime_error(path + ": umbra writes pictures as " + picture_extensions() + " only");
+  return *format;
 }
 
 }  // namespace
 
 void write_picture(const Image& image, const std::string& path, const PictureOptions& options) {
-  const std::optional<PictureFormat> format = picture_format_of(path);
-  if (!format) throw std::runtime_error(path + ": umbra writes pictures as " + picture_extensions() + " only");
-  write_as(*format, image, path, options);
+  write_as(format_for(path), image, path, options);
+}
+
+void write_picture_into(const Image& image, const PartialFile& into, const PictureOptions& options) {
+  write_file(format_for(into.path()), image, into.path(), into.temporary_path(), options);
 }
 
 void write_png(const Image& image, const std::string& path) { write_as(PictureFormat::kPng, image, path, {}); }

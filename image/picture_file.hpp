@@ -6,6 +6,7 @@
 #include <string>
 
 #include "image/image.hpp"
+#include "image/partial_file.hpp"
 
 namespace umbra {
 
@@ -37,5 +38,9 @@ struct PictureOptions {
 // bytes to standard output. Throws std::runtime_error, naming the path, for
 // a format it does not know or a write that fails.
 void write_picture(const Image& image, const std::string& path, const PictureOptions& options = {});
+// The same into `into`'s temporary file, in the format its final name asks
+// for, left for the caller to commit with the run's other outputs, so that
+// either all of them are written or none is.
+void write_picture_into(const Image& image, const PartialFile& into, const PictureOptions& options = {});
 
 }  // namespace umbra

@@ -13,6 +13,7 @@
 
 #include "image/contact_sheet.hpp"
 #include "image/image.hpp"
+#include "image/picture_file.hpp"
 #include "mesh/input_error.hpp"
 #include "render/headless_context.hpp"
 #include "scene/scene_checks.hpp"
@@ -151,6 +152,20 @@ int run_batch_render(const BatchRenderOptions& o) {
   }
   // Named for all the files, before the shards part: every shard names alike.
   const std::vector<std::string> all_names = distinct_picture_names(found.meshes, found.names, found.roots);
+  // The sheet is written last: it must not take the place of an input or of
+  // one of the run's own pictures (any shard's).
+  if (o.sheet) {
+    std::string refusal;
+    for (size_t i = 0; i < found.meshes.size() && refusal.empty(); ++i) {
+      if (same_file(*o.sheet, found.meshes[i])) refusal = "--sheet would overwrite its input \"" + found.meshes[i] + "\"";
+      else if (same_file(*o.sheet, (std::filesystem::path(o.out_dir) / (all_names[i] + ".png")).string()))
+        refusal = "--sheet " + *o.sheet + " is where the picture of \"" + found.meshes[i] + "\" goes";
+    }
+    if (!refusal.empty()) {
+      std::cerr << "umbra render: " << refusal << "; name another file\n(see umbra render --help)\n";
+      return 2;
+    }
+  }
   const std::vector<std::string> files = o.shard ? shard_of(found.meshes, *o.shard) : found.meshes;
   const std::vector<std::string> names = o.shard ? shard_of(all_names, *o.shard) : all_names;
   const std::vector<std::string> roots = o.shard ? shard_of(found.roots, *o.shard) : found.roots;
@@ -226,7 +241,7 @@ int run_batch_render(const BatchRenderOptions& o) {
       }
     }
     try {
-      write_png(contact_sheet(sheet, kSheetThumbWidth), *o.sheet);
+      write_picture(contact_sheet(sheet, kSheetThumbWidth), *o.sheet);
       std::cerr << "umbra render: wrote the contact sheet " << *o.sheet << " (" << sheet.size() << " pictures)\n";
     } catch (const std::exception& e) {
       std::cerr << e.what() << "\n";

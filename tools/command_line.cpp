@@ -380,8 +380,13 @@ void require_drawable_size(int width, int height, int samples) {
 }
 
 bool same_file(const std::string& a, const std::string& b) {
-  std::error_code ec;
-  return a == b || std::filesystem::equivalent(a, b, ec);
+  std::error_code ec, ea, eb;
+  if (a == b || std::filesystem::equivalent(a, b, ec)) return true;
+  // Names of files that need not exist yet (a picture about to be drawn):
+  // the same once made absolute and resolved as far as they exist.
+  const std::filesystem::path ca = std::filesystem::weakly_canonical(std::filesystem::absolute(a, ea), ea);
+  const std::filesystem::path cb = std::filesystem::weakly_canonical(std::filesystem::absolute(b, eb), eb);
+  return !ea && !eb && ca == cb;
 }
 
 void require_other_than_input(const std::string& option, const std::string& output, const std::string& input) {

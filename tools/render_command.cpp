@@ -1,5 +1,6 @@
 #include "tools/render_command.hpp"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -179,6 +180,16 @@ bool is_picture_name(const std::string& path) {
   return false;
 }
 
+// Whether `path` is this process's standard output: "-", or a name of the
+// file or pipe it goes to (/dev/stdout, /proc/self/fd/1), where the picture's
+// bytes leave no room for words.
+bool writes_standard_output(const std::string& path) {
+  if (path == "-") return true;
+  struct stat out {}, named {};
+  return ::fstat(STDOUT_FILENO, &out) == 0 && ::stat(path.c_str(), &named) == 0 && out.st_dev == named.st_dev &&
+         out.st_ino == named.st_ino;
+}
+
 struct RenderOptions : PictureChoices {
   std::string scene_path;
   std::optional<BatchRenderOptions> batch;  // several files or a folder
@@ -212,7 +223,11 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   std::optional<std::string> sheet;
   double timeout_s = 0.0;
   bool skip_existing = false, json = false;
-  options.value("--sheet", [&](const std::string&, const std::string& t) { sheet = t; });
+  options.value("--sheet", [&](const std::string& n, const std::string& t) {
+    require_picture_name(n, t);
+    if (t == "-") throw UsageError(n + " needs a file: standard output holds --json's lines");
+    sheet = t;
+  });
   options.value("--timeout", [&](const std::string& n, const std::string& t) {
     timeout_s = parse_finite_number(n, t);
     if (!(timeout_s > 0.0)) throw UsageError(n + " must be a number of seconds above 0, got \"" + t + "\"");
@@ -260,8 +275,11 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
                        std::string(format_row(*picture_format_of(o.output)).name) + " picture has not: name a .png");
     if (o.jpeg_quality_given && picture_format_of(o.output) != PictureFormat::kJpeg)
       throw UsageError("--jpeg-quality is for a JPEG picture; -o " + o.output + " is not one");
-    if (o.output == "-" && o.explain)
-      throw UsageError("--explain prints to standard output, where -o - writes the picture: name a file with -o");
+    if (writes_standard_output(o.output) && o.explain)
+      throw UsageError("--explain prints to standard output, where -o " + o.output + " writes the picture: name a file with -o");
+    if (writes_standard_output(o.output) && ::isatty(STDOUT_FILENO))
+      throw UsageError("-o " + o.output + " writes the picture's bytes to standard output, which is a terminal here: "
+                       "redirect it (> out.png) or name a file");
     if (o.mask) {
       // A mask is exact, pixel by pixel: only a lossless PNG keeps it.
       if (picture_format_of(*o.mask) != PictureFormat::kPng || *o.mask == "-")
@@ -292,8 +310,9 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
 // from `path`'s folder where the two share a folder below the root (a
 // project's scenes beside its models), else absolutely (a model under
 // /usr/share), so that the scene draws the same picture from any folder.
-void save_staged_scene(const std::string& text, const std::string& mesh_path, const std::string& path) {
+void save_staged_scene(const std::string& text, const std::string& mesh_path, const PartialFile& into) {
   namespace fs = std::filesystem;
+  const std::string& path = into.path();
   const fs::path mesh = fs::weakly_canonical(fs::absolute(mesh_path));
   const fs::path folder = fs::weakly_canonical(fs::absolute(path)).parent_path();
   const auto [from_mesh, from_folder] = std::mismatch(mesh.begin(), mesh.end(), folder.begin(), folder.end());
@@ -305,13 +324,28 @@ void save_staged_scene(const std::string& text, const std::string& mesh_path, co
   // The mesh statement is the staged text's one line that starts "mesh \"".
   const size_t start = text.find("\nmesh \"") + 1, name_end = text.find('"', start + 6);
   const std::string saved = text.substr(0, start) + "mesh \"" + written + text.substr(name_end);
-  PartialFile partial(path, "the scene");
-  std::ofstream out(partial.temporary_path());
+  std::ofstream out(into.temporary_path());
   out << saved;
   out.close();
   if (!out) throw InputError({path}, "cannot write the scene");
-  partial.commit();
 }
+
+// A run's output files, each made as its temporary file before anything is
+// drawn, so that a folder that does not exist or a file that cannot be
+// written stops the run at once; renamed into place together once all are
+// written, so that a failure leaves every file as it was before the run.
+struct RenderOutputs {
+  std::optional<PartialFile> picture, mask, scene;  // no picture file for -o - (standard output)
+  explicit RenderOutputs(const RenderOptions& o) {
+    if (o.output != "-") picture.emplace(o.output, "the image");
+    if (o.mask) mask.emplace(*o.mask, "the mask");
+    if (o.save_scene) scene.emplace(*o.save_scene, "the scene");
+  }
+  void commit() {
+    for (std::optional<PartialFile>* file : {&picture, &mask, &scene})
+      if (*file) (*file)->commit();
+  }
+};
 
 }  // namespace
 
@@ -335,6 +369,7 @@ int run_render_command(const std::vector<std::string>& argv) {
   }
   keep_freed_memory_for_reuse();
   try {
+    RenderOutputs outputs(options);
     // Loading, planning and drawing: three steps, the first per mesh file.
     std::optional<ProgressBar> progress(std::in_place, 3);
     std::string staged;
@@ -370,17 +405,13 @@ int run_render_command(const std::vector<std::string>& argv) {
     const std::optional<Image>& mask = drawn.mask;
 
     progress.reset();
-    write_picture(image, options.output, options.picture);
-    try {
-      if (mask) write_png(*mask, *options.mask);
-      if (options.save_scene) save_staged_scene(staged, options.scene_path, *options.save_scene);
-    } catch (...) {  // all outputs or none
-      remove_written_output(options.output);
-      if (mask) remove_written_output(*options.mask);
-      throw;
-    }
-    // With -o -, standard output holds the picture alone.
-    std::ostream& said = options.output == "-" ? std::cerr : std::cout;
+    if (outputs.picture) write_picture_into(image, *outputs.picture, options.picture);
+    if (mask) write_picture_into(*mask, *outputs.mask);
+    if (outputs.scene) save_staged_scene(staged, options.scene_path, *outputs.scene);
+    if (!outputs.picture) write_picture(image, "-", options.picture);
+    outputs.commit();
+    // With -o - (or /dev/stdout), standard output holds the picture alone.
+    std::ostream& said = writes_standard_output(options.output) ? std::cerr : std::cout;
     said << "wrote " << (options.output == "-" ? "the picture to standard output" : options.output) << " (" << image.width
          << "x" << image.height << ")";
     if (mask) said << " and mask " << *options.mask;

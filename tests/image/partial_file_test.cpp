@@ -71,16 +71,23 @@ TEST_F(PartialFiles, AFifoOrDeviceIsWrittenInPlaceNeverReplaced) {
   EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
 }
 
-// Taking back a written output removes a file, never a FIFO or a device.
-TEST_F(PartialFiles, TakingBackAnOutputRemovesOnlyAFile) {
-  const std::string file = (folder_ / "x.png").string(), fifo = (folder_ / "pipe").string();
-  std::ofstream(file) << "x";
-  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  remove_written_output(file);
-  remove_written_output(fifo);
-  remove_written_output("-");
-  EXPECT_FALSE(std::filesystem::exists(file));
-  EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+// A name of the longest length a folder allows (255 bytes) is legal, and so
+// is writing it: the temporary name, 15 bytes longer, once failed with "File
+// name too long".
+TEST_F(PartialFiles, TheLongestLegalNameIsWritten) {
+  for (const size_t length : {240u, 241u, 250u, 255u}) {
+    const std::string name = std::string(length - 4, 'n') + ".png";
+    const std::string path = (folder_ / name).string();
+    {
+      PartialFile out(path, "the image", PartialFile::Ending::kKeepExtension);
+      EXPECT_EQ(std::filesystem::path(out.temporary_path()).extension(), ".png");
+      std::ofstream(out.temporary_path()) << "bytes";
+      out.commit();
+    }
+    EXPECT_TRUE(std::filesystem::is_regular_file(path)) << length;
+    EXPECT_EQ(files_in_folder(), 1u) << length;
+    std::filesystem::remove(path);
+  }
 }
 
 TEST_F(PartialFiles, AFolderOrABlockDeviceIsNoPlaceForAFile) {

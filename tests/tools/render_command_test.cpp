@@ -357,11 +357,56 @@ TEST_F(RenderCommand, UnwritableOutputLeavesNoFile) {
   EXPECT_NE(r.err.find(path("no/such/dir/a.png") + ": cannot write the image"), std::string::npos) << r.err;
 }
 
-TEST_F(RenderCommand, MaskFailureRemovesTheImageToo) {
-  const CommandResult r = run("render " + std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene --size 32x32 -o " + path("a.png") +
-                    " --mask " + path("no/dir/m.png"));
-  EXPECT_EQ(r.status, 1);
-  EXPECT_FALSE(fs::exists(path("a.png")));
+// Every output is made before anything is drawn: one that cannot be written
+// stops the run at once and leaves the files that were there as they were
+// (a failing --mask once deleted the picture that -o named from an earlier
+// run).
+TEST_F(RenderCommand, AnOutputThatCannotBeWrittenLeavesEveryFileAsItWas) {
+  const std::string tet = write("tet.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  const std::string keep = write("keep.png", "an earlier picture"), mask = write("keep-mask.png", "an earlier mask");
+  for (const std::string& options : {" --mask " + path("missing/m.png"), " --mask " + mask + " --save-scene " + path("missing/s.scene")}) {
+    const CommandResult r = run("render " + tet + " --size 16x16 -o " + keep + options);
+    EXPECT_EQ(r.status, 1) << options;
+    EXPECT_NE(r.err.find(path("missing/")), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(": cannot write the "), std::string::npos) << r.err;
+    EXPECT_EQ(read(keep), "an earlier picture") << options;
+    EXPECT_EQ(read(mask), "an earlier mask") << options;
+    EXPECT_FALSE(fs::exists(path("missing")));
+    size_t files = 0;
+    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(path(""))) ++files;
+    EXPECT_EQ(files, 5u) << "tet.off, keep.png, keep-mask.png, out.txt and err.txt, and no temporary file";
+  }
+}
+
+// A picture written to standard output, by "-" or by the name of the file
+// it goes to, stands alone there: the words go to stderr. Binary bytes are
+// not written to a terminal.
+TEST_F(RenderCommand, APictureOnStandardOutputStandsAloneThere) {
+  const std::string tet = write("tet.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  // Through a pipe, as a user pipes it on: /dev/stdout then names no file.
+  const auto piped = [&](const std::string& args) {
+    return run("-o pipefail -c " + shell_quoted(std::string(UMBRA_EXECUTABLE) + " " + args + " | cat"), "", "bash");
+  };
+  for (const std::string output : {"-", "/dev/stdout"}) {
+    CommandResult r = piped("render " + tet + " --size 16x16 -o " + output);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out.substr(0, 8), "\x89PNG\r\n\x1a\n") << output;
+    EXPECT_EQ(r.out.find("wrote"), std::string::npos) << output;
+    EXPECT_NE(r.err.find("wrote "), std::string::npos) << r.err;
+    r = piped("render " + tet + " --size 16x16 --explain -o " + output);
+    EXPECT_EQ(r.status, 2) << output;
+    EXPECT_EQ(r.err, "umbra render: --explain prints to standard output, where -o " + output +
+                         " writes the picture: name a file with -o\n(see umbra render --help)\n");
+  }
+  if (std::system("script --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "no script(1) to give umbra a terminal";
+  const CommandResult r = run("-qec " + shell_quoted(std::string(UMBRA_EXECUTABLE) + " render " + tet + " --size 16x16 -o -") +
+                              " /dev/null", "", "script");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("umbra render: -o - writes the picture's bytes to standard output, which is a terminal here: redirect it "
+                       "(> out.png) or name a file"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find("PNG"), std::string::npos);
 }
 
 TEST_F(RenderCommand, UsageErrorsExitWithTwo) {
@@ -586,6 +631,29 @@ TEST_F(RenderCommand, TheSheetShowsThisRunsPicturesOnly) {
   r = run("render " + path("models") + " -o " + path("out") + " --size 40x30 --sheet " + path("sheet.png"));
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("umbra render: wrote the contact sheet " + path("sheet.png") + " (0 pictures)"), std::string::npos) << r.err;
+}
+
+// The contact sheet is written last, over whatever its name names: an input
+// mesh or one of the run's own pictures was once overwritten, exit 0.
+TEST_F(RenderCommand, TheSheetTakesThePlaceOfNoInputAndNoPicture) {
+  fs::create_directories(path("models"));
+  const std::string mesh = write("models/t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  // A mesh under a picture's name is read by its content, and is an input all the same.
+  const std::string odd = write("models/odd.png", read(mesh));
+  CommandResult r = run("render " + mesh + " " + odd + " -o " + path("out") + " --size 16x16 --sheet " + odd);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "umbra render: --sheet would overwrite its input \"" + odd + "\"; name another file\n(see umbra render --help)\n");
+  EXPECT_EQ(read(odd), read(mesh));
+  r = run("render " + path("models") + " -o " + path("out") + " --size 16x16 --sheet " + path("out/../out/t.obj.png"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "umbra render: --sheet " + path("out/../out/t.obj.png") + " is where the picture of \"" + mesh +
+                       "\" goes; name another file\n(see umbra render --help)\n");
+  EXPECT_FALSE(fs::exists(path("out")));
+  r = run("render " + path("models") + " -o " + path("out") + " --size 16x16 --sheet " + path("sheet.gif"));
+  EXPECT_EQ(r.status, 2);
+  r = run("render " + path("models") + " -o " + path("out") + " --size 16x16 --sheet " + path("sheet.jpg"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(read(path("sheet.jpg")).substr(0, 3), "\xff\xd8\xff");  // a JPEG, as its name says
 }
 
 // Outputs that would overwrite an input or cannot be a folder are usage
