@@ -6,9 +6,26 @@
 // stopped by SIGINT or SIGTERM removes every temporary file it had open
 // (remove_partial_files_on_signals).
 
+#include <optional>
 #include <string>
 
 namespace umbra {
+
+// A path removed if SIGINT, SIGTERM or SIGHUP ends the process while this
+// lives (remove_partial_files_on_signals): a file, or a folder, removed
+// once the files are.
+class RemovedOnSignals {
+ public:
+  enum class Kind { kFile, kFolder };
+  explicit RemovedOnSignals(const std::string& path, Kind kind = Kind::kFile);
+  ~RemovedOnSignals() { release(); }
+  RemovedOnSignals(const RemovedOnSignals&) = delete;
+  RemovedOnSignals& operator=(const RemovedOnSignals&) = delete;
+  void release();  // no longer removed
+
+ private:
+  int slot_ = -1;  // in the list the signal handler removes; -1 when the list was full
+};
 
 class PartialFile {
  public:
@@ -33,10 +50,16 @@ class PartialFile {
 
  private:
   std::string path_, what_, temporary_;
-  int slot_ = -1;  // in the list the signal handler removes; -1 when the list was full
+  std::optional<RemovedOnSignals> listed_;
   bool committed_ = false;
   bool in_place_ = false;  // a FIFO or device, written as it is
 };
+
+// Removes the temporary files of `path` that writers left behind when they
+// were killed (SIGKILL, a crash: no handler ran), as a parent whose worker
+// died while it wrote `path` does. Another writer of the same name at the
+// same moment would lose its temporary file too: callers own the name.
+void remove_abandoned_temporaries(const std::string& path, PartialFile::Ending ending = PartialFile::Ending::kPartial);
 
 // Makes SIGINT and SIGTERM remove every PartialFile's temporary file before
 // the process ends as the signal would end it. Called once, by main.

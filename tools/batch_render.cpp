@@ -13,6 +13,7 @@
 
 #include "image/contact_sheet.hpp"
 #include "image/image.hpp"
+#include "image/partial_file.hpp"
 #include "image/picture_file.hpp"
 #include "mesh/input_error.hpp"
 #include "render/headless_context.hpp"
@@ -47,6 +48,7 @@ const char* const kFailed = "failed";
 const char* const kTimedOut = "timed out";
 const char* const kCrashed = "crashed";
 const char* const kPassedOver = "passed over";
+const char* const kStopped = "stopped";  // SIGINT, SIGTERM or SIGHUP came before it was drawn
 
 // One line of JSON. Paths are bytes, JSON text is UTF-8: a byte that is no
 // part of UTF-8 becomes U+FFFD (docs/rendering.md says so).
@@ -67,6 +69,10 @@ std::string json_line(const Record& r) {
 void render_one(const std::string& path, const std::string& root, const std::string& out, const BatchRenderOptions& o,
                 std::optional<HeadlessContext>& context, Record& record) {
   try {
+    // The picture's temporary file first, as a single render makes its
+    // outputs: a folder that cannot be written fails before the drawing.
+    std::filesystem::create_directories(std::filesystem::path(out).parent_path());
+    PartialFile picture(out, "the image");
     inject_fault(path);
     if (const std::string what = neither_scene_nor_mesh(path); !what.empty()) throw InputError({path}, what);
     Scene scene = parse_scene_or_mesh_file(path, {}, nullptr, staging_for(o.staging, o.settings), TextureMaps{true, root, o.any_texture_path});
@@ -79,8 +85,8 @@ void render_one(const std::string& path, const std::string& root, const std::str
     PictureRequest request;
     request.show_volumes = o.show_volumes;
     const Image image = draw_picture(scene, settings, request, context, o.gl).image;
-    std::filesystem::create_directories(std::filesystem::path(out).parent_path());
-    write_png(image, out);
+    write_picture_into(image, picture);
+    picture.commit();
     record.status = kDrawn;
     record.triangles = scene.triangles.size();
     for (const Mesh& m : scene.meshes) record.triangles += m.triangles.size();
@@ -201,8 +207,9 @@ int run_batch_render(const BatchRenderOptions& o) {
   // costs only its own picture. Each worker keeps its GL context (its own
   // copy of `context`) from one file to the next.
   std::optional<HeadlessContext> context;
+  int stopped_by = 0;
   try {
-    run_isolated(
+    stopped_by = run_isolated(
         to_draw.size(), o.jobs, o.timeout_s,
         [&](size_t k) {
           const size_t i = to_draw[k];
@@ -210,6 +217,8 @@ int run_batch_render(const BatchRenderOptions& o) {
         },
         [&](size_t k, const IsolatedResult& result) {
           read_job_result(result, o.timeout_s, records[to_draw[k]]);
+          // A worker killed while it wrote (SIGKILL: no handler ran) leaves its temporary file.
+          if (result.ending == IsolatedResult::Ending::kKilled) remove_abandoned_temporaries(records[to_draw[k]].picture);
           end(to_draw[k]);
         });
   } catch (const std::exception& e) {  // no process or pipe to be had: what was drawn stays
@@ -218,16 +227,30 @@ int run_batch_render(const BatchRenderOptions& o) {
     return 1;
   }
   progress.clear();
+  if (stopped_by) {
+    // The files not reached, recorded as such, so that --json counts every input.
+    for (size_t i = 0; i < count; ++i)
+      if (!ended[i]) {
+        records[i].status = kStopped;
+        records[i].error = records[i].path + ": not drawn: umbra was stopped (" + signal_name(stopped_by) + ")";
+        ended[i] = 1;
+      }
+    for (; printed < count; ++printed)
+      if (o.json) std::cout << json_line(records[printed]) << std::flush;
+  }
 
-  size_t drawn = 0, skipped = 0, timed_out = 0;
+  size_t drawn = 0, skipped = 0, timed_out = 0, stopped = 0;
   for (const Record& r : records) {
     drawn += r.status == kDrawn;
     skipped += r.status == kSkipped;
     timed_out += r.status == kTimedOut;
+    stopped += r.status == kStopped;
   }
-  const size_t failed = count - drawn - skipped;
+  const size_t failed = count - drawn - skipped - stopped;
   bool sheet_failed = false;
-  if (o.sheet) {
+  if (o.sheet && stopped_by) {
+    std::cerr << "umbra render: no contact sheet: the run was stopped before every picture was drawn\n";
+  } else if (o.sheet) {
     // This run's pictures (drawn, or up to date), read back in file order:
     // held one at a time while drawing, so that a folder of large pictures
     // fits in memory; never an older picture of a file that failed now.
@@ -258,6 +281,11 @@ int run_batch_render(const BatchRenderOptions& o) {
             << " in " << elapsed << ": " << drawn << (drawn == 1 ? " picture" : " pictures") << " in " << o.out_dir
             << (skipped ? ", " + std::to_string(skipped) + " up to date (--skip-existing)" : "") << ", " << failed << " failed"
             << (timed_out ? " (" + std::to_string(timed_out) + " timed out)" : "") << "\n";
+  if (stopped_by) {
+    std::cerr << "umbra render: stopped (" << signal_name(stopped_by) << "): " << stopped << " of " << count
+              << (count == 1 ? " file" : " files") << " not drawn; the same command with --skip-existing draws only those\n";
+    return 128 + stopped_by;
+  }
   return failed == 0 && !sheet_failed ? 0 : 1;
 }
 

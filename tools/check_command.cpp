@@ -463,13 +463,19 @@ int run_check_command(const std::vector<std::string>& argv) {
     // In worker processes: a mesh that hangs, crashes or runs out
     // of memory costs only its own report.
     try {
-      run_isolated(
+      const int stopped_by = run_isolated(
           count, options.jobs, options.timeout_s, [&](size_t i) { return check_job(meshes[i], options, pictures[i]); },
           [&](size_t i, const IsolatedResult& result) {
             outcomes[i] = read_check_job(meshes[i], result, options);
             ++finished;
             print_ready();
           });
+      if (stopped_by) {  // no report page: it would hold only some of the meshes
+        progress.clear();
+        std::cerr << "umbra check: stopped (" << signal_name(stopped_by) << "): " << printed << " of " << count
+                  << (count == 1 ? " mesh" : " meshes") << " reported, in file order\n";
+        return 128 + stopped_by;
+      }
     } catch (const std::exception& e) {  // no process or pipe to be had: what was reported stays
       progress.clear();
       std::cerr << "umbra check: " << e.what() << "\n";

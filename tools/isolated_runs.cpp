@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -21,6 +22,8 @@
 #include <vector>
 
 #include <tbb/global_control.h>
+
+#include "image/partial_file.hpp"
 
 namespace umbra {
 namespace {
@@ -103,6 +106,7 @@ Worker start_worker(const std::vector<Worker>& others, size_t jobs, const std::f
       for (const int fd : {w.to_worker, w.from_worker})
         if (fd >= 0) ::close(fd);
     ::close(indices[1]), ::close(results[0]);
+    remove_partial_files_on_signals();  // not the parent's StopOnSignals: a worker ends, removing its files
     work(indices[0], results[1], parent, jobs, job);
   }
   ::close(indices[0]), ::close(results[1]);
@@ -111,16 +115,58 @@ Worker start_worker(const std::vector<Worker>& others, size_t jobs, const std::f
   return w;
 }
 
-// Ends `w` (SIGKILL where `kill`), waits for it, and says how it ended.
-int stop_worker(Worker& w, bool kill) {
-  if (kill) ::kill(w.pid, SIGKILL);
+// How long a worker told to stop (SIGTERM) has to remove its temporary
+// files before it is killed (SIGKILL).
+constexpr auto kGraceToStop = std::chrono::seconds(2);
+
+// Ends `w`, waits for it, and says how it ended. Where `stop`, it is told
+// to with SIGTERM, whose handler removes the files it was writing
+// (remove_partial_files_on_signals), and killed if it has not ended in
+// kGraceToStop; else its index pipe closes and it ends by itself.
+int stop_worker(Worker& w, bool stop) {
   for (int* fd : {&w.to_worker, &w.from_worker})
     if (*fd >= 0) ::close(*fd), *fd = -1;
   int status = 0;
+  if (stop) {
+    ::kill(w.pid, SIGTERM);
+    for (const auto deadline = Clock::now() + kGraceToStop; Clock::now() < deadline;) {
+      const pid_t ended = ::waitpid(w.pid, &status, WNOHANG);
+      if (ended == w.pid || (ended < 0 && errno != EINTR)) return status;
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    ::kill(w.pid, SIGKILL);
+  }
   while (::waitpid(w.pid, &status, 0) < 0 && errno == EINTR) {
   }
   return status;
 }
+
+// The signal that asked this process to stop, while run_isolated runs.
+volatile std::sig_atomic_t stop_asked = 0;
+
+// SIGINT, SIGTERM and SIGHUP, while the workers run, ask the run to stop
+// (stop_asked), so that it stops its workers and waits for them, each
+// removing its own temporary files, before the caller says what was done;
+// the handlers before are put back after.
+class StopOnSignals {
+ public:
+  StopOnSignals() {
+    stop_asked = 0;
+    struct sigaction action {};
+    action.sa_handler = [](int signal_number) { stop_asked = signal_number; };
+    sigemptyset(&action.sa_mask);  // no SA_RESTART: the wait for results ends at once
+    for (size_t k = 0; k < std::size(kSignals); ++k) ::sigaction(kSignals[k], &action, &previous_[k]);
+  }
+  ~StopOnSignals() {
+    for (size_t k = 0; k < std::size(kSignals); ++k) ::sigaction(kSignals[k], &previous_[k], nullptr);
+  }
+  StopOnSignals(const StopOnSignals&) = delete;
+  StopOnSignals& operator=(const StopOnSignals&) = delete;
+
+ private:
+  static constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
+  struct sigaction previous_[std::size(kSignals)] {};
+};
 
 // The result `w` has received whole, if it has: its output, less its length.
 std::optional<std::string> whole_result(const Worker& w) {
@@ -146,6 +192,11 @@ class IgnoredSigpipe {
 
 }  // namespace
 
+std::string signal_name(int signal_number) {
+  const char* name = sigabbrev_np(signal_number);
+  return name ? std::string("SIG") + name : "signal " + std::to_string(signal_number);
+}
+
 std::string unfinished_phrase(const IsolatedResult& result, double timeout_s) {
   switch (result.ending) {
     case IsolatedResult::Ending::kFinished: return "";
@@ -156,15 +207,15 @@ std::string unfinished_phrase(const IsolatedResult& result, double timeout_s) {
     }
     case IsolatedResult::Ending::kKilled: break;
   }
-  const char* name = sigabbrev_np(result.signal);
-  const std::string signal = name ? std::string("SIG") + name : "signal " + std::to_string(result.signal);
+  const std::string signal = signal_name(result.signal);
   if (result.signal == SIGKILL) return "killed (" + signal + ": out of memory?)";
   return "crashed (" + signal + ")";
 }
 
-void run_isolated(size_t count, size_t jobs, double timeout_s, const std::function<std::string(size_t)>& job,
-                  const std::function<void(size_t, const IsolatedResult&)>& done) {
+int run_isolated(size_t count, size_t jobs, double timeout_s, const std::function<std::string(size_t)>& job,
+                 const std::function<void(size_t, const IsolatedResult&)>& done) {
   const IgnoredSigpipe ignored;
+  const StopOnSignals stop_on_signals;
   std::vector<Worker> workers;
   size_t next = 0, finished = 0;
   // A worker ended while on a job: the job's result is how it ended.
@@ -185,6 +236,28 @@ void run_isolated(size_t count, size_t jobs, double timeout_s, const std::functi
     done(index, result);
   };
   while (finished < count) {
+    if (stop_asked) {
+      // A result already sent is reported (its files are written); the jobs
+      // still under way end unfinished, and are not.
+      for (Worker& w : workers) {
+        if (w.pid < 0 || !w.index) continue;
+        char buffer[65536];
+        for (pollfd fd{w.from_worker, POLLIN, 0}; !whole_result(w) && ::poll(&fd, 1, 0) > 0 && (fd.revents & POLLIN);) {
+          const ssize_t n = ::read(w.from_worker, buffer, sizeof buffer);
+          if (n <= 0) break;
+          w.received.append(buffer, size_t(n));
+        }
+        if (const std::optional<std::string> output = whole_result(w)) {
+          IsolatedResult result;
+          result.seconds = seconds_since(w.start);
+          result.output = *output;
+          done(*w.index, result);
+        }
+      }
+      for (Worker& w : workers)
+        if (w.pid >= 0) stop_worker(w, true);
+      return stop_asked;
+    }
     // Every job under way, as far as the workers go: idle ones take the next.
     workers.erase(std::remove_if(workers.begin(), workers.end(), [](const Worker& w) { return w.pid < 0; }), workers.end());
     for (Worker& w : workers) {
@@ -213,6 +286,10 @@ void run_isolated(size_t count, size_t jobs, double timeout_s, const std::functi
     for (const Worker& w : workers) fds.push_back({w.index ? w.from_worker : -1, POLLIN, 0});  // -1: not polled
     if (::poll(fds.data(), fds.size(), wait_ms) < 0 && errno != EINTR)
       throw std::runtime_error(std::string("cannot wait for the jobs: ") + std::strerror(errno));
+    // Ctrl-C reaches the workers with this process (one process group): a
+    // worker it ended is stopped, not crashed. The signal is taken by the
+    // time the wait returns, since one kill(2) sent both.
+    if (stop_asked) continue;
     for (size_t k = 0; k < workers.size(); ++k) {
       Worker& w = workers[k];
       if (!w.index) continue;
@@ -244,6 +321,7 @@ void run_isolated(size_t count, size_t jobs, double timeout_s, const std::functi
   }
   for (Worker& w : workers)
     if (w.pid >= 0) stop_worker(w, false);  // its index pipe closed: it ends
+  return 0;
 }
 
 }  // namespace umbra

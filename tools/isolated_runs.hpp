@@ -16,7 +16,7 @@ namespace umbra {
 struct IsolatedResult {
   enum class Ending {
     kFinished,  // the job returned: `output` is what it returned
-    kTimedOut,  // stopped (SIGKILL) after the time allowed
+    kTimedOut,  // stopped (SIGTERM, then SIGKILL) after the time allowed
     kKilled,    // ended by a signal: a crash (SIGSEGV, SIGABRT) or the kernel's OOM killer (SIGKILL)
   };
   Ending ending = Ending::kFinished;
@@ -25,6 +25,9 @@ struct IsolatedResult {
   std::string output;
   double seconds = 0.0;
 };
+
+// "SIGINT", "SIGTERM": a signal's name as kill(1) and the shell say it.
+std::string signal_name(int signal_number);
 
 // What `result` says of a job that did not finish: "timed out after 10 s",
 // "crashed (SIGSEGV)", "killed (SIGKILL: out of memory?)"; "" for one that did.
@@ -39,7 +42,15 @@ std::string unfinished_phrase(const IsolatedResult& result, double timeout_s);
 // state of this process's other threads (a progress bar's), and must not
 // throw. What a job keeps in this process's memory (captured by reference)
 // is its worker's own copy, kept from one job to its worker's next.
-void run_isolated(size_t count, size_t jobs, double timeout_s, const std::function<std::string(size_t)>& job,
-                  const std::function<void(size_t, const IsolatedResult&)>& done);
+//
+// A job past its time, and every worker when this process is asked to stop,
+// is stopped with SIGTERM, whose handler removes the files the worker was
+// writing, and killed (SIGKILL) if it has not ended two seconds later.
+// SIGINT, SIGTERM or SIGHUP to this process stops the run: its workers are
+// stopped and waited for, the jobs under way are not reported, and the
+// signal's number is returned (0 once every job has been reported), so
+// that the caller can say what was done before it ends.
+int run_isolated(size_t count, size_t jobs, double timeout_s, const std::function<std::string(size_t)>& job,
+                 const std::function<void(size_t, const IsolatedResult&)>& done);
 
 }  // namespace umbra

@@ -208,6 +208,13 @@ std::string other_known_format_of_file(const std::string& path) {
   }
 }
 
+std::optional<size_t> most_bytes_of_input(std::string_view head) {
+  if (head.size() < 84 || is_zip(head) || looks_like_text(head.substr(0, kSniffBytes))) return std::nullopt;
+  for (const MeshFormat& f : mesh_formats())
+    if (f.id != "stl" && f.has_signature(head)) return std::nullopt;
+  return most_binary_stl_bytes(head);
+}
+
 bool looks_like_text(std::string_view head) {
   return std::none_of(head.begin(), head.end(), [](char ch) {
     const auto c = static_cast<unsigned char>(ch);

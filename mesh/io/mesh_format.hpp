@@ -4,6 +4,7 @@
 // "solid ... facet", glTF's JSON "asset", OBJ's statements), with
 // the file name's extension as the fallback for content too broken to tell.
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -67,6 +68,12 @@ std::string other_known_format(std::string_view bytes);
 
 // The same for the file at `path`; "" too when it cannot be read.
 std::string other_known_format_of_file(const std::string& path);
+
+// The most bytes a scene or mesh file that starts with `head` (its first 64
+// KiB, or all of it) can hold, where its start bounds it: a binary file with
+// none of the formats' signatures can only be a binary STL, whose count says
+// its size. None where it may run to any length (text, PLY, glTF, 3MF).
+std::optional<size_t> most_bytes_of_input(std::string_view head);
 
 // Text: no NUL and no control bytes but whitespace in `head`.
 bool looks_like_text(std::string_view head);

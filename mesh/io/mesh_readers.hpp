@@ -28,6 +28,10 @@ PolygonSoup read_3mf(std::string_view bytes, const std::string& path);
 // not look like STL's (a number that is not finite, a facet normal whose
 // length is neither 0 nor about 1).
 size_t binary_stl_trailing_bytes(std::string_view bytes);
+// The most bytes a binary STL starting with `head` (84 bytes or more) may
+// hold: its header, the triangles its count says, and the most trailing
+// bytes the reader passes over.
+size_t most_binary_stl_bytes(std::string_view head);
 
 // Throws a located error when a polygon refers to a point the file lacks.
 void require_corners_in_range(const PolygonSoup& soup);

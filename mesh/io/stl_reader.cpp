@@ -107,6 +107,10 @@ PolygonSoup read_ascii_stl(std::string_view text, const std::string& path) {
 
 }  // namespace
 
+size_t most_binary_stl_bytes(std::string_view head) {
+  return kBinaryHeaderBytes + size_t(little_endian_u32(head.data() + 80)) * kBinaryTriangleBytes + kMaxTrailingBytes - 1;
+}
+
 size_t binary_stl_trailing_bytes(std::string_view bytes) {
   if (bytes.size() < kBinaryHeaderBytes) return 0;
   const uint32_t count = little_endian_u32(bytes.data() + 80);

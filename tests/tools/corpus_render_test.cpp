@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <map>
 #include <sstream>
+#include <tuple>
 
 #include "tests/tools/command_fixture.hpp"
 
@@ -40,6 +41,13 @@ class CorpusRender : public test::CommandTest {
     fs::create_directories(to.parent_path());
     fs::copy(from, to, fs::copy_options::recursive);
     return to.string();
+  }
+  // The temporary files under `folder` (NAME.XXXXXX.partial), at any depth.
+  static size_t temporaries_in(const std::string& folder) {
+    size_t count = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(folder))
+      count += entry.path().filename().string().find(".partial") != std::string::npos;
+    return count;
   }
   // A PNG's signature and header alone, claiming `side` x `side` grey pixels.
   static std::string png_header(uint32_t side) {
@@ -103,6 +111,7 @@ TEST_F(CorpusRender, AMixedFolderRendersEveryGoodFileAndRecordsEveryFile) {
   EXPECT_NE(first.err.find("fifo.png\": is not a regular file (a FIFO)"), std::string::npos) << first.err;
   EXPECT_NE(first.err.find(": 7 pictures in " + out + ", 2 failed (1 timed out)\n"), std::string::npos) << first.err;
   EXPECT_NE(read(out + "/a/x.off.png"), read(out + "/b/x.off.png"));
+  EXPECT_EQ(temporaries_in(out), 0u) << "the timed-out worker's picture, made before it hung, is removed";
 
   // Resumed: nothing drawn again, the failures tried again.
   const auto written_at = fs::last_write_time(out + "/cgal/anchor.off.png");
@@ -140,6 +149,42 @@ TEST_F(CorpusRender, ACrashOrRunningOutOfMemoryCostsOnlyItsOwnFile) {
   EXPECT_NE(r.err.find(": 4 pictures in " + path("out") + ", 3 failed\n"), std::string::npos) << r.err;
   for (const auto& entry : fs::directory_iterator(path("out")))
     EXPECT_EQ(entry.path().extension(), ".png") << entry.path();  // no temporary file left by the crashes
+}
+
+// Ctrl-C (SIGINT to the whole process group) or SIGTERM to umbra alone stop
+// a folder run: the workers are stopped and waited for, and remove their
+// temporary files, before umbra says what was drawn and what was not, and
+// exits as the signal asks (128 + its number).
+TEST_F(CorpusRender, AStoppedRunSaysWhatItDrewAndLeavesNoTemporaryFile) {
+  fs::create_directories(folder_ / "models");
+  for (const char* name : {"a.off", "hang-1.off", "hang-2.off", "z.off"}) write(std::string("models/") + name, kTetrahedron);
+  for (const auto& [kill, signal, status] : {std::tuple{"kill -INT -- -$pid", "SIGINT", 130}, {"kill -TERM $pid", "SIGTERM", 143}}) {
+    fs::remove_all(path("out"));
+    // Each worker hangs on a file whose picture's temporary file it has made;
+    // setsid makes umbra a process group's leader, as a shell's job is.
+    const std::string script = "setsid " + std::string(UMBRA_FAULT_INJECTED_EXECUTABLE) + " render " + path("models") + " -o " +
+                               path("out") + " --size 16x16 --jobs 2 --json & pid=$!; " +
+                               "for i in $(seq 600); do [ -e " + path("out/a.off.png") + " ] && [ $(ls " + path("out") +
+                               " | grep -c partial) = 2 ] && break; " +
+                               "sleep 0.1; done; ls " + path("out") + " | grep -c partial >&2; " + kill + "; wait $pid";
+    const CommandResult r = run("-c " + shell_quoted(script), "", "bash");
+    EXPECT_EQ(r.status, status) << r.err;
+    EXPECT_EQ(r.err.substr(0, 2), "2\n") << "both hanging workers had a temporary file: " << r.err;
+    EXPECT_EQ(temporaries_in(path("out")), 0u) << signal;
+    EXPECT_TRUE(fs::exists(path("out/a.off.png")));
+    EXPECT_EQ(lines(r.out), 4u) << r.out;
+    EXPECT_EQ(status_of(line_of(r.out, path("models/a.off"))), "drawn");
+    for (const char* name : {"hang-1.off", "hang-2.off", "z.off"})
+      EXPECT_NE(line_of(r.out, path(std::string("models/") + name))
+                    .find("\"status\":\"stopped\",\"seconds\":0.0,\"triangles\":0,\"error\":\"" + path(std::string("models/") + name) +
+                          ": not drawn: umbra was stopped (" + signal + ")\"}"),
+                std::string::npos)
+          << r.out;
+    EXPECT_NE(r.err.find(": 1 picture in " + path("out") + ", 0 failed\numbra render: stopped (" + std::string(signal) +
+                         "): 3 of 4 files not drawn; the same command with --skip-existing draws only those\n"),
+              std::string::npos)
+        << r.err;
+  }
 }
 
 TEST_F(CorpusRender, TheCorpusOptionsAreForSeveralFiles) {

@@ -278,6 +278,34 @@ TEST_F(RenderCommand, AMeshReadFromStandardInputIsTheFilesPicture) {
   EXPECT_FALSE(fs::exists(path("empty.png")));
 }
 
+// Standard input's copy: its start is looked at before the rest is read, so
+// that an endless stream of zeros (no scene, and no binary STL past the
+// size its count allows) is refused at once, not copied until the disk is
+// full; and the copy, in a folder of its own, goes however umbra is stopped.
+TEST_F(RenderCommand, StandardInputIsLookedAtFirstAndItsCopyNeverLeftBehind) {
+  fs::create_directories(path("tmp"));
+  const std::string tmp = "TMPDIR=" + path("tmp") + " ";
+  CommandResult r = run("render - -o " + path("zeros.png"), "cat /dev/zero | " + tmp + "timeout 60 ");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("/standard-input: neither a scene nor a mesh file (" + mesh_format_names() + "): binary data\n"),
+            std::string::npos)
+      << r.err;
+  r = run("check -", "cat /dev/zero | " + tmp + "timeout 60 ");
+  EXPECT_EQ(r.status, 2) << r.err;
+  for (const char* signal : {"TERM", "INT", "HUP"}) {
+    // umbra waits on a FIFO that the shell itself holds open, with a line written.
+    const std::string fifo = path(std::string("in-") + signal);
+    const std::string script = "mkfifo " + fifo + "; " + tmp + std::string(UMBRA_EXECUTABLE) + " render - -o " + path("never.png") +
+                               " < " + fifo + " & pid=$!; exec 3>" + fifo + "; echo OFF >&3; for i in $(seq 300); do ls " +
+                               path("tmp") + " | grep -q umbra-stdin && break; sleep 0.1; done; sleep 0.2; kill -" + signal +
+                               " $pid; wait $pid";
+    r = run("-c " + shell_quoted(script), "", "bash");
+    EXPECT_NE(r.status, 0) << signal;
+    EXPECT_TRUE(fs::is_empty(path("tmp"))) << signal << ": the copy of standard input was left in TMPDIR";
+  }
+  EXPECT_FALSE(fs::exists(path("never.png")));
+}
+
 // A file that cannot be opened says why, and is not called a scene unless
 // it is named as one.
 TEST_F(RenderCommand, AMissingFileSaysWhy) {
