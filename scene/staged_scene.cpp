@@ -77,16 +77,19 @@ bool is_mesh_file(const std::string& path) {
 }
 
 std::string neither_scene_nor_mesh(const std::string& path) {
-  if (std::filesystem::path(path).extension() == ".scene" || is_mesh_file(path)) return "";
-  std::string what;
   try {
     const MappedFile file(path);
-    what = other_known_format(file.bytes());
-    if (what.empty() && !looks_like_text(file.bytes().substr(0, 1 << 16))) what = "binary data";
+    const std::string_view bytes = file.bytes();
+    // No statement at all: nothing to say of it but that, whatever its name.
+    if (bytes.find_first_not_of(" \t\r\n\f\v") == std::string_view::npos)
+      return bytes.empty() ? "the file is empty" : "the file holds only blank lines";
+    if (std::filesystem::path(path).extension() == ".scene" || !detect_mesh_format(bytes).empty()) return "";
+    std::string what = other_known_format(bytes);
+    if (what.empty() && !looks_like_text(bytes.substr(0, 1 << 16))) what = "binary data";
+    return what.empty() ? "" : "neither a scene nor a mesh file (" + mesh_format_names() + "): " + what;
   } catch (const InputError&) {
     return "";
   }
-  return what.empty() ? "" : "neither a scene nor a mesh file (" + mesh_format_names() + "): " + what;
 }
 
 std::vector<glm::dvec3> framing_points(const Mesh& mesh, size_t most) {

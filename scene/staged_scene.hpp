@@ -29,7 +29,9 @@ constexpr int kStagedAntialias = 3;
 bool is_mesh_file(const std::string& path);
 
 // Why `path` is plainly neither a scene nor a mesh file: "neither a scene
-// nor a mesh file (OBJ, ..., or 3MF): a JPEG image". "" for a .scene file, a
+// nor a mesh file (OBJ, ..., or 3MF): a JPEG image", or "the file is
+// empty" or "the file holds only blank lines" (of any name: such a file is
+// no scene either). "" for a .scene file, a
 // mesh file, or other text, which the scene parser reads (and says, line by
 // line, what is wrong with), and for a file that cannot be read (the parser
 // says why).

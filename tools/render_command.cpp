@@ -52,7 +52,8 @@ in a folder to OUTDIR/its path in that folder.png, a file named on its own
 to OUTDIR/its name.png; files that would share a name take as many of their
 folders' names as tell them apart. Files are drawn in worker processes: a
 file that fails, crashes or runs out of memory is reported and the rest go
-on. A model's texture
+on. Ctrl-C stops the workers, says how many files were not drawn and exits
+130; --skip-existing then resumes. A model's texture
 maps are read only from inside the folder named (see --any-texture-path).
 
 options:
@@ -132,7 +133,8 @@ options:
                         of N disjoint parts, as umbra check --shard splits them
   --sheet SHEET.png     with several files: also one picture of this run's
                         pictures, each shrunk to at most 200 pixels wide and
-                        labelled with its file's name
+                        labelled with its file's name (.png or .jpg; never
+                        an input's or a picture's name)
   --timeout SECONDS     with several files: stop a file's render after this
                         long (its worker is stopped and replaced), report it
                         as timed out and go on
@@ -141,8 +143,8 @@ options:
                         stopped part way resumes where it stopped
   --json                with several files: one line of JSON per file on
                         stdout: path, picture, status (drawn, skipped,
-                        failed, timed out, crashed or passed over), seconds,
-                        triangles and error
+                        failed, timed out, crashed, stopped or passed over),
+                        seconds, triangles and error
   --background COLOR    what shows where no surface is: a colour (#rrggbb or a
                         name such as white), or transparent: alpha 0 there,
                         in a PNG with an alpha channel (default: the scene's

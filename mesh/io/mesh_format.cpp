@@ -114,6 +114,20 @@ bool is_obj(std::string_view head) {
 
 bool never(std::string_view) { return false; }
 
+// `bytes` past the comment lines ('#', as OBJ, OFF and scenes write them)
+// and blank lines at its start, however many: what follows tells a text
+// format, and a file that opens with 64 KiB of comments is still an OBJ.
+std::string_view after_leading_comments(std::string_view bytes) {
+  size_t at = 0;
+  for (;;) {
+    at = bytes.find_first_not_of(" \t\r\n", at);
+    if (at == std::string_view::npos) return {};
+    if (bytes[at] != '#') return bytes.substr(at);
+    at = bytes.find('\n', at);
+    if (at == std::string_view::npos) return {};
+  }
+}
+
 // A reader of a format whose files hold no texture maps that umbra draws.
 template <PolygonSoup (*reader)(std::string_view, const std::string&)>
 PolygonSoup without_maps(std::string_view bytes, const std::string& path, const TextureMaps&) {
@@ -161,7 +175,8 @@ std::string detect_mesh_format(std::string_view bytes) {
   if (starts_with(bytes, "\xef\xbb\xbf")) bytes.remove_prefix(3);  // a UTF-8 byte-order mark
   for (const MeshFormat& f : mesh_formats())
     if (f.has_signature(bytes)) return std::string(f.id);
-  const std::string_view head = bytes.substr(0, kSniffBytes);
+  if (!looks_like_text(bytes.substr(0, kSniffBytes))) return "";
+  const std::string_view head = after_leading_comments(bytes).substr(0, kSniffBytes);
   if (!looks_like_text(head)) return "";
   for (const MeshFormat& f : mesh_formats())
     if (f.has_text(head)) return std::string(f.id);

@@ -272,7 +272,8 @@ TEST(InterchangeFormats, BrokenFilesGiveTheirExactMessage) {
   const std::string package = threemf_of(cube);
   EXPECT_EQ(test::read_error_of(package.substr(0, package.size() / 2), "m.3mf"),
             "m.3mf: not a valid 3MF file: the zip archive is cut short (it has no end of central directory)");
-  EXPECT_EQ(test::read_error_of("\t", "m.3mf"), "m.3mf: not a valid 3MF file: it is not a zip archive, which a 3MF file is");
+  EXPECT_EQ(test::read_error_of("\t", "m.3mf"), "m.3mf: the file holds only blank lines");
+  EXPECT_EQ(test::read_error_of("x", "m.3mf"), "m.3mf: not a valid 3MF file: it is not a zip archive, which a 3MF file is");
   const std::string outside = test::threemf(
       R"(<object id="2" type="model"><mesh><vertices><vertex x="0" y="0" z="0"/><vertex x="1" y="0" z="0"/>)"
       R"(<vertex x="0" y="1" z="0"/></vertices><triangles><triangle v1="0" v2="1" v3="7"/></triangles></mesh></object>)",

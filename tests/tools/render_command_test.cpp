@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <tuple>
 
 #include "mesh/io/mesh_format.hpp"
 #include "scene/scene_parser.hpp"
@@ -331,6 +332,30 @@ TEST_F(RenderCommand, AFileThatIsPlainlyNeitherASceneNorAMeshExitsWithTwo) {
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err, binary + ": neither a scene nor a mesh file " + formats + ": binary data\n");
   EXPECT_FALSE(fs::exists(path("a.png")));
+}
+
+// An empty file (or one of blank lines) is said to be so, by render and
+// check alike, not read as a scene without a light; an OBJ that opens with
+// more than 64 KiB of comments is an OBJ all the same.
+TEST_F(RenderCommand, AnEmptyFileIsSaidToBeAndCommentsFirstStillMakeAnObj) {
+  for (const auto& [name, bytes, said] : {std::tuple{"empty.obj", "", "the file is empty"}, {"empty.stl", "", "the file is empty"},
+                                         {"empty.scene", "", "the file is empty"},
+                                         {"blank.obj", "\n \r\n\t\n", "the file holds only blank lines"}}) {
+    const std::string file = write(name, bytes);
+    CommandResult r = run("render " + file + " -o " + path("a.png"));
+    EXPECT_EQ(r.status, 2) << name;
+    EXPECT_EQ(r.err, file + ": " + said + "\n");
+    r = run("check --brief " + file);
+    EXPECT_EQ(r.status, 2) << name;
+    EXPECT_EQ(r.out + r.err, file + ": " + said + "\n");
+  }
+  EXPECT_FALSE(fs::exists(path("a.png")));
+  std::string comments;
+  for (int line = 0; comments.size() < (1 << 17); ++line) comments += "# exported by a tool that says a lot, line " + std::to_string(line) + "\n";
+  const std::string obj = write("commented.obj", comments + "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n");
+  const CommandResult r = run("render " + obj + " --size 16x16 -o " + path("a.png"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(run("check " + obj).status, 0);
 }
 
 TEST_F(RenderCommand, AMeshFileWithNoFacesExitsWithOneAndWritesNothing) {
