@@ -9,4 +9,15 @@ std::string FileLoc::str() const {
   return s;
 }
 
+const char* input_problem_name(InputProblem problem) {
+  switch (problem) {
+    case InputProblem::kMalformed: return "malformed";
+    case InputProblem::kUnreadable: return "unreadable";
+    case InputProblem::kUnsupportedFormat: return "unsupported-format";
+    case InputProblem::kEmpty: return "empty";
+    case InputProblem::kNoFaces: return "no-faces";
+  }
+  return "malformed";
+}
+
 }  // namespace umbra

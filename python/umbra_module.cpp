@@ -108,7 +108,7 @@ class Renderer {
         scene = stage_polygon_soup(soup, nullptr, staging);
       } else {
         const std::string& path = std::get<std::string>(source);
-        if (const std::string what = neither_scene_nor_mesh(path); !what.empty()) throw InputError({path}, what);
+        if (const std::optional<InputError> error = neither_scene_nor_mesh(path)) throw *error;
         scene = parse_scene_or_mesh_file(path, {}, nullptr, staging, TextureMaps{true, "", false});
       }
       soup.reset();

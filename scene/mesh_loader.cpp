@@ -55,7 +55,7 @@ std::vector<glm::dvec3> placed_points(Mesh& m, const FileLoc& path_at, const Mes
       return collinear(analysis.positions[t[0]], analysis.positions[t[1]], analysis.positions[t[2]]);
     };
     if (std::all_of(analysis.triangles.begin(), analysis.triangles.end(), flat))
-      throw InputError(path_at, "mesh file " + in_quotes(m.path) + " has no faces with area to fit");
+      throw InputError(path_at, "mesh file " + in_quotes(m.path) + " has no faces with area to fit", InputProblem::kNoFaces);
     if (std::isinf(longest))
       throw InputError(path_at, "mesh file " + in_quotes(m.path) + " is too large to fit: its extent overflows double precision");
     if (!(longest > 0.0))
@@ -109,9 +109,10 @@ LoadedMesh load_mesh(MeshStatement statement, const TextureMaps& maps) {
     analysis = statement.soup ? analyse_mesh(*statement.soup, topology_only)
                               : analyse_mesh(read_polygon_soup(m.path, maps), topology_only);
   } catch (const InputError& e) {
+    if (statement.staged) throw;
     if (e.where().line == 0)  // the file as a whole: say so at the statement that names it
-      throw InputError(statement.path_at, "mesh file " + in_quotes(m.path) + ": " + e.message());
-    throw InputError(e.where(), e.message() + " (in the mesh of " + m.where.str() + ")");
+      throw InputError(statement.path_at, "mesh file " + in_quotes(m.path) + ": " + e.message(), e.problem());
+    throw InputError(e.where(), e.message() + " (in the mesh of " + m.where.str() + ")", e.problem());
   }
   m.positions = placed_points(m, statement.path_at, analysis, loaded.rounding);
   m.triangles = std::move(analysis.triangles);

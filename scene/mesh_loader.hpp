@@ -26,6 +26,9 @@ struct MeshStatement {
   // Given: the mesh itself, taken instead of reading mesh.path (a mesh
   // handed over as arrays: array_soup.hpp).
   std::shared_ptr<const PolygonSoup> soup;
+  // Written by umbra (a staged scene), not by the user: an error in the
+  // file is said of the file alone, never of this statement's line.
+  bool staged = false;
 };
 
 // Reads every statement's file, its path taken relative to the folder of the

@@ -76,19 +76,20 @@ bool is_mesh_file(const std::string& path) {
   return std::filesystem::path(path).extension() != ".scene" && !detect_mesh_format_of_file(path).empty();
 }
 
-std::string neither_scene_nor_mesh(const std::string& path) {
+std::optional<InputError> neither_scene_nor_mesh(const std::string& path) {
   try {
     const MappedFile file(path);
     const std::string_view bytes = file.bytes();
     // No statement at all: nothing to say of it but that, whatever its name.
     if (bytes.find_first_not_of(" \t\r\n\f\v") == std::string_view::npos)
-      return bytes.empty() ? "the file is empty" : "the file holds only blank lines";
-    if (std::filesystem::path(path).extension() == ".scene" || !detect_mesh_format(bytes).empty()) return "";
+      return InputError({path}, bytes.empty() ? "the file is empty" : "the file holds only blank lines", InputProblem::kEmpty);
+    if (std::filesystem::path(path).extension() == ".scene" || !detect_mesh_format(bytes).empty()) return std::nullopt;
     std::string what = other_known_format(bytes);
     if (what.empty() && !looks_like_text(bytes.substr(0, 1 << 16))) what = "binary data";
-    return what.empty() ? "" : "neither a scene nor a mesh file (" + mesh_format_names() + "): " + what;
+    if (what.empty()) return std::nullopt;
+    return InputError({path}, "neither a scene nor a mesh file (" + mesh_format_names() + "): " + what, InputProblem::kUnsupportedFormat);
   } catch (const InputError&) {
-    return "";
+    return std::nullopt;
   }
 }
 
@@ -215,6 +216,7 @@ Scene stage_mesh(const std::string& path, const std::shared_ptr<const PolygonSou
     statement.mesh.where = {name, mesh_line, 1};
     statement.path_at = {name, mesh_line, 6};
     statement.soup = soup;
+    statement.staged = true;
     Scene loaded;
     loaded.path = name;
     loaded.materials.emplace_back().name = "default";
@@ -227,10 +229,10 @@ Scene stage_mesh(const std::string& path, const std::shared_ptr<const PolygonSou
       if (e.where().file != name) throw;
       std::string message = e.message();
       if (message.rfind(about_the_file, 0) == 0) message.erase(0, about_the_file.size() + (message[about_the_file.size()] == ':' ? 2 : 1));
-      throw InputError({path}, message);
+      throw InputError({path}, message, e.problem());
     }
     const Mesh& m = loaded.meshes.at(0);
-    if (m.triangles.empty()) throw InputError({path}, "has no faces: there is nothing to show");
+    if (m.triangles.empty()) throw InputError({path}, "has no faces: there is nothing to show", InputProblem::kNoFaces);
     if (m.smooth_deg) {
       const size_t comment = mesh_statement.find("  #");  // the statement's words come before its comment
       mesh_statement.insert(comment == std::string::npos ? mesh_statement.size() : comment, " smooth " + num(*m.smooth_deg));

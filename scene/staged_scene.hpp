@@ -28,14 +28,14 @@ constexpr int kStagedAntialias = 3;
 // says why.
 bool is_mesh_file(const std::string& path);
 
-// Why `path` is plainly neither a scene nor a mesh file: "neither a scene
-// nor a mesh file (OBJ, ..., or 3MF): a JPEG image", or "the file is
-// empty" or "the file holds only blank lines" (of any name: such a file is
-// no scene either). "" for a .scene file, a
-// mesh file, or other text, which the scene parser reads (and says, line by
-// line, what is wrong with), and for a file that cannot be read (the parser
-// says why).
-std::string neither_scene_nor_mesh(const std::string& path);
+// The error, when `path` is plainly neither a scene nor a mesh file: "PATH:
+// neither a scene nor a mesh file (OBJ, ..., or 3MF): a JPEG image"
+// (kUnsupportedFormat), or "PATH: the file is empty" or "...: the file holds
+// only blank lines" (kEmpty, of any name: such a file is no scene either).
+// None for a .scene file, a mesh file, or other text, which the scene parser
+// reads (and says, line by line, what is wrong with), and for a file that
+// cannot be read (the parser says why).
+std::optional<InputError> neither_scene_nor_mesh(const std::string& path);
 
 // Where the stage's camera and light go, in the staged scene's coordinates
 // (the model fitted into the cube [-1,1]^3, its up axis turned to +z).

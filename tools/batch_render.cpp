@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -40,6 +41,7 @@ struct Record {
   double seconds = 0.0;
   size_t triangles = 0;  // drawn: the scene's triangles, meshes' and floor's
   std::string error;     // failed, timed out, crashed: why
+  std::string kind;      // what kind of failure, one of kFailureKinds; "" for none
   std::string messages;  // for stderr: warnings, then the error
 };
 const char* const kDrawn = "drawn";
@@ -50,13 +52,26 @@ const char* const kCrashed = "crashed";
 const char* const kPassedOver = "passed over";
 const char* const kStopped = "stopped";  // SIGINT, SIGTERM or SIGHUP came before it was drawn
 
+// A failure's kind, for those who count them over a corpus: an input's
+// problem (input_problem_name: malformed, unreadable, unsupported-format,
+// empty, no-faces), or one of these.
+const char* const kTimeoutKind = "timeout";
+const char* const kCrashedKind = "crashed";
+const char* const kOutOfMemoryKind = "out-of-memory";  // a failed allocation, or the kernel's OOM killer (SIGKILL)
+const char* const kStoppedKind = "stopped";
+const char* const kOtherKind = "other";  // the GL, or a picture that could not be written
+
 // One line of JSON. Paths are bytes, JSON text is UTF-8: a byte that is no
 // part of UTF-8 becomes U+FFFD (docs/rendering.md says so).
 std::string json_line(const Record& r) {
   nlohmann::ordered_json line;
   line["path"] = r.path;
-  line["picture"] = r.picture.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.picture);
+  // Only a file whose picture this run drew, or found up to date, names one:
+  // any other's path would lead to no file, or to an older picture.
+  const bool pictured = r.status == kDrawn || r.status == kSkipped;
+  line["picture"] = pictured && !r.picture.empty() ? nlohmann::ordered_json(r.picture) : nlohmann::ordered_json();
   line["status"] = r.status;
+  line["kind"] = r.kind.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.kind);
   line["seconds"] = std::round(r.seconds * 1000.0) / 1000.0;
   line["triangles"] = r.triangles;
   line["error"] = r.error.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.error);
@@ -74,7 +89,7 @@ void render_one(const std::string& path, const std::string& root, const std::str
     std::filesystem::create_directories(std::filesystem::path(out).parent_path());
     PartialFile picture(out, "the image");
     inject_fault(path);
-    if (const std::string what = neither_scene_nor_mesh(path); !what.empty()) throw InputError({path}, what);
+    if (const std::optional<InputError> error = neither_scene_nor_mesh(path)) throw *error;
     Scene scene = parse_scene_or_mesh_file(path, {}, nullptr, staging_for(o.staging, o.settings), TextureMaps{true, root, o.any_texture_path});
     for (const Warning& w : scene.warnings) record.messages += w.where.str() + ": warning: " + w.message + "\n";
     require_lights_off_casters(scene);
@@ -92,23 +107,29 @@ void render_one(const std::string& path, const std::string& root, const std::str
     for (const Mesh& m : scene.meshes) record.triangles += m.triangles.size();
   } catch (const std::bad_alloc&) {
     record.status = kFailed;
+    record.kind = kOutOfMemoryKind;
     record.error = path + ": not enough memory to render it";
+  } catch (const InputError& e) {
+    record.status = kFailed;
+    record.kind = input_problem_name(e.problem());
+    record.error = e.what();
   } catch (const std::exception& e) {
     record.status = kFailed;
+    record.kind = kOtherKind;
     record.error = e.what();
   }
   if (!record.error.empty()) record.messages += record.error + "\n";
 }
 
 // A worker's job: renders one file, and hands back its record as the
-// status, the triangles, the error (one line) and the messages.
+// status, the triangles, the kind, the error (one line) and the messages.
 std::string render_job(const std::string& path, const std::string& root, const std::string& out, const BatchRenderOptions& o,
                        std::optional<HeadlessContext>& context) {
   Record record;
   render_one(path, root, out, o, context, record);
   std::string error = record.error;
   std::replace(error.begin(), error.end(), '\n', ' ');
-  return record.status + "\n" + std::to_string(record.triangles) + "\n" + error + "\n" + record.messages;
+  return record.status + "\n" + std::to_string(record.triangles) + "\n" + record.kind + "\n" + error + "\n" + record.messages;
 }
 
 // The record a job handed back, or what ended it.
@@ -116,14 +137,19 @@ void read_job_result(const IsolatedResult& result, double timeout_s, Record& rec
   record.seconds = result.seconds;
   if (const std::string ended = unfinished_phrase(result, timeout_s); !ended.empty()) {
     record.status = result.ending == IsolatedResult::Ending::kTimedOut ? kTimedOut : kCrashed;
+    record.kind = result.ending == IsolatedResult::Ending::kTimedOut ? kTimeoutKind
+                  : result.signal == SIGKILL                         ? kOutOfMemoryKind
+                                                                     : kCrashedKind;
     record.error = record.path + ": " + ended;
     record.messages = record.error + "\n";
     return;
   }
   std::istringstream in(result.output);
   std::string triangles;
-  if (!std::getline(in, record.status) || !std::getline(in, triangles) || !std::getline(in, record.error)) {
+  if (!std::getline(in, record.status) || !std::getline(in, triangles) || !std::getline(in, record.kind) ||
+      !std::getline(in, record.error)) {
     record.status = kCrashed;
+    record.kind = kCrashedKind;
     record.error = record.path + ": the render ended without a result (exit status " + std::to_string(result.exit_status) + ")";
     record.messages = record.error + "\n";
     return;
@@ -154,7 +180,7 @@ int run_batch_render(const BatchRenderOptions& o) {
   if (o.shard && o.shard->index > 0) found.passed_over.clear();
   for (const auto& [path, what] : found.passed_over) {
     std::cerr << "umbra render: passed over " << path << ": " << what << "\n";
-    if (o.json) std::cout << json_line({path, "", kPassedOver, 0.0, 0, what, ""});
+    if (o.json) std::cout << json_line({path, "", kPassedOver, 0.0, 0, what, input_problem_name(InputProblem::kUnsupportedFormat), ""});
   }
   // Named for all the files, before the shards part: every shard names alike.
   const std::vector<std::string> all_names = distinct_picture_names(found.meshes, found.names, found.roots);
@@ -232,6 +258,7 @@ int run_batch_render(const BatchRenderOptions& o) {
     for (size_t i = 0; i < count; ++i)
       if (!ended[i]) {
         records[i].status = kStopped;
+        records[i].kind = kStoppedKind;
         records[i].error = records[i].path + ": not drawn: umbra was stopped (" + signal_name(stopped_by) + ")";
         ended[i] = 1;
       }

@@ -144,7 +144,8 @@ options:
   --json                with several files: one line of JSON per file on
                         stdout: path, picture, status (drawn, skipped,
                         failed, timed out, crashed, stopped or passed over),
-                        seconds, triangles and error
+                        kind (of a failure: malformed, unreadable, timeout,
+                        out-of-memory, ...), seconds, triangles and error
   --background COLOR    what shows where no surface is: a colour (#rrggbb or a
                         name such as white), or transparent: alpha 0 there,
                         in a PNG with an alpha channel (default: the scene's
@@ -365,8 +366,8 @@ int run_render_command(const std::vector<std::string>& argv) {
     return 1;
   }
   options.scene_path = input->path();
-  if (const std::string what = neither_scene_nor_mesh(options.scene_path); !what.empty()) {
-    std::cerr << options.scene_path << ": " << what << "\n";
+  if (const std::optional<InputError> error = neither_scene_nor_mesh(options.scene_path)) {
+    std::cerr << error->what() << "\n";
     return 2;
   }
   keep_freed_memory_for_reuse();

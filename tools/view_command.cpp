@@ -275,8 +275,8 @@ int run_view_command(const std::vector<std::string>& argv) {
     progress.reset();
   };
 
-  if (const std::string what = neither_scene_nor_mesh(options.scene_path); !what.empty()) {
-    std::cerr << options.scene_path << ": " << what << "\n";
+  if (const std::optional<InputError> error = neither_scene_nor_mesh(options.scene_path)) {
+    std::cerr << error->what() << "\n";
     return 2;
   }
   try {

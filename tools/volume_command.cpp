@@ -124,8 +124,8 @@ int run_volume_command(const std::vector<std::string>& argv) {
   VolumeOptions options;
   if (const auto exit_status = parse_command_line("volume", kVolumeUsage, argv, parse_volume_options, options))
     return *exit_status;
-  if (const std::string what = neither_scene_nor_mesh(options.scene_path); !what.empty()) {
-    std::cerr << options.scene_path << ": " << what << "\n";
+  if (const std::optional<InputError> error = neither_scene_nor_mesh(options.scene_path)) {
+    std::cerr << error->what() << "\n";
     return 2;
   }
   try {

@@ -85,12 +85,13 @@ std::string non_regular_kind(unsigned mode) {
 MappedFile::MappedFile(const std::string& path) {
   // Without O_NONBLOCK, opening a FIFO waits for a writer that may never come.
   const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0) throw InputError({path, 0, 0}, std::string("cannot open: ") + std::strerror(errno));
+  if (fd < 0) throw InputError({path, 0, 0}, std::string("cannot open: ") + std::strerror(errno), InputProblem::kUnreadable);
   struct stat info {};
   if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
     const bool folder = S_ISDIR(info.st_mode);
     ::close(fd);
-    throw InputError({path, 0, 0}, folder ? "is a folder, not a mesh file" : "is not a regular file (" + non_regular_kind(info.st_mode) + ")");
+    throw InputError({path, 0, 0}, folder ? "is a folder, not a mesh file" : "is not a regular file (" + non_regular_kind(info.st_mode) + ")",
+                     InputProblem::kUnreadable);
   }
   size_ = size_t(info.st_size);
   if (size_ > 0) {
@@ -98,7 +99,7 @@ MappedFile::MappedFile(const std::string& path) {
     if (mapped == MAP_FAILED) {
       const int error = errno;
       ::close(fd);
-      throw InputError({path, 0, 0}, std::string("cannot read the file: ") + std::strerror(error));
+      throw InputError({path, 0, 0}, std::string("cannot read the file: ") + std::strerror(error), InputProblem::kUnreadable);
     }
     ::madvise(mapped, size_, MADV_SEQUENTIAL);  // readers go front to back: read ahead, drop behind
     data_ = static_cast<const char*>(mapped);

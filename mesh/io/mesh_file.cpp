@@ -14,7 +14,7 @@ PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path, 
   // STL text, is no part of the content (columns are counted after it).
   if (bytes.substr(0, 3) == "\xef\xbb\xbf") bytes.remove_prefix(3);
   if (bytes.find_first_not_of(" \t\r\n\f\v") == std::string_view::npos)
-    throw InputError({path, 0, 0}, bytes.empty() ? "the file is empty" : "the file holds only blank lines");
+    throw InputError({path, 0, 0}, bytes.empty() ? "the file is empty" : "the file holds only blank lines", InputProblem::kEmpty);
   // The content decides; the extension only names the reader whose located
   // errors best explain a file too broken for its content to say.
   std::string format = detect_mesh_format(bytes);
@@ -22,7 +22,9 @@ PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path, 
   // Nor for what is plainly some other format.
   if (format.empty() && mesh_format_of(path) != "obj" && other_known_format(bytes).empty()) format = mesh_format_of(path);
   const MeshFormat* reader = mesh_format_by_id(format);
-  if (!reader) throw InputError({path, 0, 0}, "not a mesh file (" + mesh_format_names() + "): " + describe_content(bytes));
+  if (!reader)
+    throw InputError({path, 0, 0}, "not a mesh file (" + mesh_format_names() + "): " + describe_content(bytes),
+                     InputProblem::kUnsupportedFormat);
   PolygonSoup soup = reader->read(bytes, path, maps);
   if (soup.format.empty()) soup.format = reader->name;  // a reader names a variant ("STL (binary)") or leaves it to its row
   require_corners_in_range(soup);

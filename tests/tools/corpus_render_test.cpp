@@ -33,6 +33,13 @@ class CorpusRender : public test::CommandTest {
     return found;
   }
   static size_t lines(const std::string& text) { return size_t(std::count(text.begin(), text.end(), '\n')); }
+  // The "kind" of a failure, "null" where none is.
+  static std::string kind_of(const std::string& line) {
+    const size_t at = line.find("\"kind\":");
+    if (at == std::string::npos) return "";
+    if (line.compare(at + 7, 4, "null") == 0) return "null";
+    return line.substr(at + 8, line.find('"', at + 8) - at - 8);
+  }
   static std::string status_of(const std::string& line) {
     const size_t at = line.find("\"status\":\"");
     return at == std::string::npos ? "" : line.substr(at + 10, line.find('"', at + 10) - at - 10);
@@ -101,6 +108,7 @@ TEST_F(CorpusRender, AMixedFolderRendersEveryGoodFileAndRecordsEveryFile) {
   for (const auto& [file, status] : expected) {
     const std::string line = line_of(first.out, (models / file).string());
     EXPECT_EQ(status_of(line), status) << file << ": " << line;
+    EXPECT_EQ(kind_of(line), status == "timed out" ? "timeout" : status == "failed" ? "malformed" : "null") << line;
     if (status == "drawn") {
       EXPECT_TRUE(fs::exists(out + "/" + file + ".png")) << file;
       EXPECT_NE(line.find("\"error\":null"), std::string::npos) << line;
@@ -140,7 +148,17 @@ TEST_F(CorpusRender, ACrashOrRunningOutOfMemoryCostsOnlyItsOwnFile) {
     EXPECT_EQ(status_of(line_of(r.out, path(std::string("models/") + good))), "drawn") << good;
     EXPECT_TRUE(fs::exists(path(std::string("out/") + good + ".png"))) << good;
   }
-  EXPECT_NE(line_of(r.out, path("models/crash.off")).find("\"status\":\"crashed\",\"seconds\":"), std::string::npos) << r.out;
+  EXPECT_NE(line_of(r.out, path("models/crash.off")).find("\"status\":\"crashed\",\"kind\":\"crashed\",\"seconds\":"),
+            std::string::npos)
+      << r.out;
+  // Each failure's kind, to count them by: a failed allocation and the OOM killer alike.
+  EXPECT_EQ(kind_of(line_of(r.out, path("models/out-of-memory.off"))), "out-of-memory");
+  EXPECT_EQ(kind_of(line_of(r.out, path("models/oom-killed.off"))), "out-of-memory");
+  EXPECT_EQ(kind_of(line_of(r.out, path("models/a.off"))), "null");
+  // A file with no picture names none (its path would lead nowhere, or to an older picture).
+  for (const char* bad : {"crash.off", "out-of-memory.off", "oom-killed.off"})
+    EXPECT_NE(line_of(r.out, path(std::string("models/") + bad)).find("\"picture\":null,"), std::string::npos) << bad;
+  EXPECT_NE(line_of(r.out, path("models/a.off")).find("\"picture\":\"" + path("out/a.off.png") + "\","), std::string::npos);
   EXPECT_NE(line_of(r.out, path("models/crash.off")).find(": crashed (SIGABRT)\"}"), std::string::npos) << r.out;
   EXPECT_NE(line_of(r.out, path("models/out-of-memory.off")).find("\"status\":\"failed\""), std::string::npos) << r.out;
   EXPECT_NE(line_of(r.out, path("models/out-of-memory.off")).find("not enough memory to render it"), std::string::npos) << r.out;
@@ -149,6 +167,30 @@ TEST_F(CorpusRender, ACrashOrRunningOutOfMemoryCostsOnlyItsOwnFile) {
   EXPECT_NE(r.err.find(": 4 pictures in " + path("out") + ", 3 failed\n"), std::string::npos) << r.err;
   for (const auto& entry : fs::directory_iterator(path("out")))
     EXPECT_EQ(entry.path().extension(), ".png") << entry.path();  // no temporary file left by the crashes
+}
+
+// Each failure's line has a kind beside its message, so that a corpus's
+// failures can be counted; a located error names the file's line alone,
+// not the line of the scene that umbra staged for it.
+TEST_F(CorpusRender, EachFailureHasAKindToCountBy) {
+  fs::create_directories(folder_ / "models");
+  write("models/empty.obj", "");
+  write("models/points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+  write("models/broken.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n");
+  write("models/photo.obj", std::string("\xff\xd8\xff\xe0\0\x10JFIF\0", 11));
+  write("models/good.off", kTetrahedron);
+  const CommandResult r = run("render " + path("models") + " -o " + path("out") + " --size 16x16 --json");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(lines(r.out), 5u) << r.out;
+  const std::map<std::string, std::string> kinds = {{"empty.obj", "empty"}, {"points.obj", "no-faces"}, {"broken.obj", "malformed"},
+                                                    {"photo.obj", "unsupported-format"}, {"good.off", "null"}};
+  for (const auto& [file, kind] : kinds) EXPECT_EQ(kind_of(line_of(r.out, path("models/" + file))), kind) << file;
+  EXPECT_NE(line_of(r.out, path("models/broken.obj"))
+                .find("\"error\":\"" + path("models/broken.obj") + ":4:7: expected a vertex index (as in \\\"f 1 2 3\\\" or "
+                      "\\\"f 1/1/1 2/2/2 3/3/3\\\"), got \\\"x\\\"\"}"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.err.find("(staged)"), std::string::npos) << r.err;
 }
 
 // Ctrl-C (SIGINT to the whole process group) or SIGTERM to umbra alone stop
@@ -176,7 +218,7 @@ TEST_F(CorpusRender, AStoppedRunSaysWhatItDrewAndLeavesNoTemporaryFile) {
     EXPECT_EQ(status_of(line_of(r.out, path("models/a.off"))), "drawn");
     for (const char* name : {"hang-1.off", "hang-2.off", "z.off"})
       EXPECT_NE(line_of(r.out, path(std::string("models/") + name))
-                    .find("\"status\":\"stopped\",\"seconds\":0.0,\"triangles\":0,\"error\":\"" + path(std::string("models/") + name) +
+                    .find("\"status\":\"stopped\",\"kind\":\"stopped\",\"seconds\":0.0,\"triangles\":0,\"error\":\"" + path(std::string("models/") + name) +
                           ": not drawn: umbra was stopped (" + signal + ")\"}"),
                 std::string::npos)
           << r.out;
