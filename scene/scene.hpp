@@ -163,6 +163,10 @@ struct Warning {
   std::string message;
 };
 
+// The largest side of a frame drawn, supersampling included: llvmpipe's and
+// most GPUs' limit. A picture's size (the scene's `size`, --size) is at most that.
+constexpr int kLargestPictureSide = 16384;
+
 struct Scene {
   std::string path;
   std::vector<Light> lights;
@@ -176,6 +180,8 @@ struct Scene {
   FillLight fill;
   ToneCurve tone = ToneCurve::kClip;  // how light becomes a channel's value (tone_curve.hpp)
   std::optional<int> antialias;  // samples per side it is drawn with, unless told (none: 1)
+  bool antialias_all = false;    // `antialias N all`: at every pixel, not only at edges
+  std::optional<std::pair<int, int>> size;  // `size W H`: the picture's width and height, unless told
   std::vector<Warning> warnings;
 };
 

@@ -144,7 +144,7 @@ class SceneBuilder {
         {"light", &SceneBuilder::light},       {"material", &SceneBuilder::material}, {"sphere", &SceneBuilder::sphere},
         {"triangle", &SceneBuilder::triangle}, {"mesh", &SceneBuilder::mesh},         {"camera", &SceneBuilder::camera},
         {"background", &SceneBuilder::background}, {"floor", &SceneBuilder::floor},
-        {"antialias", &SceneBuilder::antialias}, {"headlight", &SceneBuilder::headlight},
+        {"antialias", &SceneBuilder::antialias}, {"size", &SceneBuilder::size}, {"headlight", &SceneBuilder::headlight},
         {"hemisphere", &SceneBuilder::hemisphere}, {"tone", &SceneBuilder::tone},
     };
     const std::string& k = r.keyword();
@@ -361,6 +361,21 @@ class SceneBuilder {
     if (n != std::floor(n) || n < 1 || n > 4)
       throw InputError(at, "antialias takes a whole number of samples per side from 1 to 4, got " + number_text(n));
     scene_.antialias = int(n);
+    scene_.antialias_all = r.keyword_of("antialias", {"all"}).has_value();
+  }
+
+  void size(StatementReader& r) {
+    if (scene_.size) throw InputError(r.statement_loc(), "a second size statement");
+    int side[2];
+    for (int k = 0; k < 2; ++k) {
+      const FileLoc at = r.next_loc();
+      const double n = r.number(k == 0 ? "picture width" : "picture height");
+      if (n != std::floor(n) || n < 1 || n > kLargestPictureSide)
+        throw InputError(at, std::string("size takes the picture's ") + (k == 0 ? "width" : "height") +
+                                 " in whole pixels from 1 to " + std::to_string(kLargestPictureSide) + ", got " + number_text(n));
+      side[k] = int(n);
+    }
+    scene_.size = {side[0], side[1]};
   }
 
   // Each said once: a second is an error, never a silent replacement.

@@ -290,7 +290,8 @@ Scene stage_mesh(const std::string& path, const std::shared_ptr<const PolygonSou
   rest += "camera eye " + vec(c.eye) + " target " + vec(c.target) + " up 0 0 1 fovy " + num(c.fovy_deg) + "\n";
   const Background background = staging.background.value_or(Background{kStageBackground, false});
   rest += background.transparent ? std::string("background transparent\n") : "background " + vec(background.color) + "\n";
-  rest += "antialias " + std::to_string(kStagedAntialias) + "\n";
+  if (staging.width > 0) rest += "size " + std::to_string(staging.width) + " " + std::to_string(staging.height) + "\n";
+  rest += "antialias " + std::to_string(staging.antialias.value_or(kStagedAntialias)) + (staging.antialias_all ? " all" : "") + "\n";
   if (staged) *staged = header + mesh_statement + "\n" + notes + rest;
   // The rest of the stage from the same text, the mesh's line left blank
   // (its mesh is the one loaded above), so that lines number alike. Its

@@ -112,6 +112,13 @@ struct StagingOptions {
   bool crease_given = false;
   bool flat = false;
   size_t frame_pixels = 0;
+  // The picture's size and samples, written into the staged scene (`size`,
+  // `antialias N [all]`) so that the saved scene draws the same picture
+  // with no options: width 0 writes no size; no antialias writes the
+  // staged default.
+  int width = 0, height = 0;
+  std::optional<int> antialias;
+  bool antialias_all = false;
   // The background, for a mesh file's stage and a scene file alike (a
   // scene's own then gives way).
   std::optional<Background> background;

@@ -95,6 +95,7 @@ void render_one(const std::string& path, const std::string& root, const std::str
     require_lights_off_casters(scene);
     require_caught_shadows_kept(scene, o.settings.method);
     RenderSettings settings = o.settings;
+    set_picture_size(settings, o.size_given, scene);
     set_picture_samples(settings, o.antialias, o.antialias_all, o.show_volumes, scene);
     require_drawable_size(settings.width, settings.height, settings.frame_samples());
     PictureRequest request;

@@ -23,6 +23,7 @@ struct BatchRenderOptions {
   std::optional<int> antialias;  // unset: each file's default_antialias
   bool antialias_all = false;    // samples at every pixel, not at edges alone (antialiased_pixels)
   bool show_volumes = false;
+  bool size_given = false;  // --size: else each scene's own size statement
   size_t jobs = 1;  // pictures drawn at a time, each in its own GL context
   std::optional<Shard> shard;
   std::optional<std::string> sheet;  // also one PNG of every picture, labelled with its file's name

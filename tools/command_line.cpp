@@ -198,8 +198,11 @@ RenderMethod parse_method(const std::string& option, const std::string& text) {
 
 void add_help_option(CommandOptions& options, bool& help) { options.flag("-h,--help", help); }
 
-void add_size_option(CommandOptions& options, int& width, int& height) {
-  options.value("--size", [&](const std::string& o, const std::string& t) { parse_size(o, t, kLargestImage, width, height); });
+void add_size_option(CommandOptions& options, int& width, int& height, bool* given) {
+  options.value("--size", [&width, &height, given](const std::string& o, const std::string& t) {
+    parse_size(o, t, kLargestImage, width, height);
+    if (given) *given = true;
+  });
 }
 
 void add_light_angle_option(CommandOptions& options, double& degrees) {
@@ -351,6 +354,7 @@ void note_staging_flags(const StagingOptions& staging, std::vector<std::string>&
 StagingOptions staging_for(StagingOptions staging, const RenderSettings& settings) {
   staging.frame_aspect = double(settings.width) / settings.height;
   staging.frame_pixels = size_t(settings.width) * size_t(settings.height);
+  staging.width = settings.width, staging.height = settings.height;
   return staging;
 }
 

@@ -92,12 +92,12 @@ std::string parse_up_axis(const std::string& option, const std::string& text);
 void parse_size(const std::string& option, const std::string& text, int largest, int& width, int& height);
 
 // The options that several commands take, each defined once.
-constexpr int kLargestImage = 16384;  // along a side of the frame drawn, supersampled: llvmpipe's and most GPUs' limit
+constexpr int kLargestImage = kLargestPictureSide;  // along a side of the frame drawn, supersampled
 // A UsageError when `samples` x `samples` supersampling makes a frame of
 // `width` x `height` larger than kLargestImage along a side.
 void require_drawable_size(int width, int height, int samples);
 void add_help_option(CommandOptions& options, bool& help);                            // -h, --help
-void add_size_option(CommandOptions& options, int& width, int& height);               // --size WxH
+void add_size_option(CommandOptions& options, int& width, int& height, bool* given = nullptr);               // --size WxH
 void add_light_angle_option(CommandOptions& options, double& degrees);                // --light-angle DEG
 void add_segments_option(CommandOptions& options, int& segments);                     // --segments N
 void add_method_option(CommandOptions& options, RenderMethod& method);                // --method M

@@ -5,7 +5,7 @@
 namespace umbra {
 
 void add_picture_choices(CommandOptions& options, PictureChoices& c) {
-  add_size_option(options, c.settings.width, c.settings.height);
+  add_size_option(options, c.settings.width, c.settings.height, &c.size_given);
   add_light_angle_option(options, c.light_angle_deg);
   add_segments_option(options, c.settings.sphere_segments);
   add_method_option(options, c.settings.method);
@@ -22,6 +22,8 @@ void settle_picture_choices(PictureChoices& c) {
   require_consistent_staging(c.staging);
   note_staging_flags(c.staging, c.staging_given);
   c.staging.view.light_turn_deg = c.light_angle_deg;
+  c.staging.antialias = c.antialias;
+  c.staging.antialias_all = c.antialias_all;
 }
 
 PictureChoices parse_picture_choices(const std::vector<std::string>& words) {
@@ -52,7 +54,11 @@ AntialiasedPixels antialiased_pixels(bool all, bool show_volumes, const RenderSe
 void set_picture_samples(RenderSettings& settings, const std::optional<int>& asked, bool all, bool show_volumes,
                          const Scene& scene) {
   settings.antialias = asked.value_or(scene.antialias.value_or(1));
-  settings.antialiased = antialiased_pixels(all, show_volumes, settings, &scene);
+  settings.antialiased = antialiased_pixels(all || (!asked && scene.antialias_all), show_volumes, settings, &scene);
+}
+
+void set_picture_size(RenderSettings& settings, bool size_given, const Scene& scene) {
+  if (!size_given && scene.size) settings.width = scene.size->first, settings.height = scene.size->second;
 }
 
 }  // namespace umbra

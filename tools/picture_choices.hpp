@@ -26,6 +26,7 @@ struct PictureChoices {
   std::optional<int> antialias;  // unset: by what is rendered (default_antialias)
   bool antialias_all = false;
   bool show_volumes = false;
+  bool size_given = false;  // --size: else a scene's `size`, else the default
 };
 
 // --size, --light-angle, --segments, --method, --map-size, --gl,
@@ -53,9 +54,13 @@ int default_antialias(const std::string& path);
 // frame: docs/performance.md, "Antialiasing at edges"); else at edge pixels
 // alone. Without a scene, as for a small one with no sphere.
 AntialiasedPixels antialiased_pixels(bool all, bool show_volumes, const RenderSettings& settings, const Scene* scene = nullptr);
+// The picture's size, in `settings`: --size where given, else the scene's
+// `size` statement, else the default already there.
+void set_picture_size(RenderSettings& settings, bool size_given, const Scene& scene);
 // The samples a picture of `scene` takes, in `settings`: as many per side
 // as --antialias `asked` says, else as the scene's `antialias` statement (a
-// staged mesh's says 3), else 1; where antialiased_pixels says.
+// staged mesh's says 3), else 1; at every pixel where --antialias-all `all`
+// or the statement's `all` says, else where antialiased_pixels says.
 void set_picture_samples(RenderSettings& settings, const std::optional<int>& asked, bool all, bool show_volumes,
                          const Scene& scene);
 

@@ -62,7 +62,8 @@ options:
                         ending says the format, {picture extensions}; - writes
                         PNG to standard output
   --jpeg-quality N      for a .jpg output: 1 to 100 (default 90)
-  --size WxH            image size in pixels (default 800x800)
+  --size WxH            image size in pixels (default: a scene's size
+                        statement, else 800x800)
   --light-angle DEG     rotate every light about the z axis by DEG degrees (for
                         a MESH, before the camera frames its shadow)
   --segments N          sides of the N-gon that stands for a sphere's tangent
@@ -263,7 +264,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     if (o.explain) throw UsageError("--explain prints one scene's plan; with several files, ask for one of them");
     if (o.save_scene) throw UsageError("--save-scene saves one mesh file's staged scene; with several files, ask for one of them");
     o.batch = BatchRenderOptions{scenes, o.output, o.settings, o.staging, o.gl, o.antialias, o.antialias_all, o.show_volumes,
-                                 jobs.value_or(std::max(1u, std::thread::hardware_concurrency())), shard, sheet,
+                                 o.size_given, jobs.value_or(std::max(1u, std::thread::hardware_concurrency())), shard, sheet,
                                  o.any_texture_path, timeout_s, skip_existing, json};
   } else {
     if (shard) throw UsageError("--shard splits several files; \"" + o.scene_path + "\" is one");
@@ -380,6 +381,7 @@ int run_render_command(const std::vector<std::string>& argv) {
       progress->update(0, "loading mesh " + std::to_string(loaded + 1) + " of " + std::to_string(total) + ": " + path);
     }, &staged, staging_for(options.staging, options.settings), TextureMaps{true, "", options.any_texture_path});
     progress->clear();
+    set_picture_size(options.settings, options.size_given, scene);
     set_picture_samples(options.settings, options.antialias, options.antialias_all, options.show_volumes, scene);
     require_drawable_size(options.settings.width, options.settings.height, options.settings.frame_samples());
     if (options.explain && !staged.empty())

@@ -141,6 +141,21 @@ TEST(SceneParser, AntialiasSaysTheSamplesASceneIsDrawnWith) {
   EXPECT_EQ(error_of(kLight + "antialias 5\n"), "t.scene:2:11: antialias takes a whole number of samples per side from 1 to 4, got 5");
   EXPECT_EQ(error_of(kLight + "antialias 2.5\n"), "t.scene:2:11: antialias takes a whole number of samples per side from 1 to 4, got 2.5");
   EXPECT_EQ(error_of(kLight + "antialias 2\nantialias 2\n"), "t.scene:3:1: a second antialias statement");
+  // `all`: every pixel, as --antialias-all asks.
+  EXPECT_FALSE(parse_scene_text(kLight + "antialias 3\n", "t").antialias_all);
+  EXPECT_TRUE(parse_scene_text(kLight + "antialias 2 all\n", "t").antialias_all);
+  EXPECT_EQ(error_of(kLight + "antialias 2 every\n"), "t.scene:2:13: unknown keyword \"every\" in antialias (expected all)");
+}
+
+// The picture's size, which --size overrides: whole pixels, 1 to 16384 a side.
+TEST(SceneParser, SizeSaysThePicturesWidthAndHeight) {
+  EXPECT_FALSE(parse_scene_text(kLight, "t").size);
+  EXPECT_EQ(parse_scene_text(kLight + "size 640 480\n", "t").size, (std::pair{640, 480}));
+  EXPECT_EQ(error_of(kLight + "size 640\n"), "t.scene:2:9: expected a number for the picture height, got end of line");
+  EXPECT_EQ(error_of(kLight + "size 0 480\n"), "t.scene:2:6: size takes the picture's width in whole pixels from 1 to 16384, got 0");
+  EXPECT_EQ(error_of(kLight + "size 640 480.5\n"),
+            "t.scene:2:10: size takes the picture's height in whole pixels from 1 to 16384, got 480.5");
+  EXPECT_EQ(error_of(kLight + "size 1 1\nsize 2 2\n"), "t.scene:3:1: a second size statement");
 }
 
 // A studio's fill: a headlight, a hemisphere and a tone curve, each said
@@ -188,13 +203,13 @@ TEST(SceneParserErrors, NanAndInfAreNotNumbers) {
 TEST(SceneParserErrors, UnknownStatement) {
   EXPECT_EQ(error_of(kLight + "  cube 0 0 0 1\n"),
             "t.scene:2:3: unknown statement \"cube\" (expected light, material, sphere, triangle, mesh, camera, background, floor, "
-            "antialias, headlight, hemisphere or tone)");
+            "antialias, size, headlight, hemisphere or tone)");
 }
 
 TEST(SceneParserErrors, KeywordsAreLowerCase) {
   EXPECT_EQ(error_of("Light 0 0 2\n"),
             "t.scene:1:1: unknown statement \"Light\" (expected light, material, sphere, triangle, mesh, camera, background, floor, "
-            "antialias, headlight, hemisphere or tone)");
+            "antialias, size, headlight, hemisphere or tone)");
 }
 
 TEST(SceneParserErrors, UnknownKeyword) {
