@@ -1,6 +1,10 @@
 #include "tools/picture_drawing.hpp"
 
+#include <algorithm>
+
 #include <tbb/task_group.h>
+
+#include "image/image.hpp"
 
 #include "reference/ray_cast_render.hpp"
 #include "render/shadow_renderer.hpp"
@@ -8,9 +12,38 @@
 #include "tools/edge_rays.hpp"
 
 namespace umbra {
+namespace {
+
+// `picture`, drawn over a transparent background, composited over `color`
+// (Porter and Duff 1984's "over"): out = colour x alpha + background x (1 - alpha).
+Image composited_over(const Image& picture, const glm::dvec3& color) {
+  Image out(picture.width, picture.height, 3);
+  for (int y = 0; y < picture.height; ++y)
+    for (int x = 0; x < picture.width; ++x) {
+      const double alpha = picture.at(x, y, 3) / 255.0;
+      for (int c = 0; c < 3; ++c)
+        out.at(x, y, c) = channel_byte(picture.at(x, y, c) / 255.0 * alpha + color[c] * (1.0 - alpha));
+    }
+  return out;
+}
+
+}  // namespace
 
 DrawnPicture draw_picture(const Scene& scene, const RenderSettings& settings, const PictureRequest& request,
                           std::optional<HeadlessContext>& context, HeadlessGl gl, const BeforeDrawing& before) {
+  // A shadow catcher over an opaque background is the transparent picture
+  // composited over that colour: a pixel's mean of samples keeps the
+  // surfaces apart from what is behind them by coverage alone, so with a
+  // tone curve the catcher's darkened background would pass for the
+  // background itself, and its shadow be lost. (The scene is copied for it.)
+  const bool catches = std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) { return m.shadow_catcher; });
+  if (catches && !scene.background.transparent) {
+    Scene transparent = scene;
+    transparent.background.transparent = true;
+    DrawnPicture picture = draw_picture(transparent, settings, request, context, gl, before);
+    picture.image = composited_over(picture.image, scene.background.color);
+    return picture;
+  }
   if (request.mask && scene.lights.empty()) throw UsageError("a shadow mask is light 1's, and this scene has no light");
   DrawnPicture picture;
   if (settings.method == RenderMethod::kRaycast) {

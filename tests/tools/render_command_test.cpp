@@ -411,6 +411,34 @@ TEST_F(RenderCommand, UnwritableOutputLeavesNoFile) {
   EXPECT_NE(r.err.find(path("no/such/dir/a.png") + ": cannot write the image"), std::string::npos) << r.err;
 }
 
+// A shadow catcher over an opaque background is its transparent picture
+// composited over that colour: the staged look's tone curve once took the
+// catcher's darkened floor for the background, and the shadow was lost.
+TEST_F(RenderCommand, AShadowCatcherOverAColourIsItsTransparentPictureOverIt) {
+  const std::string torus = std::string(UMBRA_SOURCE_DIR) + "/scenes/meshes/torus.obj";
+  const glm::dvec3 colour(0xc0 / 255.0, 0x80 / 255.0, 0x40 / 255.0);
+  for (const std::string method : {"auto", "raycast"}) {
+    SCOPED_TRACE(method);
+    const std::string base = "render " + torus + " --size 64x64 --floor shadow-catcher --method " + method;
+    ASSERT_EQ(run(base + " --background transparent -o " + path("t.png")).status, 0);
+    ASSERT_EQ(run(base + " --background '#c08040' -o " + path("o.png")).status, 0);
+    const Image transparent = read_png(path("t.png")), opaque = read_png(path("o.png"));
+    ASSERT_EQ(transparent.channels, 4);
+    ASSERT_EQ(opaque.channels, 3);
+    int shadow = 0;
+    for (int y = 0; y < 64; ++y)
+      for (int x = 0; x < 64; ++x) {
+        const double alpha = transparent.at(x, y, 3) / 255.0;
+        for (int c = 0; c < 3; ++c)
+          EXPECT_NEAR(opaque.at(x, y, c), 255.0 * (transparent.at(x, y, c) / 255.0 * alpha + colour[c] * (1.0 - alpha)), 0.5)
+              << x << ", " << y;
+        // The floor's shadow: black in the transparent picture, the colour darkened in the opaque one.
+        shadow += transparent.at(x, y, 0) == 0 && alpha > 0.2 && opaque.at(x, y, 0) < 0.8 * 0xc0;
+      }
+    EXPECT_GT(shadow, 100);
+  }
+}
+
 // Every output is made before anything is drawn: one that cannot be written
 // stops the run at once and leaves the files that were there as they were
 // (a failing --mask once deleted the picture that -o named from an earlier
