@@ -111,14 +111,17 @@ options:
   --no-pictures     (with --report) rows without pictures: thousands of
                     meshes are checked in seconds, and drawn in minutes
   --time-limit SEC  stop the search for self-intersections after SEC seconds
-                    per mesh and report that it stopped (default 60; 0 skips)
+                    per mesh and report that it stopped (default 60; 0 skips
+                    it). A mesh whose search was skipped or stopped is "not
+                    known to be clean": no closed 2-manifold, exit status 1
   --timeout SEC     check the meshes in worker processes and stop one after
                     SEC seconds: a mesh that hangs, crashes or runs out of
                     memory is reported as unreadable (exit status 2), and
                     the rest go on
   -h, --help        show this help
 
-exit status: 0 every mesh is a closed 2-manifold (a solid, with --solid); 1
+exit status: 0 every mesh is a closed 2-manifold, its search for
+self-intersections complete and finding none (a solid, with --solid); 1
 one is not (after the repair, with --repair); 2 one could not be read (every other mesh is still
 reported), the repaired mesh or a defect picture could not be written, or a
 usage error.
@@ -229,6 +232,9 @@ struct CheckOutcome {
   int status = 0;
   std::string record;
   bool picture_failed = false;  // the check stands; the exit status says 2
+  // What the report says, which the summary counts as the JSON and the page
+  // do (the status follows --solid); all false for a mesh not checked.
+  bool checked = false, closed_manifold = false, solid = false;
 };
 
 // A mesh that could not be checked: said on stderr, and still its line of
@@ -242,7 +248,7 @@ CheckOutcome unchecked(const std::string& path, const std::string& message, cons
 // The report in the form the options ask for.
 void print_report(const MeshReport& report, const CheckCommandOptions& options, std::ostream& out) {
   if (options.json) report.print_json(out);
-  else if (options.brief) report.print_brief(out);
+  else if (options.brief) report.print_brief(out, options.solid);
   else report.print_text(out);
 }
 
@@ -267,7 +273,8 @@ CheckOutcome check_one(const std::string& path, const CheckCommandOptions& optio
     const MeshReport report = picture.empty() ? check_mesh(std::move(soup), check) : check_mesh(soup, check);
     std::ostringstream out;
     print_report(report, options, out);
-    CheckOutcome outcome{out.str(), "", (options.solid ? report.is_solid() : report.is_closed_manifold()) ? 0 : 1, "", false};
+    CheckOutcome outcome{out.str(), "", (options.solid ? report.is_solid() : report.is_closed_manifold()) ? 0 : 1, "", false,
+                         true, report.is_closed_manifold(), report.is_solid()};
     if (options.report) {
       std::ostringstream line;
       report.print_json(line);
@@ -292,26 +299,28 @@ CheckOutcome check_one(const std::string& path, const CheckCommandOptions& optio
 }
 
 // check_one in a worker process (--timeout): its outcome as the status,
-// the lengths of its output and its record, the output, the record and its
-// messages.
+// the lengths of its output and its record, whether its picture failed and
+// its report's two verdicts, then the output, the record and its messages.
 std::string check_job(const std::string& path, const CheckCommandOptions& options, const std::string& picture) {
   const CheckOutcome o = check_one(path, options, picture);
   return std::to_string(o.status) + "\n" + std::to_string(o.out.size()) + "\n" + std::to_string(o.record.size()) + "\n" +
-         (o.picture_failed ? "1" : "0") + "\n" + o.out + o.record + o.err;
+         (o.picture_failed ? "1" : "0") + (o.checked ? "1" : "0") + (o.closed_manifold ? "1" : "0") + (o.solid ? "1" : "0") + "\n" +
+         o.out + o.record + o.err;
 }
 
 CheckOutcome read_check_job(const std::string& path, const IsolatedResult& result, const CheckCommandOptions& options) {
   if (const std::string ended = unfinished_phrase(result, options.timeout_s); !ended.empty())
     return unchecked(path, path + ": " + ended, options);
   std::istringstream in(result.output);
-  std::string status, length, record_length, picture_failed;
-  if (!std::getline(in, status) || !std::getline(in, length) || !std::getline(in, record_length) || !std::getline(in, picture_failed))
+  std::string status, length, record_length, flags;
+  if (!std::getline(in, status) || !std::getline(in, length) || !std::getline(in, record_length) || !std::getline(in, flags) ||
+      flags.size() != 4)
     return unchecked(path, path + ": the check ended without a result (exit status " + std::to_string(result.exit_status) + ")", options);
   const size_t out_size = std::min(size_t(std::stoull(length)), result.output.size());
   const size_t record_size = std::stoull(record_length);
   const std::string rest(std::istreambuf_iterator<char>(in), {});
   return {rest.substr(0, out_size), rest.substr(std::min(out_size + record_size, rest.size())), std::stoi(status),
-          rest.substr(std::min(out_size, rest.size()), record_size), picture_failed == "1"};
+          rest.substr(std::min(out_size, rest.size()), record_size), flags[0] == '1', flags[1] == '1', flags[2] == '1', flags[3] == '1'};
 }
 
 // Whether the repair may put a companion file (an OBJ's material library,
@@ -443,7 +452,7 @@ int run_check_command(const std::vector<std::string>& argv) {
   std::vector<std::optional<CheckOutcome>> outcomes(count);
   std::atomic<size_t> next{0};
   std::mutex print_mutex;
-  size_t finished = 0, printed = 0, closed = 0, open = 0, unreadable = 0;
+  size_t finished = 0, printed = 0, closed = 0, open = 0, unreadable = 0, solids = 0;
   int status = 0;
   ProgressBar progress(count);
   const auto print_ready = [&] {  // under print_mutex
@@ -454,7 +463,8 @@ int run_check_command(const std::vector<std::string>& argv) {
       std::cerr << outcome.err << std::flush;
       if (options.report) records.push_back(outcome.record);
       status = std::max({status, outcome.status, outcome.picture_failed ? 2 : 0});
-      (outcome.status == 0 ? closed : outcome.status == 1 ? open : unreadable) += 1;
+      (!outcome.checked ? unreadable : outcome.closed_manifold ? closed : open) += 1;
+      solids += outcome.solid;
       outcomes[printed].reset();
     }
     if (printed < count) progress.update(finished, meshes[printed]);
@@ -529,6 +539,7 @@ int run_check_command(const std::vector<std::string>& argv) {
               << (options.shard ? " (shard " + std::to_string(options.shard->index) + "/" + std::to_string(options.shard->count) + " of " + std::to_string(all.size()) + ")" : "")
               << " in " << elapsed << ": " << closed << " closed 2-manifold" << (closed == 1 ? "" : "s") << ", " << open
               << " not, " << unreadable << " unreadable"
+              << (options.solid ? "; " + std::to_string(solids) + (solids == 1 ? " solid" : " solids") : std::string())
               << (found.passed_over.empty() ? std::string()
                                             : "; " + std::to_string(found.passed_over.size()) +
                                                   (found.passed_over.size() == 1 ? " file" : " files") + " passed over")

@@ -186,7 +186,9 @@ void turn_outward_and_merge_overlaps(Mesh& mesh, std::vector<std::string>& chang
   const Outward outward = orient_closed_components_outward(mesh);
   if (outward.reversed > 0) changes.push_back("turned " + counted(outward.reversed, "closed component", "closed components") + " outward");
   if (!outward.crossing.empty()) {
-    const std::string pairs = counted(outward.crossing.size(), "pair", "pairs") + " of faces that cross";
+    // Triangles, as the repair cuts them: a check counts the file's faces,
+    // so a crossing quad pair may be two or four pairs here.
+    const std::string pairs = counted(outward.crossing.size(), "pair", "pairs") + " of triangles that cross";
     const SelfIntersectionRemoval removal = remove_self_intersections(mesh, outward.crossing);
     if (removal.removed) {
       changes.push_back("removed the " + pairs + ": the parts that overlapped are one surface, bounding their union (" +

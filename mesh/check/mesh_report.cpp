@@ -136,7 +136,12 @@ std::string MeshReport::verdict() const {
     return s;
   }
   const bool oriented = inconsistent_edges == 0;
-  s = topology_problems().empty() ? "closed and consistently oriented, but not clean (" : "not a closed 2-manifold (";
+  // A search skipped (--time-limit 0) or stopped with nothing found says
+  // nothing is wrong, only that nothing was proved clean.
+  const bool unproved = duplicate_faces == 0 && degenerate_faces == 0 && self_intersections.face_pairs == 0;
+  s = !topology_problems().empty() ? "not a closed 2-manifold ("
+      : unproved                   ? "closed and consistently oriented, not known to be clean ("
+                                   : "closed and consistently oriented, but not clean (";
   for (size_t i = 0; i < why.size(); ++i) s += (i ? ", " : "") + why[i];
   if (volume_kind() == VolumeKind::kEdgeMultiplicity)
     return s + "): shadow from an edge-multiplicity volume (exact for any triangles)";
@@ -360,9 +365,16 @@ void MeshReport::print_json(std::ostream& out) const {
   out << json_line(report);
 }
 
-void MeshReport::print_brief(std::ostream& out) const {
+std::string MeshReport::solid_verdict() const {
+  const std::vector<std::string> not_solid = solid_problems();
+  std::string s = not_solid.empty() ? "solid" : "not a solid: ";
+  for (size_t i = 0; i < not_solid.size(); ++i) s += (i ? ", " : "") + not_solid[i];
+  return s;
+}
+
+void MeshReport::print_brief(std::ostream& out, bool solid) const {
   out << path << ": " << format << ", " << plural(triangles, "triangle", "triangles") << ", "
-      << plural(components.size(), "component", "components") << ": " << verdict() << "\n";
+      << plural(components.size(), "component", "components") << ": " << (solid ? solid_verdict() : verdict()) << "\n";
 }
 
 std::string json_error_line(const std::string& path, const std::string& error) {

@@ -157,11 +157,14 @@ struct MeshReport {
   // complete search). One plain phrase per reason; empty for a solid.
   std::vector<std::string> solid_problems() const;
   bool is_solid() const { return solid_problems().empty(); }
+  // "solid", or "not a solid: " and each of solid_problems.
+  std::string solid_verdict() const;
 
   void print_text(std::ostream& out) const;
   void print_json(std::ostream& out) const;  // one line, keys documented in docs/check.md
-  // One line: "PATH: FORMAT, T triangles, C components: VERDICT".
-  void print_brief(std::ostream& out) const;
+  // One line: "PATH: FORMAT, T triangles, C components: VERDICT", the
+  // solid verdict where `solid` (umbra check --solid asks it).
+  void print_brief(std::ostream& out, bool solid = false) const;
 };
 
 }  // namespace umbra

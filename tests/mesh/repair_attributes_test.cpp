@@ -221,7 +221,7 @@ TEST_F(RepairAttributes, FacesCutWhereOverlappingPartsMeetTakeTheirCoordinatesIn
   const std::string path = (folder_ / "out.obj").string();
   const RepairSummary summary = repair_mesh(soup, path, path);
   ASSERT_TRUE(std::any_of(summary.changes.begin(), summary.changes.end(),
-                          [](const std::string& c) { return c.find("pairs of faces that cross: the parts that overlapped are one surface") != std::string::npos; }))
+                          [](const std::string& c) { return c.find("pairs of triangles that cross: the parts that overlapped are one surface") != std::string::npos; }))
       << summary.changes.back();
   for (const CompanionFile& companion : summary.companions) write(std::filesystem::path(companion.path).filename(), companion.bytes);
   const PolygonSoup out = read_polygon_soup(path);

@@ -88,6 +88,40 @@ TEST_F(BatchCheck, AMixOfGoodOpenAndUnreadableMeshesIsAllReportedAndExitsTwo) {
   EXPECT_EQ(run("check " + folder + "/a-closed.obj " + folder + "/b/deep").status, 0);
 }
 
+// One definition, one count: a closed tetrahedron with a degenerate face is
+// a solid but no closed 2-manifold (not clean). The summary counts what the
+// reports say, as the JSON and the page do, --solid or not, in one process
+// or in workers; --solid adds the solids, and --brief --solid prints the
+// solid verdict.
+TEST_F(BatchCheck, TheSummaryCountsWhatTheReportsSay) {
+  fs::create_directories(path("meshes"));
+  write("meshes/degenerate.off", "OFF\n4 5 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n3 0 0 1\n");
+  write("meshes/cube.obj", obj_text(test::unit_cube()));
+  EXPECT_EQ(verdicts(run("check --json " + path("meshes")).out), "cube.obj True\ndegenerate.off False\n");
+  for (const std::string workers : {"", " --timeout 30"}) {
+    CommandResult r = run("check --brief --solid " + path("meshes") + workers);
+    EXPECT_EQ(r.status, 0) << r.err;  // both are solids
+    EXPECT_EQ(r.out, path("meshes/cube.obj") + ": OBJ, 12 triangles, 1 component: solid\n" + path("meshes/degenerate.off") +
+                         ": OFF, 4 triangles, 1 component: solid\n");
+    EXPECT_EQ(without_time(r.err), "umbra check: 2 meshes in T s: 1 closed 2-manifold, 1 not, 0 unreadable; 2 solids\n");
+    r = run("check --brief " + path("meshes") + workers);
+    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(without_time(r.err), "umbra check: 2 meshes in T s: 1 closed 2-manifold, 1 not, 0 unreadable\n");
+  }
+}
+
+// A skipped search (--time-limit 0) proves nothing clean, and finds nothing
+// wrong: "not known to be clean", exit 1, as --help says.
+TEST_F(BatchCheck, ASkippedSearchLeavesAMeshNotKnownToBeClean) {
+  const std::string cube = write("cube.obj", obj_text(test::unit_cube()));
+  const CommandResult r = run("check --brief --time-limit 0 " + cube);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.out, cube + ": OBJ, 12 triangles, 1 component: closed and consistently oriented, not known to be clean "
+                          "(self-intersections not checked): still casts its shadow from silhouette edges\n");
+  EXPECT_NE(run("check --help").out.find("A mesh whose search was skipped or stopped is \"not\n                    known to be clean\""),
+            std::string::npos);
+}
+
 TEST_F(BatchCheck, JsonLinesUnderJobsAreInInputOrderAndComplete) {
   // Meshes of very different sizes, so that they finish out of order.
   fs::create_directories(path("meshes"));

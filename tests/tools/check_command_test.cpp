@@ -220,7 +220,7 @@ TEST_F(CheckCommand, RepairMergesShellsThatCrossIntoTheirUnion) {
   ASSERT_NE(run("check " + input).out.find("2 closed components cross faces: which way they face is undecided"), std::string::npos);
   const CommandResult r = run("check " + input + " --repair " + path("out.obj") + " --solid");
   EXPECT_EQ(r.status, 0) << r.out << r.err;
-  EXPECT_NE(r.out.find("  removed the 11 pairs of faces that cross: the parts that overlapped are one surface, bounding their union "
+  EXPECT_NE(r.out.find("  removed the 11 pairs of triangles that cross: the parts that overlapped are one surface, bounding their union "
                        "(46 triangles now)\n"),
             std::string::npos)
       << r.out;
@@ -235,7 +235,7 @@ TEST_F(CheckCommand, RepairLeavesAShellThatCrossesItselfAndSaysWhy) {
   const std::string input = write("in.obj", obj_text(test::bow_tie_prism()));
   const CommandResult r = run("check " + input + " --repair " + path("out.obj"));
   EXPECT_EQ(r.status, 1) << r.err;
-  EXPECT_NE(r.out.find("pairs of faces that cross: a closed component crosses itself, where which side is inside is unclear\n"),
+  EXPECT_NE(r.out.find("pairs of triangles that cross: a closed component crosses itself, where which side is inside is unclear\n"),
             std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("1 closed component crosses faces: which way they face is undecided"), std::string::npos) << r.out;
@@ -381,7 +381,7 @@ TEST_F(CheckCommand, RepairClosesTheHolesOfARealCadPart) {
   EXPECT_NE(r.out.find("  border             0 edges in 0 loops\n"), std::string::npos) << r.out;
   // Its one shell crosses itself at 6 pairs of faces: an autorefinement
   // tried on it kept a sliver of 1.7e-05 of its 8.7e+06, so it is not tried.
-  EXPECT_NE(r.out.find("  left the 6 pairs of faces that cross: a closed component crosses itself, where which side is inside is "
+  EXPECT_NE(r.out.find("  left the 6 pairs of triangles that cross: a closed component crosses itself, where which side is inside is "
                        "unclear\n"),
             std::string::npos)
       << r.out;
