@@ -11,7 +11,8 @@ namespace umbra {
 
 struct SheetPicture {
   std::string label;  // printable ASCII as given, any other character as '?'; shortened with "..." when too long for its tile
-  Image picture;      // RGB
+  Image picture;      // RGB; empty (0 x 0) for a file with none, whose tile says `note`
+  std::string note;   // "failed", "timed out": what the empty tile says
 };
 
 // `picture` shrunk by the least whole factor that makes it at most
@@ -21,7 +22,9 @@ Image thumbnail(const Image& picture, int max_width);
 
 // Thumbnails at most `thumb_width` pixels wide (each picture shrunk by a
 // whole factor, averaging the pixels it merges), in `columns` columns (0: as
-// many as make the sheet about square), on a light grey ground.
+// many as make the sheet about square), on a light grey ground; a picture
+// that is missing is a pale red tile that says its note. Labels too long
+// for a tile are shortened, each as it keeps what tells it from the others.
 Image contact_sheet(const std::vector<SheetPicture>& pictures, int thumb_width = 200, int columns = 0);
 
 }  // namespace umbra

@@ -23,7 +23,18 @@ std::string printable(const std::string& label) {
 int text_width(const std::string& text) { return stb_easy_font_width(const_cast<char*>(text.c_str())) * kTextScale; }
 
 void draw_text(Image& image, int x, int y, const std::string& text, const std::array<uint8_t, 3>& ink) {
-  std::vector<char> quads(text.size() * 270 + 64);  // the header's advice: about 270 bytes a character
+  // A quad (64 bytes) for each stroke of each character, counted from the
+  // font's own tables: the header's "about 270 bytes a character" is an
+  // average, and a label of many-stroke letters overran it, losing the last
+  // strokes of its last letters.
+  size_t bytes = 64;
+  for (const char ch : text) {
+    const int k = static_cast<unsigned char>(ch) - 32;
+    if (k < 0 || k >= 95) continue;  // stb_easy_font draws printable ASCII alone
+    const auto& info = stb_easy_font_charinfo;
+    bytes += 64 * size_t(info[k + 1].h_seg - info[k].h_seg + info[k + 1].v_seg - info[k].v_seg);
+  }
+  std::vector<char> quads(bytes);
   const int count = stb_easy_font_print(0, 0, const_cast<char*>(text.c_str()), nullptr, quads.data(), int(quads.size()));
   for (int q = 0; q < count; ++q) {
     const float* v = reinterpret_cast<const float*>(quads.data() + q * 4 * 16);  // 4 vertices of 16 bytes: x, y, z, colour

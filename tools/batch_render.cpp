@@ -281,19 +281,25 @@ int run_batch_render(const BatchRenderOptions& o) {
   } else if (o.sheet) {
     // This run's pictures (drawn, or up to date), read back in file order:
     // held one at a time while drawing, so that a folder of large pictures
-    // fits in memory; never an older picture of a file that failed now.
+    // fits in memory; never an older picture of a file that failed now,
+    // whose tile says that it failed instead.
     std::vector<SheetPicture> sheet;
     for (size_t i = 0; i < count; ++i) {
-      if (records[i].status != kDrawn && records[i].status != kSkipped) continue;
+      if (records[i].status != kDrawn && records[i].status != kSkipped) {
+        sheet.push_back({names[i], Image(), records[i].status});
+        continue;
+      }
       try {
-        sheet.push_back({names[i], thumbnail(read_png(records[i].picture), kSheetThumbWidth)});
+        sheet.push_back({names[i], thumbnail(read_png(records[i].picture), kSheetThumbWidth), ""});
       } catch (const std::exception& e) {
         std::cerr << e.what() << "\n";
       }
     }
     try {
       write_picture(contact_sheet(sheet, kSheetThumbWidth), *o.sheet);
-      std::cerr << "umbra render: wrote the contact sheet " << *o.sheet << " (" << sheet.size() << " pictures)\n";
+      const size_t without = size_t(std::count_if(sheet.begin(), sheet.end(), [](const SheetPicture& p) { return p.picture.width == 0; }));
+      std::cerr << "umbra render: wrote the contact sheet " << *o.sheet << " (" << sheet.size() - without << " pictures"
+                << (without ? ", " + std::to_string(without) + " failed" : "") << ")\n";
     } catch (const std::exception& e) {
       std::cerr << e.what() << "\n";
       sheet_failed = true;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "image/contact_sheet.hpp"
+#include "image/text_drawing.hpp"
 
 namespace umbra {
 namespace {
@@ -46,6 +47,28 @@ TEST(ContactSheet, LongLabelsKeepWhatTellsThemApart) {
   }
   for (size_t a = 0; a < bands.size(); ++a)
     for (size_t b = a + 1; b < bands.size(); ++b) EXPECT_NE(bands[a], bands[b]) << names[a] << " and " << names[b];
+}
+
+// Sixteen files whose long paths differ only at the end of their stems (a
+// test suite's numbered files): each label is the longest end of its stem
+// that fits, "...e_07", not the front and the shared extension, which once
+// made thirty tiles read alike ("glTF2....gltf").
+TEST(ContactSheet, NumberedFilesShowTheEndOfTheirStem) {
+  std::vector<std::string> names;
+  for (int k = 0; k < 16; ++k)
+    names.push_back("glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_" + std::string(k < 10 ? "0" : "") +
+                    std::to_string(k) + ".gltf");
+  for (const int k : {0, 7, 15}) {
+    std::vector<std::string> others;
+    for (const std::string& n : names)
+      if (n != names[size_t(k)]) others.push_back(n);
+    const std::string stem = names[size_t(k)].substr(names[size_t(k)].rfind('/') + 1, std::string("Mesh_PrimitiveMode_00").size());
+    std::string expected;
+    for (size_t keep = 1; keep <= stem.size() && text_width("..." + stem.substr(stem.size() - keep)) <= 120; ++keep)
+      expected = "..." + stem.substr(stem.size() - keep);
+    ASSERT_GT(expected.size(), 5u);
+    EXPECT_EQ(label_of(names[size_t(k)], 4, others), label_of(expected)) << names[size_t(k)] << " should read " << expected;
+  }
 }
 
 }  // namespace

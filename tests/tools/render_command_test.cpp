@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <tuple>
 
 #include "mesh/io/mesh_format.hpp"
@@ -639,23 +640,33 @@ TEST_F(RenderCommand, AFolderRendersToOnePicturePerMeshAndShardsWriteTheSameSet)
   EXPECT_NE(r.err.find(path("models/parts/broken.obj") + ":2:"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("umbra render: 4 files in "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(": 3 pictures in " + path("out") + ", 1 failed\n"), std::string::npos) << r.err;
-  // The contact sheet: the three pictures in file order, two to a row, each
-  // tile 6 pixels in from its cell, with a dark label line below it.
+  // The contact sheet: every file in file order, two to a row, each tile 6
+  // pixels in from its cell, with a dark label line below it; the file that
+  // failed a pale red tile that says so, in dark red.
   const Image sheet = read_png(path("sheet.png"));
   ASSERT_EQ(sheet.width, 2 * (120 + 12));
   ASSERT_EQ(sheet.height, 2 * (90 + 24 + 12));
-  for (size_t k = 0; k < pictures.size(); ++k) {
-    const Image picture = read_png(path("out/" + pictures[k]));
+  const std::vector<std::string> tiles = {"parts/box.off.png", "", "parts/tet.obj.png", "tet.obj.png"};  // broken.obj failed
+  for (size_t k = 0; k < tiles.size(); ++k) {
     const int x0 = int(k % 2) * 132 + 6, y0 = int(k / 2) * 126 + 6;
-    int differing = 0, ink = 0;
+    int differing = 0, ink = 0, pale = 0, red_ink = 0;
+    const std::optional<Image> picture = tiles[k].empty() ? std::nullopt : std::optional<Image>(read_png(path("out/" + tiles[k])));
     for (int y = 0; y < 90; ++y)
-      for (int x = 0; x < 120; ++x)
-        for (int c = 0; c < 3; ++c) differing += sheet.at(x0 + x, y0 + y, c) != picture.at(x, y, c);
+      for (int x = 0; x < 120; ++x) {
+        if (picture)
+          for (int c = 0; c < 3; ++c) differing += sheet.at(x0 + x, y0 + y, c) != picture->at(x, y, c);
+        pale += sheet.at(x0 + x, y0 + y, 0) > 240 && sheet.at(x0 + x, y0 + y, 1) < 230;
+        red_ink += sheet.at(x0 + x, y0 + y, 0) > 120 && sheet.at(x0 + x, y0 + y, 1) < 40;
+      }
     for (int y = y0 + 90; y < y0 + 90 + 24; ++y)
       for (int x = x0; x < x0 + 120; ++x) ink += sheet.at(x, y, 0) < 100;
-    EXPECT_EQ(differing, 0) << pictures[k];
-    EXPECT_GT(ink, 10) << pictures[k] << ": no label";
+    EXPECT_EQ(differing, 0) << tiles[k];
+    EXPECT_GT(ink, 10) << tiles[k] << ": no label";
+    if (!picture) EXPECT_GT(pale, 120 * 90 / 2) << "the failed file's tile is not pale red";
+    if (!picture) EXPECT_GT(red_ink, 20) << "the failed file's tile does not say so";
   }
+  EXPECT_NE(r.err.find("umbra render: wrote the contact sheet " + path("sheet.png") + " (3 pictures, 1 failed)\n"), std::string::npos)
+      << r.err;
   // Two shards write the same pictures as the one run, byte for byte.
   for (const char* shard : {"0/2", "1/2"})
     run("render " + path("models") + " -o " + path("sharded") + " --size 120x90 --shard " + shard);
@@ -703,7 +714,8 @@ TEST_F(RenderCommand, InputsThatShareAPictureNameKeepEveryPicture) {
   EXPECT_TRUE(fs::exists(path("twice/x.obj (2).png")));
 }
 
-// A file that drew in an earlier run and fails now is not on this run's sheet.
+// A file that drew in an earlier run and fails now is not on this run's
+// sheet: its tile says it failed.
 TEST_F(RenderCommand, TheSheetShowsThisRunsPicturesOnly) {
   fs::create_directories(path("models"));
   write("models/t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
@@ -712,7 +724,8 @@ TEST_F(RenderCommand, TheSheetShowsThisRunsPicturesOnly) {
   write("models/t.obj", "v 0 0 0\nf 1 2 3\n");
   r = run("render " + path("models") + " -o " + path("out") + " --size 40x30 --sheet " + path("sheet.png"));
   EXPECT_EQ(r.status, 1);
-  EXPECT_NE(r.err.find("umbra render: wrote the contact sheet " + path("sheet.png") + " (0 pictures)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("umbra render: wrote the contact sheet " + path("sheet.png") + " (0 pictures, 1 failed)"), std::string::npos)
+      << r.err;
 }
 
 // The contact sheet is written last, over whatever its name names: an input
