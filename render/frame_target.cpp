@@ -63,8 +63,8 @@ void FrameTarget::require_complete(const char* what, int width, int height) {
   // 16 bytes of colour, 4 of depth and stencil and 4 of the volumes' count a pixel.
   char size[96];
   std::snprintf(size, sizeof size, "%dx%d, about %.0f MiB", width, height, double(width) * height * 24.0 / (1 << 20));
-  throw std::runtime_error(std::string(what) + " is incomplete (status " + std::to_string(status) + ") for a frame of " + size +
-                           ", which this GL could not make: make --size or --antialias smaller");
+  throw FrameTooLarge("a frame of " + std::string(size) + " is more than this GL could make (" + what + " incomplete, status " +
+                      std::to_string(status) + ")");
 }
 
 void FrameTarget::bind_count() {

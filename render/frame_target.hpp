@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -30,6 +31,13 @@
 namespace umbra {
 
 class ShaderProgram;
+
+// A frame larger than the GL could allocate: the picture's size and samples
+// are the user's to make smaller (a command says so as a usage error).
+class FrameTooLarge : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 class FrameTarget {
  public:

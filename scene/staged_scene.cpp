@@ -169,6 +169,19 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
   // its place relative to it.
   const glm::dvec3 aim = view.target.value_or(target);
   const glm::dvec3 eye = view.eye.value_or(aim + distance * back);
+  if (view.eye) {
+    // As the staged text will hold them, to 6 digits: a given eye may meet
+    // the framing's target there, or stand straight above it.
+    const auto written = [](const glm::dvec3& p) { return glm::dvec3(std::stod(num(p.x)), std::stod(num(p.y)), std::stod(num(p.z))); };
+    const glm::dvec3 e = written(eye), a = written(aim);
+    const std::string given = "--eye " + num(eye.x) + "," + num(eye.y) + "," + num(eye.z);
+    if (e == a)
+      throw StagingChoiceError(given + " is the point the staged camera looks at (the middle of the model and its shadow): give "
+                               "--target as well, or put the eye elsewhere");
+    if (glm::length(glm::cross(a - e, glm::dvec3(0, 0, 1))) == 0.0)
+      throw StagingChoiceError(given + " is straight above or below the point the staged camera looks at, and the camera keeps +z "
+                               "up: give --target as well, or move the eye sideways");
+  }
   stage.camera = Camera{eye, aim, {0, 0, 1}, fovy_deg};
   // Far past every edge of the frame: the floor's horizon is never in view.
   stage.floor_centre = {centre.x, centre.y, stage.floor_z};

@@ -44,6 +44,14 @@ std::optional<InputError> neither_scene_nor_mesh(const std::string& path);
 // level, 90 straight down from above. The camera keeps the model and its
 // shadow in frame wherever it or the light is, unless `eye` or `target`
 // place it outright.
+// A staging choice that the model's framing rules out (an eye at the very
+// point the framing looks at): the option's fault, not the file's, which a
+// command says as a usage error.
+class StagingChoiceError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 struct StageView {
   // Unset: 35, or for a flat model standing upright, 35 degrees off its face (azimuth_facing).
   std::optional<double> camera_azimuth_deg;

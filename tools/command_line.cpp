@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "image/picture_file.hpp"
+#include "scene/scene_text.hpp"
 #include "mesh/check/mesh_repair.hpp"
 #include "mesh/io/mesh_format.hpp"
 #include "mesh/word_list.hpp"
@@ -318,7 +319,10 @@ void add_staging_options(CommandOptions& options, StagingOptions& staging, std::
   });
   add("--camera-zoom", [&](const std::string& o, const std::string& t) {
     v.camera_zoom = parse_finite_number(o, t);
-    if (!(v.camera_zoom > 0.0)) throw UsageError(o + " expects a factor above 0, got \"" + t + "\"");
+    // Past these the eye meets the model's middle, or the model is a speck.
+    if (!(v.camera_zoom >= kLeastCameraZoom && v.camera_zoom <= kMostCameraZoom))
+      throw UsageError(o + " expects a factor from " + number_text(kLeastCameraZoom) + " to " + number_text(kMostCameraZoom) + ", got \"" +
+                       t + "\"");
   });
   add("--fov", [&](const std::string& o, const std::string& t) { v.fov_deg = parse_degrees_in(o, t, 1.0, 170.0); });
   add("--eye", [&](const std::string& o, const std::string& t) { v.eye = parse_point(o, t); });
@@ -363,6 +367,8 @@ void require_consistent_staging(const StagingOptions& staging) {
   if (v.light && (v.light_azimuth_deg || v.light_elevation_deg))
     throw UsageError("--light places the light outright; --light-azimuth and --light-elevation place it by angles: give one or the other");
   if (v.eye && v.target && *v.eye == *v.target) throw UsageError("--eye and --target are the same point: the camera would look nowhere");
+  if (v.eye && v.camera_zoom != 1.0)
+    throw UsageError("--camera-zoom scales the framing's distance, which --eye replaces: give one or the other");
   if (v.eye && v.target && glm::length(glm::cross(*v.target - *v.eye, glm::dvec3(0, 0, 1))) == 0.0)
     throw UsageError("--eye is straight above or below --target: the staged camera keeps +z up, so it cannot look along it");
 }

@@ -92,6 +92,7 @@ std::string parse_up_axis(const std::string& option, const std::string& text);
 void parse_size(const std::string& option, const std::string& text, int largest, int& width, int& height);
 
 // The options that several commands take, each defined once.
+constexpr double kLeastCameraZoom = 0.01, kMostCameraZoom = 100.0;  // --camera-zoom's range
 constexpr int kLargestImage = kLargestPictureSide;  // along a side of the frame drawn, supersampled
 // A UsageError when `samples` x `samples` supersampling makes a frame of
 // `width` x `height` larger than kLargestImage along a side.

@@ -20,6 +20,7 @@
 #include "image/image.hpp"
 #include "image/partial_file.hpp"
 #include "image/picture_file.hpp"
+#include "render/frame_target.hpp"
 #include "render/render_plan.hpp"
 #include "tools/command_line.hpp"
 #include "tools/freed_memory_reuse.hpp"
@@ -101,7 +102,8 @@ options:
   --camera-azimuth DEG  the camera's azimuth (default 35)
   --camera-elevation DEG
                         the camera's elevation, -89.9 to 89.9 (default 30)
-  --camera-zoom F       come F times closer than the framing (default 1)
+  --camera-zoom F       come F times closer than the framing (default 1; 0.01
+                        to 100; not with --eye, which places the camera)
   --fov DEG             the lens's vertical field of view, 1 to 170 (default
                         30)
   --eye X,Y,Z           put the camera there (aimed at the framing's target)
@@ -424,6 +426,14 @@ int run_render_command(const std::vector<std::string>& argv) {
     said << "\n";
     return 0;
   } catch (const UsageError& e) {  // an option that the file's content rules out (require_drawable_size)
+    std::cerr << "umbra render: " << e.what() << "\n(see umbra render --help)\n";
+    return 2;
+  } catch (const FrameTooLarge& e) {  // the options' size and samples, more than this GL can draw
+    const RenderSettings& s = options.settings;
+    std::cerr << "umbra render: --size " << s.width << "x" << s.height << " at " << s.frame_samples() << " x " << s.frame_samples()
+              << " samples (--antialias): " << e.what() << "; make --size or --antialias smaller\n(see umbra render --help)\n";
+    return 2;
+  } catch (const StagingChoiceError& e) {  // a camera option that this model's framing rules out
     std::cerr << "umbra render: " << e.what() << "\n(see umbra render --help)\n";
     return 2;
   } catch (const std::exception& e) {

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <sstream>
 #include <tuple>
 
 #include "mesh/io/mesh_format.hpp"
@@ -93,7 +94,9 @@ TEST_F(RenderCommand, CameraAndLightOptionsAreCheckedBeforeAnyWork) {
   const std::string demo = std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene";
   const std::vector<std::pair<std::string, std::string>> cases = {
       {tet + " --camera-elevation 90", "--camera-elevation expects degrees from -89.9 to 89.9, got \"90\""},
-      {tet + " --camera-zoom 0", "--camera-zoom expects a factor above 0, got \"0\""},
+      {tet + " --camera-zoom 0", "--camera-zoom expects a factor from 0.01 to 100, got \"0\""},
+      {tet + " --camera-zoom 1e10", "--camera-zoom expects a factor from 0.01 to 100, got \"1e10\""},
+      {tet + " --eye 3,3,3 --camera-zoom 2", "--camera-zoom scales the framing's distance, which --eye replaces: give one or the other"},
       {tet + " --fov 180", "--fov expects degrees from 1 to 170, got \"180\""},
       {tet + " --light-elevation -91", "--light-elevation expects degrees from -90 to 90, got \"-91\""},
       {tet + " --eye 1,2", "--eye expects X,Y,Z such as 0,-3,1.5, got \"1,2\""},
@@ -110,6 +113,26 @@ TEST_F(RenderCommand, CameraAndLightOptionsAreCheckedBeforeAnyWork) {
     const CommandResult r = run("render " + arguments + " -o " + path("a.png"));
     EXPECT_EQ(r.status, 2) << arguments;
     EXPECT_EQ(r.err, "umbra render: " + message + "\n(see umbra render --help)\n") << arguments;
+  }
+  // An eye at the very point the framing looks at, or straight above it, is
+  // known once the model is framed: said of the option all the same, never
+  // of a line of the staged scene the user never wrote.
+  const CommandResult staged = run("render " + tet + " --size 32x32 --explain -o " + path("framed.png"));
+  ASSERT_EQ(staged.status, 0) << staged.err;
+  const size_t at = staged.out.find(" target ") + 8;
+  std::istringstream target(staged.out.substr(at, staged.out.find(" up ", at) - at));
+  double x, y, z;
+  target >> x >> y >> z;
+  std::ostringstream eye, above;
+  eye << x << "," << y << "," << z;
+  above << x << "," << y << "," << z + 3;
+  for (const auto& [given, said] : {std::pair{eye.str(), " is the point the staged camera looks at (the middle of the model and its "
+                                                         "shadow): give --target as well, or put the eye elsewhere"},
+                                    {above.str(), " is straight above or below the point the staged camera looks at, and the camera "
+                                                  "keeps +z up: give --target as well, or move the eye sideways"}}) {
+    const CommandResult r = run("render " + tet + " --size 32x32 --eye " + given + " -o " + path("a.png"));
+    EXPECT_EQ(r.status, 2) << given;
+    EXPECT_EQ(r.err, "umbra render: --eye " + given + said + "\n(see umbra render --help)\n");
   }
   EXPECT_FALSE(fs::exists(path("a.png")));
 }
