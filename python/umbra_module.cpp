@@ -88,7 +88,9 @@ std::vector<std::string> warning_lines(const Scene& scene) {
 // One GL context kept for many pictures, drawn one at a time from any thread.
 class Renderer {
  public:
-  explicit Renderer(const std::string& gl) : gl_(gl) {}
+  explicit Renderer(const std::string& gl) : gl_(gl) {
+    if (!headless_gl_from_name(gl)) throw UsageError("gl expects " + headless_gl_names() + ", got \"" + gl + "\"");
+  }
 
   // (image, mask or None, depth or None, warnings) for `source` drawn as
   // `words` (umbra render's options) say.
@@ -311,4 +313,5 @@ PYBIND11_MODULE(_umbra, m) {
   m.def("repair", &repair, py::arg("source"), py::arg("max_hole_edges"), py::arg("merge_tolerance"), py::arg("time_limit"));
   m.def("load", &load, py::arg("path"));
   m.attr("max_hole_edges") = kDefaultMaxHoleEdges;
+  m.attr("largest_picture_side") = kLargestPictureSide;
 }

@@ -32,6 +32,31 @@ class UmbraWarning(UserWarning):
     """What umbra read past or changed: a file's quirk, a mesh that is not closed."""
 
 
+# The GL does not survive fork(): once Mesa (or a GPU's driver) has drawn in
+# a process, its threads are gone from a child made by fork, and a render
+# there waits for them forever, even in a new context. So a child forked
+# after this process drew refuses to draw, and says how to start workers.
+_drew = False            # this process has drawn
+_drew_before_fork = False  # the process this one was forked from had
+
+
+def _forked():
+    global _drew_before_fork
+    _drew_before_fork = _drew_before_fork or _drew
+
+
+os.register_at_fork(after_in_child=_forked)
+
+
+def _about_to_draw():
+    global _drew
+    if _drew_before_fork:
+        raise RuntimeError("umbra cannot draw in a process forked from one that had drawn: the GL's threads do not survive "
+                           "fork(). Start the workers with multiprocessing's 'spawn' or 'forkserver' method "
+                           "(multiprocessing.get_context('spawn')), or draw nothing before the workers start")
+    _drew = True
+
+
 class Mesh:
     """A mesh file's content, as load() reads it: vertices (n, 3) float64 as
     written, faces (m, 3) uint32 (a polygon of k corners split into a fan of
@@ -46,10 +71,40 @@ class Mesh:
         return f"umbra.Mesh({self.format}, {len(self.vertices)} vertices, {len(self.faces)} faces)"
 
 
+def _path(path):
+    """A path as _umbra takes it; a NUL byte would end it early in C's calls."""
+    text = os.fsdecode(path)
+    if "\0" in text:
+        raise ValueError(f"{text!r}: a path cannot hold a NUL byte")
+    return text
+
+
+def _number(name, value, *, least=0.0, most=None, whole=False):
+    """`value` as a float (an int where `whole`), from `least` to `most`; else
+    a TypeError or ValueError in umbra's words, as the command's options get."""
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
+        raise TypeError(f"{name} expects a number, got {type(value).__name__} {value!r}")
+    number = float(value)
+    if not np.isfinite(number) or number < least or (most is not None and number > most) or (whole and number != int(number)):
+        kind = "a whole number" if whole else "a number"
+        plain = lambda x: str(int(x)) if float(x).is_integer() else f"{x:g}"  # 1000000, not 1e+06
+        span = f"from {plain(least)} to {plain(most)}" if most is not None else f"of {plain(least)} or more"
+        raise ValueError(f"{name} expects {kind} {span}, got {value!r}")
+    return int(number) if whole else number
+
+
+def _size(name, size):
+    """(width, height) in whole pixels, as --size takes them."""
+    if not isinstance(size, (tuple, list, np.ndarray)) or len(size) != 2:
+        raise TypeError(f"{name} expects (width, height) in pixels, got {size!r}")
+    return (_number(f"{name}'s width", size[0], least=1, most=_umbra.largest_picture_side, whole=True),
+            _number(f"{name}'s height", size[1], least=1, most=_umbra.largest_picture_side, whole=True))
+
+
 def _source(mesh, name="arrays"):
     """The mesh as _umbra takes it: a path, or its arrays."""
     if isinstance(mesh, (str, bytes, os.PathLike)):
-        return os.fsdecode(mesh)
+        return _path(mesh)
     if isinstance(mesh, tuple) and len(mesh) == 2:
         vertices, faces = mesh
     elif hasattr(mesh, "vertices") and hasattr(mesh, "faces"):
@@ -79,8 +134,8 @@ def _words(size, options):
     """render()'s keyword arguments as umbra render's options:
     camera_azimuth=20 is --camera-azimuth 20, eye=(1, 2, 3) is --eye 1,2,3,
     flat=True is --flat."""
-    width, height = size
-    words = ["--size", f"{int(width)}x{int(height)}"]
+    width, height = _size("size", size)
+    words = ["--size", f"{width}x{height}"]
     for key, value in options.items():
         if value is None or value is False:
             continue
@@ -105,6 +160,8 @@ class Renderer:
     GIL while it draws. gl: "auto", "egl" or "osmesa", as umbra render --gl."""
 
     def __init__(self, gl="auto"):
+        if not isinstance(gl, str):
+            raise TypeError(f"gl expects a name (auto, egl or osmesa), got {type(gl).__name__} {gl!r}")
         self._native = _umbra.Renderer(gl)
 
     def render(self, mesh, size=(800, 800), *, mask=False, depth=False, **options):
@@ -122,6 +179,7 @@ class Renderer:
     def _draw(self, mesh, size, mask, depth, options):
         if "gl" in options:
             raise TypeError("gl is the Renderer's: umbra.Renderer(gl=...)")
+        _about_to_draw()
         try:
             image, mask_array, depth_array, said = self._native.render(_source(mesh), _words(size, options), mask, depth)
         except OptionError as e:
@@ -170,8 +228,12 @@ def check(mesh, *, time_limit=60.0, picture=None):
     With picture=(width, height), also "picture": the defect picture that
     umbra check --picture draws, an (h, w, 4) uint8 array."""
     import json
-    size = None if picture is None else (int(picture[0]), int(picture[1]))
-    text, defects, image = _umbra.check(_source(mesh), float(time_limit), size)
+    size = None if picture is None else _size("picture", picture)
+    time_limit = _number("time_limit", time_limit)
+    source = _source(mesh)
+    if size is not None:
+        _about_to_draw()
+    text, defects, image = _umbra.check(source, time_limit, size)
     report = json.loads(text)
     report["defects"] = defects
     if image is not None:
@@ -185,7 +247,10 @@ def repair(mesh, *, max_hole_edges=_umbra.max_hole_edges, merge_tolerance=0.0, t
     check report (as check() returns it, without defects), with "changes":
     what the repair did, a line each."""
     import json
-    vertices, faces, changes, text = _umbra.repair(_source(mesh), int(max_hole_edges), float(merge_tolerance), float(time_limit))
+    max_hole_edges = _number("max_hole_edges", max_hole_edges, most=1_000_000, whole=True)
+    merge_tolerance = _number("merge_tolerance", merge_tolerance)
+    time_limit = _number("time_limit", time_limit)
+    vertices, faces, changes, text = _umbra.repair(_source(mesh), max_hole_edges, merge_tolerance, time_limit)
     report = json.loads(text)
     report["changes"] = changes
     return vertices, faces, report
@@ -193,4 +258,4 @@ def repair(mesh, *, max_hole_edges=_umbra.max_hole_edges, merge_tolerance=0.0, t
 
 def load(path):
     """The mesh file at `path` as a Mesh (see Mesh)."""
-    return Mesh(_umbra.load(os.fsdecode(path)))
+    return Mesh(_umbra.load(_path(path)))

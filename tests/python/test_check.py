@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import umbra
-from conftest import UMBRA, cube
+from conftest import SOURCE, UMBRA, cube
 
 # Time measured, not found: differs from run to run.
 TIMED = ("seconds",)
@@ -105,3 +105,28 @@ def test_the_defect_picture_comes_as_an_array_the_commands_size(tmp_path):
     red = (picture[70:, :, 0] > 200) & (picture[70:, :, 1] < 80) & (picture[70:, :, 2] < 80)
     assert red.sum() > 200
     assert "picture" not in umbra.check(cube())
+
+
+# Every bad argument is a ValueError or TypeError in umbra's words, before
+# any work: NaN and negative numbers were taken, picture=(0, 0) failed
+# inside the staged scene ("arrays (staged):10:30"), a path with a NUL byte
+# was read as the part before it, and some errors were pybind11's dumps.
+@pytest.mark.parametrize("call, error, said", [
+    (lambda m: umbra.check(m, time_limit=float("nan")), ValueError, "time_limit expects a number of 0 or more, got nan"),
+    (lambda m: umbra.check(m, time_limit=-1), ValueError, "time_limit expects a number of 0 or more, got -1"),
+    (lambda m: umbra.check(m, picture=(0, 0)), ValueError, "picture's width expects a whole number from 1 to 16384, got 0"),
+    (lambda m: umbra.check(m, picture="big"), TypeError, "picture expects (width, height) in pixels, got 'big'"),
+    (lambda m: umbra.check(str(m) + "\0.txt"), ValueError, "a path cannot hold a NUL byte"),
+    (lambda m: umbra.load(str(m) + "\0.txt"), ValueError, "a path cannot hold a NUL byte"),
+    (lambda m: umbra.repair(m, max_hole_edges=-1), ValueError, "max_hole_edges expects a whole number from 0 to 1000000, got -1"),
+    (lambda m: umbra.repair(m, merge_tolerance=float("inf")), ValueError, "merge_tolerance expects a number of 0 or more, got inf"),
+    (lambda m: umbra.render(m, (float("nan"), 3)), ValueError, "size's width expects a whole number from 1 to 16384, got nan"),
+    (lambda m: umbra.render(m, 3), TypeError, "size expects (width, height) in pixels, got 3"),
+    (lambda m: umbra.Renderer(gl=5), TypeError, "gl expects a name (auto, egl or osmesa), got int 5"),
+    (lambda m: umbra.Renderer(gl="vulkan"), ValueError, 'gl expects auto, egl or osmesa, got "vulkan"'),
+])
+def test_a_bad_argument_is_said_in_umbras_words(call, error, said):
+    with pytest.raises(error) as raised:
+        call(SOURCE / "scenes" / "meshes" / "torus.obj")
+    assert said in str(raised.value)
+    assert "incompatible" not in str(raised.value) and "(staged)" not in str(raised.value)

@@ -156,3 +156,42 @@ def test_a_mesh_that_is_not_closed_warns():
     vertices, faces = cube(open_top=True)
     with pytest.warns(umbra.UmbraWarning, match=r"arrays: mesh \"arrays\" is open, 1 hole: edge-multiplicity volume"):
         umbra.render((vertices, faces), (64, 64))
+
+
+# The GL does not survive fork(): a child forked by multiprocessing (its
+# default on Linux) after its parent drew once hung forever in render(). It
+# now refuses at once, saying how to start workers; a child whose parent has
+# not drawn draws. Each case in a fresh interpreter, bounded in time.
+FORKED = """
+import multiprocessing, sys, umbra
+def child(queue):
+    try:
+        queue.put(umbra.render(sys.argv[1], (24, 24)).shape)
+    except RuntimeError as e:
+        queue.put(str(e))
+if __name__ == "__main__":
+    if sys.argv[2] == "drew":
+        umbra.render(sys.argv[1], (24, 24))
+    context = multiprocessing.get_context(sys.argv[3])
+    queue = context.Queue()
+    worker = context.Process(target=child, args=(queue,))
+    worker.start()
+    print(queue.get(timeout=60))
+    worker.join(60)
+"""
+
+
+@pytest.mark.parametrize("parent, start, said", [
+    ("drew", "fork", "umbra cannot draw in a process forked from one that had drawn"),
+    ("drew", "spawn", "(24, 24, 4)"),
+    ("did not draw", "fork", "(24, 24, 4)"),
+])
+def test_a_forked_worker_draws_or_says_why_it_cannot(tmp_path, parent, start, said):
+    import subprocess
+    import sys
+    script = tmp_path / "forked.py"
+    script.write_text(FORKED)
+    run = subprocess.run([sys.executable, str(script), str(SOURCE / "scenes" / "meshes" / "torus.obj"), parent, start],
+                         capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stderr
+    assert run.stdout.startswith(said), run.stdout
