@@ -22,7 +22,6 @@
 #include "mesh/io/array_soup.hpp"
 #include "mesh/io/mesh_file.hpp"
 #include "mesh/io/mesh_format.hpp"
-#include "render/frame_target.hpp"
 #include "scene/scene_checks.hpp"
 #include "scene/staged_scene.hpp"
 #include "tools/command_line.hpp"
@@ -298,8 +297,6 @@ PYBIND11_MODULE(_umbra, m) {
     } catch (const UsageError& e) {
       option_error(e.what());
     } catch (const StagingChoiceError& e) {  // a camera keyword that the model's framing rules out
-      option_error(e.what());
-    } catch (const FrameTooLarge& e) {  // size and antialias, more than this GL can draw
       option_error(e.what());
     }
   });

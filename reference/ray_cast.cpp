@@ -75,6 +75,11 @@ std::optional<RayHit> nearest_hit(const Scene& scene, const glm::dvec3& origin, 
   return best;
 }
 
+double shadow_ray_start(const glm::dvec3& point, double distance) {
+  const double scale = 1.0 + std::max({std::abs(point.x), std::abs(point.y), std::abs(point.z)});
+  return kShadowRayStart * std::min(distance, kFarLight * scale);
+}
+
 bool shadow_ray_blocked(const Scene& scene, const glm::dvec3& point, int self, const glm::dvec3& light) {
   // A sphere cannot shadow the lit side of itself, nor a triangle itself, so
   // `self` is skipped rather than nudging the ray's origin by an epsilon.
@@ -83,7 +88,7 @@ bool shadow_ray_blocked(const Scene& scene, const glm::dvec3& point, int self, c
   // kShadowRayStart of it are the point's own surface, not a blocker.
   const glm::dvec3 to_light = light - point;
   const double distance = glm::length(to_light);
-  const auto hit = nearest_hit(scene, point, to_light / distance, self, kShadowRayStart * distance);
+  const auto hit = nearest_hit(scene, point, to_light / distance, self, shadow_ray_start(point, distance));
   return hit && hit->t < distance;
 }
 

@@ -36,6 +36,13 @@ std::optional<RayHit> nearest_hit(const Scene& scene, const glm::dvec3& origin, 
 
 // Where a shadow ray starts, as a fraction of its length (see shadow_ray_blocked).
 constexpr double kShadowRayStart = 1e-9;
+// Where the shadow ray from `point` toward a light `distance` away starts:
+// kShadowRayStart of its length, as rounding on a shared edge is relative to
+// the coordinates; for a light more than kFarLight times further than the
+// point's own coordinates are large, kShadowRayStart of that instead (a
+// light 1e20 away once started its rays 1e11 out, past every blocker).
+constexpr double kFarLight = 1e3;
+double shadow_ray_start(const glm::dvec3& point, double distance);
 
 // True when anything lies strictly between `point` (on object `self`) and the
 // light, from kShadowRayStart of the way on.

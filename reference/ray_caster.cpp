@@ -191,7 +191,7 @@ bool RayCaster::shadow_ray_blocked(const glm::dvec3& point, int self, const glm:
   const double distance = glm::length(to_light);
   Query q;
   rtcInitIntersectContext(&q.context);
-  q.origin = point, q.direction = to_light / distance, q.skip = self, q.t_min = kShadowRayStart * distance;
+  q.origin = point, q.direction = to_light / distance, q.skip = self, q.t_min = shadow_ray_start(point, distance);
   q.t_max = distance;
   RTCRay ray{};
   ray.org_x = float(point.x), ray.org_y = float(point.y), ray.org_z = float(point.z);

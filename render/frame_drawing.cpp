@@ -116,8 +116,11 @@ void FrameDrawing::view_from(const glm::dvec3& viewpoint, const glm::dmat4& view
     p->set("view_projection", glm::mat4(view_projection));
     p->set("eye", f(viewpoint));
   }
-  sphere_program_->use();
-  sphere_program_->set("window_rays", glm::mat3(window_ray_directions(view_projection, viewpoint, width, height)));
+  const glm::mat3 rays(window_ray_directions(view_projection, viewpoint, width, height));
+  for (ShaderProgram* p : {triangle_program_.get(), sphere_program_.get()}) {
+    p->use();
+    p->set("window_rays", rays);
+  }
 }
 
 void FrameDrawing::draw_surfaces(int pass, size_t light, shaders::ShadowTest test) {

@@ -67,9 +67,22 @@ out vec4 frag_color;
 // vertex colours, blended across its triangles; white for everything else.
 vec3 surface_color = vec3(1.0);
 
+// A vector's direction and length with it scaled by its largest component
+// first: a light 2e19 away is 4e38 squared, past a float's range, and
+// normalize() and length() square it.
+float largest_component(vec3 v) { return max(max(abs(v.x), abs(v.y)), abs(v.z)); }
+vec3 unit(vec3 v) {
+  float m = largest_component(v);
+  return m > 0.0 ? normalize(v / m) : v;
+}
+float safe_length(vec3 v) {
+  float m = largest_component(v);
+  return m > 0.0 ? m * length(v / m) : 0.0;
+}
+
 bool in_mapped_shadow(vec3 p, float n_dot_l) {
   vec3 to_p = p - light_position;
-  float d = length(to_p);
+  float d = safe_length(to_p);
   float bias = 2.0 * shadow_map_texel * d / max(n_dot_l, 0.1);
   return d - bias > texture(shadow_map, to_p).r;
 }
@@ -93,7 +106,7 @@ bool seen_side_faces_light(vec3 p, vec3 n) {
 // begins; 1 for everything else.
 void shade(vec3 p, vec3 n, vec3 s, bool smoothed, float reach, bool faces_light) {
   if (pass == 4) {
-    frag_color = vec4(length(p - light_position));
+    frag_color = vec4(safe_length(p - light_position));
     return;
   }
   if (pass == 5) {
@@ -105,7 +118,7 @@ void shade(vec3 p, vec3 n, vec3 s, bool smoothed, float reach, bool faces_light)
   if (dot(n, eye - p) < 0.0) n = -n;
   if (!smoothed) s = n;
   else if (dot(s, n) < 0.0) s = -s;
-  vec3 l = normalize(light_position - p);
+  vec3 l = unit(light_position - p);
   float n_dot_l = max(dot(n, l), 0.0);  // may round below 0 where the face meets the light at a grazing angle
   // What the shading takes: n . l, or for a smooth face, s . l faded at the terminator.
   float s_dot_l = smoothed ? max(dot(s, l), 0.0) * reach : n_dot_l;
@@ -158,6 +171,7 @@ out float light_reach;  // 0 at a smooth mesh's terminator, 1 elsewhere, blended
 uniform mat4 view_projection;
 out vec3 world_position;
 out vec3 world_normal;
+flat out float plane_offset;  // n . p of the triangle's plane, for the fragment's exact point
 out vec3 vertex_color;
 out vec2 texture_uv;
 flat out int triangle_light_side;
@@ -165,6 +179,7 @@ invariant gl_Position;
 void main() {
   world_position = position;
   world_normal = normal;
+  plane_offset = dot(normal, position);
   uint light_code = texelFetch(light_codes, gl_VertexID / 3).r;
   triangle_light_side = int(light_code & 3u) - 1;
 #ifdef UMBRA_SMOOTH
@@ -189,8 +204,10 @@ enum TextureWrap { kWrapRepeat = 0, kWrapClampToEdge = 1, kWrapMirroredRepeat = 
 // most of the range (15 channels of a map of alternating extremes,
 // texture_maps_test).
 inline constexpr const char* kTriangleFragmentMain = R"(
+uniform mat3 window_rays;  // window_rays * (x, y, 1): the ray through window point (x, y)
 in vec3 world_position;
 in vec3 world_normal;
+flat in float plane_offset;
 in vec3 vertex_color;
 in vec2 texture_uv;
 flat in int triangle_light_side;
@@ -231,17 +248,29 @@ vec3 bilinear(vec2 uv) {
 void main() {
   surface_color = vertex_color;
   if (material_textured) surface_color *= bilinear(texture_uv);
-  // The camera's side of the plane, by the interpolated point: it can round
-  // only where the plane nearly holds the eye, and the face is seen edge-on.
-  int eye_side = dot(world_normal, eye - world_position) < 0.0 ? -1 : 1;
+  // The point the pixel's ray meets the triangle's plane, as the ray-cast
+  // reference finds it: a position interpolated across a large triangle (a
+  // floor millions of units wide) is off by a float's rounding of its
+  // corners, far more than the point's own. Where the ray grazes the plane,
+  // the interpolated one.
+  vec3 ray = window_rays * vec3(gl_FragCoord.xy, 1.0);
+  float along = dot(world_normal, ray);
+  vec3 p = world_position;
+  if (abs(along) > 1e-3 * length(world_normal) * length(ray)) {
+    float t = (plane_offset - dot(world_normal, eye)) / along;
+    if (t > 0.0) p = eye + t * ray;
+  }
+  // The camera's side of the plane: it can round only where the plane
+  // nearly holds the eye, and the face is seen edge-on.
+  int eye_side = dot(world_normal, eye - p) < 0.0 ? -1 : 1;
   bool faces_light = triangle_light_side != 0 && triangle_light_side == eye_side;
   vec3 n = normalize(world_normal);
 #ifdef UMBRA_SMOOTH
   // A smooth face's corners all have normals; a flat one's are all 0, and so is what is blended of them.
   bool smoothed = world_shading_normal != vec3(0.0);
-  shade(world_position, n, smoothed ? normalize(world_shading_normal) : n, smoothed, light_reach, faces_light);
+  shade(p, n, smoothed ? normalize(world_shading_normal) : n, smoothed, light_reach, faces_light);
 #else
-  shade(world_position, n, n, false, 1.0, faces_light);
+  shade(p, n, n, false, 1.0, faces_light);
 #endif
 }
 )";

@@ -28,7 +28,12 @@ double near_plane(const Camera& camera, double aspect, const SceneBounds& surfac
   const double t = std::tan(glm::radians(camera.fovy_deg) / 2.0);
   const double cos_corner = 1.0 / std::sqrt(1.0 + t * t * (1.0 + aspect * aspect));
   near = std::min(near, 0.99 * cos_corner * nearest_surface);
-  return std::max(near, kLeastNearPlaneFraction * farthest);
+  // The depth the least near plane is a fraction of: the scene's, but no
+  // more than kDepthsOfInterest times the distance to what the camera looks
+  // at, so that a floor millions of units wide does not push the near plane
+  // past the model.
+  const double depth = std::min(farthest, kDepthsOfInterest * glm::length(camera.target - camera.eye));
+  return std::max(near, kLeastNearPlaneFraction * depth);
 }
 
 glm::dmat4 view_matrix(const Camera& camera) { return glm::lookAt(camera.eye, camera.target, camera.up); }

@@ -26,6 +26,11 @@ constexpr double kNearPlaneFraction = 0.05 / (3.4 + 1.7320508075688772);
 // closer (with 24 depth bits and the far plane at infinity it still resolves
 // depths 2^-24 / 2^-20 = 1/16 of the way to the far side of the scene).
 constexpr double kLeastNearPlaneFraction = 1.0 / (1 << 20);
+// That depth is the scene's, but at most this many times the distance from
+// the eye to the target: what lies further (a floor's far edge) needs no
+// depth that fine, and would push the near plane past what the camera
+// looks at.
+constexpr double kDepthsOfInterest = 64.0;
 double near_plane(const Camera& camera, double aspect, const SceneBounds& surfaces, double nearest_surface);
 
 // Everitt and Kilgard: with the far plane at infinity, a vertex at infinity

@@ -18,6 +18,15 @@
 namespace umbra {
 namespace {
 
+// `v`'s direction as a unit vector, `v` scaled by its largest component
+// first: a direction of (1e-320, 0, 0) is +x, though its length underflows
+// to 0 and glm::normalize would make it NaN. (0, 0, 0) stays as it is.
+glm::dvec3 direction(const glm::dvec3& v) {
+  const double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+  return largest > 0.0 ? glm::normalize(v / largest) : v;
+}
+
+
 struct Token {
   std::string text;
   int column = 0;  // 1-based byte column
@@ -293,7 +302,7 @@ class SceneBuilder {
     while (auto k = r.keyword_of("camera", {"eye", "target", "up", "fovy"})) {
       if (*k == "eye") c.eye = r.vec3("camera eye");
       else if (*k == "target") c.target = r.vec3("camera target");
-      else if (*k == "up") c.up = r.vec3("camera up");
+      else if (*k == "up") c.up = direction(r.vec3("camera up"));
       else {
         fovy_at = r.next_loc();
         c.fovy_deg = r.number("camera fovy");
@@ -399,7 +408,7 @@ class SceneBuilder {
         const FileLoc at = r.next_loc();
         const glm::dvec3 up = r.vec3("hemisphere up");
         if (up == glm::dvec3(0.0)) throw InputError(at, "the hemisphere's up must not be (0, 0, 0)");
-        scene_.fill.up = glm::normalize(up);
+        scene_.fill.up = direction(up);
       }
     }
   }

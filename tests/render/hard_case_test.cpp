@@ -258,6 +258,40 @@ TEST(HardScale, LightAMillionAway) {
   expect_hard_case_holds(scene);
 }
 
+// A light 1e20 away, past the 2e19 at which a float squared overflows: the
+// GL once shaded lit faces unlit (normalize() squared the light's vector),
+// and the reference's shadow rays started 1e-9 of their length, 1e11, out,
+// past every blocker, and found no shadow. The masks and the pictures agree.
+TEST(HardScale, LightBeyondAFloatsSquare) {
+  Scene scene = parse_scene_file(std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene");
+  scene.lights[0].position = glm::normalize(glm::dvec3(0.3, 0.4, 1.0)) * 1e20;
+  expect_hard_case_holds(scene);
+  test::expect_images_agree(scene, test::render_gl_and_ray_cast(scene, 120));
+}
+
+// A floor millions of units wide: the near plane, a fraction of the scene's
+// depth, once went past the model (the sphere's top, 3 from the default
+// eye), and the GL drew background alone; and the floor's points,
+// interpolated across triangles 6e6 wide, were lit a float's rounding of
+// their corners away from where they are.
+TEST(HardScale, AFloorMillionsOfUnitsWide) {
+  const Scene scene = parse_scene_text("light 0.6 0.8 1.6\nsphere 0 0 0 0.4\nfloor -0.5 size 3e6\n", "wide.scene");
+  EXPECT_LT(plan_for(scene).near_plane, 3.0);
+  expect_hard_case_holds(scene);
+  test::expect_images_agree(scene, test::render_gl_and_ray_cast(scene, 120));
+}
+
+// Directions whose length underflows: hemisphere up 1e-320 0 0 is +x, as
+// the camera's up of 1e-320 is; once NaN, every pixel black.
+TEST(HardScale, DirectionsTooShortToSquare) {
+  const Scene scene = parse_scene_text("light 0.6 0.8 1.6\nsphere 0 0 0 0.4\nfloor -0.5\nhemisphere up 1e-320 0 0\n"
+                                       "camera eye 0 -3 1 target 0 0 0 up 0 0 1e-320 fovy 45\n",
+                                       "tiny.scene");
+  EXPECT_EQ(scene.fill.up, glm::dvec3(1, 0, 0));
+  EXPECT_EQ(scene.camera.up, glm::dvec3(0, 0, 1));
+  test::expect_images_agree(scene, test::render_gl_and_ray_cast(scene, 120));
+}
+
 // --- how far the volumes reach (volume_reach.hpp) ----------------------------
 
 // A light just above a level triangle throws its shadow nine times the
