@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <set>
 
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -12,7 +13,9 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/refine.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 
 namespace umbra {
 
@@ -98,11 +101,55 @@ std::vector<uint8_t> faces_on_flat_parts(SurfaceMesh& mesh) {
 
 }  // namespace
 
-HoleFilling fill_holes(SurfaceMesh& mesh, size_t max_edges, std::vector<std::array<Point, 3>>& lobe_triangles) {
+// Whether a face of `patch` crosses a face of the part it closes (`part`,
+// by `part_of` each face the mesh had before the filling; a patch's own
+// faces count as the part's), decided with CGAL's exact predicates among the
+// faces whose boxes meet the patch's: a fill that passes through the
+// surface round it (a fold's) is no repair. Crossings the mesh had before
+// are not the patch's, and nor are crossings with other parts (a spider's
+// legs through its body), which the repair's union resolves later.
+bool patch_crosses_mesh(const SurfaceMesh& mesh, const std::vector<SurfaceMesh::Face_index>& patch,
+                        const std::vector<std::size_t>& part_of, std::size_t part) {
+  const auto box_of = [&](SurfaceMesh::Face_index f) {
+    CGAL::Bbox_3 box;
+    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) box += mesh.point(v).bbox();
+    return box;
+  };
+  CGAL::Bbox_3 around;
+  for (const auto f : patch) around += box_of(f);
+  std::vector<SurfaceMesh::Face_index> near;
+  for (const auto f : mesh.faces())
+    if (CGAL::do_overlap(box_of(f), around)) near.push_back(f);
+  std::vector<std::pair<SurfaceMesh::Face_index, SurfaceMesh::Face_index>> crossing;
+  PMP::self_intersections(near, mesh, std::back_inserter(crossing));
+  const std::set<SurfaceMesh::Face_index> in_patch(patch.begin(), patch.end());
+  const auto in_part = [&](SurfaceMesh::Face_index f) { return f.idx() >= part_of.size() || part_of[f.idx()] == part; };
+  return std::any_of(crossing.begin(), crossing.end(), [&](const auto& pair) {
+    return (in_patch.count(pair.first) && in_part(pair.second)) || (in_patch.count(pair.second) && in_part(pair.first));
+  });
+}
+
+// Takes `patch` out of `mesh` again, leaving its hole as it was (the added
+// points go with the faces; the border's half-edges stay).
+void remove_patch(SurfaceMesh& mesh, const std::vector<SurfaceMesh::Face_index>& patch) {
+  for (const auto f : patch) CGAL::Euler::remove_face(mesh.halfedge(f), mesh);
+}
+
+HoleFilling fill_holes(SurfaceMesh& mesh, size_t max_edges, std::vector<std::array<Point, 3>>& lobe_triangles,
+                       bool refuse_crossing_patches) {
   HoleFilling result;
   std::vector<SurfaceMesh::Halfedge_index> holes;  // one border half-edge per cycle
   PMP::extract_boundary_cycles(mesh, std::back_inserter(holes));
   const std::vector<uint8_t> flat = faces_on_flat_parts(mesh);
+  bool removed = false;  // a patch taken out again: its elements are collected at the end
+  // Each face's part (connected component) before the filling.
+  std::vector<std::size_t> part_of(mesh.number_of_faces() + mesh.number_of_removed_faces());
+  if (refuse_crossing_patches) {
+    auto parts = mesh.add_property_map<SurfaceMesh::Face_index, std::size_t>("f:umbra_part", 0).first;
+    PMP::connected_components(mesh, parts);
+    for (const auto f : mesh.faces()) part_of[f.idx()] = parts[f];
+    mesh.remove_property_map(parts);
+  }
   for (const SurfaceMesh::Halfedge_index hole : holes) {
     // A patch filled before may have closed this cycle too (a border that
     // touches itself is one cycle here, walked through its pinch).
@@ -146,17 +193,34 @@ HoleFilling fill_holes(SurfaceMesh& mesh, size_t max_edges, std::vector<std::arr
     }
     std::vector<SurfaceMesh::Face_index> patch;
     std::vector<SurfaceMesh::Vertex_index> added;
-    const bool faired =
+    bool faired =
         std::get<0>(PMP::triangulate_refine_and_fair_hole(mesh, hole, std::back_inserter(patch), std::back_inserter(added),
                                                           CGAL::parameters::use_delaunay_triangulation(true)));
     if (patch.empty()) {
       result.failed.push_back(edges);
       continue;
     }
+    const std::size_t part = part_of[mesh.face(mesh.opposite(hole)).idx()];
+    if (refuse_crossing_patches && patch_crosses_mesh(mesh, patch, part_of, part)) {
+      // Faired, the patch bent through the surface: the least-area
+      // triangulation of the border alone, flat; else the hole stays open.
+      remove_patch(mesh, patch);
+      removed = true;
+      patch.clear();
+      PMP::triangulate_hole(mesh, hole, std::back_inserter(patch), CGAL::parameters::use_delaunay_triangulation(true));
+      if (!patch.empty() && patch_crosses_mesh(mesh, patch, part_of, part)) remove_patch(mesh, patch), patch.clear();
+      if (patch.empty()) {
+        ++result.crossing;
+        continue;
+      }
+      ++result.filled_flat;
+      faired = true;  // not asked of this patch
+    }
     ++result.filled;
     result.triangles_added += patch.size();
     result.faired_roughly += !faired;
   }
+  if (removed) mesh.collect_garbage();
   return result;
 }
 

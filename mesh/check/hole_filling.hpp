@@ -22,14 +22,20 @@ struct HoleFilling {
   std::vector<size_t> failed;     // the edges of each hole no triangulation was found for
   size_t on_flat_parts = 0;       // holes left in flat parts (a panel, a sheet), which have no inside to close
   size_t lobes = 0;               // of holes whose border passes twice through a point, filled by add_lobe_patches
+  size_t filled_flat = 0;         // filled by the border's least-area triangulation alone: the faired patch crossed the mesh
+  size_t crossing = 0;            // left open: each patch, faired and flat, crossed the mesh
 };
 
 // Fills every hole of `mesh` (a triangle mesh) with at most `max_edges`
-// edges round it; the others stay open. A hole whose border passes twice
+// edges round it; the others stay open. Where `refuse_crossing_patches`, a
+// patch that crosses the part it closes is taken out again and the
+// border's least-area triangulation tried alone; where that crosses too,
+// the hole stays open. A hole whose border passes twice
 // through one point (two copies of it, split where faces met there alone)
 // is cut at that point into lobes, each triangulated on its own; their
 // triangles, which meet both copies, are left for add_lobe_patches.
-HoleFilling fill_holes(repair::SurfaceMesh& mesh, size_t max_edges, std::vector<std::array<repair::Point, 3>>& lobe_triangles);
+HoleFilling fill_holes(repair::SurfaceMesh& mesh, size_t max_edges, std::vector<std::array<repair::Point, 3>>& lobe_triangles,
+                       bool refuse_crossing_patches = false);
 
 // `mesh` rebuilt with `triangles` added and each point's copies merged
 // where the new faces close the fans they had split (split again where they

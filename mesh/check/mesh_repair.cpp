@@ -116,9 +116,9 @@ Outward orient_closed_components_outward(Mesh& mesh) {
 
 // Fills the holes of `mesh` (a triangle mesh) of at most `max_hole_edges`
 // edges, those that pass twice through a point lobe by lobe.
-HoleFilling filled(Mesh& mesh, size_t max_hole_edges) {
+HoleFilling filled(Mesh& mesh, size_t max_hole_edges, bool refuse_crossing_patches) {
   std::vector<std::array<Point, 3>> lobe_triangles;
-  HoleFilling holes = fill_holes(mesh, max_hole_edges, lobe_triangles);
+  HoleFilling holes = fill_holes(mesh, max_hole_edges, lobe_triangles, refuse_crossing_patches);
   holes.triangles_added += add_lobe_patches(mesh, lobe_triangles);
   return holes;
 }
@@ -132,8 +132,13 @@ void say_holes(const HoleFilling& holes, size_t max_edges, std::vector<std::stri
       line += " (" + counted(holes.lobes, "lobe", "lobes") + " of holes whose border passes twice through a point, each filled on its own)";
     if (holes.faired_roughly)
       line += " (" + std::to_string(holes.faired_roughly) + " refined but not faired: the solver failed)";
+    if (holes.filled_flat)
+      line += " (" + std::to_string(holes.filled_flat) + " flat, by the border's least-area triangulation: faired, the patch crossed the mesh)";
     changes.push_back(line);
   }
+  if (holes.crossing > 0)
+    changes.push_back("left " + counted(holes.crossing, "hole", "holes") +
+                      " open: every patch of it, faired or flat, crossed the mesh round it");
   if (!holes.too_large.empty()) {
     const size_t largest = *std::max_element(holes.too_large.begin(), holes.too_large.end());
     changes.push_back("left " + counted(holes.too_large.size(), "hole", "holes") + " of more than " + std::to_string(max_edges) +
@@ -150,10 +155,10 @@ void say_holes(const HoleFilling& holes, size_t max_edges, std::vector<std::stri
 
 // Fills the holes of `mesh` (filled), where that leaves some trying again
 // with its cracks snapped shut first; says what it did in `changes`.
-void close_holes(Mesh& mesh, size_t max_hole_edges, std::vector<std::string>& changes) {
+void close_holes(Mesh& mesh, size_t max_hole_edges, std::vector<std::string>& changes, bool refuse_crossing_patches) {
   std::optional<Mesh> unfilled;
   if (!CGAL::is_closed(mesh)) unfilled = mesh;
-  HoleFilling holes = filled(mesh, max_hole_edges);
+  HoleFilling holes = filled(mesh, max_hole_edges, refuse_crossing_patches);
   if (unfilled && !CGAL::is_closed(mesh)) {
     // A crack between two patches whose points do not meet (as CAD
     // tessellations leave them) is a hole no patch fills well. Tried again
@@ -167,7 +172,7 @@ void close_holes(Mesh& mesh, size_t max_hole_edges, std::vector<std::string>& ch
     const size_t stitched = PMP::stitch_borders(snapped);
     PMP::remove_degenerate_faces(snapped);
     snapped.collect_garbage();
-    HoleFilling snapped_holes = filled(snapped, max_hole_edges);
+    HoleFilling snapped_holes = filled(snapped, max_hole_edges, refuse_crossing_patches);
     if (moved > 0 && CGAL::is_closed(snapped)) {
       changes.push_back("snapped " + counted(moved, "border point", "border points") + " onto the border across a crack and stitched " +
                         counted(stitched, "pair of border edges", "pairs of border edges") +
@@ -181,8 +186,9 @@ void close_holes(Mesh& mesh, size_t max_hole_edges, std::vector<std::string>& ch
 
 // Turns each closed component outward where that is decided, then merges
 // parts that overlap into their union (self_intersection_removal.hpp);
-// says what it did in `changes`.
-void turn_outward_and_merge_overlaps(Mesh& mesh, std::vector<std::string>& changes) {
+// says what it did in `changes`. Returns the pairs of triangles that still
+// cross.
+size_t turn_outward_and_merge_overlaps(Mesh& mesh, std::vector<std::string>& changes) {
   const Outward outward = orient_closed_components_outward(mesh);
   if (outward.reversed > 0) changes.push_back("turned " + counted(outward.reversed, "closed component", "closed components") + " outward");
   if (!outward.crossing.empty()) {
@@ -197,8 +203,10 @@ void turn_outward_and_merge_overlaps(Mesh& mesh, std::vector<std::string>& chang
         changes.push_back("turned " + counted(n, "closed component", "closed components") + " of it outward");
     } else {
       changes.push_back("left the " + pairs + ": " + removal.why_not);
+      return outward.crossing.size();
     }
   }
+  return 0;
 }
 
 // The repair itself, as repair_mesh documents it: the repaired surface, its
@@ -269,8 +277,21 @@ Mesh repaired_surface(const PolygonSoup& soup, const RepairOptions& options, std
     changes.push_back("collapsed degenerate triangles (" + counted(triangles_before - mesh.number_of_faces(), "triangle", "triangles") +
                       " fewer)");
   if (!all_removed) changes.push_back("could not remove every degenerate triangle");
-  close_holes(mesh, max_hole_edges, changes);
-  turn_outward_and_merge_overlaps(mesh, changes);
+  // The holes filled and the overlapping parts merged; where triangles still
+  // cross after that (a faired patch bent through a fold, which no union
+  // resolves), again with each patch that crosses its part refused (filled
+  // flat, or left open): a fill that crosses the mesh is no repair. The
+  // result with fewer crossings is kept.
+  std::optional<Mesh> unfilled;
+  if (!CGAL::is_closed(mesh)) unfilled = mesh;
+  std::vector<std::string> filling;
+  const size_t crossing = (close_holes(mesh, max_hole_edges, filling, false), turn_outward_and_merge_overlaps(mesh, filling));
+  if (crossing > 0 && unfilled) {
+    std::vector<std::string> refusing;
+    close_holes(*unfilled, max_hole_edges, refusing, true);
+    if (turn_outward_and_merge_overlaps(*unfilled, refusing) < crossing) mesh = std::move(*unfilled), filling = std::move(refusing);
+  }
+  changes.insert(changes.end(), filling.begin(), filling.end());
   if (mesh.number_of_faces() == 0) throw InputError({soup.path, 0, 0}, "nothing left after the repair: every face was degenerate");
   return mesh;
 }

@@ -229,6 +229,23 @@ TEST_F(CheckCommand, RepairMergesShellsThatCrossIntoTheirUnion) {
   EXPECT_NEAR(test::signed_volume(read_polygon_soup(path("out.obj")), glm::dvec3(1.0)), 3.18, 1e-12);
 }
 
+// CGAL's fold.off: its one hole's faired patch bends through the fold, 11
+// crossing pairs where the file had none, which no union resolves; the
+// repair once kept it and called the pairs "left". A fill that crosses the
+// mesh is no repair: the border's least-area triangulation, flat, closes
+// it without a crossing, and the repair says so.
+TEST_F(CheckCommand, RepairRefusesAFillThatCrossesTheMesh) {
+  const std::string fold = std::string(UMBRA_CGAL_DATA) + "/meshes/fold.off";
+  ASSERT_NE(run("check --brief " + fold).out.find("(10 border edges in 1 hole)"), std::string::npos);
+  const CommandResult r = run("check " + fold + " --repair " + path("out.off") + " --brief");
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find(": closed 2-manifold: casts its shadow from silhouette edges"), std::string::npos) << r.out;
+  const CommandResult said = run("check " + fold + " --repair " + path("again.off"));
+  EXPECT_NE(said.out.find("(1 flat, by the border's least-area triangulation: faired, the patch crossed the mesh)"), std::string::npos)
+      << said.out;
+  EXPECT_EQ(said.out.find("pairs of triangles that cross"), std::string::npos) << said.out;
+}
+
 // A shell that crosses only itself (a prism over a bow tie, its small lobe
 // inside out) has no sound inside to keep: left as it is, and said why.
 TEST_F(CheckCommand, RepairLeavesAShellThatCrossesItselfAndSaysWhy) {
