@@ -209,6 +209,19 @@ size_t turn_outward_and_merge_overlaps(Mesh& mesh, std::vector<std::string>& cha
   return 0;
 }
 
+// The power of two the repair's points are scaled by, where their largest
+// coordinate is beyond what its arithmetic holds (squared and cubed in
+// CGAL's constructions, areas and volumes: 1e77 lost faces as degenerate,
+// 1e200 made a NaN volume and turned a part the wrong way), or so small that
+// its squares underflow; 0 where they are not. A power of two scales every
+// double exactly, and back.
+int scale_exponent(const std::vector<glm::dvec3>& points) {
+  double largest = 0.0;
+  for (const glm::dvec3& p : points) largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  if (!(largest > 0.0) || !std::isfinite(largest) || (largest < 0x1p64 && largest > 0x1p-64)) return 0;
+  return std::ilogb(largest);
+}
+
 // The repair itself, as repair_mesh documents it: the repaired surface, its
 // changes said in `changes`.
 // `placed` is where it put each of the soup's points when a merge within a
@@ -216,9 +229,11 @@ size_t turn_outward_and_merge_overlaps(Mesh& mesh, std::vector<std::string>& cha
 Mesh repaired_surface(const PolygonSoup& soup, const RepairOptions& options, std::vector<std::string>& changes,
                       std::vector<glm::dvec3>& placed) {
   const size_t max_hole_edges = options.max_hole_edges;
+  const int shift = scale_exponent(soup.points);
+  const auto scaled = [&](const glm::dvec3& p) { return Point(std::ldexp(p.x, -shift), std::ldexp(p.y, -shift), std::ldexp(p.z, -shift)); };
   std::vector<Point> points;
   points.reserve(soup.points.size());
-  for (const glm::dvec3& p : soup.points) points.emplace_back(p.x, p.y, p.z);
+  for (const glm::dvec3& p : soup.points) points.push_back(scaled(p));
   std::vector<Polygon> polygons(soup.polygon_count());
   for (size_t f = 0; f < polygons.size(); ++f) polygons[f].assign(soup.polygon(f), soup.polygon(f) + soup.corner_count(f));
   if (options.merge_tolerance > 0.0) {
@@ -230,7 +245,7 @@ Mesh repaired_surface(const PolygonSoup& soup, const RepairOptions& options, std
       changes.push_back("merged " + counted(n, "vertex", "vertices") + " into another within " + within.str() +
                         " (--merge-tolerance)");
     points.clear();
-    for (const glm::dvec3& p : near.positions) points.emplace_back(p.x, p.y, p.z);
+    for (const glm::dvec3& p : near.positions) points.push_back(scaled(p));
     placed.resize(soup.points.size());
     for (size_t p = 0; p < placed.size(); ++p) placed[p] = near.positions[near.vertex_of_point[p]];
     for (Polygon& polygon : polygons)
@@ -293,6 +308,11 @@ Mesh repaired_surface(const PolygonSoup& soup, const RepairOptions& options, std
   }
   changes.insert(changes.end(), filling.begin(), filling.end());
   if (mesh.number_of_faces() == 0) throw InputError({soup.path, 0, 0}, "nothing left after the repair: every face was degenerate");
+  if (shift != 0)
+    for (const auto v : mesh.vertices()) {
+      const Point& p = mesh.point(v);
+      mesh.point(v) = Point(std::ldexp(p.x(), shift), std::ldexp(p.y(), shift), std::ldexp(p.z(), shift));
+    }
   return mesh;
 }
 

@@ -37,12 +37,27 @@ ShellFacing facing_of_closed_components(const std::vector<glm::dvec3>& positions
     has_faces[c] = 1;
     for (const uint32_t v : triangles[t]) lo[c] = glm::min(lo[c], positions[v]), hi[c] = glm::max(hi[c], positions[v]);
   }
+  // Each component's volume, summed with its points scaled by a power of
+  // two (exact) where its size is beyond what a product of three holds (a
+  // part 1e200 wide cubes past a double's range, to NaN; one 1e-200 wide
+  // underflows to 0), so that its sign, which decides the facing, is right;
+  // then scaled back, to infinity or 0 where it must.
+  std::vector<int> shift(count, 0);
+  for (uint32_t c = 0; c < count; ++c) {
+    const glm::dvec3 size = hi[c] - lo[c];
+    const double extent = std::max({size.x, size.y, size.z});
+    if (has_faces[c] && extent > 0.0 && std::isfinite(extent) && !(extent < 0x1p64 && extent > 0x1p-64)) shift[c] = std::ilogb(extent);
+  }
   std::vector<double> volume(count, 0.0);
   for (uint32_t t = 0; t < triangles.size(); ++t) {
     const uint32_t c = component_of[t];
     if (!closed[c]) continue;
-    const glm::dvec3 centre = 0.5 * (lo[c] + hi[c]);
-    const glm::dvec3 a = positions[corner(t, 0)] - centre, b = positions[corner(t, 1)] - centre, e = positions[corner(t, 2)] - centre;
+    const glm::dvec3 centre = 0.5 * lo[c] + 0.5 * hi[c];
+    const auto relative = [&](size_t k) {
+      const glm::dvec3 d = positions[corner(t, k)] - centre;
+      return glm::dvec3(std::ldexp(d.x, -shift[c]), std::ldexp(d.y, -shift[c]), std::ldexp(d.z, -shift[c]));
+    };
+    const glm::dvec3 a = relative(0), b = relative(1), e = relative(2);
     volume[c] += glm::dot(a, glm::cross(b, e)) / 6.0;
   }
   // Nesting is tested only between closed components one of whose boxes
@@ -108,6 +123,7 @@ ShellFacing facing_of_closed_components(const std::vector<glm::dvec3>& positions
     if (!decided) facing[c] = Facing::kUndecided;
     else if ((volume[c] > 0.0) != (depth % 2 == 0)) facing[c] = Facing::kWrong;
   }
+  for (uint32_t c = 0; c < count; ++c) volume[c] = std::ldexp(volume[c], 3 * shift[c]);
   return {std::move(facing), std::move(volume)};
 }
 

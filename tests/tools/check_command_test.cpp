@@ -229,6 +229,41 @@ TEST_F(CheckCommand, RepairMergesShellsThatCrossIntoTheirUnion) {
   EXPECT_NEAR(test::signed_volume(read_polygon_soup(path("out.obj")), glm::dvec3(1.0)), 3.18, 1e-12);
 }
 
+// An open box of quads at coordinates the arithmetic cannot square or cube
+// (1e77: a flat-part test overflowed and the hole was left; 1e200: a NaN
+// volume, the box called inward and "turned outward"; 1e-200: a volume of
+// 0, called inward): repaired at a power of two's scale, which is exact, to
+// the closed outward box, every corner where the file has it.
+TEST_F(CheckCommand, RepairHoldsCoordinatesPastWhatTheirCubesHold) {
+  for (const char* scale : {"1e77", "1e200", "1e-200"}) {
+    SCOPED_TRACE(scale);
+    std::string obj;
+    for (const char* corner : {"0 0 0", "1 0 0", "1 1 0", "0 1 0", "0 0 1", "1 0 1", "1 1 1", "0 1 1"}) {
+      std::istringstream in(corner);
+      obj += "v";
+      for (int k = 0; k < 3; ++k) {
+        int unit = 0;
+        in >> unit;
+        obj += unit ? std::string(" ") + scale : std::string(" 0");
+      }
+      obj += "\n";
+    }
+    obj += "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\n";  // the side 4 1 5 8 missing
+    const std::string input = write("box.obj", obj);
+    const CommandResult r = run("check " + input + " --repair " + path("fixed.obj"));
+    EXPECT_EQ(r.status, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("  filled 1 hole with 2 triangles"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("turned"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("12 faces, closed, chi 2, genus 0, outward, encloses "), std::string::npos) << r.out;
+    const PolygonSoup out = read_polygon_soup(path("fixed.obj"));
+    std::set<std::tuple<double, double, double>> corners;
+    for (const glm::dvec3& p : out.points) corners.insert({p.x, p.y, p.z});
+    const double s = std::stod(scale);
+    EXPECT_EQ(corners.size(), 8u);
+    EXPECT_TRUE(corners.count({s, s, s}) && corners.count({0, s, 0})) << "the corners moved";
+  }
+}
+
 // CGAL's fold.off: its one hole's faired patch bends through the fold, 11
 // crossing pairs where the file had none, which no union resolves; the
 // repair once kept it and called the pairs "left". A fill that crosses the
