@@ -19,6 +19,15 @@
 namespace umbra {
 namespace {
 
+// MTL's "-clamp on " before a map's name, where the map takes coordinates
+// outside [0, 1] to its edge along both axes (glTF's clamp-to-edge
+// sampler); MTL has no other wrap than repeat.
+std::string clamp_option(const TextureImage& map) {
+  const bool clamped = map.wrap_u == TextureImage::Wrap::kClampToEdge && map.wrap_v == TextureImage::Wrap::kClampToEdge;
+  return clamped ? "-clamp on " : "";
+}
+
+
 // The shortest decimal that reads back as the same double.
 void put_number(std::string& out, double x) {
   char buffer[32];
@@ -103,7 +112,7 @@ std::string material_library(const TriangleFile& mesh, const std::filesystem::pa
     const std::string& source = material.texture->file;
     const std::filesystem::path relative = std::filesystem::absolute(source, ec).lexically_normal().lexically_relative(folder);
     if (!source.empty() && !relative.empty() && *relative.begin() != "..") {
-      text += "map_Kd " + relative.generic_string() + "\n";  // in the output's folder already
+      text += "map_Kd " + clamp_option(*material.texture) + relative.generic_string() + "\n";  // in the output's folder already
       continue;
     }
     // Copied beside the output, which then reads it from its own folder as
@@ -118,7 +127,7 @@ std::string material_library(const TriangleFile& mesh, const std::filesystem::pa
       name = path.stem().string() + "." + std::to_string(m) + "." + std::filesystem::path(source).filename().string();
       copied.emplace(name, source);
     }
-    text += "map_Kd " + name + "\n";
+    text += "map_Kd " + clamp_option(*material.texture) + name + "\n";
     if (copied_already) continue;
     std::vector<unsigned char> bytes;
     std::string error;

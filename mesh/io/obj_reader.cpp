@@ -5,15 +5,20 @@
 // coordinates); the corners' `vn` normals are kept for a picture. Groups and
 // other texture maps are skipped. Large files are read in stretches of lines
 // on every core.
+#include <sys/stat.h>
+
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <exception>
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <utility>
+#include <vector>
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -94,6 +99,46 @@ std::string map_path(std::string_view rest, const std::filesystem::path& folder)
   return (folder / name).lexically_normal().string();
 }
 
+// A map statement's options (MTL's -clamp, -s, -o, -blendu, ...), which
+// come before its file's name.
+struct MapOptions {
+  bool clamp = false;     // -clamp on
+  std::string unapplied;  // the first option read but not applied, as written ("-s 2 2 1")
+};
+MapOptions map_options(std::string_view rest) {
+  std::vector<std::string> words;
+  std::string word;
+  for (const char c : rest) {
+    if (c == ' ' || c == '\t') {
+      if (!word.empty()) words.push_back(word), word.clear();
+    } else {
+      word += c;
+    }
+  }
+  if (!word.empty()) words.push_back(word);
+  // "-s", not "-0.5", which is a value.
+  const auto is_option = [](const std::string& w) {
+    return w.size() > 1 && w[0] == '-' && !std::isdigit(static_cast<unsigned char>(w[1])) && w[1] != '.';
+  };
+  MapOptions options;
+  // Each option and the values that follow it, up to the next option; the
+  // last word is the file's name.
+  for (size_t k = 0; k + 1 < words.size();) {
+    if (!is_option(words[k])) {
+      ++k;
+      continue;
+    }
+    size_t next = k + 1;
+    while (next + 1 < words.size() && !is_option(words[next])) ++next;
+    std::string written = words[k];
+    for (size_t v = k + 1; v < next; ++v) written += " " + words[v];
+    if (words[k] == "-clamp") options.clamp = next > k + 1 && words[k + 1] == "on";
+    else if (options.unapplied.empty()) options.unapplied = written;
+    k = next;
+  }
+  return options;
+}
+
 // The rest of the line without the blanks round it: a material's name may hold spaces.
 std::string rest_as_name(const TextScanner& scanner) {
   std::string_view rest = scanner.rest_of_line();
@@ -106,8 +151,20 @@ std::string rest_as_name(const TextScanner& scanner) {
 void read_material_library(const std::string& path, int line, PolygonSoup& soup, std::map<std::string, int>& named,
                            ModelFiles* maps) {
   std::error_code exists_error;
-  if (!std::filesystem::is_regular_file(path, exists_error)) {
+  if (!std::filesystem::exists(path, exists_error)) {
     soup.warn(line, "material library \"" + path + "\" not found: its materials are left out");
+    return;
+  }
+  // A regular file (a FIFO is never waited for); and where its maps would
+  // be drawn (`maps`), read from where they are: inside the model's folder.
+  std::string refusal;
+  struct stat there {};
+  if (::stat(path.c_str(), &there) == 0 && !S_ISREG(there.st_mode))
+    refusal = "is not a regular file (" + non_regular_kind(there.st_mode) + ")";
+  else if (maps)
+    refusal = maps->refusal(path);
+  if (!refusal.empty()) {
+    soup.warn(line, "material library \"" + path + "\" " + refusal + ": its materials are left out");
     return;
   }
   const MappedFile file(path);
@@ -143,12 +200,24 @@ void read_material_library(const std::string& path, int line, PolygonSoup& soup,
       } else if (keyword == "map_Kd" && !maps) {
         continue;
       } else if (current && keyword == "map_Kd") {
-        const std::string map = map_path(scanner.rest_of_line(), std::filesystem::path(path).parent_path());
+        const std::string_view statement = scanner.rest_of_line();
+        const std::string map = map_path(statement, std::filesystem::path(path).parent_path());
         std::string error;
         current->texture = maps->texture(map, error);
         if (!current->texture && !error.empty())
           soup.warn(line, "material \"" + current->name + "\"'s texture map \"" + map + "\": " + error +
                               ": its faces take the material's Kd colour");
+        // Its options: -clamp on takes coordinates outside [0, 1] to the
+        // edge (as glTF's clamp-to-edge); the others are said, not drawn.
+        const MapOptions options = map_options(statement);
+        if (current->texture && options.clamp) {
+          auto clamped = std::make_shared<TextureImage>(*current->texture);
+          clamped->wrap_u = clamped->wrap_v = TextureImage::Wrap::kClampToEdge;
+          current->texture = std::move(clamped);
+        }
+        if (!options.unapplied.empty())
+          soup.warn(line, "material \"" + current->name + "\"'s map_Kd option " + options.unapplied +
+                              " is not applied: its map is drawn as if the option were not there");
       } else if (!noted_maps && (keyword.substr(0, 4) == "map_" || keyword == "bump" || keyword == "disp" || keyword == "decal")) {
         soup.warn(line, "the materials' texture maps other than map_Kd (" + std::string(keyword) + " and the like) are not drawn");
         noted_maps = true;

@@ -319,5 +319,26 @@ TEST_F(RepairAttributes, AMapHeldInsideAGlbIsWrittenBesideTheObjAsPng) {
   EXPECT_EQ(out.materials[0].texture->rgba, soup.materials[0].texture->rgba);
 }
 
+// A glTF sampler's clamp-to-edge, written as MTL's -clamp on and read back
+// so: --repair to .obj once dropped it, and its map repeated.
+TEST_F(RepairAttributes, AClampedMapStaysClampedInTheObj) {
+  const std::string glb = "/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
+  if (!std::filesystem::exists(glb)) GTEST_SKIP() << "needs Debian's assimp-testmodels (build.sh installs it)";
+  PolygonSoup soup = read_polygon_soup(glb);
+  ASSERT_TRUE(soup.materials.at(0).texture);
+  auto clamped = std::make_shared<TextureImage>(*soup.materials[0].texture);
+  clamped->wrap_u = clamped->wrap_v = TextureImage::Wrap::kClampToEdge;
+  soup.materials[0].texture = clamped;
+  const std::string path = (folder_ / "box.obj").string();
+  const RepairSummary summary = repair_mesh(soup, path, path);
+  for (const CompanionFile& companion : summary.companions) write(std::filesystem::path(companion.path).filename(), companion.bytes);
+  EXPECT_NE(summary.companions.back().bytes.find("map_Kd -clamp on box.0.png\n"), std::string::npos) << summary.companions.back().bytes;
+  const PolygonSoup out = read_polygon_soup(path);
+  ASSERT_TRUE(out.warnings.empty()) << out.warnings[0].message;
+  ASSERT_TRUE(out.materials.at(0).texture);
+  EXPECT_EQ(out.materials[0].texture->wrap_u, TextureImage::Wrap::kClampToEdge);
+  EXPECT_EQ(out.materials[0].texture->wrap_v, TextureImage::Wrap::kClampToEdge);
+}
+
 }  // namespace
 }  // namespace umbra

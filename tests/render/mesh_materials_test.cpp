@@ -1,11 +1,14 @@
 // A mesh file's own materials (OBJ's mtllib and usemtl, glTF's base colour,
 // 3MF's base materials) in the image: each face drawn in its material, by
 // the GL renderer and the ray-cast reference alike.
+#include <sys/stat.h>
+
 #include <filesystem>
 #include <fstream>
 
 #include <gtest/gtest.h>
 
+#include "image/image.hpp"
 #include "mesh/io/mesh_file.hpp"
 #include "scene/scene_parser.hpp"
 #include "tests/mesh/interchange_writers.hpp"
@@ -117,6 +120,44 @@ TEST_F(MeshMaterials, MissingLibrariesAndNamesAreSaidOnce) {
   EXPECT_EQ(scene.warnings[0].where.line, 1);
   EXPECT_EQ(scene.warnings[0].message, "material library \"" + (folder_ / "gone.mtl").string() + "\" not found: its materials are left out");
   EXPECT_EQ(scene.warnings[1].message, "material \"red\" is in no material library: its faces keep the scene's material");
+}
+
+// A library is read from where the model's maps are (its own folder, unless
+// --any-texture-path), as a regular file: one outside was read with no word
+// where maps are confined, and a FIFO was called "not found".
+TEST_F(MeshMaterials, ALibraryOutsideTheModelsFolderOrNotAFileIsSaidAndLeftOut) {
+  std::filesystem::create_directories(folder_ / "model");
+  write("outside.mtl", "newmtl red\nKd 1 0 0\n");
+  ASSERT_EQ(::mkfifo((folder_ / "model" / "pipe.mtl").c_str(), 0600), 0);
+  for (const auto& [library, said] :
+       {std::pair{std::string("../outside.mtl"), "\" lies outside " + (folder_ / "model").string()},
+        {std::string("pipe.mtl"), "\" is not a regular file (a FIFO): its materials are left out"}}) {
+    write("model/floor.obj", "mtllib " + library + "\nusemtl red\n" + test::obj_text(floor_of_two_squares()));
+    const Scene scene = scene_with("mesh model/floor.obj");
+    ASSERT_FALSE(scene.warnings.empty());
+    EXPECT_EQ(scene.warnings[0].where.line, 1);
+    EXPECT_NE(scene.warnings[0].message.find(said), std::string::npos) << scene.warnings[0].message;
+    EXPECT_TRUE(scene.meshes[0].triangle_materials.empty()) << library << ": its materials were read";
+  }
+}
+
+// map_Kd's options: -clamp on takes coordinates outside [0, 1] to the
+// map's edge; any other (-s, -o, ...) is said, not silently passed over.
+TEST_F(MeshMaterials, MapOptionsAreAppliedOrSaid) {
+  Image green(2, 2, 3, 0);
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 2; ++x) green.at(x, y, 1) = 200;
+  write_png(green, (folder_ / "green.png").string());
+  write("floor.mtl", "newmtl red\nKd 1 0 0\nmap_Kd -clamp on -s 2 2 1 -o -0.5 0 0 green.png\n");
+  write("floor.obj", "mtllib floor.mtl\nusemtl red\n" + test::obj_text(floor_of_two_squares()));
+  const Scene scene = scene_with("mesh floor.obj");
+  ASSERT_FALSE(scene.warnings.empty());
+  EXPECT_EQ(scene.warnings[0].message, "material \"red\"'s map_Kd option -s 2 2 1 is not applied: its map is drawn as if the option "
+                                       "were not there");
+  const Material& red = scene.materials.back();  // the file's, after the scene's default and grey
+  ASSERT_TRUE(red.texture) << red.name;
+  EXPECT_EQ(red.texture->wrap_u, TextureImage::Wrap::kClampToEdge);
+  EXPECT_EQ(red.texture->wrap_v, TextureImage::Wrap::kClampToEdge);
 }
 
 TEST_F(MeshMaterials, ABrokenLibraryIsAWarningAndANameWithSpacesIsOneLibrary) {
