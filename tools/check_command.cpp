@@ -102,6 +102,10 @@ options:
                     meshes or a folder, OUT is a folder, and each mesh's
                     picture is named as umbra render names a folder's
                     (meshes are then checked one at a time)
+  --camera-azimuth DEG, --camera-elevation DEG, --camera-zoom F
+                    (with --picture or --report) the pictures' camera, as
+                    umbra render takes it: defects under a model show from
+                    below (--camera-elevation -30)
   --report REPORT.html
                     also write one web page of every mesh's report, a row
                     each with its defect picture (--picture's, or small ones
@@ -146,6 +150,8 @@ struct CheckCommandOptions {
   bool picture_folder = false;         // --picture names a folder: several meshes, a picture each
   std::optional<std::string> report;   // --report: the page to write
   bool no_pictures = false;            // --no-pictures: the report's rows without them
+  StageView view;                      // the pictures' camera (--camera-azimuth, ...)
+  std::vector<std::string> view_given;  // those named
   CheckOptions check;
   double timeout_s = 0.0;  // >0: meshes checked in worker processes, each stopped after this long
   bool help = false;
@@ -162,6 +168,7 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
   options.value("--picture", [&](const std::string&, const std::string& t) { o.picture = t; });
   options.value("--report", [&](const std::string&, const std::string& t) { o.report = t; });
   options.flag("--no-pictures", o.no_pictures);
+  add_camera_orbit_options(options, o.view, o.view_given);
   options.value("--max-hole-edges", [&](const std::string& n, const std::string& t) { o.max_hole_edges = size_t(parse_int_in(n, t, 0, 1000000)); });
   options.value("--merge-tolerance", [&](const std::string& n, const std::string& t) {
     o.merge_tolerance = parse_finite_number(n, t);
@@ -193,6 +200,8 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
     if (o.no_pictures && o.picture) throw UsageError("--no-pictures leaves out the pictures --picture asks for: give one");
   }
   if (o.no_pictures && !o.report) throw UsageError("--no-pictures is for --report's rows: give --report REPORT.html");
+  if (!o.view_given.empty() && ((!o.picture && !o.report) || o.no_pictures))
+    throw UsageError(o.view_given.front() + " places the defect pictures' camera: give --picture or --report");
   if (o.picture) {
     if (o.repair_output) throw UsageError("--picture draws the mesh as it is; check the repaired file for its picture");
     const std::string& p = *o.picture;
@@ -255,8 +264,8 @@ void print_report(const MeshReport& report, const CheckCommandOptions& options, 
 // `soup`'s defect picture (DefectPicture), from its report made with every
 // defect listed, written to `output`.
 void write_defect_picture(const std::string& path, const PolygonSoup& soup, const MeshReport& report, const std::string& output,
-                          int size) {
-  const DefectPicture picture(soup, report, up_axis_of_file(path), size, size);
+                          int size, const StageView& view) {
+  const DefectPicture picture(soup, report, up_axis_of_file(path), size, size, view);
   const Image image = picture.draw(gl_with_environment(HeadlessGl::kAuto));
   if (const std::filesystem::path folder = std::filesystem::path(output).parent_path(); !folder.empty())
     std::filesystem::create_directories(folder);
@@ -282,7 +291,7 @@ CheckOutcome check_one(const std::string& path, const CheckCommandOptions& optio
     }
     if (picture.empty()) return outcome;
     try {
-      write_defect_picture(path, soup, report, picture, options.picture ? kDefectPictureSize : kReportPictureSize);
+      write_defect_picture(path, soup, report, picture, options.picture ? kDefectPictureSize : kReportPictureSize, options.view);
       if (options.picture && !options.picture_folder) outcome.err = "umbra check: drew the defects of " + path + " to " + picture + "\n";
     } catch (const std::exception& e) {
       outcome.err = path + ": no defect picture: " + e.what() + "\n";

@@ -302,16 +302,23 @@ glm::dvec3 parse_color(const std::string& option, const std::string& text) {
                    did_you_mean(text, names));
 }
 
-void add_staging_options(CommandOptions& options, StagingOptions& staging, std::vector<std::string>& given) {
-  StageView& v = staging.view;
-  // Each option's value, checked, then its name noted as given.
+namespace {
+
+// An option whose value `take` checks and keeps, its name then noted in `given`.
+void add_noted(CommandOptions& options, std::vector<std::string>& given, const std::string& name,
+               std::function<void(const std::string&, const std::string&)> take) {
+  options.value(name, [&given, take = std::move(take)](const std::string& o, const std::string& t) {
+    take(o, t);
+    given.push_back(o);
+  });
+}
+
+}  // namespace
+
+void add_camera_orbit_options(CommandOptions& options, StageView& v, std::vector<std::string>& given) {
   const auto add = [&](const std::string& name, std::function<void(const std::string&, const std::string&)> take) {
-    options.value(name, [&given, take = std::move(take)](const std::string& o, const std::string& t) {
-      take(o, t);
-      given.push_back(o);
-    });
+    add_noted(options, given, name, std::move(take));
   };
-  add("--up", [&](const std::string& o, const std::string& t) { staging.up = parse_up_axis(o, t); });
   add("--camera-azimuth", [&](const std::string& o, const std::string& t) { v.camera_azimuth_deg = parse_finite_number(o, t); });
   // Short of the poles, where the floor's up would be the view's direction.
   add("--camera-elevation", [&](const std::string& o, const std::string& t) {
@@ -324,6 +331,15 @@ void add_staging_options(CommandOptions& options, StagingOptions& staging, std::
       throw UsageError(o + " expects a factor from " + number_text(kLeastCameraZoom) + " to " + number_text(kMostCameraZoom) + ", got \"" +
                        t + "\"");
   });
+}
+
+void add_staging_options(CommandOptions& options, StagingOptions& staging, std::vector<std::string>& given) {
+  StageView& v = staging.view;
+  const auto add = [&](const std::string& name, std::function<void(const std::string&, const std::string&)> take) {
+    add_noted(options, given, name, std::move(take));
+  };
+  add("--up", [&](const std::string& o, const std::string& t) { staging.up = parse_up_axis(o, t); });
+  add_camera_orbit_options(options, v, given);
   add("--fov", [&](const std::string& o, const std::string& t) { v.fov_deg = parse_degrees_in(o, t, 1.0, 170.0); });
   add("--eye", [&](const std::string& o, const std::string& t) { v.eye = parse_point(o, t); });
   add("--target", [&](const std::string& o, const std::string& t) { v.target = parse_point(o, t); });

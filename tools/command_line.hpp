@@ -120,6 +120,9 @@ glm::dvec3 parse_color(const std::string& option, const std::string& text);
 // a command to refuse them where nothing is staged. Also
 // --background COLOR|transparent, which a scene file takes too.
 void add_staging_options(CommandOptions& options, StagingOptions& staging, std::vector<std::string>& given);
+// Of those, the camera's orbit alone: --camera-azimuth, --camera-elevation
+// and --camera-zoom (umbra check --picture takes them).
+void add_camera_orbit_options(CommandOptions& options, StageView& view, std::vector<std::string>& given);
 // Adds the staging flags that were given (--plain, --flat) to `given`.
 void note_staging_flags(const StagingOptions& staging, std::vector<std::string>& given);
 // `staging` for a picture of `settings`' size: framed for its shape.

@@ -50,11 +50,16 @@ std::string counted(size_t n, const char* one, const char* many) { return std::t
 
 }  // namespace
 
-DefectPicture::DefectPicture(const PolygonSoup& soup, const MeshReport& report, const std::string& own_up, int width, int height)
+DefectPicture::DefectPicture(const PolygonSoup& soup, const MeshReport& report, const std::string& own_up, int width, int height,
+                             const StageView& view)
     : report_(report), width_(width), height_(height) {
   RenderSettings settings;
   settings.width = width, settings.height = height;
-  scene_ = stage_polygon_soup(std::make_shared<const PolygonSoup>(tinted(soup, report)), nullptr, staging_for({}, settings), own_up);
+  StagingOptions staging;
+  staging.view = view;
+  // Seen from below, the floor would hide the model and its defects.
+  staging.no_floor = view.camera_elevation_deg < 0.0;
+  scene_ = stage_polygon_soup(std::make_shared<const PolygonSoup>(tinted(soup, report)), nullptr, staging_for(staging, settings), own_up);
   placed_ = placement_of(scene_.meshes.at(0));
   view_ = view_matrix(scene_.camera);
   focal_y_ = 1.0 / std::tan(glm::radians(scene_.camera.fovy_deg) / 2.0);
@@ -121,9 +126,14 @@ Image DefectPicture::draw(HeadlessGl gl) const {
                      counted(r.self_intersections.face_pairs, "self-intersecting face pair", "self-intersecting face pairs") +
                          (r.self_intersections.complete ? "" : " (search stopped)")});
   if (r.faces_to_flip) lines.push_back({DefectColours::kFaceToFlip, counted(r.faces_to_flip, "face to flip", "faces to flip")});
+  // What the verdict counts but the picture cannot show: said, without a swatch.
+  constexpr std::array<uint8_t, 3> kNoSwatch{0, 0, 0};
+  if (r.duplicate_faces) lines.push_back({kNoSwatch, counted(r.duplicate_faces, "duplicate face", "duplicate faces") + " (not drawn)"});
+  if (r.degenerate_faces) lines.push_back({kNoSwatch, counted(r.degenerate_faces, "degenerate face", "degenerate faces") + " (not drawn)"});
+  if (!r.self_intersections.checked) lines.push_back({kNoSwatch, "self-intersections not checked"});
   const std::array<uint8_t, 3> ink{30, 30, 30};
   const std::string name = r.path.substr(r.path.find_last_of('/') + 1);
-  std::vector<std::string> texts{printable(name + ": " + (r.is_closed_manifold() ? "a closed 2-manifold" : "not a closed 2-manifold"))};
+  std::vector<std::string> texts{printable(name + ": " + r.verdict_head())};
   for (const Line& l : lines) texts.push_back(l.text);
   int widest = 0;
   for (const std::string& t : texts) widest = std::max(widest, text_width(t));
@@ -132,7 +142,7 @@ Image DefectPicture::draw(HeadlessGl gl) const {
   draw_text(image, pad, pad + 2, texts[0], ink);
   for (size_t k = 0; k < lines.size(); ++k) {
     const int y = pad + int(k + 1) * kTextLineHeight;
-    fill_rectangle(image, pad, y + 2, pad + swatch, y + 2 + swatch, lines[k].ink, 1.0);
+    if (lines[k].ink != kNoSwatch) fill_rectangle(image, pad, y + 2, pad + swatch, y + 2 + swatch, lines[k].ink, 1.0);
     draw_text(image, pad + indent, y + 2, lines[k].text, ink);
   }
   return image;

@@ -19,6 +19,7 @@
 #include "render/headless_context.hpp"
 #include "scene/mesh_placement.hpp"
 #include "scene/scene.hpp"
+#include "scene/staged_scene.hpp"
 
 namespace umbra {
 
@@ -36,8 +37,10 @@ class DefectPicture {
   // `soup` staged with its faces tinted by `report`, made with every
   // defect listed (CheckOptions::max_examples), in a picture `width` x
   // `height`; `own_up` is the up axis its format has (MeshFormat::up).
+  // `view`: the staged camera's orbit (umbra check's --camera-azimuth, ...).
   // Throws InputError where the mesh cannot be staged (no faces).
-  DefectPicture(const PolygonSoup& soup, const MeshReport& report, const std::string& own_up, int width, int height);
+  DefectPicture(const PolygonSoup& soup, const MeshReport& report, const std::string& own_up, int width, int height,
+                const StageView& view = {});
 
   // Where the file's point `file_point` shows: x and y in pixels (x right,
   // y down, a pixel's centre at its index + 0.5), and its distance along the

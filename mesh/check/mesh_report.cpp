@@ -123,6 +123,16 @@ std::vector<std::string> MeshReport::solid_problems() const {
   return out;
 }
 
+std::string MeshReport::verdict_head() const {
+  if (triangles == 0) return "no faces";
+  if (problems().empty()) return "closed 2-manifold";
+  if (!topology_problems().empty()) return "not a closed 2-manifold";
+  // A search skipped (--time-limit 0) or stopped with nothing found says
+  // nothing is wrong, only that nothing was proved clean.
+  const bool unproved = duplicate_faces == 0 && degenerate_faces == 0 && self_intersections.face_pairs == 0;
+  return unproved ? "closed and consistently oriented, not known to be clean" : "closed and consistently oriented, but not clean";
+}
+
 std::string MeshReport::verdict() const {
   if (triangles == 0) return "no faces: nothing to check, and nothing to cast a shadow";
   const std::vector<std::string> why = problems();
@@ -136,12 +146,7 @@ std::string MeshReport::verdict() const {
     return s;
   }
   const bool oriented = inconsistent_edges == 0;
-  // A search skipped (--time-limit 0) or stopped with nothing found says
-  // nothing is wrong, only that nothing was proved clean.
-  const bool unproved = duplicate_faces == 0 && degenerate_faces == 0 && self_intersections.face_pairs == 0;
-  s = !topology_problems().empty() ? "not a closed 2-manifold ("
-      : unproved                   ? "closed and consistently oriented, not known to be clean ("
-                                   : "closed and consistently oriented, but not clean (";
+  s = verdict_head() + " (";
   for (size_t i = 0; i < why.size(); ++i) s += (i ? ", " : "") + why[i];
   if (volume_kind() == VolumeKind::kEdgeMultiplicity)
     return s + "): shadow from an edge-multiplicity volume (exact for any triangles)";

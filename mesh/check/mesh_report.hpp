@@ -151,6 +151,10 @@ struct MeshReport {
   std::string loading_changes() const;
   // "closed 2-manifold: ..." or "not a closed 2-manifold (...): ..."
   std::string verdict() const;
+  // The verdict's first words, without the reasons and the shadow: "closed
+  // 2-manifold", "closed and consistently oriented, but not clean", "...,
+  // not known to be clean", "not a closed 2-manifold" or "no faces".
+  std::string verdict_head() const;
   // Why it is not a solid, as a printer or a simulation needs one: faces,
   // closed, manifold at every edge and vertex, consistently oriented, every
   // closed component facing outward, and no face crossing another (a

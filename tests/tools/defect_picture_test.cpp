@@ -10,6 +10,7 @@
 
 #include "mesh/check/mesh_check.hpp"
 #include "mesh/io/mesh_file.hpp"
+#include "tests/mesh/mesh_builders.hpp"
 #include "tests/tools/command_fixture.hpp"
 #include "tools/defect_picture.hpp"
 
@@ -157,6 +158,45 @@ TEST_F(DefectPictureTest, AFolderGetsAPictureForEachMeshNamedAsRenderNamesThem) 
                        "self-intersecting face pair): shadow from silhouette edges for its 1 closed component (once the renderer flips "
                        "those faces), from an edge-multiplicity volume for the other 5\n" +
                        path("meshes/tetra.off") + ": OFF, 4 triangles, 1 component: closed 2-manifold: casts its shadow from silhouette edges\n");
+}
+
+// The render's camera options turn the picture's camera: from below
+// (--camera-elevation -30, the floor left out, as it would hide the model),
+// a cube's bottom is nearer than its top, where from the default view it is
+// the other way; they are refused where no picture is drawn.
+TEST_F(DefectPictureTest, TheCameraOptionsShowADefectUnderneath) {
+  const PolygonSoup cube = test::unit_cube();
+  const MeshReport report = check_mesh(cube);
+  StageView below;
+  below.camera_elevation_deg = -30.0;
+  const DefectPicture above_view(cube, report, "+z", 64, 64), below_view(cube, report, "+z", 64, 64, below);
+  const glm::dvec3 top(0.5, 0.5, 1.0), bottom(0.5, 0.5, 0.0);
+  EXPECT_LT(above_view.project(top).z, above_view.project(bottom).z);
+  EXPECT_LT(below_view.project(bottom).z, below_view.project(top).z);
+  const std::string mesh = write_mesh();
+  EXPECT_EQ(run("check " + mesh + " --camera-elevation -30 --camera-azimuth 200 --picture " + path("under.png")).status, 1);
+  EXPECT_TRUE(fs::is_regular_file(path("under.png")));
+  const CommandResult r = run("check " + mesh + " --camera-zoom 2");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "umbra check: --camera-zoom places the defect pictures' camera: give --picture or --report\n(see umbra check --help)\n");
+}
+
+// The legend's first line is the verdict's head, the words the text
+// verdict starts with: it once said "not a closed 2-manifold" or "a closed
+// 2-manifold" alone.
+TEST(DefectPictureLegend, SaysWhatTheVerdictSays) {
+  CheckOptions unsearched;
+  unsearched.self_intersection_seconds = 0.0;
+  PolygonSoup degenerate = test::unit_cube();  // and a triangle of a repeated corner
+  degenerate.corners.insert(degenerate.corners.end(), {0, 0, 1});
+  degenerate.end_polygon(0);
+  for (const MeshReport& r : {check_mesh(test::unit_cube()), check_mesh(test::without_faces(test::unit_cube(), {0, 1})),
+                              check_mesh(test::unit_cube(), unsearched), check_mesh(degenerate)}) {
+    EXPECT_EQ(r.verdict().rfind(r.verdict_head(), 0), 0u) << r.verdict();
+    EXPECT_NE(r.verdict().find(r.verdict_head() + (r.is_closed_manifold() ? ":" : " (")), std::string::npos) << r.verdict();
+  }
+  EXPECT_EQ(check_mesh(test::unit_cube(), unsearched).verdict_head(), "closed and consistently oriented, not known to be clean");
+  EXPECT_EQ(check_mesh(degenerate).verdict_head(), "closed and consistently oriented, but not clean");
 }
 
 TEST_F(DefectPictureTest, ThePictureOptionIsRefusedWhereItCannotApply) {
