@@ -41,6 +41,7 @@ namespace umbra {
 const std::string kCheckUsage = usage_text(
     R"(usage: umbra check PATH... [--json] [--jobs N] [--shard K/N] [--time-limit SEC]
        umbra check MESH --repair OUT
+       umbra check PATH... --repair OUTDIR
        umbra check - [options]   (a mesh on standard input)
 
 Checks that each mesh ({mesh formats}, told by its
@@ -75,7 +76,7 @@ options:
                     of the list: N machines with K = 0 ... N-1 check it all,
                     and their outputs, concatenated in order of K, are this
                     command's output without --shard (docs/batch-checks.md)
-  --repair OUT      (one MESH only) write a repaired copy to OUT, a
+  --repair OUT      write a repaired copy to OUT, a
                     {repair extensions} file: merge repeated vertices,
                     drop degenerate and duplicate faces, stitch borders,
                     fill holes, orient consistently and outward, merge
@@ -84,7 +85,10 @@ options:
                     writes MESH. An .obj keeps the materials, texture
                     coordinates, normals and colours, its library and maps
                     beside it (STEM.mtl, STEM.NAME); a .ply keeps the
-                    colours
+                    colours. With several meshes or a folder, OUT is a
+                    folder: each mesh's copy goes where umbra render puts
+                    a folder's pictures, in its own format (glTF and 3MF
+                    as NAME.obj)
   --max-hole-edges N
                     (with --repair) fill only holes of at most N edges
                     (default {max hole edges}; 0 fills none): a larger one is
@@ -150,6 +154,7 @@ struct CheckCommandOptions {
   bool picture_folder = false;         // --picture names a folder: several meshes, a picture each
   std::optional<std::string> report;   // --report: the page to write
   bool no_pictures = false;            // --no-pictures: the report's rows without them
+  bool repair_folder = false;          // --repair names a folder: several meshes, a repaired copy of each
   StageView view;                      // the pictures' camera (--camera-azimuth, ...)
   std::vector<std::string> view_given;  // those named
   CheckOptions check;
@@ -219,8 +224,20 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
       require_other_than_input("--picture", p, o.meshes[0]);
     }
   }
-  if (o.repair_output) {
-    if (o.meshes.size() != 1 || std::filesystem::is_directory(o.meshes[0])) throw UsageError("--repair takes one mesh file at a time");
+  if (o.repair_output && (o.meshes.size() != 1 || std::filesystem::is_directory(o.meshes[0]))) {
+    // Several meshes or a folder: a repaired copy of each, in a folder.
+    const std::string& out = *o.repair_output;
+    std::error_code ec;
+    if (std::filesystem::exists(out, ec) && !std::filesystem::is_directory(out, ec))
+      throw UsageError("--repair " + out + " is a file; several meshes are repaired each into a folder: name a folder");
+    if (!std::filesystem::exists(out, ec) && out.back() != '/' && repair_can_write(out))
+      throw UsageError("--repair " + out + " names a mesh file, but several meshes are repaired each into a folder: name a "
+                       "folder (\"" + out + "/\" makes one of that name)");
+    for (const std::string& mesh : o.meshes)
+      if (mesh == "-") throw UsageError("- (standard input) is one mesh: repair it on its own");
+    o.repair_folder = true;
+  }
+  if (o.repair_output && !o.repair_folder) {
     if (o.shard) throw UsageError("--repair checks one mesh: --shard does not apply");
     if (o.timeout_s > 0.0) throw UsageError("--repair checks one mesh: --timeout does not apply");
     if (!repair_can_write(*o.repair_output))
@@ -401,6 +418,49 @@ int repair_one(const std::string& path, const std::string& output, const CheckCo
   }
 }
 
+// `umbra check PATH... --repair OUTDIR`: each mesh found repaired into
+// OUTDIR, named as a folder render names its pictures (its path in the
+// folder, files that would clash told apart), in its own format where the
+// repair writes it and as OBJ beside that name where it does not (x.glb to
+// x.glb.obj); then the count of each outcome.
+int repair_each(const std::string& out_dir, const CheckCommandOptions& options) {
+  MeshPaths found;
+  try {
+    found = expand_mesh_paths(options.meshes);
+    if (found.meshes.empty()) throw UsageError("no mesh files in " + options.meshes[0] + (options.meshes.size() > 1 ? " or the others" : ""));
+  } catch (const UsageError& e) {
+    std::cerr << "umbra check: " << e.what() << "\n";
+    return 2;
+  }
+  for (const auto& [path, what] : found.passed_over) std::cerr << "umbra check: passed over " << path << ": " << what << "\n";
+  const std::vector<std::string> names = distinct_picture_names(found.meshes, found.names, found.roots);
+  std::vector<std::string> outputs;
+  for (size_t i = 0; i < found.meshes.size(); ++i) {
+    outputs.push_back((std::filesystem::path(out_dir) / names[i]).string());
+    if (!repair_can_write(outputs.back())) outputs.back() += ".obj";
+    if (same_file(outputs.back(), found.meshes[i])) {  // OUTDIR is the folder it reads: said before any work
+      std::cerr << "umbra check: --repair would overwrite its input \"" << found.meshes[i] << "\"; name another folder\n"
+                << "(see umbra check --help)\n";
+      return 2;
+    }
+  }
+  int status = 0;
+  size_t closed = 0, open = 0, failed = 0;
+  for (size_t i = 0; i < found.meshes.size(); ++i) {
+    const std::string& output = outputs[i];
+    std::error_code ec;
+    std::filesystem::create_directories(std::filesystem::path(output).parent_path(), ec);
+    const int one = repair_one(found.meshes[i], output, options);
+    (one == 0 ? closed : one == 1 ? open : failed) += 1;
+    status = std::max(status, one);
+  }
+  std::cerr << "umbra check: repaired " << found.meshes.size() << (found.meshes.size() == 1 ? " mesh" : " meshes") << " into "
+            << out_dir << ": " << closed
+            << (options.solid ? (closed == 1 ? " solid, " : " solids, ") : (closed == 1 ? " closed 2-manifold, " : " closed 2-manifolds, "))
+            << open << " not, " << failed << " failed\n";
+  return status;
+}
+
 }  // namespace
 
 int run_check_command(const std::vector<std::string>& argv) {
@@ -420,7 +480,8 @@ int run_check_command(const std::vector<std::string>& argv) {
     std::cerr << e.what() << "\n";
     return 2;
   }
-  if (options.repair_output) return repair_one(options.meshes[0], *options.repair_output, options);
+  if (options.repair_output && !options.repair_folder) return repair_one(options.meshes[0], *options.repair_output, options);
+  if (options.repair_output) return repair_each(*options.repair_output, options);
 
   MeshPaths found;
   try {

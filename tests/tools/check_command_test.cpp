@@ -264,6 +264,34 @@ TEST_F(CheckCommand, RepairHoldsCoordinatesPastWhatTheirCubesHold) {
   }
 }
 
+// A folder repaired into a folder, its layout kept as a folder render keeps
+// it: each mesh in its own format, one the repair cannot write (glTF) as
+// OBJ beside its name; the output must be a folder.
+TEST_F(CheckCommand, AFolderIsRepairedIntoAFolderOfTheSameLayout) {
+  fs::create_directories(path("in/sub"));
+  write("in/open.obj", obj_text(test::without_faces(test::unit_cube(), {0, 1})));
+  write("in/sub/open.off", "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n");
+  const std::string glb = "/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
+  const bool with_glb = fs::exists(glb);
+  if (with_glb) fs::copy_file(glb, path("in/sub/box.glb"));
+  CommandResult r = run("check " + path("in") + " --repair " + path("out") + " --brief");
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  for (const std::string& made : {"out/open.obj", "out/sub/open.off"}) {
+    EXPECT_TRUE(fs::is_regular_file(path(made))) << made;
+    EXPECT_NE(r.out.find(path(made) + ": "), std::string::npos) << r.out;
+  }
+  if (with_glb) EXPECT_TRUE(fs::is_regular_file(path("out/sub/box.glb.obj")));
+  EXPECT_NE(r.err.find("umbra check: repaired " + std::string(with_glb ? "3" : "2") + " meshes into " + path("out") + ": " +
+                       (with_glb ? "3" : "2") + " closed 2-manifolds, 0 not, 0 failed\n"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(read(path("in/open.obj")), obj_text(test::without_faces(test::unit_cube(), {0, 1})));  // the inputs untouched
+  r = run("check " + path("in") + " --repair " + path("fixed.obj"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "umbra check: --repair " + path("fixed.obj") + " names a mesh file, but several meshes are repaired each into a "
+                   "folder: name a folder (\"" + path("fixed.obj") + "/\" makes one of that name)\n(see umbra check --help)\n");
+}
+
 // CGAL's fold.off: its one hole's faired patch bends through the fold, 11
 // crossing pairs where the file had none, which no union resolves; the
 // repair once kept it and called the pairs "left". A fill that crosses the
@@ -450,7 +478,16 @@ TEST_F(CheckCommand, RepairRefusesToOverwriteItsInputOrTakeTwoMeshes) {
   EXPECT_EQ(alias.status, 2);
   const CommandResult two = run("check " + input + " " + input + " --repair " + path("x.obj"));
   EXPECT_EQ(two.status, 2);
-  EXPECT_EQ(two.err, "umbra check: --repair takes one mesh file at a time\n(see umbra check --help)\n");
+  EXPECT_EQ(two.err, "umbra check: --repair " + path("x.obj") + " names a mesh file, but several meshes are repaired each into a "
+                     "folder: name a folder (\"" + path("x.obj") + "/\" makes one of that name)\n(see umbra check --help)\n");
+  // Into the folder they are read from: each copy would overwrite its mesh.
+  fs::create_directories(path("meshes"));
+  write("meshes/a.obj", obj_text(test::tetrahedron()));
+  const CommandResult into_itself = run("check " + path("meshes") + " --repair " + path("meshes"));
+  EXPECT_EQ(into_itself.status, 2);
+  EXPECT_EQ(into_itself.err, "umbra check: --repair would overwrite its input \"" + path("meshes/a.obj") +
+                                 "\"; name another folder\n(see umbra check --help)\n");
+  EXPECT_EQ(read(path("meshes/a.obj")), obj_text(test::tetrahedron()));
   const CommandResult format = run("check " + input + " --repair " + path("x.dae"));
   EXPECT_EQ(format.status, 2);
   EXPECT_FALSE(fs::exists(path("x.obj")));
