@@ -219,7 +219,8 @@ class GltfReader {
     auto& decoded = decoded_[{texture.source, wrap_u, wrap_v}];
     if (!decoded.image && decoded.error.empty()) {
       const std::vector<unsigned char>& bytes = encoded->second;
-      if (auto map = decode_texture(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), name, decoded.error)) {
+      if (auto map = decode_texture(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), name, decoded.error,
+                                    &budget_)) {
         map->wrap_u = wrap_u;
         map->wrap_v = wrap_v;
         decoded.image = std::move(map);
@@ -568,6 +569,7 @@ class GltfReader {
     std::string error;
   };
   std::map<std::tuple<int, TextureImage::Wrap, TextureImage::Wrap>, Decoded> decoded_;  // by image and wrapping
+  TextureBudget budget_;  // what the images decoded so far hold
   bool textured_ = false;              // some material has a texture map: corners get texture coordinates
   std::vector<glm::vec2> point_uvs_;   // TEXCOORD_0 per point, while textured_
   std::vector<glm::vec3> point_normals_;  // NORMAL per point, for a picture (when maps are read)

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <limits>
@@ -132,8 +133,15 @@ MapOptions map_options(std::string_view rest) {
     while (next + 1 < words.size() && !is_option(words[next])) ++next;
     std::string written = words[k];
     for (size_t v = k + 1; v < next; ++v) written += " " + words[v];
+    // A scale of 1 and an offset or turbulence of 0 change nothing.
+    const auto all_are = [&](double value) {
+      for (size_t v = k + 1; v < next; ++v)
+        if (std::strtod(words[v].c_str(), nullptr) != value) return false;
+      return next > k + 1;
+    };
+    const bool identity = (words[k] == "-s" && all_are(1.0)) || ((words[k] == "-o" || words[k] == "-t") && all_are(0.0));
     if (words[k] == "-clamp") options.clamp = next > k + 1 && words[k + 1] == "on";
-    else if (options.unapplied.empty()) options.unapplied = written;
+    else if (!identity && options.unapplied.empty()) options.unapplied = written;
     k = next;
   }
   return options;

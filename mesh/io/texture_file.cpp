@@ -44,7 +44,8 @@ bool lies_in(const std::filesystem::path& path, const std::filesystem::path& fol
 
 }  // namespace
 
-std::shared_ptr<TextureImage> decode_texture(std::string_view bytes, const std::string& name, std::string& error) {
+std::shared_ptr<TextureImage> decode_texture(std::string_view bytes, const std::string& name, std::string& error,
+                                             TextureBudget* budget) {
   if (bytes.size() > size_t(INT_MAX)) {
     error = "the image is over 2 GB";
     return nullptr;
@@ -59,6 +60,11 @@ std::shared_ptr<TextureImage> decode_texture(std::string_view bytes, const std::
   if (width > kMostTextureSide || height > kMostTextureSide || (long long)width * height > kMostTexturePixels) {
     error = "the image is " + std::to_string(width) + "x" + std::to_string(height) + " pixels, more than umbra decodes (" +
             std::to_string(kMostTextureSide) + " along a side, " + std::to_string(kMostTexturePixels) + " pixels in all)";
+    return nullptr;
+  }
+  if (budget && !budget->take((long long)width * height)) {
+    error = "the image is " + std::to_string(width) + "x" + std::to_string(height) + " pixels, more than is left of the " +
+            std::to_string(kMostModelTexturePixels) + " pixels umbra decodes of one model's maps in all";
     return nullptr;
   }
   stbi_uc* pixels = stbi_load_from_memory(data, int(bytes.size()), &width, &height, &channels, 4);
@@ -123,7 +129,8 @@ std::shared_ptr<const TextureImage> ModelFiles::texture(const std::string& path,
     std::vector<unsigned char> bytes;
     d.error = refusal(path);
     if (d.error.empty() && read_regular_file(path, kMostTextureFileBytes, bytes, d.error))
-      if (auto image = decode_texture(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path, d.error)) {
+      if (auto image = decode_texture(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path, d.error,
+                                      &budget_)) {
         image->file = path;
         d.image = std::move(image);
       }

@@ -28,9 +28,30 @@ constexpr long long kMostTexturePixels = 1LL << 26;
 // past the pixel budget anyway.
 constexpr size_t kMostTextureFileBytes = size_t(1) << 28;
 
+// What one model's maps may hold decoded, all together: 2^28 pixels (1 GiB
+// as RGBA, four maps of the largest size). Twelve maps of 8192 x 8192 once
+// took 6.5 GB and 25 s for a picture of 200 x 200; past the budget, a map is
+// refused, told from its header before it is decoded.
+constexpr long long kMostModelTexturePixels = 1LL << 28;
+class TextureBudget {
+ public:
+  // Takes a map of `pixels` from what is left; false, taking none, where it
+  // does not fit.
+  bool take(long long pixels) {
+    if (pixels > kMostModelTexturePixels - used_) return false;
+    used_ += pixels;
+    return true;
+  }
+
+ private:
+  long long used_ = 0;
+};
+
 // The image in `bytes`, named `name`; null, with `error` saying why, when it
-// cannot be decoded or is larger than the budget above.
-std::shared_ptr<TextureImage> decode_texture(std::string_view bytes, const std::string& name, std::string& error);
+// cannot be decoded, is larger than the budget above, or (where `budget` is
+// given) would take its model's maps past kMostModelTexturePixels.
+std::shared_ptr<TextureImage> decode_texture(std::string_view bytes, const std::string& name, std::string& error,
+                                             TextureBudget* budget = nullptr);
 
 // Reads the file at `path` whole into `bytes` when it is a regular file (not
 // a device, a FIFO or a folder, which could be endless or never answer: see
@@ -61,6 +82,7 @@ class ModelFiles {
     std::string error;
   };
   std::map<std::string, Decoded> textures_;  // by path as asked
+  TextureBudget budget_;                     // what the maps decoded so far hold
 };
 
 }  // namespace umbra

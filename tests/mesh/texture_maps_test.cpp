@@ -57,6 +57,29 @@ TEST_F(TextureMapReading, MapOptionsAndWindowsSeparatorsStillFindTheFile) {
   ASSERT_TRUE(soup.materials[0].texture);
 }
 
+// One model's maps share a budget of decoded pixels (2^28): twelve maps of
+// 8192 x 8192 once took 6.5 GB for a small picture. A map past what is
+// left is refused from its header, before it is decoded, and said.
+TEST_F(TextureMapReading, AModelsMapsShareOneBudgetOfDecodedPixels) {
+  TextureBudget budget;
+  for (int k = 0; k < 4; ++k) EXPECT_TRUE(budget.take(kMostTexturePixels)) << k;  // four of the largest maps
+  EXPECT_FALSE(budget.take(1));
+  Image small(4, 4, 3, 90);
+  write_png(small, (folder_ / "small.png").string());
+  std::vector<unsigned char> bytes;
+  std::string error;
+  ASSERT_TRUE(read_regular_file((folder_ / "small.png").string(), kMostTextureFileBytes, bytes, error)) << error;
+  const std::string_view png(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  TextureBudget nearly_spent;
+  ASSERT_TRUE(nearly_spent.take(kMostModelTexturePixels - 15));
+  EXPECT_EQ(decode_texture(png, "small.png", error, &nearly_spent), nullptr);
+  EXPECT_EQ(error, "the image is 4x4 pixels, more than is left of the 268435456 pixels umbra decodes of one model's maps in all");
+  TextureBudget enough;
+  ASSERT_TRUE(enough.take(kMostModelTexturePixels - 16));
+  error.clear();
+  EXPECT_NE(decode_texture(png, "small.png", error, &enough), nullptr) << error;
+}
+
 TEST_F(TextureMapReading, AMapThatCannotBeReadIsSaidOnceAndTheMeshStillLoads) {
   write("broken.png", "not an image at all");
   write("m.mtl", "newmtl painted\nKd 0.5 0.5 0.5\nmap_Kd broken.png\nmap_Bump bumps.png\nmap_Ks shine.png\n");
