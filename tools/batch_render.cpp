@@ -169,14 +169,9 @@ bool up_to_date(const std::string& picture, const std::string& input) {
 }  // namespace
 
 int run_batch_render(const BatchRenderOptions& o) {
-  MeshPaths found;
-  try {
-    found = expand_mesh_paths(o.paths);
-    if (found.meshes.empty()) throw UsageError("no mesh files in " + o.paths[0] + (o.paths.size() > 1 ? " or the others" : ""));
-  } catch (const UsageError& e) {
-    std::cerr << "umbra render: " << e.what() << "\n";
-    return 2;
-  }
+  std::optional<MeshPaths> searched = found_mesh_paths(o.paths, "render");
+  if (!searched) return 2;
+  MeshPaths& found = *searched;
   // Said once for all the shards: by the first.
   if (o.shard && o.shard->index > 0) found.passed_over.clear();
   for (const auto& [path, what] : found.passed_over) {

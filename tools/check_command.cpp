@@ -424,14 +424,9 @@ int repair_one(const std::string& path, const std::string& output, const CheckCo
 // repair writes it and as OBJ beside that name where it does not (x.glb to
 // x.glb.obj); then the count of each outcome.
 int repair_each(const std::string& out_dir, const CheckCommandOptions& options) {
-  MeshPaths found;
-  try {
-    found = expand_mesh_paths(options.meshes);
-    if (found.meshes.empty()) throw UsageError("no mesh files in " + options.meshes[0] + (options.meshes.size() > 1 ? " or the others" : ""));
-  } catch (const UsageError& e) {
-    std::cerr << "umbra check: " << e.what() << "\n";
-    return 2;
-  }
+  const std::optional<MeshPaths> searched = found_mesh_paths(options.meshes, "check");
+  if (!searched) return 2;
+  const MeshPaths& found = *searched;
   for (const auto& [path, what] : found.passed_over) std::cerr << "umbra check: passed over " << path << ": " << what << "\n";
   const std::vector<std::string> names = distinct_picture_names(found.meshes, found.names, found.roots);
   std::vector<std::string> outputs;
@@ -483,15 +478,9 @@ int run_check_command(const std::vector<std::string>& argv) {
   if (options.repair_output && !options.repair_folder) return repair_one(options.meshes[0], *options.repair_output, options);
   if (options.repair_output) return repair_each(*options.repair_output, options);
 
-  MeshPaths found;
-  try {
-    found = expand_mesh_paths(options.meshes);
-    if (found.meshes.empty())
-      throw UsageError("no mesh files in " + options.meshes[0] + (options.meshes.size() > 1 ? " or the others" : ""));
-  } catch (const UsageError& e) {
-    std::cerr << "umbra check: " << e.what() << "\n";
-    return 2;
-  }
+  std::optional<MeshPaths> searched = found_mesh_paths(options.meshes, "check");
+  if (!searched) return 2;
+  MeshPaths& found = *searched;
   const std::vector<std::string>& all = found.meshes;
   // Said once for all the shards: by the first.
   if (options.shard && options.shard->index > 0) found.passed_over.clear();

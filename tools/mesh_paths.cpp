@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <iostream>
 #include <set>
 
 #include "mesh/io/mapped_file.hpp"
@@ -95,6 +96,17 @@ std::vector<std::string> shard_of(const std::vector<std::string>& paths, const S
   const size_t first = paths.size() * shard.index / shard.count;
   const size_t end = paths.size() * (shard.index + 1) / shard.count;
   return {paths.begin() + std::ptrdiff_t(first), paths.begin() + std::ptrdiff_t(end)};
+}
+
+std::optional<MeshPaths> found_mesh_paths(const std::vector<std::string>& arguments, const std::string& command) {
+  try {
+    MeshPaths found = expand_mesh_paths(arguments);
+    if (found.meshes.empty()) throw UsageError("no mesh files in " + arguments[0] + (arguments.size() > 1 ? " or the others" : ""));
+    return found;
+  } catch (const UsageError& e) {
+    std::cerr << "umbra " << command << ": " << e.what() << "\n";
+    return std::nullopt;
+  }
 }
 
 }  // namespace umbra

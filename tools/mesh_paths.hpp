@@ -3,6 +3,7 @@
 // one shard checks.
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,6 +31,9 @@ struct MeshPaths {
   std::vector<std::pair<std::string, std::string>> passed_over;
 };
 MeshPaths expand_mesh_paths(const std::vector<std::string>& arguments);
+// The same for a command that needs some: where none is found (or a path
+// cannot be searched), "umbra COMMAND: why" on stderr and none.
+std::optional<MeshPaths> found_mesh_paths(const std::vector<std::string>& arguments, const std::string& command);
 
 // Part `index` (from 0) of `count` disjoint, contiguous parts of `paths`,
 // which together are all of it in order: shards' outputs, concatenated in
