@@ -239,8 +239,9 @@ int run_batch_render(const BatchRenderOptions& o) {
         },
         [&](size_t k, const IsolatedResult& result) {
           read_job_result(result, o.timeout_s, records[to_draw[k]]);
-          // A worker killed while it wrote (SIGKILL: no handler ran) leaves its temporary file.
-          if (result.ending == IsolatedResult::Ending::kKilled) remove_abandoned_temporaries(records[to_draw[k]].picture);
+          // A worker killed while it wrote (a crash, or SIGKILL past a timeout's
+          // grace: no handler ran) leaves its temporary file.
+          if (result.ending != IsolatedResult::Ending::kFinished) remove_abandoned_temporaries(records[to_draw[k]].picture);
           end(to_draw[k]);
         });
   } catch (const std::exception& e) {  // no process or pipe to be had: what was drawn stays
