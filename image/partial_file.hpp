@@ -2,8 +2,9 @@
 // An output file written under a temporary name beside its final one and
 // renamed into place once whole, so that nobody ever sees part of it. Each
 // writer's temporary name is its own (the final name, cut short where it
-// must be to stay a legal name, a random part and ".partial"), so that two writers of one name never meet, and a process
-// stopped by SIGINT or SIGTERM removes every temporary file it had open
+// must be to stay a legal name, a random part and ".partial"), so that two
+// writers of one name never meet, and a process stopped by SIGINT or
+// SIGTERM removes every temporary file it had open
 // (remove_partial_files_on_signals).
 
 #include <optional>

@@ -41,7 +41,7 @@ struct Record {
   double seconds = 0.0;
   size_t triangles = 0;  // drawn: the scene's triangles, meshes' and floor's
   std::string error;     // failed, timed out, crashed: why
-  std::string kind;      // what kind of failure, one of kFailureKinds; "" for none
+  std::string kind;      // what kind of failure: input_problem_name's, or one of the kinds below; "" for none
   std::string messages;  // for stderr: warnings, then the error
 };
 const char* const kDrawn = "drawn";

@@ -179,6 +179,14 @@ std::optional<std::string> whole_result(const Worker& w) {
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
+// The result of `w`'s job, which returned `output`.
+IsolatedResult returned(const Worker& w, std::string output) {
+  IsolatedResult result;
+  result.seconds = seconds_since(w.start);
+  result.output = std::move(output);
+  return result;
+}
+
 // SIGPIPE ignored while the workers run: a worker that died with an index on
 // its way is reported as such, not taken for this process's own death.
 class IgnoredSigpipe {
@@ -248,10 +256,7 @@ int run_isolated(size_t count, size_t jobs, double timeout_s, const std::functio
           w.received.append(buffer, size_t(n));
         }
         if (const std::optional<std::string> output = whole_result(w)) {
-          IsolatedResult result;
-          result.seconds = seconds_since(w.start);
-          result.output = *output;
-          done(*w.index, result);
+          done(*w.index, returned(w, *output));
         }
       }
       for (Worker& w : workers)
@@ -305,9 +310,7 @@ int run_isolated(size_t count, size_t jobs, double timeout_s, const std::functio
         }
       }
       if (const std::optional<std::string> output = whole_result(w)) {
-        IsolatedResult result;
-        result.seconds = seconds_since(w.start);
-        result.output = *output;
+        const IsolatedResult result = returned(w, *output);
         const size_t index = *w.index;
         w.index.reset();
         if (++w.jobs_done >= kJobsPerWorker) stop_worker(w, false), w.pid = -1;

@@ -154,10 +154,10 @@ void say_holes(const HoleFilling& holes, size_t max_edges, std::vector<std::stri
 }
 
 // Fills the holes of `mesh` (filled), where that leaves some trying again
-// with its cracks snapped shut first; says what it did in `changes`.
-void close_holes(Mesh& mesh, size_t max_hole_edges, std::vector<std::string>& changes, bool refuse_crossing_patches) {
-  std::optional<Mesh> unfilled;
-  if (!CGAL::is_closed(mesh)) unfilled = mesh;
+// with its cracks snapped shut first, on a copy of `unfilled` (the mesh as
+// it was, where it had holes); says what it did in `changes`.
+void close_holes(Mesh& mesh, const std::optional<Mesh>& unfilled, size_t max_hole_edges, std::vector<std::string>& changes,
+                 bool refuse_crossing_patches) {
   HoleFilling holes = filled(mesh, max_hole_edges, refuse_crossing_patches);
   if (unfilled && !CGAL::is_closed(mesh)) {
     // A crack between two patches whose points do not meet (as CAD
@@ -167,7 +167,7 @@ void close_holes(Mesh& mesh, size_t max_hole_edges, std::vector<std::string>& ch
     // own edges' lengths) and stitched, and kept only where that closes the
     // surface: snapping also moves points of a border that is a true hole,
     // and of nearly equal copies, which --merge-tolerance merges better.
-    Mesh& snapped = *unfilled;
+    Mesh snapped = *unfilled;
     const size_t moved = PMP::experimental::snap_borders(snapped);
     const size_t stitched = PMP::stitch_borders(snapped);
     PMP::remove_degenerate_faces(snapped);
@@ -300,11 +300,13 @@ Mesh repaired_surface(const PolygonSoup& soup, const RepairOptions& options, std
   std::optional<Mesh> unfilled;
   if (!CGAL::is_closed(mesh)) unfilled = mesh;
   std::vector<std::string> filling;
-  const size_t crossing = (close_holes(mesh, max_hole_edges, filling, false), turn_outward_and_merge_overlaps(mesh, filling));
+  close_holes(mesh, unfilled, max_hole_edges, filling, false);
+  const size_t crossing = turn_outward_and_merge_overlaps(mesh, filling);
   if (crossing > 0 && unfilled) {
     std::vector<std::string> refusing;
-    close_holes(*unfilled, max_hole_edges, refusing, true);
-    if (turn_outward_and_merge_overlaps(*unfilled, refusing) < crossing) mesh = std::move(*unfilled), filling = std::move(refusing);
+    Mesh again = *unfilled;
+    close_holes(again, unfilled, max_hole_edges, refusing, true);
+    if (turn_outward_and_merge_overlaps(again, refusing) < crossing) mesh = std::move(again), filling = std::move(refusing);
   }
   changes.insert(changes.end(), filling.begin(), filling.end());
   if (mesh.number_of_faces() == 0) throw InputError({soup.path, 0, 0}, "nothing left after the repair: every face was degenerate");

@@ -13,8 +13,7 @@ PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path, 
   // A UTF-8 byte-order mark, as some Windows tools write before OBJ, OFF or
   // STL text, is no part of the content (columns are counted after it).
   if (bytes.substr(0, 3) == "\xef\xbb\xbf") bytes.remove_prefix(3);
-  if (bytes.find_first_not_of(" \t\r\n\f\v") == std::string_view::npos)
-    throw InputError({path, 0, 0}, bytes.empty() ? "the file is empty" : "the file holds only blank lines", InputProblem::kEmpty);
+  if (const std::string blank = blank_content(bytes); !blank.empty()) throw InputError({path, 0, 0}, blank, InputProblem::kEmpty);
   // The content decides; the extension only names the reader whose located
   // errors best explain a file too broken for its content to say.
   std::string format = detect_mesh_format(bytes);

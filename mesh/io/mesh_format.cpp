@@ -237,8 +237,13 @@ bool looks_like_text(std::string_view head) {
   });
 }
 
+std::string blank_content(std::string_view bytes) {
+  if (bytes.find_first_not_of(" \t\r\n\f\v") != std::string_view::npos) return "";
+  return bytes.empty() ? "the file is empty" : "the file holds only blank lines";
+}
+
 std::string describe_content(std::string_view bytes) {
-  if (bytes.empty()) return "the file is empty";
+  if (const std::string blank = blank_content(bytes); !blank.empty()) return blank;
   if (const std::string other = other_known_format(bytes); !other.empty()) return other;
   const std::string_view head = bytes.substr(0, kSniffBytes);
   if (!looks_like_text(head)) return "binary data";
@@ -247,7 +252,7 @@ std::string describe_content(std::string_view bytes) {
     first = field;
     return false;
   });
-  if (first.empty()) return "only blank lines";
+  if (first.empty()) return "blank lines for its first 64 KiB";
   return "text starting with " + quote_field(first);
 }
 

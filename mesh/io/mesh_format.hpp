@@ -78,8 +78,13 @@ std::optional<size_t> most_bytes_of_input(std::string_view head);
 // Text: no NUL and no control bytes but whitespace in `head`.
 bool looks_like_text(std::string_view head);
 
+// "the file is empty" or "the file holds only blank lines", where `bytes`
+// hold no statement at all (of any format, a scene's too); else "".
+std::string blank_content(std::string_view bytes);
+
 // What `bytes` look like, for the message when they are no mesh format:
-// "empty", "binary data", "UTF-16 text", "text starting with \"...\"".
+// blank_content's words, "binary data", "UTF-16 text", "text starting with
+// \"...\"".
 std::string describe_content(std::string_view bytes);
 
 }  // namespace umbra

@@ -15,7 +15,6 @@
 #include <filesystem>
 #include <limits>
 #include <map>
-#include <memory>
 #include <optional>
 #include <set>
 #include <utility>
@@ -210,19 +209,14 @@ void read_material_library(const std::string& path, int line, PolygonSoup& soup,
       } else if (current && keyword == "map_Kd") {
         const std::string_view statement = scanner.rest_of_line();
         const std::string map = map_path(statement, std::filesystem::path(path).parent_path());
-        std::string error;
-        current->texture = maps->texture(map, error);
-        if (!current->texture && !error.empty())
-          soup.warn(line, "material \"" + current->name + "\"'s texture map \"" + map + "\": " + error +
-                              ": its faces take the material's Kd colour");
         // Its options: -clamp on takes coordinates outside [0, 1] to the
         // edge (as glTF's clamp-to-edge); the others are said, not drawn.
         const MapOptions options = map_options(statement);
-        if (current->texture && options.clamp) {
-          auto clamped = std::make_shared<TextureImage>(*current->texture);
-          clamped->wrap_u = clamped->wrap_v = TextureImage::Wrap::kClampToEdge;
-          current->texture = std::move(clamped);
-        }
+        std::string error;
+        current->texture = maps->texture(map, error, options.clamp ? TextureImage::Wrap::kClampToEdge : TextureImage::Wrap::kRepeat);
+        if (!current->texture && !error.empty())
+          soup.warn(line, "material \"" + current->name + "\"'s texture map \"" + map + "\": " + error +
+                              ": its faces take the material's Kd colour");
         if (!options.unapplied.empty())
           soup.warn(line, "material \"" + current->name + "\"'s map_Kd option " + options.unapplied +
                               " is not applied: its map is drawn as if the option were not there");

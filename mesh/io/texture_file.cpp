@@ -122,8 +122,8 @@ std::string ModelFiles::refusal(const std::string& path) const {
   return "";
 }
 
-std::shared_ptr<const TextureImage> ModelFiles::texture(const std::string& path, std::string& error) {
-  const auto [cached, first_time] = textures_.try_emplace(path);
+std::shared_ptr<const TextureImage> ModelFiles::texture(const std::string& path, std::string& error, TextureImage::Wrap wrap) {
+  const auto [cached, first_time] = textures_.try_emplace({path, wrap});
   Decoded& d = cached->second;
   if (first_time) {
     std::vector<unsigned char> bytes;
@@ -132,6 +132,7 @@ std::shared_ptr<const TextureImage> ModelFiles::texture(const std::string& path,
       if (auto image = decode_texture(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path, d.error,
                                       &budget_)) {
         image->file = path;
+        image->wrap_u = image->wrap_v = wrap;
         d.image = std::move(image);
       }
   }

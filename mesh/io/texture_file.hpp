@@ -70,9 +70,11 @@ class ModelFiles {
   // regular file (a FIFO)". Reads nothing.
   std::string refusal(const std::string& path) const;
 
-  // The texture map at `path`, decoded once; null, with `error` saying why
-  // the first time `path` is asked for and "" after (said once is enough).
-  std::shared_ptr<const TextureImage> texture(const std::string& path, std::string& error);
+  // The texture map at `path`, wrapping as `wrap` says (MTL's -clamp on is
+  // clamp-to-edge), decoded once for each; null, with `error` saying why
+  // the first time it is asked for and "" after (said once is enough).
+  std::shared_ptr<const TextureImage> texture(const std::string& path, std::string& error,
+                                              TextureImage::Wrap wrap = TextureImage::Wrap::kRepeat);
 
  private:
   std::filesystem::path root_;  // absolute, its links resolved
@@ -81,7 +83,7 @@ class ModelFiles {
     std::shared_ptr<const TextureImage> image;
     std::string error;
   };
-  std::map<std::string, Decoded> textures_;  // by path as asked
+  std::map<std::pair<std::string, TextureImage::Wrap>, Decoded> textures_;  // by path as asked, and wrapping
   TextureBudget budget_;                     // what the maps decoded so far hold
 };
 
