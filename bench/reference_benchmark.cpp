@@ -11,7 +11,7 @@
 #include <string>
 
 #include "scene/scene_parser.hpp"
-#include "scene/camera_transform.hpp"
+#include "scene/camera.hpp"
 #include "reference/ray_caster.hpp"
 
 namespace umbra {
@@ -36,7 +36,7 @@ void reference_masks(benchmark::State& state, RayCaster::Search search) {
     int lit = 0;
     for (int y = 0; y < kSize; ++y)
       for (int x = 0; x < kSize; ++x) {
-        const auto hit = caster.nearest_hit(scene.camera.eye, pixel_ray_direction(scene.camera, kSize, kSize, x, y));
+        const auto hit = caster.nearest_hit(scene.camera.pixel_ray(kSize, kSize, x, y));
         if (hit) lit += !caster.shadow_ray_blocked(hit->point, hit->object, scene.lights[0].position);
       }
     benchmark::DoNotOptimize(lit);

@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "mesh/predicates/orientation.hpp"
-#include "scene/camera_transform.hpp"
+#include "scene/camera.hpp"
 #include "reference/ray_primitives.hpp"
 
 namespace umbra {
@@ -103,8 +103,9 @@ bool seen_side_faces_light(const RayHit& hit, const glm::dvec3& eye, const glm::
 }
 
 uint8_t reference_mask_value(const Scene& scene, int width, int height, double px, double py, size_t light) {
-  const glm::dvec3 eye = scene.camera.eye;
-  const auto hit = nearest_hit(scene, eye, pixel_ray_direction(scene.camera, width, height, px, py));
+  const Ray ray = scene.camera.pixel_ray(width, height, px, py);
+  const glm::dvec3 eye = ray.origin;
+  const auto hit = nearest_hit(scene, ray);
   if (!hit) return kMaskNoSurface;
   const glm::dvec3 l = scene.lights[light].position;
   if (!seen_side_faces_light(*hit, eye, l)) return kMaskUnlit;

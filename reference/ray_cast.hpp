@@ -33,6 +33,7 @@ bool seen_side_faces_light(const RayHit& hit, const glm::dvec3& eye, const glm::
 // The nearest hit with t > t_min, skipping object `skip` (-1: none).
 std::optional<RayHit> nearest_hit(const Scene& scene, const glm::dvec3& origin, const glm::dvec3& direction,
                                   int skip = -1, double t_min = 0.0);
+inline std::optional<RayHit> nearest_hit(const Scene& scene, const Ray& ray) { return nearest_hit(scene, ray.origin, ray.direction); }
 
 // Where a shadow ray starts, as a fraction of its length (see shadow_ray_blocked).
 constexpr double kShadowRayStart = 1e-9;

@@ -9,55 +9,14 @@
 
 #include "image/edge_pixels.hpp"
 #include "image/pixel_mean.hpp"
-#include "scene/camera_transform.hpp"
+#include "scene/camera.hpp"
 #include "scene/terminator.hpp"
+#include "reference/hit_surface.hpp"
 #include "reference/ray_caster.hpp"
 #include "reference/texture_sampling.hpp"
 
 namespace umbra {
 namespace {
-
-// What a hit object is made of: its material, and for a mesh triangle, the
-// mesh and the triangle (whose corners may have colours).
-struct Surface {
-  int material = 0;
-  const Mesh* mesh = nullptr;
-  size_t triangle = 0;
-};
-
-Surface surface_of(const Scene& scene, int object) {
-  const size_t o = size_t(object);
-  if (o < scene.spheres.size()) return {scene.spheres[o].material};
-  size_t first = scene.spheres.size();
-  if (o < first + scene.triangles.size()) return {scene.triangles[o - first].material};
-  first += scene.triangles.size();
-  for (const Mesh& m : scene.meshes) {
-    if (o < first + m.triangles.size()) return {m.material_of(o - first), &m, o - first};
-    first += m.triangles.size();
-  }
-  return {};
-}
-
-// A mesh triangle's per-corner values at `p`, blended by p's barycentric
-// weights as the GL interpolates them across the triangle (perspective-correct).
-struct CornerBlend {
-  double wa = 1.0, wb = 0.0, wc = 0.0;
-  CornerBlend(const Surface& s, const glm::dvec3& p) {
-    const auto& t = s.mesh->triangles[s.triangle];
-    const glm::dvec3 a = s.mesh->positions[t[0]], b = s.mesh->positions[t[1]], c = s.mesh->positions[t[2]];
-    const glm::dvec3 n = glm::cross(b - a, c - a);
-    const double area = glm::dot(n, n);
-    wb = area > 0.0 ? glm::dot(glm::cross(p - a, c - a), n) / area : 0.0;
-    wc = area > 0.0 ? glm::dot(glm::cross(b - a, p - a), n) / area : 0.0;
-    wa = 1.0 - wb - wc;
-  }
-  glm::dvec2 operator()(const std::array<glm::vec2, 3>& v) const {
-    return wa * glm::dvec2(v[0]) + wb * glm::dvec2(v[1]) + wc * glm::dvec2(v[2]);
-  }
-  glm::dvec3 operator()(const std::array<glm::vec3, 3>& v) const {
-    return wa * glm::dvec3(v[0]) + wb * glm::dvec3(v[1]) + wc * glm::dvec3(v[2]);
-  }
-};
 
 // The colour the surface's material is multiplied by at `p`: its corners'
 // colours, and its texture map at its corners' texture coordinates, blended
@@ -71,15 +30,6 @@ glm::dvec3 surface_colour(const Scene& scene, const Surface& s, const glm::dvec3
   if (!s.mesh->triangle_colors.empty()) colour = blend(s.mesh->triangle_colors[s.triangle]);
   if (texture) colour *= sample_bilinear(*texture, blend(s.mesh->triangle_uvs[s.triangle]));
   return colour;
-}
-
-// The normal a smooth mesh face is shaded with at `p` (its corners' blended,
-// of unit length), or none for a flat face, as the triangle shader decides.
-std::optional<glm::dvec3> shading_normal(const Surface& s, const glm::dvec3& p) {
-  if (!s.mesh || s.mesh->triangle_normals.empty()) return std::nullopt;
-  const auto& corners = s.mesh->triangle_normals[s.triangle];
-  if (corners[0] == glm::vec3(0.0f)) return std::nullopt;  // a flat face's corners are all 0
-  return glm::normalize(CornerBlend(s, p)(corners));
 }
 
 // Per light, per mesh, which triangle corners the light fades to nothing
@@ -173,7 +123,7 @@ class FrameSampler {
   // colour and coverage, the background where it sees nothing, as the GL
   // clears its frame (pixel_mean.hpp).
   glm::dvec4 sample(double px, double py, std::vector<Image>* masks, int x, int y) const {
-    const auto hit = caster_.nearest_hit(scene_.camera.eye, rays_.direction(px - 0.5, py - 0.5));
+    const auto hit = caster_.nearest_hit(rays_.ray(px - 0.5, py - 0.5));
     return hit ? resolved_sample(shade(scene_, caster_, ambient_sum_, terminators_, *hit, masks, x, y), scene_.background.color,
                                  scene_.background.transparent)
                : nothing_;

@@ -33,6 +33,7 @@ class RayCaster {
   // As the free functions of the same names; safe to call from many threads.
   std::optional<RayHit> nearest_hit(const glm::dvec3& origin, const glm::dvec3& direction, int skip = -1,
                                     double t_min = 0.0) const;
+  std::optional<RayHit> nearest_hit(const Ray& ray) const { return nearest_hit(ray.origin, ray.direction); }
   bool shadow_ray_blocked(const glm::dvec3& point, int self, const glm::dvec3& light) const;
 
  private:

@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "mesh/texture_image.hpp"
-#include "scene/camera_transform.hpp"
+#include "scene/camera.hpp"
 #include "render/gl.hpp"
 #include "render/planar_receivers.hpp"
 #include "render/shader_program.hpp"
@@ -96,8 +96,7 @@ void FrameDrawing::apply_view(int samples) {
   samples_per_side_ = samples;
   const RenderSettings& s = plan_.settings;
   const glm::dmat4 view_projection =
-      infinite_perspective(plan_.camera.fovy_deg, double(s.width) / s.height, plan_.near_plane) *
-      view_matrix(plan_.camera);
+      plan_.camera.view_projection(double(s.width) / s.height, plan_.near_plane);
   const int width = s.width * samples_per_side_, height = s.height * samples_per_side_;
   view_from(plan_.camera.eye, view_projection, width, height);
   for (ShaderProgram* p : {volume_program_.get(), count_program_.get(), planar_program_.get()}) {

@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "mesh/predicates/orientation.hpp"
-#include "scene/camera_transform.hpp"
+#include "scene/camera.hpp"
 #include "render/planar_receivers.hpp"
 #include "render/view_culling.hpp"
 #include "render/volume_reach.hpp"

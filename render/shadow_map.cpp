@@ -5,7 +5,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "scene/camera_transform.hpp"
+#include "scene/camera.hpp"
 #include "render/gl.hpp"
 
 namespace umbra {

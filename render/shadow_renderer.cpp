@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "render/frame_drawing.hpp"
-#include "scene/camera_transform.hpp"
+#include "scene/camera.hpp"
 #include "image/pixel_mean.hpp"
 #include "render/gl.hpp"
 #include "render/shaders.hpp"
@@ -117,18 +117,12 @@ std::vector<float> ShadowRenderer::view_depth() {
     } while (drawing_->back_faces_showed());
   const std::vector<float> window = read_depth();
   const RenderSettings& s = plan_.settings;
-  const glm::dmat4 projection = infinite_perspective(plan_.camera.fovy_deg, double(s.width) / s.height, plan_.near_plane);
-  // Window depth d is (z_ndc + 1) / 2, and z_ndc = (P22 z + P32) / -z for
-  // the eye's z (negative ahead): so z = P32 / (-z_ndc - P22).
+  const glm::dmat4 projection = plan_.camera.projection(double(s.width) / s.height, plan_.near_plane);
   std::vector<float> depth(window.size());
   const int w = s.width, h = s.height;
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const double d = window[size_t(h - 1 - y) * size_t(w) + size_t(x)];  // the GL's row 0 is the bottom
-      const double z_ndc = 2.0 * d - 1.0;
-      depth[size_t(y) * size_t(w) + size_t(x)] =
-          d >= 1.0 ? std::numeric_limits<float>::infinity() : float(-projection[3][2] / (-z_ndc - projection[2][2]));
-    }
+    for (int x = 0; x < w; ++x)  // the GL's row 0 is the bottom
+      depth[size_t(y) * size_t(w) + size_t(x)] = float(view_depth_of_window_depth(projection, window[size_t(h - 1 - y) * size_t(w) + size_t(x)]));
   return depth;
 }
 

@@ -6,7 +6,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "scene/camera_transform.hpp"
+#include "scene/camera.hpp"
 
 namespace umbra {
 namespace {
@@ -52,14 +52,8 @@ BoundingSphere bounding_sphere(const Mesh& m) {
 }
 
 NearRectangle near_rectangle(const Camera& camera, double aspect, double n) {
-  const double half_h = n * std::tan(glm::radians(camera.fovy_deg) / 2.0), half_w = half_h * aspect;
-  const glm::dmat4 view = view_matrix(camera);
-  const glm::dvec3 right{view[0][0], view[1][0], view[2][0]};
-  const glm::dvec3 up{view[0][1], view[1][1], view[2][1]};
-  const glm::dvec3 forward = -glm::dvec3{view[0][2], view[1][2], view[2][2]};
-  const glm::dvec3 centre = camera.eye + n * forward;
-  return {{centre - half_w * right - half_h * up, centre + half_w * right - half_h * up,
-           centre + half_w * right + half_h * up, centre - half_w * right + half_h * up}};
+  const std::array<glm::dvec3, 4> c = camera.section_corners(aspect, n);
+  return {{c[0], c[1], c[2], c[3]}};
 }
 
 bool triangle_may_shadow_near_rectangle(const NearRectangle& near, const glm::dvec3& light, const Triangle& triangle) {

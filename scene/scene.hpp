@@ -22,6 +22,7 @@
 #include "mesh/topology/back_faces.hpp"
 #include "mesh/topology/silhouette_components.hpp"
 #include "mesh/topology/edge_table.hpp"
+#include "scene/camera.hpp"
 
 namespace umbra {
 
@@ -117,18 +118,6 @@ struct Mesh {
 
   int material_of(size_t triangle) const { return triangle_materials.empty() ? material : triangle_materials[triangle]; }
 };
-
-struct Camera {
-  glm::dvec3 eye{0.0};
-  glm::dvec3 target{0.0};
-  glm::dvec3 up{0.0, 1.0, 0.0};
-  double fovy_deg = 45.0;
-
-  bool operator==(const Camera& o) const { return eye == o.eye && target == o.target && up == o.up && fovy_deg == o.fovy_deg; }
-  bool operator!=(const Camera& o) const { return !(*this == o); }
-};
-// A member added to Camera must join operator== (plans are kept while the camera compares equal).
-static_assert(sizeof(Camera) == 10 * sizeof(double), "compare the new member of Camera in operator==");
 
 // The default view: looking down -z at the origin, +y up, with the front face
 // of the cube [-1,1]^3 (z = 1) filling 99% of the window's height.

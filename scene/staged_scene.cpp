@@ -123,21 +123,20 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
   std::vector<glm::dvec3> points;
   for (const glm::dvec3& p : model_points) {
     points.push_back(p);
-    if (!view.frame_shadow || !(stage.light.z > p.z)) continue;
+    if (!(stage.light.z > p.z)) continue;
     glm::dvec3 shadow = stage.light + (p - stage.light) * ((stage.light.z - stage.floor_z) / (stage.light.z - p.z));
     const glm::dvec3 out(shadow.x - centre.x, shadow.y - centre.y, 0.0);
     if (glm::length(out) > kShadowReach) shadow = glm::dvec3(centre.x, centre.y, stage.floor_z) + out * (kShadowReach / glm::length(out));
     points.push_back(shadow);
   }
   if (points.empty()) points = {lo, hi};
-  const double fovy_deg = view.fov_deg;
   const glm::dvec3 back = toward(view.camera_azimuth_deg.value_or(kCameraAzimuthDeg), view.camera_elevation_deg);
-  const glm::dvec3 forward = -back;
-  const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 0, 1)));
-  const glm::dvec3 up = glm::cross(right, forward);
+  // The camera's axes and lens, wherever along them it comes to stand.
+  const Camera lens{back, glm::dvec3(0.0), {0, 0, 1}, view.fov_deg};
+  const auto [right, up, forward] = lens.axes();
   // How far off the axis a point may be, over its depth: up, by the lens,
   // and across, by the lens and the frame's shape.
-  const double reach_up = std::tan(glm::radians(fovy_deg / 2)) / kMargin, reach_across = reach_up * aspect;
+  const double reach_up = lens.half_height_at_unit_depth() / kMargin, reach_across = reach_up * aspect;
   // From the middle of the points' box, which no point's repeats move.
   glm::dvec3 box_lo = points[0], box_hi = points[0];
   for (const glm::dvec3& p : points) box_lo = glm::min(box_lo, p), box_hi = glm::max(box_hi, p);
@@ -181,7 +180,7 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
       throw StagingChoiceError(given + " is straight above or below the point the staged camera looks at, and the camera keeps +z "
                                "up: give --target as well, or move the eye sideways");
   }
-  stage.camera = Camera{eye, aim, {0, 0, 1}, fovy_deg};
+  stage.camera = Camera{eye, aim, {0, 0, 1}, view.fov_deg};
   // Far past every edge of the frame: the floor's horizon is never in view.
   stage.floor_centre = {centre.x, centre.y, stage.floor_z};
   stage.floor_half_size = 20.0 * (view.eye ? std::max(distance, glm::length(eye - centre)) : distance);
@@ -274,7 +273,6 @@ Scene stage_mesh(const std::string& path, const std::shared_ptr<const PolygonSou
                                                           : "# lit and seen from where the command line's options put the light and camera.\n");
 
   StageView view = staging.view;
-  view.frame_shadow = !staging.no_floor;
   // A flat part is seen by its face, lit on the side the camera sees, not by its edge.
   const bool default_view = !view.camera_azimuth_deg && !view.eye && !view.target && !view.light && !view.light_azimuth_deg &&
                             !view.light_elevation_deg;

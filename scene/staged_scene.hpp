@@ -66,13 +66,12 @@ struct StageView {
   std::optional<double> light_azimuth_deg, light_elevation_deg;
   std::optional<glm::dvec3> light;
   double light_turn_deg = 0.0;  // then turned about the z axis (--light-angle)
-  bool frame_shadow = true;     // frame the shadow on the floor too (there is a floor)
 
   bool operator==(const StageView& o) const {
     return camera_azimuth_deg == o.camera_azimuth_deg && camera_elevation_deg == o.camera_elevation_deg &&
            camera_zoom == o.camera_zoom && fov_deg == o.fov_deg && eye == o.eye && target == o.target &&
            light_azimuth_deg == o.light_azimuth_deg && light_elevation_deg == o.light_elevation_deg && light == o.light &&
-           light_turn_deg == o.light_turn_deg && frame_shadow == o.frame_shadow;
+           light_turn_deg == o.light_turn_deg;
   }
 };
 

@@ -12,7 +12,7 @@
 
 #include "image/stroke_drawing.hpp"
 #include "image/text_drawing.hpp"
-#include "scene/camera_transform.hpp"
+#include "scene/camera.hpp"
 #include "scene/staged_scene.hpp"
 #include "tools/command_line.hpp"
 #include "tools/picture_choices.hpp"
@@ -61,15 +61,12 @@ DefectPicture::DefectPicture(const PolygonSoup& soup, const MeshReport& report, 
   staging.no_floor = view.camera_elevation_deg < 0.0;
   scene_ = stage_polygon_soup(std::make_shared<const PolygonSoup>(tinted(soup, report)), nullptr, staging_for(staging, settings), own_up);
   placed_ = placement_of(scene_.meshes.at(0));
-  view_ = view_matrix(scene_.camera);
-  focal_y_ = 1.0 / std::tan(glm::radians(scene_.camera.fovy_deg) / 2.0);
-  focal_x_ = focal_y_ * height / width;
 }
 
 glm::dvec3 DefectPicture::project(const glm::dvec3& file_point) const {
-  const glm::dvec4 eye = view_ * glm::dvec4(placed_(file_point), 1.0);
-  const double depth = -eye.z;  // ahead of the camera: its view axis is -z
-  return {(1.0 + focal_x_ * eye.x / depth) / 2.0 * width_, (1.0 - focal_y_ * eye.y / depth) / 2.0 * height_, depth};
+  // The camera's pixel centres are at whole numbers; the strokes' at half-integers.
+  const Projected p = scene_.camera.project(placed_(file_point), width_, height_);
+  return {p.px + 0.5, p.py + 0.5, p.depth};
 }
 
 Image DefectPicture::draw(HeadlessGl gl) const {

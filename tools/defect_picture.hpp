@@ -54,8 +54,6 @@ class DefectPicture {
   const MeshReport& report_;
   Scene scene_;
   MeshPlacement placed_;
-  glm::dmat4 view_;
-  double focal_x_ = 1.0, focal_y_ = 1.0;  // the projection's x and y scales
   int width_, height_;
 };
 

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "scene/scene_parser.hpp"
-#include "scene/camera_transform.hpp"
+#include "scene/camera.hpp"
 
 namespace umbra {
 namespace {
@@ -60,12 +60,12 @@ TEST(RayCast, APointOnASharedEdgeIsNotShadowedByItsNeighbour) {
 
 TEST(RayCast, PixelRaysOfTheSpecCamera) {
   const Camera camera = spec_camera();
-  const glm::dvec3 centre = pixel_ray_direction(camera, 101, 101, 50, 50);
+  const glm::dvec3 centre = camera.pixel_ray(101, 101, 50, 50).direction;
   EXPECT_NEAR(centre.x, 0.0, 1e-15);
   EXPECT_NEAR(centre.y, 0.0, 1e-15);
   EXPECT_NEAR(centre.z, -1.0, 1e-15);
   // The top edge of the image is fovy / 2 = 22.5 degrees above the axis.
-  const glm::dvec3 top = pixel_ray_direction(camera, 101, 100, 50, -0.5);
+  const glm::dvec3 top = camera.pixel_ray(101, 100, 50, -0.5).direction;
   EXPECT_NEAR(std::atan2(top.y, -top.z), M_PI / 8, 1e-12);
 }
 
@@ -79,17 +79,17 @@ TEST(RayCast, WindowRaysAreThePixelRays) {
   for (const Camera& camera : {spec_camera(), tilted}) {
     const int width = 160, height = 120;
     const glm::dmat3 rays = window_ray_directions(
-        infinite_perspective(camera.fovy_deg, double(width) / height, 0.05) * view_matrix(camera), camera.eye, width, height);
+        camera.view_projection(double(width) / height, 0.05), camera.eye, width, height);
     for (const auto& [px, py] : {std::pair{0, 0}, {159, 0}, {0, 119}, {82, 84}, {159, 119}, {80, 60}}) {
       const glm::dvec3 window = glm::normalize(rays * glm::dvec3(px + 0.5, height - py - 0.5, 1.0));
-      const glm::dvec3 pixel = pixel_ray_direction(camera, width, height, px, py);
+      const glm::dvec3 pixel = camera.pixel_ray(width, height, px, py).direction;
       EXPECT_LT(glm::length(window - pixel), 1e-12) << "pixel (" << px << ", " << py << ")";
     }
   }
   // The spec camera looks down -z with y up: the window's centre is the axis,
   // its right edge tan(fovy / 2) * aspect to the side.
   const glm::dmat3 spec = window_ray_directions(
-      infinite_perspective(45.0, 4.0 / 3.0, 0.05) * view_matrix(spec_camera()), spec_camera().eye, 160, 120);
+      spec_camera().view_projection(4.0 / 3.0, 0.05), spec_camera().eye, 160, 120);
   const glm::dvec3 axis = spec * glm::dvec3(80.0, 60.0, 1.0), edge = spec * glm::dvec3(160.0, 60.0, 1.0);
   EXPECT_NEAR(axis.x / -axis.z, 0.0, 1e-14);  // the inverse matrix, rounded
   EXPECT_NEAR(axis.y / -axis.z, 0.0, 1e-14);

@@ -8,7 +8,7 @@
 #include <filesystem>
 
 #include "scene/scene_parser.hpp"
-#include "scene/camera_transform.hpp"
+#include "scene/camera.hpp"
 
 namespace umbra {
 namespace {
@@ -18,9 +18,9 @@ void expect_same_answers(const Scene& scene, int grid) {
   int hits = 0, blocked = 0;
   for (int y = 0; y < grid; ++y)
     for (int x = 0; x < grid; ++x) {
-      const glm::dvec3 d = pixel_ray_direction(scene.camera, grid, grid, x, y);
-      const auto brute = nearest_hit(scene, scene.camera.eye, d);
-      const auto fast = caster.nearest_hit(scene.camera.eye, d);
+      const Ray ray = scene.camera.pixel_ray(grid, grid, x, y);
+      const auto brute = nearest_hit(scene, ray);
+      const auto fast = caster.nearest_hit(ray);
       ASSERT_EQ(bool(brute), bool(fast)) << scene.path << " pixel " << x << ", " << y;
       if (!brute) continue;
       ++hits;

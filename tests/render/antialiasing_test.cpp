@@ -9,7 +9,7 @@
 #include "image/edge_pixels.hpp"
 #include "reference/ray_cast.hpp"
 #include "reference/ray_caster.hpp"
-#include "scene/camera_transform.hpp"
+#include "scene/camera.hpp"
 #include "scene/staged_scene.hpp"
 #include "tests/render/image_agreement.hpp"
 
@@ -55,7 +55,7 @@ TEST(Antialiasing, OnlyPixelsOnEdgesChange) {
   const test::RenderedImages three = test::render_gl_and_ray_cast(scene, size, RenderMethod::kAuto, 3);
   const Image mask = ray_cast_frame(scene, size, size).masks[0];
   const auto object_at = [&](double x, double y) {
-    const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, size, size, x, y));
+    const auto hit = nearest_hit(scene, scene.camera.pixel_ray(size, size, x, y));
     return hit ? hit->object : -1;
   };
   int changed = 0, unexplained = 0;

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "scene/camera_transform.hpp"
+#include "scene/camera.hpp"
 #include "scene/scene_parser.hpp"
 #include "tests/render/image_agreement.hpp"
 
@@ -27,7 +27,7 @@ Scene spheres_with(const std::string& background) {
 int coverage(const Scene& scene, int size, int x, int y) {
   int seen = 0;
   for (const auto& [dx, dy] : {std::pair{0.0, 0.0}, {-0.5, -0.5}, {0.5, -0.5}, {-0.5, 0.5}, {0.5, 0.5}})
-    seen += nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, size, size, x + dx, y + dy)).has_value();
+    seen += nearest_hit(scene, scene.camera.pixel_ray(size, size, x + dx, y + dy)).has_value();
   return seen == 5 ? 1 : seen == 0 ? 0 : -1;
 }
 
@@ -98,7 +98,7 @@ TEST(Background, AShadowCatchersAlphaIsItsShadow) {
   // The share a shadow takes from the floor: the light's term over all of it.
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x) {
-      const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, size, size, x, y));
+      const auto hit = nearest_hit(scene, scene.camera.pixel_ray(size, size, x, y));
       if (!hit || hit->object != 2 || coverage(scene, size, x, y) != 1) continue;  // the floor's own pixels
       if (mask.at(x, y) == kMaskUnlit) {
         ++shadowed;

@@ -96,7 +96,7 @@ int reference_lit_pixels_of(const Scene& scene, int object, int size) {
   int lit = 0;
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x) {
-      const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, size, size, x, y));
+      const auto hit = nearest_hit(scene, scene.camera.pixel_ray(size, size, x, y));
       lit += hit && hit->object == object && reference_mask_value(scene, size, size, x, y, 0) == kMaskLit;
     }
   return lit;

@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "scene/camera_transform.hpp"
+#include "scene/camera.hpp"
 #include "tests/render/mask_comparison.hpp"
 #include "reference/ray_cast.hpp"
 #include "reference/ray_cast_render.hpp"
@@ -42,11 +42,11 @@ inline int differing_channels_away_from_edges(const Scene& scene, const Rendered
                                               int segments = RenderSettings{}.sphere_segments) {
   const int w = r.gl.width, h = r.gl.height;
   const auto object_at = [&](double x, double y) {
-    const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, w, h, x, y));
+    const auto hit = nearest_hit(scene, scene.camera.pixel_ray(w, h, x, y));
     return hit ? hit->object : -1;
   };
   const auto in_a_band = [&](int x, int y) {
-    const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, w, h, x, y));
+    const auto hit = nearest_hit(scene, scene.camera.pixel_ray(w, h, x, y));
     for (const Light& light : scene.lights)
       for (const Sphere& sphere : scene.spheres)
         if (hit && in_ngon_band(sphere, light.position, hit->point, segments)) return true;

@@ -21,7 +21,7 @@
 
 #include "mesh/predicates/orientation.hpp"
 #include "scene/scene_checks.hpp"
-#include "scene/camera_transform.hpp"
+#include "scene/camera.hpp"
 #include "render/headless_context.hpp"
 #include "image/image.hpp"
 #include "reference/ray_cast.hpp"
@@ -108,7 +108,7 @@ inline MaskComparison compare_with_reference(const Scene& scene, const RenderPla
         ++r.excused_boundary;
         continue;
       }
-      const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, w, h, x, y));
+      const auto hit = nearest_hit(scene, scene.camera.pixel_ray(w, h, x, y));
       bool ngon = false;
       if (hit && gl == kMaskLit && ref == kMaskUnlit)  // the N-gon cone lies inside the true one
         for (const Sphere& s : scene.spheres) ngon = ngon || in_ngon_band(s, l, hit->point, plan.settings.sphere_segments);

@@ -9,7 +9,7 @@
 
 #include "scene/scene_parser.hpp"
 #include "render/planar_receivers.hpp"
-#include "scene/camera_transform.hpp"
+#include "scene/camera.hpp"
 #include "render/render_plan.hpp"
 
 namespace umbra {

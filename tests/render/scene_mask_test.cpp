@@ -11,7 +11,7 @@
 #include "scene/scene_parser.hpp"
 #include "render/headless_context.hpp"
 #include "image/mask_error.hpp"
-#include "scene/camera_transform.hpp"
+#include "scene/camera.hpp"
 #include "reference/ray_cast.hpp"
 #include "reference/ray_cast_render.hpp"
 #include "render/shadow_renderer.hpp"
@@ -180,7 +180,7 @@ TEST(Planar, SpheresReceiveNoShadowAndThePlanSaysSo) {
   const Image mask = renderer.render_mask(0);
   for (int y = 0; y < 160; ++y)
     for (int x = 0; x < 160; ++x) {
-      const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, 160, 160, x, y));
+      const auto hit = nearest_hit(scene, scene.camera.pixel_ray(160, 160, x, y));
       if (hit && hit->object >= int(scene.spheres.size())) continue;  // planes: the test above
       if (mask.at(x, y) != reference_mask_value(scene, 160, 160, x, y, 0)) {
         EXPECT_EQ(mask.at(x, y), kMaskLit);
@@ -308,7 +308,7 @@ TEST(Shading, LitAndShadowedFloorPixelsHaveThePhongValues) {
   int shadowed = 0;
   for (int y = 0; y < settings.height; ++y)
     for (int x = 0; x < settings.width; ++x) {
-      const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, 101, 101, x, y));
+      const auto hit = nearest_hit(scene, scene.camera.pixel_ray(101, 101, x, y));
       if (!hit || hit->object != 0 || reference_mask_value(scene, 101, 101, x, y, 0) != kMaskUnlit) continue;
       if (reference_mask_value(scene, 101, 101, x - 0.5, y - 0.5, 0) != kMaskUnlit ||
           reference_mask_value(scene, 101, 101, x + 0.5, y + 0.5, 0) != kMaskUnlit)
@@ -335,7 +335,7 @@ TEST(Shading, TheRayCastImageHasTheSamePhongValues) {
   int shadowed = 0;
   for (int y = 0; y < 101; ++y)
     for (int x = 0; x < 101; ++x) {
-      const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, 101, 101, x, y));
+      const auto hit = nearest_hit(scene, scene.camera.pixel_ray(101, 101, x, y));
       if (!hit || hit->object != 0 || !shadow_ray_blocked(scene, hit->point, 0, scene.lights[0].position)) continue;
       EXPECT_EQ(frame.masks[0].at(x, y), kMaskUnlit);
       EXPECT_EQ(frame.image.at(x, y, 1), 38);  // round(0.15 * 255)
@@ -368,7 +368,7 @@ TEST(Shading, TheGLImageMatchesTheRayCastImageWhereMasksAgreeAwayFromEdges) {
     for (size_t light = 0; light < scene.lights.size(); ++light) masks.push_back(renderer.render_mask(light));
     const RayCastFrame cpu = ray_cast_frame(scene, 120, 120);
     const auto object_at = [&](double x, double y) {
-      const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, 120, 120, x, y));
+      const auto hit = nearest_hit(scene, scene.camera.pixel_ray(120, 120, x, y));
       return hit ? hit->object : -1;
     };
     for (int y = 0; y < 120; ++y)

@@ -16,7 +16,7 @@
 #include "render/headless_context.hpp"
 #include "render/render_plan.hpp"
 #include "render/shadow_renderer.hpp"
-#include "scene/camera_transform.hpp"
+#include "scene/camera.hpp"
 #include "scene/scene_parser.hpp"
 
 namespace umbra {
@@ -44,11 +44,11 @@ DepthAgreement compare_sphere_depths(const Scene& scene, int width, int height) 
   renderer.render_image(false);
   const std::vector<float> depth = renderer.read_depth();
   const glm::dmat4 view_projection =
-      infinite_perspective(plan.camera.fovy_deg, double(width) / height, plan.near_plane) * view_matrix(plan.camera);
+      plan.camera.view_projection(double(width) / height, plan.near_plane);
   DepthAgreement r;
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
-      const auto hit = nearest_hit(scene, plan.camera.eye, pixel_ray_direction(plan.camera, width, height, x, y));
+      const auto hit = nearest_hit(scene, plan.camera.pixel_ray(width, height, x, y));
       if (!hit || hit->object >= int(scene.spheres.size())) continue;
       const float gl = depth[size_t(height - 1 - y) * size_t(width) + size_t(x)];
       if (gl >= 1.0f) continue;
@@ -100,7 +100,7 @@ TEST(ViewDepth, IsTheExactHitsDistanceAlongTheViewAxis) {
     for (int y = 0; y < 61; ++y)
       for (int x = 0; x < 81; ++x) {
         const float seen = depth[size_t(y) * 81 + size_t(x)];
-        const auto hit = nearest_hit(scene, scene.camera.eye, pixel_ray_direction(scene.camera, 81, 61, x, y));
+        const auto hit = nearest_hit(scene, scene.camera.pixel_ray(81, 61, x, y));
         if (!hit) {
           background += std::isinf(seen) != 0;
           off += std::isinf(seen) == 0;
