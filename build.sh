@@ -24,6 +24,7 @@ packages=(
   python3-glad                       # generates the OpenGL loader at build time
   libglm-dev libpng-dev              # vectors and matrices, PNG output
   libjpeg62-turbo-dev                # pictures written as JPEG (libjpeg-turbo); the texture benchmark
+  libopenexr-dev                     # a view's depth and normals as float OpenEXR (--passes)
   libosmesa6-dev                     # headless OpenGL (Mesa llvmpipe) through OSMesa
   libegl-dev libegl-mesa0            # headless OpenGL through EGL: a GPU, or Mesa's software device
   libglfw3-dev libgl1-mesa-dri       # umbra view: a window with an OpenGL context

@@ -50,7 +50,8 @@ DrawnPicture draw_picture(const Scene& scene, const RenderSettings& settings, co
     if (request.depth) throw UsageError("the depth is the GL's depth buffer, which the ray-cast method does not draw");
     RayCastFrame frame = ray_cast_frame(scene, settings.width, settings.height, settings.antialias, settings.antialiased);
     picture.image = std::move(frame.image);
-    if (request.mask) picture.mask = std::move(frame.masks[0]);
+    if (request.mask) picture.mask = frame.masks[0];
+    if (request.every_mask) picture.masks = std::move(frame.masks);
     return picture;
   }
   // The plan is made on the other cores while the GL context is set up
@@ -78,6 +79,9 @@ DrawnPicture draw_picture(const Scene& scene, const RenderSettings& settings, co
   else
     picture.image = renderer.render_image(request.show_volumes);
   if (request.depth) picture.depth = renderer.view_depth();
+  if (request.every_mask)
+    for (size_t light = 0; light < scene.lights.size(); ++light)
+      picture.masks.push_back(light == 0 && picture.mask ? *picture.mask : renderer.render_mask(light));
   edge_rays.antialias(picture.image);
   return picture;
 }

@@ -20,11 +20,13 @@ struct PictureRequest {
   bool show_volumes = false;  // the volumes drawn over the picture (--show-volumes)
   bool mask = false;          // light 1's shadow mask too (ShadowRenderer::render_mask)
   bool depth = false;         // the view depth too (ShadowRenderer::view_depth): the GL's methods only
+  bool every_mask = false;    // every light's shadow mask, in DrawnPicture::masks
 };
 
 struct DrawnPicture {
   Image image;
   std::optional<Image> mask;
+  std::vector<Image> masks;  // per light, where every_mask asks
   std::vector<float> depth;  // rows from the top; empty unless asked
 };
 

@@ -29,12 +29,14 @@
 #include "tools/picture_drawing.hpp"
 #include "tools/progress_bar.hpp"
 #include "tools/standard_input.hpp"
+#include "tools/view_set_files.hpp"
 
 namespace umbra {
 
 const std::string kRenderUsage = usage_text(
     R"(usage: umbra render MESH -o OUT.png [options]
        umbra render SCENE -o OUT.png [options]
+       umbra render MESH --views N [--passes LIST] -o OUTDIR [options]
        umbra render PATH... -o OUTDIR [--jobs N] [--shard K/N] [options]
        umbra render - -o OUT.png [options]   (a mesh on standard input)
 
@@ -129,6 +131,23 @@ options:
                         more than DEG degrees keep a sharp edge (default 30);
                         given, a mesh of any size is shaded smooth
 
+  --views N             draw N views of a MESH into the folder -o names, round
+                        the model at the camera's elevation from its azimuth
+                        on, evenly spaced; the light holds still. Writes
+                        NNN.png per view and transforms.json: each view's
+                        camera pose and intrinsics in the mesh file's own
+                        coordinates and units (docs/rendering.md, "Many views")
+  --views-on SPREAD     ring (default) or sphere: views evenly over the whole
+                        sphere of directions (a Fibonacci lattice), without a
+                        floor unless --floor is given
+  --passes LIST         with --views, each view's data too, comma-separated:
+                        depth (NNN.depth.exr, float, along the view axis in
+                        the file's units, +inf off the model), normal
+                        (NNN.normal.exr, float RGB, the file's axes), object
+                        (NNN.object.png, 255 on the model), shadow
+                        (NNN.shadow.png, as --mask; NNN.shadowK.png per light
+                        where there are several)
+
   --jobs N              with several files: draw N at a time, each in its own
                         GL context, using at most N threads in all (default:
                         one per core)
@@ -205,6 +224,7 @@ struct RenderOptions : PictureChoices {
   bool jpeg_quality_given = false;
   bool explain = false;
   std::optional<std::string> save_scene;  // for a mesh file: where to write the staged scene
+  std::optional<ViewSetRequest> views;    // --views, --views-on, --passes: many views into the folder -o names
   bool any_texture_path = false;
   bool help = false;
 };
@@ -242,6 +262,21 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   options.flag("--json", json);
   options.value("--jobs", [&](const std::string& n, const std::string& t) { jobs = size_t(parse_int_in(n, t, 1, 4096)); });
   options.value("--shard", [&](const std::string& n, const std::string& t) { shard = parse_shard(n, t); });
+  std::vector<std::string> view_options;  // those named, for messages
+  ViewSetRequest views;
+  options.value("--views", [&](const std::string& n, const std::string& t) {
+    views.count = parse_int_in(n, t, 1, 100000);
+    view_options.push_back(n);
+  });
+  options.value("--views-on", [&](const std::string& n, const std::string& t) {
+    if (t != "ring" && t != "sphere") throw UsageError(n + " takes ring or sphere, got \"" + t + "\"");
+    views.spread = t == "ring" ? ViewSpread::kRing : ViewSpread::kSphere;
+    view_options.push_back(n);
+  });
+  options.value("--passes", [&](const std::string& n, const std::string& t) {
+    views.passes = parse_data_passes(n, t);
+    view_options.push_back(n);
+  });
   options.positionals(scenes);
   options.parse(argv);
   if (!scenes.empty()) o.scene_path = scenes[0];
@@ -255,7 +290,31 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     throw UsageError("- (standard input) is one file: render it on its own");
   if (o.save_scene && o.scene_path == "-")
     throw UsageError("--save-scene names the mesh's file, and standard input has none: save the mesh to a file first");
-  if (scenes.size() > 1 || std::filesystem::is_directory(o.scene_path, ec)) {
+  if (!view_options.empty()) {
+    const std::string& named = view_options.front();
+    o.views = views;
+    if (scenes.size() > 1 || std::filesystem::is_directory(o.scene_path, ec))
+      throw UsageError(named + " draws the views of one mesh file; name one (a folder's views are not drawn yet)");
+    require_staged({named}, o.scene_path);
+    if (o.output.empty()) throw UsageError("no output folder given (-o OUTDIR): " + named + " writes each view's files there");
+    if (std::filesystem::exists(o.output, ec) && !std::filesystem::is_directory(o.output, ec))
+      throw UsageError("-o " + o.output + " is a file; " + named + " writes each view's files in a folder: name a folder");
+    if (is_picture_name(o.output))
+      throw UsageError("-o " + o.output + " names a picture, but " + named + " writes each view's files in a folder: name a folder");
+    // Seen from below, a floor would hide the model: a sphere of views has none unless --floor asks.
+    if (views.spread == ViewSpread::kSphere && !std::count(o.staging_given.begin(), o.staging_given.end(), "--floor"))
+      o.staging.no_floor = true;
+    for (const auto& [given, name] : {std::pair{o.mask.has_value(), "--mask"}, {o.save_scene.has_value(), "--save-scene"},
+                                      {o.explain, "--explain"}, {o.staging.view.eye.has_value(), "--eye"},
+                                      {o.staging.view.target.has_value(), "--target"}, {sheet.has_value(), "--sheet"},
+                                      {shard.has_value(), "--shard"}, {timeout_s > 0.0, "--timeout"},
+                                      {skip_existing, "--skip-existing"}, {json, "--json"}})
+      if (given)
+        throw UsageError(std::string(name) + " is not for " + named + (std::string(name) == "--mask" ? " (--passes shadow draws each view's mask)" :
+                                                            std::string(name) == "--eye" || std::string(name) == "--target"
+                                                                ? " (the views stand round the model, where the framing puts them)"
+                                                                : ""));
+  } else if (scenes.size() > 1 || std::filesystem::is_directory(o.scene_path, ec)) {
     if (o.output.empty()) throw UsageError("no output folder given (-o OUTDIR)");
     if (std::filesystem::exists(o.output, ec) && !std::filesystem::is_directory(o.output, ec))
       throw UsageError("-o " + o.output + " is a file; several inputs make one picture each, in a folder: name a folder");
@@ -360,6 +419,7 @@ int run_render_command(const std::vector<std::string>& argv) {
   if (const auto exit_status = parse_command_line("render", kRenderUsage, argv, parse_render_options, options))
     return *exit_status;
   if (options.batch) return run_batch_render(*options.batch);
+  if (options.views) return write_view_set(options.scene_path, options.output, options, *options.views, options.any_texture_path);
   // "-": the mesh (or scene) on standard input, copied to a file for the readers.
   std::optional<StandardInputFile> input;
   try {

@@ -1,0 +1,234 @@
+// umbra render MESH --views N --passes ... -o DIR: each view's picture and
+// passes, and transforms.json, whose poses and intrinsics put a point of
+// the mesh file where the depth pass says it is.
+
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <nlohmann/json.hpp>
+
+#include "image/exr_file.hpp"
+#include "image/image.hpp"
+#include "scene/staged_scene.hpp"
+#include "tests/mesh/mesh_builders.hpp"
+#include "tests/render/mask_comparison.hpp"
+#include "tests/tools/command_fixture.hpp"
+
+namespace umbra::test {
+namespace {
+
+using nlohmann::json;
+
+class ViewSet : public CommandTest {
+ protected:
+  // A mesh file written into the scratch folder: `soup` scaled by `scale` and moved by `offset`, as OBJ.
+  std::string write_obj(const std::string& name, PolygonSoup soup, double scale, const glm::dvec3& offset) const {
+    for (glm::dvec3& p : soup.points) p = scale * p + offset;
+    std::ofstream(path(name)) << obj_text(soup);
+    return path(name);
+  }
+  json transforms(const std::string& folder) const { return json::parse(read(path(folder + "/transforms.json"))); }
+};
+
+// A frame's camera, in the mesh file's coordinates, as a dataset tool reads it.
+struct FrameCamera {
+  glm::dmat3 rotation;  // camera axes (x right, y up, z back) as columns
+  glm::dvec3 eye;
+  double fl_x, fl_y, cx, cy;
+
+  FrameCamera(const json& all, const json& frame) : fl_x(all["fl_x"]), fl_y(all["fl_y"]), cx(all["cx"]), cy(all["cy"]) {
+    const json& m = frame["transform_matrix"];
+    for (int c = 0; c < 3; ++c)
+      for (int r = 0; r < 3; ++r) rotation[c][r] = m[r][c];
+    eye = {m[0][3], m[1][3], m[2][3]};
+  }
+  // The point's pixel (continuous, a pixel's centre at its index + 0.5) and its depth.
+  glm::dvec3 project(const glm::dvec3& p) const {
+    const glm::dvec3 q = glm::transpose(rotation) * (p - eye);
+    return {cx + fl_x * q.x / -q.z, cy - fl_y * q.y / -q.z, -q.z};
+  }
+  // The direction of the ray through pixel (x, y)'s centre, scaled so that its depth is 1.
+  glm::dvec3 ray(int x, int y) const { return rotation * glm::dvec3((x + 0.5 - cx) / fl_x, -(y + 0.5 - cy) / fl_y, -1.0); }
+};
+
+// A cube 10 units on a side at (100, 200, 300) in its file: the corner
+// nearest each camera, projected with the frame's pose and intrinsics,
+// lands on the model, and the depth pass at that pixel's centre is where
+// that pixel's ray enters the cube (computed here by hand, slab by slab).
+TEST_F(ViewSet, AVertexProjectedWithItsPoseLandsWhereTheDepthPassSaysItIs) {
+  const std::string cube = write_obj("cube.obj", unit_cube(), 10.0, {100, 200, 300});
+  const CommandResult r = run("render " + cube + " --views 4 --passes depth,object --size 96x64 -o " + path("out"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("wrote 4 views of"), std::string::npos) << r.out;
+  const json all = transforms(path("out"));
+  EXPECT_EQ(all["w"], 96);
+  EXPECT_EQ(all["h"], 64);
+  EXPECT_EQ(all["cx"], 48.0);
+  EXPECT_EQ(all["cy"], 32.0);
+  // The staged lens's 30 degrees across the picture's height.
+  EXPECT_NEAR(double(all["fl_y"]), 32.0 / std::tan(M_PI / 12), 1e-9);
+  ASSERT_EQ(all["frames"].size(), 4u);
+  for (int i = 0; i < 4; ++i) {
+    SCOPED_TRACE(i);
+    const json& frame = all["frames"][size_t(i)];
+    const std::string stem = "00" + std::to_string(i);
+    EXPECT_EQ(frame["file_path"], stem + ".png");
+    EXPECT_EQ(frame["depth_file_path"], stem + ".depth.exr");
+    EXPECT_EQ(frame["mask_path"], stem + ".object.png");
+    const FrameCamera camera(all, frame);
+    const ExrPicture depth = read_exr(path("out/" + stem + ".depth.exr"));
+    ASSERT_EQ(depth.channels, std::vector<std::string>{"Z"});
+    ASSERT_EQ(depth.width, 96);
+    const Image object = read_png(path("out/" + stem + ".object.png"));
+    // OBJ is +y up: the cube's top face is y = 210. The corner nearest the eye on it.
+    glm::dvec3 nearest(0.0);
+    double least = std::numeric_limits<double>::infinity();
+    for (const double x : {100.0, 110.0})
+      for (const double z : {300.0, 310.0})
+        if (const double d = glm::length(glm::dvec3(x, 210, z) - camera.eye); d < least) least = d, nearest = {x, 210, z};
+    const glm::dvec3 p = camera.project(nearest);
+    const int px = int(std::floor(p.x)), py = int(std::floor(p.y));
+    ASSERT_TRUE(px >= 0 && px < 96 && py >= 0 && py < 64) << p.x << ", " << p.y;
+    EXPECT_EQ(object.at(px, py), 255);
+    // That pixel's ray eye + s ray enters the box [lo, hi] at the largest
+    // of its entries into the three slabs, and leaves it at the least exit.
+    const glm::dvec3 ray = camera.ray(px, py), lo(100, 200, 300), hi(110, 210, 310);
+    double s = 0.0, leaves = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < 3; ++a) {
+      const double t0 = (lo[a] - camera.eye[a]) / ray[a], t1 = (hi[a] - camera.eye[a]) / ray[a];
+      s = std::max(s, std::min(t0, t1)), leaves = std::min(leaves, std::max(t0, t1));
+    }
+    ASSERT_LT(s, leaves) << "the pixel's ray misses the cube";
+    EXPECT_NEAR(depth.values[size_t(py) * 96 + size_t(px)], s, 1e-5 * s);
+    EXPECT_NEAR(s, p.z, 0.05 * p.z);  // a pixel from the corner: about its depth
+    // The object pass is where the depth is finite.
+    for (int y = 0; y < 64; ++y)
+      for (int x = 0; x < 96; ++x)
+        ASSERT_EQ(object.at(x, y) == 255, std::isfinite(depth.values[size_t(y) * 96 + size_t(x)])) << x << ", " << y;
+  }
+}
+
+// A sphere of radius 5 at (10, 20, 30) in its file, seen from all round:
+// each pixel's depth and normal against the true sphere's, within what its
+// facets (48 rings of 96 quads, each pi/48 by at most pi/48) stray from
+// it. Pixels near the outline, where a ray grazes the sphere, are left out.
+TEST_F(ViewSet, TheDepthAndNormalsOfASphereAreTheSurfacesWithinItsFacets) {
+  const glm::dvec3 centre(10, 20, 30);
+  const double radius = 5.0;
+  const std::string sphere = write_obj("sphere.obj", uv_sphere(48, 96), radius, centre);
+  const CommandResult r =
+      run("render " + sphere + " --views 3 --views-on sphere --passes depth,normal,object --size 80x80 -o " + path("out"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json all = transforms(path("out"));
+  // The facets' sag: a triangle's plane lies inside the sphere by at most
+  // r (1 - cos rho), rho its corners' angle from its centre, at most half
+  // its quad's diagonal, (pi / 48) sqrt(2) / 2. Along a ray that meets the
+  // surface at an angle whose cosine is at least 1/2, twice that.
+  const double sag = radius * (1.0 - std::cos(M_PI / 48 * std::sqrt(0.5))), normal_slack = M_PI / 48;
+  for (int i = 0; i < 3; ++i) {
+    SCOPED_TRACE(i);
+    const std::string stem = "00" + std::to_string(i);
+    const FrameCamera camera(all, all["frames"][size_t(i)]);
+    const ExrPicture depth = read_exr(path("out/" + stem + ".depth.exr"));
+    const ExrPicture normal = read_exr(path("out/" + stem + ".normal.exr"));
+    ASSERT_EQ(normal.channels, (std::vector<std::string>{"B", "G", "R"}));  // sorted by name, as EXR keeps them
+    int checked = 0;
+    for (int y = 0; y < 80; ++y)
+      for (int x = 0; x < 80; ++x) {
+        const size_t k = size_t(y) * 80 + size_t(x);
+        // The ray eye + s ray meets the sphere where |eye + s ray - centre| = radius.
+        const glm::dvec3 d = camera.ray(x, y), o = camera.eye - centre;
+        const double a = glm::dot(d, d), b = glm::dot(o, d), c = glm::dot(o, o) - radius * radius;
+        const double disc = b * b - a * c;
+        if (!(disc > 0.0)) {
+          EXPECT_FALSE(std::isfinite(depth.values[k]) && disc < -0.1 * a * radius * radius) << "a pixel far off the sphere " << x << ", " << y;
+          continue;
+        }
+        const double s = (-b - std::sqrt(disc)) / a;
+        const glm::dvec3 n = glm::normalize(o + s * d);
+        const double facing = -glm::dot(n, glm::normalize(d));
+        if (facing < 0.5) continue;  // near the outline
+        ++checked;
+        ASSERT_TRUE(std::isfinite(depth.values[k])) << x << ", " << y;
+        EXPECT_NEAR(depth.values[k], s, 2.0 * sag + 1e-5 * s) << x << ", " << y;
+        const glm::dvec3 shaded(normal.values[3 * k + 2], normal.values[3 * k + 1], normal.values[3 * k]);  // B, G, R
+        EXPECT_NEAR(glm::length(shaded), 1.0, 1e-5);
+        EXPECT_LT(std::acos(std::min(1.0, glm::dot(shaded, n))), normal_slack) << x << ", " << y;
+      }
+    EXPECT_GT(checked, 400);
+  }
+}
+
+// Each view's shadow mask is the exact one: the GL's, against shadow rays
+// from the same camera, as --mask is tested (mask_comparison.hpp).
+TEST_F(ViewSet, EachViewsShadowIsTheExactShadow) {
+  const std::string torus = std::string(UMBRA_SOURCE_DIR) + "/scenes/meshes/torus.obj";
+  const CommandResult r = run("render " + torus + " --views 3 --passes shadow --size 72x60 -o " + path("out"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json all = transforms(path("out"));
+  Scene scene = parse_scene_or_mesh_file(torus);
+  for (int i = 0; i < 3; ++i) {
+    SCOPED_TRACE(i);
+    const json& placed = all["frames"][size_t(i)]["umbra_camera"];
+    scene.camera = Camera{{placed["eye"][0], placed["eye"][1], placed["eye"][2]},
+                          {placed["target"][0], placed["target"][1], placed["target"][2]},
+                          {placed["up"][0], placed["up"][1], placed["up"][2]}, placed["fovy"]};
+    RenderSettings settings;
+    settings.width = 72, settings.height = 60;
+    const MaskComparison m = compare_with_reference(scene, make_render_plan(scene, settings), read_png(path("out/00" + std::to_string(i) + ".shadow.png")), 0);
+    EXPECT_EQ(m.unexplained, 0) << m.first_unexplained;
+    EXPECT_TRUE(within_boundary_bound(m)) << m.excused_boundary << " of " << m.boundary_pixels;
+    EXPECT_GT(m.surface_pixels, 1000);
+  }
+}
+
+// The views stand where the framing puts them, whatever the floor, the
+// background and the passes: a dataset's masks line up with its pictures.
+TEST_F(ViewSet, TheFloorTheBackgroundAndThePassesMoveNoCamera) {
+  const std::string torus = std::string(UMBRA_SOURCE_DIR) + "/scenes/meshes/torus.obj";
+  ASSERT_EQ(run("render " + torus + " --views 3 --size 48x48 -o " + path("plain")).status, 0);
+  const json plain = transforms(path("plain"));
+  const std::string variants[] = {"--floor none", "--background transparent", "--floor shadow-catcher",
+                                  "--passes depth,normal,object,shadow"};
+  for (const std::string& options : variants) {
+    SCOPED_TRACE(options);
+    ASSERT_EQ(run("render " + torus + " --views 3 --size 48x48 " + options + " -o " + path("other")).status, 0);
+    const json other = transforms(path("other"));
+    for (size_t i = 0; i < 3; ++i) EXPECT_EQ(other["frames"][i]["transform_matrix"], plain["frames"][i]["transform_matrix"]);
+  }
+  // And view 0 is the single picture umbra render draws of the file.
+  ASSERT_EQ(run("render " + torus + " --size 48x48 -o " + path("single.png")).status, 0);
+  EXPECT_EQ(read(path("single.png")), read(path("plain/000.png")));
+}
+
+TEST_F(ViewSet, OptionsThatCannotMeanAnythingForViewsAreRefused) {
+  const std::string torus = std::string(UMBRA_SOURCE_DIR) + "/scenes/meshes/torus.obj";
+  const std::string scene = std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene";
+  std::ofstream(path("file.txt")) << "x";
+  const std::pair<std::string, std::string> cases[] = {
+      {"--views 0 -o " + path("d"), "--views expects a whole number from 1 to 100000, got \"0\""},
+      {"--passes depth,colour -o " + path("d"),
+       "--passes takes depth, normal, object or shadow, separated by commas (colour is always drawn); got \"colour\""},
+      {"--passes depth,depth -o " + path("d"), "--passes names depth twice"},
+      {"--views-on cube -o " + path("d"), "--views-on takes ring or sphere, got \"cube\""},
+      {"--views 3 -o " + path("file.txt"), "-o " + path("file.txt") + " is a file; --views writes each view's files in a folder: name a folder"},
+      {"--views 3 -o " + path("v.png"), "-o " + path("v.png") + " names a picture, but --views writes each view's files in a folder"},
+      {"--views 3", "no output folder given (-o OUTDIR): --views writes each view's files there"},
+      {"--views 3 --eye 1,2,3 -o " + path("d"), "--eye is not for --views (the views stand round the model, where the framing puts them)"},
+      {"--views 3 --mask m.png -o " + path("d"), "--mask is not for --views (--passes shadow draws each view's mask)"},
+  };
+  for (const auto& [options, message] : cases) {
+    const CommandResult r = run("render " + torus + " " + options);
+    EXPECT_EQ(r.status, 2) << options;
+    EXPECT_NE(r.err.find(message), std::string::npos) << options << "\n" << r.err;
+  }
+  const CommandResult on_scene = run("render " + scene + " --views 3 -o " + path("d"));
+  EXPECT_EQ(on_scene.status, 2);
+  EXPECT_NE(on_scene.err.find("--views is for a mesh file on its own"), std::string::npos) << on_scene.err;
+  EXPECT_FALSE(fs::exists(path("d")));
+}
+
+}  // namespace
+}  // namespace umbra::test

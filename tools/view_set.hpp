@@ -1,0 +1,94 @@
+#pragma once
+// Many views of one staged model and the data behind each picture, for
+// datasets: the views' cameras round the model, each view's picture and
+// data passes (depth, normals, object and shadow masks), and the cameras'
+// poses and intrinsics as a transforms.json (Mildenhall et al., "NeRF",
+// 2020; Muller et al., "Instant Neural Graphics Primitives", 2022) in the
+// mesh file's own coordinates and units. The model is loaded once and the
+// GL context made once; views differ only in their camera.
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <nlohmann/json.hpp>
+
+#include "image/image.hpp"
+#include "reference/surface_passes.hpp"
+#include "render/headless_context.hpp"
+#include "render/render_settings.hpp"
+#include "scene/mesh_placement.hpp"
+#include "scene/scene.hpp"
+#include "scene/staged_scene.hpp"
+
+namespace umbra {
+
+// A view's data beside its colour picture. One table: --passes, the files'
+// names, transforms.json's keys and the Python module's arrays follow it.
+enum class DataPass { kDepth, kNormal, kObject, kShadow };
+struct DataPassRow {
+  DataPass pass;
+  const char* name;       // in --passes, the file's name (NNN.name.ext) and Python's dict
+  const char* extension;  // ".exr" or ".png"
+  const char* frame_key;  // transforms.json's key for the frame's file of it
+};
+extern const DataPassRow kDataPasses[4];
+const DataPassRow& data_pass_row(DataPass pass);
+// "depth, normal, object or shadow": for messages.
+std::string data_pass_names();
+// --passes LIST: comma-separated names, each at most once. Throws UsageError.
+std::vector<DataPass> parse_data_passes(const std::string& option, const std::string& text);
+
+// Where the views stand: evenly round the model at the staged elevation
+// (starting from the staged azimuth), or evenly over the whole sphere of
+// directions (a Fibonacci lattice: Gonzalez, "Measurement of Areas on a
+// Sphere Using Fibonacci and Latitude-Longitude Lattices", 2010).
+enum class ViewSpread { kRing, kSphere };
+
+struct ViewSetRequest {
+  int count = 1;
+  ViewSpread spread = ViewSpread::kRing;
+  std::vector<DataPass> passes;
+};
+
+// The cameras of `count` views of the staged scene `staged` (whose camera is
+// view 0's), each framing the model and its shadow as staging frames it
+// (stage_for, with `view`'s elevation, zoom and lens), its light held still
+// in the model's frame. Throws StagingChoiceError for a spread that leaves
+// the view's framing nowhere to stand.
+std::vector<Camera> view_cameras(const Scene& staged, const StageView& view, double aspect, int count, ViewSpread spread);
+
+// transforms.json's content for views of `width` x `height` pixels of the
+// mesh placed in the scene by `placement`: the intrinsics, and per frame
+// its picture's and passes' file names (from the folder the JSON is in),
+// its camera's pose (camera to world, OpenGL's camera axes) in the mesh
+// file's coordinates, and its lights there.
+nlohmann::ordered_json transforms_json(const std::vector<Camera>& cameras, const Scene& scene, const MeshPlacement& placement,
+                                       int width, int height, const std::vector<DataPass>& passes,
+                                       const std::vector<std::string>& stems);
+
+// One view drawn: its colour picture (as umbra render draws it), and the
+// passes asked for: every light's shadow mask (as --mask draws light 1's),
+// and the model's depth, normals and coverage from exact rays, in the mesh
+// file's units and axes (depth along the view axis; normals unit, on the
+// side the camera sees).
+struct DrawnView {
+  Image color;
+  std::vector<Image> shadow;  // per light
+  SurfacePasses surface;      // empty unless depth, normal or object is asked for
+};
+
+// Draws `scene` (a staged mesh, its model scene.meshes[0] placed by
+// `placement`) from each of `cameras` in turn, one GL context for all,
+// handing each view to `each` as it is drawn.
+void draw_views(const Scene& scene, const std::vector<Camera>& cameras, const MeshPlacement& placement,
+                const RenderSettings& settings, const std::vector<DataPass>& passes, HeadlessGl gl,
+                const std::function<void(int index, DrawnView&& view)>& each);
+
+// The file name stem of view `index` of `count`: 000, 001, ... (as many
+// digits as the largest index needs, at least 3).
+std::string view_stem(int index, int count);
+
+}  // namespace umbra

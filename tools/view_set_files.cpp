@@ -1,0 +1,129 @@
+#include "tools/view_set_files.hpp"
+
+#include <deque>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "image/exr_file.hpp"
+#include "image/partial_file.hpp"
+#include "image/picture_file.hpp"
+#include "render/frame_target.hpp"
+#include "scene/mesh_placement.hpp"
+#include "scene/scene_checks.hpp"
+#include "tools/command_line.hpp"
+#include "tools/progress_bar.hpp"
+
+namespace umbra {
+namespace {
+
+// The files of one view, made before it is drawn and renamed into place together.
+class ViewFiles {
+ public:
+  ViewFiles(const std::filesystem::path& folder, const std::string& stem, const std::vector<DataPass>& passes, size_t lights) {
+    const auto add = [&](const std::string& name, const char* what) { files_.emplace_back((folder / name).string(), what); };
+    add(stem + ".png", "the picture");
+    for (const DataPass pass : passes) {
+      const DataPassRow& row = data_pass_row(pass);
+      if (pass == DataPass::kShadow && lights > 1)
+        for (size_t l = 0; l < lights; ++l) add(stem + "." + row.name + std::to_string(l + 1) + row.extension, "a shadow mask");
+      else
+        add(stem + "." + row.name + row.extension, row.name);
+    }
+  }
+
+  void write(const DrawnView& view, const std::vector<DataPass>& passes) {
+    size_t next = 0;
+    write_picture_into(view.color, files_[next++]);
+    const SurfacePasses& s = view.surface;
+    for (const DataPass pass : passes) switch (pass) {
+        case DataPass::kDepth:
+          write_exr_into(s.depth, s.width, s.height, {"Z"}, files_[next++]);
+          break;
+        case DataPass::kNormal: {
+          std::vector<float> rgb;
+          rgb.reserve(s.normal.size() * 3);
+          for (const glm::vec3& n : s.normal) rgb.insert(rgb.end(), {n.x, n.y, n.z});
+          write_exr_into(rgb, s.width, s.height, {"R", "G", "B"}, files_[next++]);
+          break;
+        }
+        case DataPass::kObject: {
+          Image object(s.width, s.height, 1);
+          object.pixels = s.object;
+          write_picture_into(object, files_[next++]);
+          break;
+        }
+        case DataPass::kShadow:
+          for (const Image& mask : view.shadow) write_picture_into(mask, files_[next++]);
+          break;
+      }
+  }
+
+  void commit() {
+    for (PartialFile& f : files_) f.commit();
+  }
+
+ private:
+  std::deque<PartialFile> files_;  // PartialFile stays where it is made
+};
+
+}  // namespace
+
+int write_view_set(const std::string& mesh_path, const std::string& folder, PictureChoices choices, const ViewSetRequest& request,
+                   bool any_texture_path) {
+  namespace fs = std::filesystem;
+  try {
+    std::error_code ec;
+    fs::create_directories(folder, ec);
+    if (ec) throw std::runtime_error(folder + ": cannot make the folder: " + ec.message());
+    RenderSettings& settings = choices.settings;
+    std::optional<ProgressBar> progress(std::in_place, size_t(request.count) + 1);
+    progress->update(0, "loading " + mesh_path);
+    const Scene scene = parse_scene_or_mesh_file(mesh_path, {}, nullptr, staging_for(choices.staging, settings),
+                                                 TextureMaps{true, "", any_texture_path});
+    set_picture_size(settings, choices.size_given, scene);
+    set_picture_samples(settings, choices.antialias, choices.antialias_all, choices.show_volumes, scene);
+    require_drawable_size(settings.width, settings.height, settings.frame_samples());
+    for (const Warning& w : scene.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
+    require_lights_off_casters(scene);
+    require_caught_shadows_kept(scene, settings.method);
+    const std::vector<Camera> cameras =
+        view_cameras(scene, choices.staging.view, double(settings.width) / settings.height, request.count, request.spread);
+    const MeshPlacement placement = placement_of(scene.meshes.at(0));
+    std::vector<std::string> stems;
+    for (int i = 0; i < request.count; ++i) stems.push_back(view_stem(i, request.count));
+    PartialFile transforms((fs::path(folder) / "transforms.json").string(), "the cameras");
+    draw_views(scene, cameras, placement, settings, request.passes, choices.gl, [&](int i, DrawnView&& view) {
+      progress->update(size_t(i) + 1, "drawing view " + std::to_string(i + 1) + " of " + std::to_string(request.count));
+      ViewFiles files(folder, stems[size_t(i)], request.passes, scene.lights.size());
+      files.write(view, request.passes);
+      files.commit();
+    });
+    {
+      std::ofstream out(transforms.temporary_path());
+      out << transforms_json(cameras, scene, placement, settings.width, settings.height, request.passes, stems).dump(2) << "\n";
+      if (!out.flush()) throw std::runtime_error(transforms.path() + ": cannot write the cameras");
+    }
+    transforms.commit();
+    progress.reset();
+    std::cout << "wrote " << request.count << (request.count == 1 ? " view" : " views") << " of " << mesh_path << " ("
+              << settings.width << "x" << settings.height << ") and their cameras to " << (fs::path(folder) / "transforms.json").string()
+              << "\n";
+    return 0;
+  } catch (const UsageError& e) {
+    std::cerr << "umbra render: " << e.what() << "\n(see umbra render --help)\n";
+    return 2;
+  } catch (const FrameTooLarge& e) {
+    std::cerr << "umbra render: --size " << choices.settings.width << "x" << choices.settings.height << ": " << e.what()
+              << "; make --size or --antialias smaller\n(see umbra render --help)\n";
+    return 2;
+  } catch (const StagingChoiceError& e) {
+    std::cerr << "umbra render: " << e.what() << "\n(see umbra render --help)\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace umbra
