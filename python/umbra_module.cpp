@@ -16,6 +16,7 @@
 #include <variant>
 #include <vector>
 
+#include "image/exr_file.hpp"
 #include "mesh/check/mesh_check.hpp"
 #include "mesh/check/mesh_repair.hpp"
 #include "mesh/input_error.hpp"
@@ -28,6 +29,7 @@
 #include "tools/defect_picture.hpp"
 #include "tools/picture_choices.hpp"
 #include "tools/picture_drawing.hpp"
+#include "tools/view_set.hpp"
 
 namespace py = pybind11;
 
@@ -65,17 +67,21 @@ py::array_t<T> owned_array(std::vector<T>&& values, std::vector<py::ssize_t> sha
   return py::array_t<T>(shape, held->data(), owner);
 }
 
-// An (h, w, 4) array of `image`: its bytes where it has alpha, else with
-// alpha 255 added in one pass.
+// An RGB image with alpha 255 added, in one pass.
+Image with_alpha(const Image& image) {
+  Image rgba(image.width, image.height, 4);
+  for (size_t i = 0, n = size_t(image.width) * size_t(image.height); i < n; ++i) {
+    for (int c = 0; c < 3; ++c) rgba.pixels[i * 4 + c] = image.pixels[i * 3 + c];
+    rgba.pixels[i * 4 + 3] = 255;
+  }
+  return rgba;
+}
+
+// An (h, w, 4) array of `image`: its bytes where it has alpha, else with alpha 255.
 py::array_t<uint8_t> rgba_array(Image&& image) {
   const auto w = py::ssize_t(image.width), h = py::ssize_t(image.height);
-  if (image.channels == 4) return owned_array(std::move(image.pixels), {h, w, 4});
-  std::vector<uint8_t> rgba(size_t(w) * size_t(h) * 4);
-  for (size_t i = 0, n = size_t(w) * size_t(h); i < n; ++i) {
-    for (int c = 0; c < 3; ++c) rgba[i * 4 + c] = image.pixels[i * 3 + c];
-    rgba[i * 4 + 3] = 255;
-  }
-  return owned_array(std::move(rgba), {h, w, 4});
+  if (image.channels != 4) image = with_alpha(image);
+  return owned_array(std::move(image.pixels), {h, w, 4});
 }
 
 std::vector<std::string> warning_lines(const Scene& scene) {
@@ -94,31 +100,12 @@ class Renderer {
   // (image, mask or None, depth or None, warnings) for `source` drawn as
   // `words` (umbra render's options) say.
   py::tuple render(const MeshSource& source, const std::vector<std::string>& words, bool want_mask, bool want_depth) {
-    std::vector<std::string> all = words;
-    if (gl_ != "auto") all.insert(all.end(), {"--gl", gl_});
-    PictureChoices c = parse_picture_choices(all);
-    std::shared_ptr<const PolygonSoup> soup;
-    if (const auto* arrays = std::get_if<ArraysMesh>(&source)) soup = std::make_shared<const PolygonSoup>(soup_of(*arrays));
-    else require_staged(c.staging_given, std::get<std::string>(source));
+    PictureChoices c = choices(source, words);
     DrawnPicture drawn;
     std::vector<std::string> warnings;
     {
       py::gil_scoped_release released;
-      const StagingOptions staging = staging_for(c.staging, c.settings);
-      Scene scene;
-      if (soup) {
-        scene = stage_polygon_soup(soup, nullptr, staging);
-      } else {
-        const std::string& path = std::get<std::string>(source);
-        if (const std::optional<InputError> error = neither_scene_nor_mesh(path)) throw *error;
-        scene = parse_scene_or_mesh_file(path, {}, nullptr, staging, TextureMaps{true, "", false});
-      }
-      soup.reset();
-      warnings = warning_lines(scene);
-      require_lights_off_casters(scene);
-      require_caught_shadows_kept(scene, c.settings.method);
-      set_picture_samples(c.settings, c.antialias, c.antialias_all, c.show_volumes, scene);
-      require_drawable_size(c.settings.width, c.settings.height, c.settings.frame_samples());
+      const Scene scene = staged(source, c, warnings);
       PictureRequest request;
       request.show_volumes = c.show_volumes;
       request.mask = want_mask;
@@ -134,6 +121,55 @@ class Renderer {
     return py::make_tuple(rgba_array(std::move(drawn.image)), mask, depth, warnings);
   }
 
+  // (dict of stacked arrays, transforms.json's text, warnings) for `count`
+  // views of `source` spread as `spread` says, with `passes` ("" for none),
+  // as umbra render --views draws them.
+  py::tuple render_views(const MeshSource& source, const std::vector<std::string>& words, int count, const std::string& spread,
+                         const std::string& pass_list) {
+    if (count < 1) throw UsageError("views must be at least 1, got " + std::to_string(count));
+    const ViewSpread spread_of = parse_view_spread("--views-on", spread);
+    const std::vector<DataPass> passes = pass_list.empty() ? std::vector<DataPass>{} : parse_data_passes("--passes", pass_list);
+    PictureChoices c = choices(source, words);
+    if (const auto* path = std::get_if<std::string>(&source)) require_staged({"--views"}, *path);
+    leave_floor_out_of_sphere(c.staging, c.staging_given, spread_of);
+    std::vector<std::string> warnings;
+    std::vector<uint8_t> color, object, shadow;
+    std::vector<float> depth, normal;
+    size_t lights = 0;
+    std::string cameras_text;
+    {
+      py::gil_scoped_release released;
+      const Scene scene = staged(source, c, warnings);
+      lights = scene.lights.size();
+      const std::vector<Camera> cameras =
+          view_cameras(scene, c.staging.view, double(c.settings.width) / c.settings.height, count, spread_of);
+      const MeshPlacement placement = placement_of(scene.meshes.at(0));
+      std::vector<std::string> stems;
+      for (int i = 0; i < count; ++i) stems.push_back(view_stem(i, count));
+      cameras_text = transforms_json(cameras, scene, placement, c.settings.width, c.settings.height, passes, stems).dump();
+      const std::lock_guard<std::mutex> one_at_a_time(drawing_);
+      if (closed_) throw std::runtime_error("this Renderer is closed");
+      draw_views(scene, cameras, placement, c.settings, passes, context_, c.gl, [&](int, DrawnView&& view) {
+        const Image rgba = view.color.channels == 4 ? std::move(view.color) : with_alpha(view.color);
+        color.insert(color.end(), rgba.pixels.begin(), rgba.pixels.end());
+        const SurfacePasses& s = view.surface;
+        depth.insert(depth.end(), s.depth.begin(), s.depth.end());
+        for (const glm::vec3& n : s.normal) normal.insert(normal.end(), {n.x, n.y, n.z});
+        object.insert(object.end(), s.object.begin(), s.object.end());
+        for (const Image& mask : view.shadow) shadow.insert(shadow.end(), mask.pixels.begin(), mask.pixels.end());
+      });
+    }
+    const py::ssize_t n = count, h = c.settings.height, w = c.settings.width;
+    py::dict arrays;
+    arrays["color"] = owned_array(std::move(color), {n, h, w, 4});
+    const auto asked = [&](DataPass p) { return std::count(passes.begin(), passes.end(), p) > 0; };
+    if (asked(DataPass::kDepth)) arrays["depth"] = owned_array(std::move(depth), {n, h, w});
+    if (asked(DataPass::kNormal)) arrays["normal"] = owned_array(std::move(normal), {n, h, w, 3});
+    if (asked(DataPass::kObject)) arrays["object"] = owned_array(std::move(object), {n, h, w});
+    if (asked(DataPass::kShadow)) arrays["shadows"] = owned_array(std::move(shadow), {n, py::ssize_t(lights), h, w});
+    return py::make_tuple(arrays, cameras_text, warnings);
+  }
+
   void close() {
     py::gil_scoped_release released;
     const std::lock_guard<std::mutex> one_at_a_time(drawing_);
@@ -147,6 +183,35 @@ class Renderer {
   }
 
  private:
+  // The options `words` say, for a picture of `source`.
+  PictureChoices choices(const MeshSource& source, const std::vector<std::string>& words) const {
+    std::vector<std::string> all = words;
+    if (gl_ != "auto") all.insert(all.end(), {"--gl", gl_});
+    PictureChoices c = parse_picture_choices(all);
+    if (const auto* path = std::get_if<std::string>(&source)) require_staged(c.staging_given, *path);
+    return c;
+  }
+
+  // The scene `source` stands for, staged as `c` says, with its size and
+  // samples settled in `c` and its warnings' lines added to `warnings`.
+  static Scene staged(const MeshSource& source, PictureChoices& c, std::vector<std::string>& warnings) {
+    const StagingOptions staging = staging_for(c.staging, c.settings);
+    Scene scene;
+    if (const auto* arrays = std::get_if<ArraysMesh>(&source)) {
+      scene = stage_polygon_soup(std::make_shared<const PolygonSoup>(soup_of(*arrays)), nullptr, staging);
+    } else {
+      const std::string& path = std::get<std::string>(source);
+      if (const std::optional<InputError> error = neither_scene_nor_mesh(path)) throw *error;
+      scene = parse_scene_or_mesh_file(path, {}, nullptr, staging, TextureMaps{true, "", false});
+    }
+    warnings = warning_lines(scene);
+    require_lights_off_casters(scene);
+    require_caught_shadows_kept(scene, c.settings.method);
+    set_picture_samples(c.settings, c.antialias, c.antialias_all, c.show_volumes, scene);
+    require_drawable_size(c.settings.width, c.settings.height, c.settings.frame_samples());
+    return scene;
+  }
+
   std::string gl_;
   std::mutex drawing_;
   std::optional<HeadlessContext> context_;
@@ -304,11 +369,20 @@ PYBIND11_MODULE(_umbra, m) {
   py::class_<Renderer>(m, "Renderer")
       .def(py::init<std::string>(), py::arg("gl"))
       .def("render", &Renderer::render, py::arg("source"), py::arg("words"), py::arg("mask"), py::arg("depth"))
+      .def("render_views", &Renderer::render_views, py::arg("source"), py::arg("words"), py::arg("count"), py::arg("spread"),
+           py::arg("passes"))
       .def("close", &Renderer::close)
       .def_property_readonly("platform", &Renderer::platform);
   m.def("check", &check, py::arg("source"), py::arg("time_limit"), py::arg("picture"));
   m.def("repair", &repair, py::arg("source"), py::arg("max_hole_edges"), py::arg("merge_tolerance"), py::arg("time_limit"));
   m.def("load", &load, py::arg("path"));
+  // An OpenEXR file's channel names (sorted) and (h, w, channels) float32
+  // values, through OpenEXR's own library: the tests read the passes back by it.
+  m.def("read_exr", [](const std::string& path) {
+    ExrPicture picture = read_exr(path);
+    const auto h = py::ssize_t(picture.height), w = py::ssize_t(picture.width), c = py::ssize_t(picture.channels.size());
+    return py::make_tuple(picture.channels, owned_array(std::move(picture.values), {h, w, c}));
+  }, py::arg("path"));
   m.attr("max_hole_edges") = kDefaultMaxHoleEdges;
   m.attr("largest_picture_side") = kLargestPictureSide;
 }

@@ -269,8 +269,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     view_options.push_back(n);
   });
   options.value("--views-on", [&](const std::string& n, const std::string& t) {
-    if (t != "ring" && t != "sphere") throw UsageError(n + " takes ring or sphere, got \"" + t + "\"");
-    views.spread = t == "ring" ? ViewSpread::kRing : ViewSpread::kSphere;
+    views.spread = parse_view_spread(n, t);
     view_options.push_back(n);
   });
   options.value("--passes", [&](const std::string& n, const std::string& t) {
@@ -301,9 +300,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
       throw UsageError("-o " + o.output + " is a file; " + named + " writes each view's files in a folder: name a folder");
     if (is_picture_name(o.output))
       throw UsageError("-o " + o.output + " names a picture, but " + named + " writes each view's files in a folder: name a folder");
-    // Seen from below, a floor would hide the model: a sphere of views has none unless --floor asks.
-    if (views.spread == ViewSpread::kSphere && !std::count(o.staging_given.begin(), o.staging_given.end(), "--floor"))
-      o.staging.no_floor = true;
+    leave_floor_out_of_sphere(o.staging, o.staging_given, views.spread);
     for (const auto& [given, name] : {std::pair{o.mask.has_value(), "--mask"}, {o.save_scene.has_value(), "--save-scene"},
                                       {o.explain, "--explain"}, {o.staging.view.eye.has_value(), "--eye"},
                                       {o.staging.view.target.has_value(), "--target"}, {sheet.has_value(), "--sheet"},

@@ -44,6 +44,15 @@ std::vector<DataPass> parse_data_passes(const std::string& option, const std::st
   return passes;
 }
 
+void leave_floor_out_of_sphere(StagingOptions& staging, const std::vector<std::string>& given, ViewSpread spread) {
+  if (spread == ViewSpread::kSphere && !std::count(given.begin(), given.end(), "--floor")) staging.no_floor = true;
+}
+
+ViewSpread parse_view_spread(const std::string& option, const std::string& text) {
+  if (text != "ring" && text != "sphere") throw UsageError(option + " takes ring or sphere, got \"" + text + "\"");
+  return text == "ring" ? ViewSpread::kRing : ViewSpread::kSphere;
+}
+
 std::vector<Camera> view_cameras(const Scene& staged, const StageView& view, double aspect, int count, ViewSpread spread) {
   const Mesh& mesh = staged.meshes.at(0);
   const Camera& first = staged.camera;
@@ -149,14 +158,14 @@ nlohmann::ordered_json transforms_json(const std::vector<Camera>& cameras, const
 }
 
 void draw_views(const Scene& staged, const std::vector<Camera>& cameras, const MeshPlacement& placement,
-                const RenderSettings& settings, const std::vector<DataPass>& passes, HeadlessGl gl,
+                const RenderSettings& settings, const std::vector<DataPass>& passes, std::optional<HeadlessContext>& context,
+                HeadlessGl gl,
                 const std::function<void(int, DrawnView&&)>& each) {
   const auto asked = [&](DataPass p) { return std::count(passes.begin(), passes.end(), p) > 0; };
   const bool surface = asked(DataPass::kDepth) || asked(DataPass::kNormal) || asked(DataPass::kObject);
   Scene scene = staged;
   std::optional<RayCaster> caster;
   if (surface) caster.emplace(scene);  // over the geometry, which no view moves
-  std::optional<HeadlessContext> context;
   PictureRequest request;
   request.every_mask = asked(DataPass::kShadow);
   const glm::dmat3 to_file = glm::transpose(placement.rotation);

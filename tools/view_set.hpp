@@ -53,6 +53,12 @@ struct ViewSetRequest {
   std::vector<DataPass> passes;
 };
 
+// A sphere of views looks from below too, where a floor would hide the
+// model: it has none unless --floor (in `given`, the staging options named) asks.
+void leave_floor_out_of_sphere(StagingOptions& staging, const std::vector<std::string>& given, ViewSpread spread);
+// "ring" or "sphere" as a spread; throws UsageError naming `option`.
+ViewSpread parse_view_spread(const std::string& option, const std::string& text);
+
 // The cameras of `count` views of the staged scene `staged` (whose camera is
 // view 0's), each framing the model and its shadow as staging frames it
 // (stage_for, with `view`'s elevation, zoom and lens), its light held still
@@ -81,10 +87,12 @@ struct DrawnView {
 };
 
 // Draws `scene` (a staged mesh, its model scene.meshes[0] placed by
-// `placement`) from each of `cameras` in turn, one GL context for all,
+// `placement`) from each of `cameras` in turn, in one GL context (made in
+// `context` where it holds none of the picture's size, and kept there),
 // handing each view to `each` as it is drawn.
 void draw_views(const Scene& scene, const std::vector<Camera>& cameras, const MeshPlacement& placement,
-                const RenderSettings& settings, const std::vector<DataPass>& passes, HeadlessGl gl,
+                const RenderSettings& settings, const std::vector<DataPass>& passes, std::optional<HeadlessContext>& context,
+                HeadlessGl gl,
                 const std::function<void(int index, DrawnView&& view)>& each);
 
 // The file name stem of view `index` of `count`: 000, 001, ... (as many

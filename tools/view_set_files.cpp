@@ -93,7 +93,8 @@ int write_view_set(const std::string& mesh_path, const std::string& folder, Pict
     std::vector<std::string> stems;
     for (int i = 0; i < request.count; ++i) stems.push_back(view_stem(i, request.count));
     PartialFile transforms((fs::path(folder) / "transforms.json").string(), "the cameras");
-    draw_views(scene, cameras, placement, settings, request.passes, choices.gl, [&](int i, DrawnView&& view) {
+    std::optional<HeadlessContext> context;
+    draw_views(scene, cameras, placement, settings, request.passes, context, choices.gl, [&](int i, DrawnView&& view) {
       progress->update(size_t(i) + 1, "drawing view " + std::to_string(i + 1) + " of " + std::to_string(request.count));
       ViewFiles files(folder, stems[size_t(i)], request.passes, scene.lights.size());
       files.write(view, request.passes);

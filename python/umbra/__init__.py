@@ -4,6 +4,8 @@ The command's work as Python functions, with NumPy arrays in and out
 (docs/python.md):
 
     render(mesh, size=(800, 800), **options)  -> (h, w, 4) uint8 array
+    render(mesh, size, views=12, passes=("depth", "normal", "object", "shadow"))
+                                              -> a dict of stacked arrays and the cameras
     check(mesh)                               -> the check --json report, a dict
     repair(mesh)                              -> vertices, faces, report
     load(path)                                -> a Mesh: vertices, faces, format, ...
@@ -15,6 +17,7 @@ Open3D, umbra.Mesh). Errors carry umbra's message, FILE:LINE:COL included:
 InputError for bad input, OptionError for a bad option, both ValueErrors.
 """
 
+import json
 import os
 import re
 import threading
@@ -164,7 +167,7 @@ class Renderer:
             raise TypeError(f"gl expects a name (auto, egl or osmesa), got {type(gl).__name__} {gl!r}")
         self._native = _umbra.Renderer(gl)
 
-    def render(self, mesh, size=(800, 800), *, mask=False, depth=False, **options):
+    def render(self, mesh, size=(800, 800), *, mask=False, depth=False, views=None, views_on="ring", passes=(), **options):
         """The picture umbra render draws of `mesh`, as an (h, w, 4) uint8
         RGBA array; with mask=True also light 1's shadow mask ((h, w) uint8:
         255 lit, 0 in shadow or facing away, 128 no surface), with
@@ -173,15 +176,37 @@ class Renderer:
         that order. `options` are umbra render's options as keyword
         arguments (umbra render --help lists them): --camera-azimuth 20 is
         camera_azimuth=20, --eye 1,2,3 is eye=(1, 2, 3), --flat is
-        flat=True, --background transparent is background="transparent"."""
-        return self._draw(mesh, size, mask, depth, options)
+        flat=True, --background transparent is background="transparent".
 
-    def _draw(self, mesh, size, mask, depth, options):
+        With views=N, N views of a mesh as umbra render --views N draws
+        them (views_on="sphere" spreads them over the sphere), the model
+        loaded once: a dict of arrays stacked over the views, "color"
+        (N, h, w, 4) uint8, and for each of `passes` asked: "depth" (N, h,
+        w) float32 (along the view axis, in the mesh file's units, inf off
+        the model), "normal" (N, h, w, 3) float32 (unit, in the file's axes,
+        0 off the model), "object" (N, h, w) uint8 (255 on the model),
+        "shadow" (N, h, w) uint8 (light 1's mask; with several lights
+        "shadows" (N, lights, h, w) too); and "cameras", the content of
+        the transforms.json the command writes (docs/rendering.md)."""
+        return self._draw(mesh, size, mask, depth, options, views, views_on, passes)
+
+    def _draw(self, mesh, size, mask, depth, options, views=None, views_on="ring", passes=()):
         if "gl" in options:
             raise TypeError("gl is the Renderer's: umbra.Renderer(gl=...)")
+        if views is None and (passes or views_on != "ring"):
+            raise TypeError("passes and views_on are for views=N: render(mesh, size, views=12, passes=(\"depth\",))")
+        if views is not None and (mask or depth):
+            raise TypeError("mask and depth are one picture's; with views=N ask passes=(\"shadow\", \"depth\")")
+        if isinstance(passes, str):
+            passes = (passes,)
         _about_to_draw()
         try:
-            image, mask_array, depth_array, said = self._native.render(_source(mesh), _words(size, options), mask, depth)
+            if views is not None:
+                count = _number("views", views, least=1, most=100000, whole=True)
+                arrays, cameras, said = self._native.render_views(_source(mesh), _words(size, options), count, views_on,
+                                                                  ",".join(passes))
+            else:
+                image, mask_array, depth_array, said = self._native.render(_source(mesh), _words(size, options), mask, depth)
         except OptionError as e:
             message = _python_words(str(e))
             if message.startswith("unknown option"):
@@ -189,6 +214,13 @@ class Renderer:
             raise OptionError(message) from None
         for line in said:
             _warnings.warn(line, UmbraWarning, stacklevel=3)  # the caller of render()
+        if views is not None:
+            if "shadows" in arrays:  # (N, lights, h, w): light 1's as "shadow", all of them only where there are several
+                arrays["shadow"] = arrays["shadows"][:, 0].copy()
+                if arrays["shadows"].shape[1] == 1:
+                    del arrays["shadows"]
+            arrays["cameras"] = json.loads(cameras)
+            return arrays
         extra = [a for a, wanted in ((mask_array, mask), (depth_array, depth)) if wanted]
         return (image, *extra) if extra else image
 
@@ -210,11 +242,11 @@ class Renderer:
 _renderers = threading.local()  # render()'s: one context per thread
 
 
-def render(mesh, size=(800, 800), *, mask=False, depth=False, **options):
+def render(mesh, size=(800, 800), *, mask=False, depth=False, views=None, views_on="ring", passes=(), **options):
     """Renderer.render on this thread's own Renderer, made on first use."""
     if not hasattr(_renderers, "default"):
         _renderers.default = Renderer()
-    return _renderers.default._draw(mesh, size, mask, depth, options)
+    return _renderers.default._draw(mesh, size, mask, depth, options, views, views_on, passes)
 
 
 def check(mesh, *, time_limit=60.0, picture=None):

@@ -195,3 +195,48 @@ def test_a_forked_worker_draws_or_says_why_it_cannot(tmp_path, parent, start, sa
                          capture_output=True, text=True, timeout=120)
     assert run.returncode == 0, run.stderr
     assert run.stdout.startswith(said), run.stdout
+
+
+def test_views_are_the_commands_files_as_stacked_arrays(tmp_path, models):
+    """render(views=N, passes=...) returns what umbra render --views N
+    --passes ... writes, view by view, and its cameras as transforms.json."""
+    import json
+    import subprocess
+    from PIL import Image
+    from conftest import UMBRA
+
+    path = models / "OFF" / "Wuson.off"
+    passes = ("depth", "normal", "object", "shadow")
+    got = umbra.render(path, (64, 48), views=3, passes=passes, camera_elevation=20)
+    out = tmp_path / "views"
+    subprocess.run([UMBRA, "render", str(path), "--size", "64x48", "--views", "3", "--passes", ",".join(passes),
+                    "--camera-elevation", "20", "-o", str(out)], check=True, capture_output=True)
+    assert got["color"].shape == (3, 48, 64, 4) and got["color"].dtype == np.uint8
+    assert got["depth"].shape == (3, 48, 64) and got["depth"].dtype == np.float32
+    assert got["normal"].shape == (3, 48, 64, 3) and got["normal"].dtype == np.float32
+    assert got["cameras"] == json.loads((out / "transforms.json").read_text())
+    for i in range(3):
+        stem = out / f"{i:03d}"
+        assert np.array_equal(got["color"][i], np.asarray(Image.open(f"{stem}.png").convert("RGBA")))
+        assert np.array_equal(got["object"][i], np.asarray(Image.open(f"{stem}.object.png")))
+        assert np.array_equal(got["shadow"][i], np.asarray(Image.open(f"{stem}.shadow.png")))
+        channels, depth = umbra._umbra.read_exr(f"{stem}.depth.exr")
+        assert channels == ["Z"] and np.array_equal(got["depth"][i], depth[..., 0])
+        channels, normal = umbra._umbra.read_exr(f"{stem}.normal.exr")
+        assert channels == ["B", "G", "R"] and np.array_equal(got["normal"][i], normal[..., ::-1])
+        assert np.array_equal(got["object"][i] == 255, np.isfinite(got["depth"][i]))
+        assert got["object"][i].sum() > 0
+
+
+def test_view_keywords_say_what_is_wrong_in_pythons_words():
+    cube_mesh = cube()
+    with pytest.raises(umbra.OptionError, match="passes takes depth, normal, object or shadow"):
+        umbra.render(cube_mesh, (16, 16), views=2, passes=("colour",))
+    with pytest.raises(umbra.OptionError, match="views_on takes ring or sphere"):
+        umbra.render(cube_mesh, (16, 16), views=2, views_on="cube")
+    with pytest.raises(TypeError, match="passes and views_on are for views=N"):
+        umbra.render(cube_mesh, (16, 16), passes=("depth",))
+    with pytest.raises(ValueError, match="views"):
+        umbra.render(cube_mesh, (16, 16), views=0)
+    arrays = umbra.render(cube_mesh, (16, 16), views=2)
+    assert set(arrays) == {"color", "cameras"} and arrays["color"].shape == (2, 16, 16, 4)
