@@ -139,7 +139,7 @@ class Renderer {
     std::string cameras_text;
     {
       py::gil_scoped_release released;
-      const Scene scene = staged(source, c, warnings);
+      Scene scene = staged(source, c, warnings, size_t(count));
       lights = scene.lights.size();
       const std::vector<Camera> cameras =
           view_cameras(scene, c.staging.view, double(c.settings.width) / c.settings.height, count, spread_of);
@@ -193,8 +193,9 @@ class Renderer {
   }
 
   // The scene `source` stands for, staged as `c` says, with its size and
-  // samples settled in `c` and its warnings' lines added to `warnings`.
-  static Scene staged(const MeshSource& source, PictureChoices& c, std::vector<std::string>& warnings) {
+  // samples (for `views` pictures of it) settled in `c` and its warnings'
+  // lines added to `warnings`.
+  static Scene staged(const MeshSource& source, PictureChoices& c, std::vector<std::string>& warnings, size_t views = 1) {
     const StagingOptions staging = staging_for(c.staging, c.settings);
     Scene scene;
     if (const auto* arrays = std::get_if<ArraysMesh>(&source)) {
@@ -207,7 +208,7 @@ class Renderer {
     warnings = warning_lines(scene);
     require_lights_off_casters(scene);
     require_caught_shadows_kept(scene, c.settings.method);
-    set_picture_samples(c.settings, c.antialias, c.antialias_all, c.show_volumes, scene);
+    set_picture_samples(c.settings, c.antialias, c.antialias_all, c.show_volumes, scene, views);
     require_drawable_size(c.settings.width, c.settings.height, c.settings.frame_samples());
     return scene;
   }

@@ -21,8 +21,10 @@ class RayCaster;
 class EdgeRays {
  public:
   // Starts building the hierarchy over `scene` where `settings` take samples
-  // at edges alone; else does nothing. `scene` must outlive it, unchanged.
-  EdgeRays(const Scene& scene, const RenderSettings& settings);
+  // at edges alone, unless `built` is one already built over its surfaces
+  // (many views of one scene share one); else does nothing. `scene` must
+  // outlive it, its surfaces unchanged.
+  EdgeRays(const Scene& scene, const RenderSettings& settings, const RayCaster* built = nullptr);
   ~EdgeRays();
   EdgeRays(const EdgeRays&) = delete;
   EdgeRays& operator=(const EdgeRays&) = delete;
@@ -35,7 +37,8 @@ class EdgeRays {
  private:
   const Scene& scene_;
   int samples_ = 1;  // per side, at edges; 1: none taken here
-  std::unique_ptr<RayCaster> caster_;
+  const RayCaster* caster_ = nullptr;  // built_, or the one given
+  std::unique_ptr<RayCaster> built_;
   tbb::task_group building_;
 };
 

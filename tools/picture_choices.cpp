@@ -37,7 +37,8 @@ PictureChoices parse_picture_choices(const std::vector<std::string>& words) {
 
 int default_antialias(const std::string& path) { return is_mesh_file(path) ? kStagedAntialias : 1; }
 
-AntialiasedPixels antialiased_pixels(bool all, bool show_volumes, const RenderSettings& settings, const Scene* scene) {
+AntialiasedPixels antialiased_pixels(bool all, bool show_volumes, const RenderSettings& settings, const Scene* scene,
+                                     size_t views) {
   const bool gl = settings.method != RenderMethod::kRaycast;
   size_t triangles = 0;
   if (scene) {
@@ -45,16 +46,16 @@ AntialiasedPixels antialiased_pixels(bool all, bool show_volumes, const RenderSe
     for (const Mesh& m : scene->meshes) triangles += m.triangles.size();
   }
   const bool spheres = scene && !scene->spheres.empty();
-  const bool finer_than_pixels = triangles > size_t(settings.width) * size_t(settings.height);
+  const bool finer_than_pixels = triangles > views * size_t(settings.width) * size_t(settings.height);
   return all || show_volumes || !draws_exact_shadows(settings.method) || (gl && (spheres || finer_than_pixels))
              ? AntialiasedPixels::kAll
              : AntialiasedPixels::kEdges;
 }
 
 void set_picture_samples(RenderSettings& settings, const std::optional<int>& asked, bool all, bool show_volumes,
-                         const Scene& scene) {
+                         const Scene& scene, size_t views) {
   settings.antialias = asked.value_or(scene.antialias.value_or(1));
-  settings.antialiased = antialiased_pixels(all || (!asked && scene.antialias_all), show_volumes, settings, &scene);
+  settings.antialiased = antialiased_pixels(all || (!asked && scene.antialias_all), show_volumes, settings, &scene, views);
 }
 
 void set_picture_size(RenderSettings& settings, bool size_given, const Scene& scene) {

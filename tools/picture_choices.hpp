@@ -51,9 +51,12 @@ int default_antialias(const std::string& path);
 // not the rays' (draws_exact_shadows, and a sphere's volume is its
 // N-gon's), or where the GL draws more triangles than the picture has
 // pixels (the rays' hierarchy over them would cost more than the larger
-// frame: docs/performance.md, "Antialiasing at edges"); else at edge pixels
-// alone. Without a scene, as for a small one with no sphere.
-AntialiasedPixels antialiased_pixels(bool all, bool show_volumes, const RenderSettings& settings, const Scene* scene = nullptr);
+// frame: docs/performance.md, "Antialiasing at edges"; `views` pictures of
+// one scene share one hierarchy, so the triangles are weighed against all
+// their pixels); else at edge pixels alone. Without a scene, as for a small
+// one with no sphere.
+AntialiasedPixels antialiased_pixels(bool all, bool show_volumes, const RenderSettings& settings, const Scene* scene = nullptr,
+                                     size_t views = 1);
 // The picture's size, in `settings`: --size where given, else the scene's
 // `size` statement, else the default already there.
 void set_picture_size(RenderSettings& settings, bool size_given, const Scene& scene);
@@ -62,6 +65,6 @@ void set_picture_size(RenderSettings& settings, bool size_given, const Scene& sc
 // staged mesh's says 3), else 1; at every pixel where --antialias-all `all`
 // or the statement's `all` says, else where antialiased_pixels says.
 void set_picture_samples(RenderSettings& settings, const std::optional<int>& asked, bool all, bool show_volumes,
-                         const Scene& scene);
+                         const Scene& scene, size_t views = 1);
 
 }  // namespace umbra

@@ -16,6 +16,8 @@
 
 namespace umbra {
 
+class RayCaster;
+
 struct PictureRequest {
   bool show_volumes = false;  // the volumes drawn over the picture (--show-volumes)
   bool mask = false;          // light 1's shadow mask too (ShadowRenderer::render_mask)
@@ -38,11 +40,22 @@ using BeforeDrawing = std::function<void(const RenderPlan&, const HeadlessContex
 // `scene` drawn as `settings` say (their samples as set_picture_samples
 // leaves them). For the GL's methods the context is made on `gl` on first
 // use, or again for another picture size, while the plan is made on the
-// other cores, and kept in `context` for the next picture; it is current on
+// other cores, and kept in `context` for the next picture; `caster`, where
+// given, is a ray hierarchy already built over the scene's surfaces, for
+// the edges' rays (many views of one scene share one); it is current on
 // the calling thread while this draws, and released after. Throws
 // UsageError for depth with the ray-cast method, and for a mask of a scene
 // without a light.
 DrawnPicture draw_picture(const Scene& scene, const RenderSettings& settings, const PictureRequest& request,
-                          std::optional<HeadlessContext>& context, HeadlessGl gl, const BeforeDrawing& before = {});
+                          std::optional<HeadlessContext>& context, HeadlessGl gl, const BeforeDrawing& before = {},
+                          const RayCaster* caster = nullptr);
+
+// Many views of one scene, `scene.camera` put at each of `cameras` in turn
+// (and left at the last), each handed to `each` as it is drawn: as
+// draw_picture draws each, but with the plan made once and updated per view
+// and one renderer, whose buffers hold the surfaces for all of them.
+void draw_pictures(Scene& scene, const std::vector<Camera>& cameras, const RenderSettings& settings, const PictureRequest& request,
+                   std::optional<HeadlessContext>& context, HeadlessGl gl, const RayCaster* caster,
+                   const std::function<void(size_t, DrawnPicture&&)>& each);
 
 }  // namespace umbra

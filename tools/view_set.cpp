@@ -157,21 +157,19 @@ nlohmann::ordered_json transforms_json(const std::vector<Camera>& cameras, const
   return json;
 }
 
-void draw_views(const Scene& staged, const std::vector<Camera>& cameras, const MeshPlacement& placement,
+void draw_views(Scene& scene, const std::vector<Camera>& cameras, const MeshPlacement& placement,
                 const RenderSettings& settings, const std::vector<DataPass>& passes, std::optional<HeadlessContext>& context,
-                HeadlessGl gl,
-                const std::function<void(int, DrawnView&&)>& each) {
+                HeadlessGl gl, const std::function<void(int, DrawnView&&)>& each) {
   const auto asked = [&](DataPass p) { return std::count(passes.begin(), passes.end(), p) > 0; };
   const bool surface = asked(DataPass::kDepth) || asked(DataPass::kNormal) || asked(DataPass::kObject);
-  Scene scene = staged;
   std::optional<RayCaster> caster;
-  if (surface) caster.emplace(scene);  // over the geometry, which no view moves
+  // One hierarchy over the surfaces, which no view moves, for the passes'
+  // rays and the edges' (where the GL's frame does not take every sample).
+  if (surface || settings.antialias != settings.frame_samples()) caster.emplace(scene);
   PictureRequest request;
   request.every_mask = asked(DataPass::kShadow);
   const glm::dmat3 to_file = glm::transpose(placement.rotation);
-  for (size_t i = 0; i < cameras.size(); ++i) {
-    scene.camera = cameras[i];
-    DrawnPicture drawn = draw_picture(scene, settings, request, context, gl);
+  draw_pictures(scene, cameras, settings, request, context, gl, caster ? &*caster : nullptr, [&](size_t i, DrawnPicture&& drawn) {
     DrawnView view{std::move(drawn.image), std::move(drawn.masks), {}};
     if (surface) {
       view.surface = surface_passes(scene, *caster, 0, settings.width, settings.height);
@@ -179,7 +177,7 @@ void draw_views(const Scene& staged, const std::vector<Camera>& cameras, const M
       for (glm::vec3& n : view.surface.normal) n = glm::vec3(to_file * glm::dvec3(n));
     }
     each(int(i), std::move(view));
-  }
+  });
 }
 
 std::string view_stem(int index, int count) {

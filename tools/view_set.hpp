@@ -87,10 +87,11 @@ struct DrawnView {
 };
 
 // Draws `scene` (a staged mesh, its model scene.meshes[0] placed by
-// `placement`) from each of `cameras` in turn, in one GL context (made in
+// `placement`) from each of `cameras` in turn (its camera left at the
+// last), in one GL context (made in
 // `context` where it holds none of the picture's size, and kept there),
 // handing each view to `each` as it is drawn.
-void draw_views(const Scene& scene, const std::vector<Camera>& cameras, const MeshPlacement& placement,
+void draw_views(Scene& scene, const std::vector<Camera>& cameras, const MeshPlacement& placement,
                 const RenderSettings& settings, const std::vector<DataPass>& passes, std::optional<HeadlessContext>& context,
                 HeadlessGl gl,
                 const std::function<void(int index, DrawnView&& view)>& each);

@@ -79,10 +79,10 @@ int write_view_set(const std::string& mesh_path, const std::string& folder, Pict
     RenderSettings& settings = choices.settings;
     std::optional<ProgressBar> progress(std::in_place, size_t(request.count) + 1);
     progress->update(0, "loading " + mesh_path);
-    const Scene scene = parse_scene_or_mesh_file(mesh_path, {}, nullptr, staging_for(choices.staging, settings),
+    Scene scene = parse_scene_or_mesh_file(mesh_path, {}, nullptr, staging_for(choices.staging, settings),
                                                  TextureMaps{true, "", any_texture_path});
     set_picture_size(settings, choices.size_given, scene);
-    set_picture_samples(settings, choices.antialias, choices.antialias_all, choices.show_volumes, scene);
+    set_picture_samples(settings, choices.antialias, choices.antialias_all, choices.show_volumes, scene, size_t(request.count));
     require_drawable_size(settings.width, settings.height, settings.frame_samples());
     for (const Warning& w : scene.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
     require_lights_off_casters(scene);
