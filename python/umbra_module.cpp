@@ -124,8 +124,10 @@ class Renderer {
   // (dict of stacked arrays, transforms.json's text, warnings) for `count`
   // views of `source` spread as `spread` says, with `passes` ("" for none),
   // as umbra render --views draws them.
+  // With `cameras_text` (a transforms.json's content, named `cameras_name`
+  // in messages), the views it names instead of `count`.
   py::tuple render_views(const MeshSource& source, const std::vector<std::string>& words, int count, const std::string& spread,
-                         const std::string& pass_list) {
+                         const std::string& pass_list, const std::string& cameras_text, const std::string& cameras_name) {
     if (count < 1) throw UsageError("views must be at least 1, got " + std::to_string(count));
     const ViewSpread spread_of = parse_view_spread("--views-on", spread);
     const std::vector<DataPass> passes = pass_list.empty() ? std::vector<DataPass>{} : parse_data_passes("--passes", pass_list);
@@ -136,17 +138,24 @@ class Renderer {
     std::vector<uint8_t> color, object, shadow;
     std::vector<float> depth, normal;
     size_t lights = 0;
-    std::string cameras_text;
+    std::string transforms_text;
     {
       py::gil_scoped_release released;
+      // A cameras file's size is the picture's, which staging weighs.
+      std::optional<TransformsFile> given;
+      if (!cameras_text.empty()) {
+        given = read_transforms(cameras_text, cameras_name);
+        count = int(given->count());
+        if (!c.size_given) c.settings.width = given->width, c.settings.height = given->height, c.size_given = true;
+      }
       Scene scene = staged(source, c, warnings, size_t(count));
       lights = scene.lights.size();
-      const std::vector<Camera> cameras =
-          view_cameras(scene, c.staging.view, double(c.settings.width) / c.settings.height, count, spread_of);
       const MeshPlacement placement = placement_of(scene.meshes.at(0));
+      const std::vector<Camera> cameras =
+          given ? cameras_of(*given, scene, placement) : view_cameras(scene, c.staging.view, double(c.settings.width) / c.settings.height, count, spread_of);
       std::vector<std::string> stems;
       for (int i = 0; i < count; ++i) stems.push_back(view_stem(i, count));
-      cameras_text = transforms_json(cameras, scene, placement, c.settings.width, c.settings.height, passes, stems).dump();
+      transforms_text = transforms_json(cameras, scene, placement, c.settings.width, c.settings.height, passes, stems).dump();
       const std::lock_guard<std::mutex> one_at_a_time(drawing_);
       if (closed_) throw std::runtime_error("this Renderer is closed");
       draw_views(scene, cameras, placement, c.settings, passes, context_, c.gl, [&](int, DrawnView&& view) {
@@ -167,7 +176,7 @@ class Renderer {
     if (asked(DataPass::kNormal)) arrays["normal"] = owned_array(std::move(normal), {n, h, w, 3});
     if (asked(DataPass::kObject)) arrays["object"] = owned_array(std::move(object), {n, h, w});
     if (asked(DataPass::kShadow)) arrays["shadows"] = owned_array(std::move(shadow), {n, py::ssize_t(lights), h, w});
-    return py::make_tuple(arrays, cameras_text, warnings);
+    return py::make_tuple(arrays, transforms_text, warnings);
   }
 
   void close() {
@@ -193,8 +202,8 @@ class Renderer {
   }
 
   // The scene `source` stands for, staged as `c` says, with its size and
-  // samples (for `views` pictures of it) settled in `c` and its warnings'
-  // lines added to `warnings`.
+  // samples settled in `c` and its warnings' lines added to `warnings`.
+  // `views` pictures of it are drawn, which weighs how they are antialiased.
   static Scene staged(const MeshSource& source, PictureChoices& c, std::vector<std::string>& warnings, size_t views = 1) {
     const StagingOptions staging = staging_for(c.staging, c.settings);
     Scene scene;
@@ -208,6 +217,7 @@ class Renderer {
     warnings = warning_lines(scene);
     require_lights_off_casters(scene);
     require_caught_shadows_kept(scene, c.settings.method);
+    set_picture_size(c.settings, c.size_given, scene);
     set_picture_samples(c.settings, c.antialias, c.antialias_all, c.show_volumes, scene, views);
     require_drawable_size(c.settings.width, c.settings.height, c.settings.frame_samples());
     return scene;
@@ -371,7 +381,7 @@ PYBIND11_MODULE(_umbra, m) {
       .def(py::init<std::string>(), py::arg("gl"))
       .def("render", &Renderer::render, py::arg("source"), py::arg("words"), py::arg("mask"), py::arg("depth"))
       .def("render_views", &Renderer::render_views, py::arg("source"), py::arg("words"), py::arg("count"), py::arg("spread"),
-           py::arg("passes"))
+           py::arg("passes"), py::arg("cameras_text"), py::arg("cameras_name"))
       .def("close", &Renderer::close)
       .def_property_readonly("platform", &Renderer::platform);
   m.def("check", &check, py::arg("source"), py::arg("time_limit"), py::arg("picture"));

@@ -5,9 +5,10 @@
 
 namespace umbra {
 
-EdgeRays::EdgeRays(const Scene& scene, const RenderSettings& settings, const RayCaster* built) : scene_(scene), caster_(built) {
+EdgeRays::EdgeRays(const Scene& scene, const RenderSettings& settings, const RayCaster* built) : scene_(scene) {
   if (settings.antialias == settings.frame_samples()) return;  // the GL's frame takes them all
   samples_ = settings.antialias;
+  caster_ = built;
   if (!caster_) building_.run([this] { caster_ = (built_ = std::make_unique<RayCaster>(scene_)).get(); });
 }
 

@@ -37,6 +37,7 @@ const std::string kRenderUsage = usage_text(
     R"(usage: umbra render MESH -o OUT.png [options]
        umbra render SCENE -o OUT.png [options]
        umbra render MESH --views N [--passes LIST] -o OUTDIR [options]
+       umbra render MESH --cameras transforms.json [--passes LIST] -o OUTDIR
        umbra render PATH... -o OUTDIR [--jobs N] [--shard K/N] [options]
        umbra render - -o OUT.png [options]   (a mesh on standard input)
 
@@ -140,7 +141,12 @@ options:
   --views-on SPREAD     ring (default) or sphere: views evenly over the whole
                         sphere of directions (a Fibonacci lattice), without a
                         floor unless --floor is given
-  --passes LIST         with --views, each view's data too, comma-separated:
+  --cameras FILE        instead of --views, draw the views a transforms.json
+                        names (its frames' umbra_camera, else their
+                        transform_matrix and the intrinsics: square pixels,
+                        centred), at its w x h unless --size is given; the
+                        file --views wrote redraws the same pictures
+  --passes LIST         with --views or --cameras, each view's data too, comma-separated:
                         depth (NNN.depth.exr, float, along the view axis in
                         the file's units, +inf off the model), normal
                         (NNN.normal.exr, float RGB, the file's axes), object
@@ -272,6 +278,10 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     views.spread = parse_view_spread(n, t);
     view_options.push_back(n);
   });
+  options.value("--cameras", [&](const std::string& n, const std::string& t) {
+    views.cameras = t;
+    view_options.push_back(n);
+  });
   options.value("--passes", [&](const std::string& n, const std::string& t) {
     views.passes = parse_data_passes(n, t);
     view_options.push_back(n);
@@ -301,6 +311,8 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     if (is_picture_name(o.output))
       throw UsageError("-o " + o.output + " names a picture, but " + named + " writes each view's files in a folder: name a folder");
     leave_floor_out_of_sphere(o.staging, o.staging_given, views.spread);
+    if (views.cameras && std::count_if(view_options.begin(), view_options.end(), [](const std::string& v) { return v == "--views" || v == "--views-on"; }))
+      throw UsageError("--cameras draws the views its file names; --views and --views-on place views of their own: give one or the other");
     for (const auto& [given, name] : {std::pair{o.mask.has_value(), "--mask"}, {o.save_scene.has_value(), "--save-scene"},
                                       {o.explain, "--explain"}, {o.staging.view.eye.has_value(), "--eye"},
                                       {o.staging.view.target.has_value(), "--target"}, {sheet.has_value(), "--sheet"},

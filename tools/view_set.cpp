@@ -8,6 +8,7 @@
 #include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "mesh/input_error.hpp"
 #include "reference/ray_caster.hpp"
 #include "tools/command_line.hpp"
 #include "tools/picture_drawing.hpp"
@@ -155,6 +156,102 @@ nlohmann::ordered_json transforms_json(const std::vector<Camera>& cameras, const
   }
   json["frames"] = frames;
   return json;
+}
+
+namespace {
+
+// A number of `json` at `key`, or an InputError naming the file and where.
+double number_at(const nlohmann::json& json, const char* key, const std::string& path, const std::string& where) {
+  const auto found = json.find(key);
+  if (found == json.end() || !found->is_number() || !std::isfinite(found->get<double>()))
+    throw InputError({path}, where + " needs \"" + key + "\", a finite number", InputProblem::kMalformed);
+  return found->get<double>();
+}
+
+glm::dvec3 point_at(const nlohmann::json& json, const char* key, const std::string& path, const std::string& where) {
+  const auto found = json.find(key);
+  if (found == json.end() || !found->is_array() || found->size() != 3 ||
+      !std::all_of(found->begin(), found->end(), [](const nlohmann::json& v) { return v.is_number() && std::isfinite(v.get<double>()); }))
+    throw InputError({path}, where + "'s \"" + key + "\" must be 3 finite numbers", InputProblem::kMalformed);
+  return {(*found)[0].get<double>(), (*found)[1].get<double>(), (*found)[2].get<double>()};
+}
+
+}  // namespace
+
+TransformsFile read_transforms(const std::string& text, const std::string& path) {
+  nlohmann::json json;
+  try {
+    json = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError({path}, std::string("not JSON: ") + e.what(), InputProblem::kMalformed);
+  }
+  if (!json.is_object()) throw InputError({path}, "a transforms.json is an object, with \"frames\"", InputProblem::kMalformed);
+  TransformsFile file;
+  file.path = path;
+  const double w = number_at(json, "w", path, "the file"), h = number_at(json, "h", path, "the file");
+  if (w != std::floor(w) || h != std::floor(h) || w < 1 || h < 1 || std::max(w, h) > kLargestPictureSide)
+    throw InputError({path}, "w and h must be whole numbers of pixels from 1 to " + std::to_string(kLargestPictureSide),
+                     InputProblem::kMalformed);
+  file.width = int(w), file.height = int(h);
+  const double fl_x = number_at(json, "fl_x", path, "the file"), fl_y = number_at(json, "fl_y", path, "the file");
+  const double cx = number_at(json, "cx", path, "the file"), cy = number_at(json, "cy", path, "the file");
+  // A pinhole with square pixels, centred: what umbra's camera is.
+  if (!(fl_y > 0.0) || std::abs(fl_x - fl_y) > 1e-9 * fl_y)
+    throw InputError({path}, "fl_x and fl_y must be one focal length above 0 (umbra draws square pixels)", InputProblem::kMalformed);
+  if (std::abs(cx - w / 2) > 1e-9 * w || std::abs(cy - h / 2) > 1e-9 * h)
+    throw InputError({path}, "cx and cy must be the picture's centre, w / 2 and h / 2 (umbra's camera looks through it)",
+                     InputProblem::kMalformed);
+  file.fovy_deg = glm::degrees(2.0 * std::atan(h / (2.0 * fl_y)));
+  const auto frames = json.find("frames");
+  if (frames == json.end() || !frames->is_array() || frames->empty())
+    throw InputError({path}, "needs \"frames\", a list of at least one camera", InputProblem::kMalformed);
+  file.frames = std::move(*frames);
+  return file;
+}
+
+std::vector<Camera> cameras_of(const TransformsFile& file, const Scene& staged, const MeshPlacement& placement) {
+  const std::string& path = file.path;
+  const nlohmann::json* const frames = &file.frames;
+  std::vector<Camera> cameras;
+  const glm::dvec3 centre = 0.5 * (staged.meshes.at(0).bounds_min + staged.meshes.at(0).bounds_max);
+  for (size_t i = 0; i < frames->size(); ++i) {
+    const nlohmann::json& frame = (*frames)[i];
+    const std::string where = "frame " + std::to_string(i);
+    if (!frame.is_object()) throw InputError({path}, where + " is not an object", InputProblem::kMalformed);
+    Camera camera;
+    if (const auto placed = frame.find("umbra_camera"); placed != frame.end() && placed->is_object()) {
+      camera = Camera{point_at(*placed, "eye", path, where), point_at(*placed, "target", path, where),
+                      point_at(*placed, "up", path, where), number_at(*placed, "fovy", path, where)};
+    } else {
+      const auto m = frame.find("transform_matrix");
+      if (m == frame.end() || !m->is_array() || m->size() < 3)
+        throw InputError({path}, where + " needs \"transform_matrix\", 4 rows of 4 numbers", InputProblem::kMalformed);
+      glm::dmat4 pose(1.0);
+      for (int r = 0; r < 3; ++r) {
+        const nlohmann::json& row = (*m)[size_t(r)];
+        if (!row.is_array() || row.size() != 4 ||
+            !std::all_of(row.begin(), row.end(), [](const nlohmann::json& v) { return v.is_number() && std::isfinite(v.get<double>()); }))
+          throw InputError({path}, where + "'s transform_matrix needs 4 rows of 4 finite numbers", InputProblem::kMalformed);
+        for (int c = 0; c < 4; ++c) pose[c][r] = row[size_t(c)].get<double>();
+      }
+      // The file's frame into the staged scene's: the eye placed, the axes turned.
+      const glm::dvec3 eye = placement(glm::dvec3(pose[3]));
+      const glm::dvec3 back = placement.rotation * glm::dvec3(pose[2]), up = placement.rotation * glm::dvec3(pose[1]);
+      if (!(glm::length(back) > 0.0) || !(glm::length(glm::cross(back, up)) > 0.0))
+        throw InputError({path}, where + "'s transform_matrix has no camera axes (its z and y columns are 0 or parallel)",
+                         InputProblem::kMalformed);
+      const glm::dvec3 forward = -glm::normalize(back);
+      // Aimed along its axis, as far as the model's centre lies along it (or as far as the centre is).
+      const double along = glm::dot(centre - eye, forward);
+      camera = Camera{eye, eye + forward * (along > 0.0 ? along : glm::length(centre - eye) + 1.0), up, file.fovy_deg};
+    }
+    if (camera.eye == camera.target || !(camera.fovy_deg > 0.0 && camera.fovy_deg < 180.0) ||
+        !(glm::length(glm::cross(camera.target - camera.eye, camera.up)) > 0.0))
+      throw InputError({path}, where + "'s camera looks nowhere: its eye is its target, its up is along its view or its fovy is not "
+                               "between 0 and 180 degrees", InputProblem::kMalformed);
+    cameras.push_back(camera);
+  }
+  return cameras;
 }
 
 void draw_views(Scene& scene, const std::vector<Camera>& cameras, const MeshPlacement& placement,

@@ -51,7 +51,29 @@ struct ViewSetRequest {
   int count = 1;
   ViewSpread spread = ViewSpread::kRing;
   std::vector<DataPass> passes;
+  std::optional<std::string> cameras;  // --cameras FILE: the views a transforms.json names, not count's
 };
+
+// The views a transforms.json names (transforms_json's own, or a dataset
+// tool's), for the staged scene `staged` whose model `placement` placed:
+// each frame's umbra_camera where it has one (exactly the camera that drew
+// it), else its transform_matrix (camera to the mesh file's world, OpenGL's
+// camera axes) and the intrinsics, which must be umbra's pinhole: square
+// pixels (fl_x = fl_y) and the principal point at the picture's centre.
+// Read in two steps: the file's picture size and lens first, since the
+// model's staging depends on the picture's size; then its cameras, for the
+// model staged.
+struct TransformsFile {
+  std::string path;  // for messages
+  int width = 0, height = 0;  // its w and h
+  double fovy_deg = 0.0;
+  nlohmann::json frames;  // at least one
+  size_t count() const { return frames.size(); }
+};
+// `text` is the file's content, `path` its name for messages. Throws
+// InputError naming the file and what in it is wrong.
+TransformsFile read_transforms(const std::string& text, const std::string& path);
+std::vector<Camera> cameras_of(const TransformsFile& file, const Scene& staged, const MeshPlacement& placement);
 
 // A sphere of views looks from below too, where a floor would hide the
 // model: it has none unless --floor (in `given`, the staging options named) asks.

@@ -8,6 +8,7 @@
 #include "image/exr_file.hpp"
 #include "image/partial_file.hpp"
 #include "image/picture_file.hpp"
+#include "mesh/io/mapped_file.hpp"
 #include "render/frame_target.hpp"
 #include "scene/mesh_placement.hpp"
 #include "scene/scene_checks.hpp"
@@ -77,25 +78,35 @@ int write_view_set(const std::string& mesh_path, const std::string& folder, Pict
     fs::create_directories(folder, ec);
     if (ec) throw std::runtime_error(folder + ": cannot make the folder: " + ec.message());
     RenderSettings& settings = choices.settings;
-    std::optional<ProgressBar> progress(std::in_place, size_t(request.count) + 1);
+    std::optional<ProgressBar> progress(std::in_place, 1);
     progress->update(0, "loading " + mesh_path);
+    // The cameras file is read first: a bad one stops the run before the
+    // model's load, and its size is the picture's, which staging weighs.
+    std::optional<TransformsFile> given;
+    if (request.cameras) {
+      given = read_transforms(std::string(MappedFile(*request.cameras).bytes()), *request.cameras);
+      if (!choices.size_given) settings.width = given->width, settings.height = given->height, choices.size_given = true;
+    }
     Scene scene = parse_scene_or_mesh_file(mesh_path, {}, nullptr, staging_for(choices.staging, settings),
-                                                 TextureMaps{true, "", any_texture_path});
+                                           TextureMaps{true, "", any_texture_path});
+    const MeshPlacement placement = placement_of(scene.meshes.at(0));
     set_picture_size(settings, choices.size_given, scene);
-    set_picture_samples(settings, choices.antialias, choices.antialias_all, choices.show_volumes, scene, size_t(request.count));
+    const int count = given ? int(given->count()) : request.count;
+    set_picture_samples(settings, choices.antialias, choices.antialias_all, choices.show_volumes, scene, size_t(count));
     require_drawable_size(settings.width, settings.height, settings.frame_samples());
     for (const Warning& w : scene.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
     require_lights_off_casters(scene);
     require_caught_shadows_kept(scene, settings.method);
     const std::vector<Camera> cameras =
-        view_cameras(scene, choices.staging.view, double(settings.width) / settings.height, request.count, request.spread);
-    const MeshPlacement placement = placement_of(scene.meshes.at(0));
+        given ? cameras_of(*given, scene, placement)
+              : view_cameras(scene, choices.staging.view, double(settings.width) / settings.height, count, request.spread);
     std::vector<std::string> stems;
-    for (int i = 0; i < request.count; ++i) stems.push_back(view_stem(i, request.count));
+    for (int i = 0; i < count; ++i) stems.push_back(view_stem(i, count));
+    progress.emplace(size_t(count));
     PartialFile transforms((fs::path(folder) / "transforms.json").string(), "the cameras");
     std::optional<HeadlessContext> context;
     draw_views(scene, cameras, placement, settings, request.passes, context, choices.gl, [&](int i, DrawnView&& view) {
-      progress->update(size_t(i) + 1, "drawing view " + std::to_string(i + 1) + " of " + std::to_string(request.count));
+      progress->update(size_t(i), "drawing view " + std::to_string(i + 1) + " of " + std::to_string(count));
       ViewFiles files(folder, stems[size_t(i)], request.passes, scene.lights.size());
       files.write(view, request.passes);
       files.commit();
@@ -107,7 +118,7 @@ int write_view_set(const std::string& mesh_path, const std::string& folder, Pict
     }
     transforms.commit();
     progress.reset();
-    std::cout << "wrote " << request.count << (request.count == 1 ? " view" : " views") << " of " << mesh_path << " ("
+    std::cout << "wrote " << count << (count == 1 ? " view" : " views") << " of " << mesh_path << " ("
               << settings.width << "x" << settings.height << ") and their cameras to " << (fs::path(folder) / "transforms.json").string()
               << "\n";
     return 0;

@@ -3,8 +3,9 @@
 The command's work as Python functions, with NumPy arrays in and out
 (docs/python.md):
 
-    render(mesh, size=(800, 800), **options)  -> (h, w, 4) uint8 array
+    render(mesh, size=None, **options)        -> (h, w, 4) uint8 array (800 x 800 unless a scene says)
     render(mesh, size, views=12, passes=("depth", "normal", "object", "shadow"))
+    render(mesh, cameras="transforms.json", passes=(...))
                                               -> a dict of stacked arrays and the cameras
     check(mesh)                               -> the check --json report, a dict
     repair(mesh)                              -> vertices, faces, report
@@ -137,8 +138,10 @@ def _words(size, options):
     """render()'s keyword arguments as umbra render's options:
     camera_azimuth=20 is --camera-azimuth 20, eye=(1, 2, 3) is --eye 1,2,3,
     flat=True is --flat."""
-    width, height = _size("size", size)
-    words = ["--size", f"{width}x{height}"]
+    words = []
+    if size is not None:
+        width, height = _size("size", size)
+        words = ["--size", f"{width}x{height}"]
     for key, value in options.items():
         if value is None or value is False:
             continue
@@ -167,7 +170,8 @@ class Renderer:
             raise TypeError(f"gl expects a name (auto, egl or osmesa), got {type(gl).__name__} {gl!r}")
         self._native = _umbra.Renderer(gl)
 
-    def render(self, mesh, size=(800, 800), *, mask=False, depth=False, views=None, views_on="ring", passes=(), **options):
+    def render(self, mesh, size=None, *, mask=False, depth=False, views=None, views_on="ring", cameras=None, passes=(),
+               **options):
         """The picture umbra render draws of `mesh`, as an (h, w, 4) uint8
         RGBA array; with mask=True also light 1's shadow mask ((h, w) uint8:
         255 lit, 0 in shadow or facing away, 128 no surface), with
@@ -187,24 +191,42 @@ class Renderer:
         0 off the model), "object" (N, h, w) uint8 (255 on the model),
         "shadow" (N, h, w) uint8 (light 1's mask; with several lights
         "shadows" (N, lights, h, w) too); and "cameras", the content of
-        the transforms.json the command writes (docs/rendering.md)."""
-        return self._draw(mesh, size, mask, depth, options, views, views_on, passes)
+        the transforms.json the command writes (docs/rendering.md).
 
-    def _draw(self, mesh, size, mask, depth, options, views=None, views_on="ring", passes=()):
+        With cameras= a transforms.json's path or its content as a dict
+        (the "cameras" a views render returned, or a dataset tool's), the
+        views it names, as umbra render --cameras draws them, at its w x h
+        unless size is given.
+
+        size: (width, height); unless given, a scene's size statement, or
+        800 x 800."""
+        return self._draw(mesh, size, mask, depth, options, views, views_on, cameras, passes)
+
+    def _draw(self, mesh, size, mask, depth, options, views=None, views_on="ring", cameras=None, passes=()):
         if "gl" in options:
             raise TypeError("gl is the Renderer's: umbra.Renderer(gl=...)")
-        if views is None and (passes or views_on != "ring"):
+        many = views is not None or cameras is not None
+        if views is not None and cameras is not None:
+            raise TypeError("views=N places views of its own, cameras= draws those it names: give one or the other")
+        if not many and (passes or views_on != "ring"):
             raise TypeError("passes and views_on are for views=N: render(mesh, size, views=12, passes=(\"depth\",))")
-        if views is not None and (mask or depth):
+        if many and (mask or depth):
             raise TypeError("mask and depth are one picture's; with views=N ask passes=(\"shadow\", \"depth\")")
         if isinstance(passes, str):
             passes = (passes,)
+        cameras_text, cameras_name = "", ""
+        if isinstance(cameras, dict):
+            cameras_text, cameras_name = json.dumps(cameras), "cameras"
+        elif cameras is not None:
+            cameras_name = _path(cameras)
+            with open(cameras_name, encoding="utf-8") as file:
+                cameras_text = file.read()
         _about_to_draw()
         try:
-            if views is not None:
-                count = _number("views", views, least=1, most=100000, whole=True)
+            if many:
+                count = 1 if views is None else _number("views", views, least=1, most=100000, whole=True)
                 arrays, cameras, said = self._native.render_views(_source(mesh), _words(size, options), count, views_on,
-                                                                  ",".join(passes))
+                                                                  ",".join(passes), cameras_text, cameras_name)
             else:
                 image, mask_array, depth_array, said = self._native.render(_source(mesh), _words(size, options), mask, depth)
         except OptionError as e:
@@ -214,7 +236,7 @@ class Renderer:
             raise OptionError(message) from None
         for line in said:
             _warnings.warn(line, UmbraWarning, stacklevel=3)  # the caller of render()
-        if views is not None:
+        if many:
             if "shadows" in arrays:  # (N, lights, h, w): light 1's as "shadow", all of them only where there are several
                 arrays["shadow"] = arrays["shadows"][:, 0].copy()
                 if arrays["shadows"].shape[1] == 1:
@@ -242,11 +264,11 @@ class Renderer:
 _renderers = threading.local()  # render()'s: one context per thread
 
 
-def render(mesh, size=(800, 800), *, mask=False, depth=False, views=None, views_on="ring", passes=(), **options):
+def render(mesh, size=None, *, mask=False, depth=False, views=None, views_on="ring", cameras=None, passes=(), **options):
     """Renderer.render on this thread's own Renderer, made on first use."""
     if not hasattr(_renderers, "default"):
         _renderers.default = Renderer()
-    return _renderers.default._draw(mesh, size, mask, depth, options, views, views_on, passes)
+    return _renderers.default._draw(mesh, size, mask, depth, options, views, views_on, cameras, passes)
 
 
 def check(mesh, *, time_limit=60.0, picture=None):

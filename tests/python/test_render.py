@@ -240,3 +240,24 @@ def test_view_keywords_say_what_is_wrong_in_pythons_words():
         umbra.render(cube_mesh, (16, 16), views=0)
     arrays = umbra.render(cube_mesh, (16, 16), views=2)
     assert set(arrays) == {"color", "cameras"} and arrays["color"].shape == (2, 16, 16, 4)
+
+
+def test_cameras_redraw_the_views_they_came_from(tmp_path, models):
+    """cameras= (the returned "cameras", or a transforms.json's path) draws
+    the same views again, at the file's size unless size is given."""
+    import json
+
+    path = models / "OFF" / "Wuson.off"
+    first = umbra.render(path, (40, 30), views=2, passes=("depth", "shadow"))
+    again = umbra.render(path, cameras=first["cameras"], passes=("depth", "shadow"))
+    for key in ("color", "depth", "shadow"):
+        assert np.array_equal(first[key], again[key]), key
+    (tmp_path / "transforms.json").write_text(json.dumps(first["cameras"]))
+    from_file = umbra.render(path, cameras=tmp_path / "transforms.json")
+    assert np.array_equal(first["color"], from_file["color"])
+    larger = umbra.render(path, (80, 60), cameras=first["cameras"])
+    assert larger["color"].shape == (2, 60, 80, 4)
+    with pytest.raises(TypeError, match="give one or the other"):
+        umbra.render(path, views=2, cameras=first["cameras"])
+    with pytest.raises(umbra.InputError, match="cameras: fl_x and fl_y must be one focal length"):
+        umbra.render(path, cameras={**first["cameras"], "fl_x": 1.0})

@@ -198,9 +198,79 @@ TEST_F(ViewSet, TheFloorTheBackgroundAndThePassesMoveNoCamera) {
     const json other = transforms(path("other"));
     for (size_t i = 0; i < 3; ++i) EXPECT_EQ(other["frames"][i]["transform_matrix"], plain["frames"][i]["transform_matrix"]);
   }
+  // The passes change no picture either (the rays they share once took the
+  // edges' samples away from a picture the GL's larger frame had drawn).
+  const std::string wuson = "/usr/share/assimp/models/OFF/Wuson.off";
+  if (fs::exists(wuson)) {
+    ASSERT_EQ(run("render " + wuson + " --views 2 --size 40x30 -o " + path("w1")).status, 0);
+    ASSERT_EQ(run("render " + wuson + " --views 2 --size 40x30 --passes depth,shadow -o " + path("w2")).status, 0);
+    for (const std::string file : {"000.png", "001.png"}) EXPECT_TRUE(read(path("w1/" + file)) == read(path("w2/" + file))) << file;
+  }
   // And view 0 is the single picture umbra render draws of the file.
   ASSERT_EQ(run("render " + torus + " --size 48x48 -o " + path("single.png")).status, 0);
-  EXPECT_EQ(read(path("single.png")), read(path("plain/000.png")));
+  EXPECT_TRUE(read(path("single.png")) == read(path("plain/000.png")));
+}
+
+// --cameras redraws a run's own views byte for byte from its
+// transforms.json; a dataset tool's file, with the poses alone, draws the
+// same views but for the rounding of turning its poses back into cameras.
+TEST_F(ViewSet, CamerasFromATransformsFileRedrawTheViews) {
+  const std::string torus = std::string(UMBRA_SOURCE_DIR) + "/scenes/meshes/torus.obj";
+  const std::string passes = " --passes depth,normal,object,shadow";
+  ASSERT_EQ(run("render " + torus + " --views 3 --views-on sphere --camera-elevation 50 --size 60x40" + passes + " -o " + path("a")).status, 0);
+  // The sphere's views had no floor; the redraw is asked for none.
+  const CommandResult again = run("render " + torus + " --cameras " + path("a/transforms.json") + " --floor none" + passes + " -o " + path("b"));
+  ASSERT_EQ(again.status, 0) << again.err;
+  for (const std::string file : {"000.png", "001.png", "002.png", "001.depth.exr", "002.normal.exr", "002.object.png", "001.shadow.png",
+                                 "transforms.json"})
+    EXPECT_TRUE(read(path("a/" + file)) == read(path("b/" + file))) << file;
+  // Without umbra's own cameras: the poses and the intrinsics alone.
+  json poses = transforms(path("a"));
+  for (json& frame : poses["frames"]) frame.erase("umbra_camera");
+  std::ofstream(path("poses.json")) << poses.dump();
+  ASSERT_EQ(run("render " + torus + " --cameras " + path("poses.json") + " --floor none -o " + path("c")).status, 0);
+  for (const std::string file : {"000.png", "001.png", "002.png"}) {
+    const Image a = read_png(path("a/" + file)), c = read_png(path("c/" + file));
+    ASSERT_EQ(c.width, 60);
+    ASSERT_EQ(c.height, 40);
+    size_t same = 0;
+    for (size_t k = 0; k < a.pixels.size(); ++k) same += a.pixels[k] == c.pixels[k];
+    EXPECT_GT(same, a.pixels.size() * 99 / 100) << file;
+  }
+}
+
+TEST_F(ViewSet, ACamerasFileUmbraCannotDrawIsRefusedSayingWhy) {
+  const std::string torus = std::string(UMBRA_SOURCE_DIR) + "/scenes/meshes/torus.obj";
+  const std::string frame = R"({"transform_matrix": [[1,0,0,0],[0,1,0,0],[0,0,1,5],[0,0,0,1]]})";
+  const std::string lens = R"("w": 40, "h": 30, "fl_x": 50, "fl_y": 50, "cx": 20, "cy": 15)";
+  const std::pair<std::string, std::string> cases[] = {
+      {"{\"w\": 40", "not JSON: "},
+      {"[1, 2]", "a transforms.json is an object, with \"frames\""},
+      {R"({"h": 30, "fl_x": 50, "fl_y": 50, "cx": 20, "cy": 15, "frames": [)" + frame + "]}", "the file needs \"w\", a finite number"},
+      {R"({"w": 40, "h": 30, "fl_x": 50, "fl_y": 60, "cx": 20, "cy": 15, "frames": [)" + frame + "]}",
+       "fl_x and fl_y must be one focal length above 0 (umbra draws square pixels)"},
+      {R"({"w": 40, "h": 30, "fl_x": 50, "fl_y": 50, "cx": 21, "cy": 15, "frames": [)" + frame + "]}",
+       "cx and cy must be the picture's centre, w / 2 and h / 2"},
+      {"{" + lens + R"(, "frames": []})", "needs \"frames\", a list of at least one camera"},
+      {"{" + lens + R"(, "frames": [{"transform_matrix": [[1,0,0,0],[0,1,0,0],[0,0,1]]}]})",
+       "frame 0's transform_matrix needs 4 rows of 4 finite numbers"},
+      {"{" + lens + R"(, "frames": [{"transform_matrix": [[1,0,0,0],[0,0,0,0],[0,0,0,5],[0,0,0,1]]}]})",
+       "frame 0's transform_matrix has no camera axes"},
+  };
+  for (const auto& [text, message] : cases) {
+    std::ofstream(path("cameras.json")) << text;
+    const CommandResult r = run("render " + torus + " --cameras " + path("cameras.json") + " -o " + path("d"));
+    EXPECT_EQ(r.status, 1) << text;
+    EXPECT_NE(r.err.find(path("cameras.json") + ": " + message), std::string::npos) << text << "\n" << r.err;
+    EXPECT_FALSE(fs::exists(path("d/000.png")));
+  }
+  const CommandResult missing = run("render " + torus + " --cameras " + path("none.json") + " -o " + path("d"));
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_NE(missing.err.find(path("none.json")), std::string::npos) << missing.err;
+  const CommandResult both = run("render " + torus + " --cameras " + path("cameras.json") + " --views 3 -o " + path("d"));
+  EXPECT_EQ(both.status, 2);
+  EXPECT_NE(both.err.find("--cameras draws the views its file names; --views and --views-on place views of their own"),
+            std::string::npos) << both.err;
 }
 
 TEST_F(ViewSet, OptionsThatCannotMeanAnythingForViewsAreRefused) {
