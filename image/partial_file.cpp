@@ -108,6 +108,19 @@ void remove_abandoned_temporaries(const std::string& path, PartialFile::Ending e
   }
 }
 
+void remove_abandoned_temporaries_in(const std::string& folder) {
+  std::error_code ec;
+  const std::string end = ".partial";
+  for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+    // NAME.XXXXXX.partial, as temporary_name makes them.
+    const std::string name = entry.path().filename().string();
+    const size_t size = name.size();
+    if (size > end.size() + 7 && name.compare(size - end.size(), end.size(), end) == 0 && name[size - end.size() - 7] == '.' &&
+        entry.is_regular_file(ec))
+      std::filesystem::remove(entry.path(), ec);
+  }
+}
+
 RemovedOnSignals::RemovedOnSignals(const std::string& path, Kind kind) : slot_(list(path, kind == Kind::kFolder)) {}
 
 void RemovedOnSignals::release() {

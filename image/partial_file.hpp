@@ -61,6 +61,9 @@ class PartialFile {
 // died while it wrote `path` does. Another writer of the same name at the
 // same moment would lose its temporary file too: callers own the name.
 void remove_abandoned_temporaries(const std::string& path, PartialFile::Ending ending = PartialFile::Ending::kPartial);
+// The same for every file a killed writer was writing in `folder`, which
+// the caller owns outright (one model's views): any temporary file there.
+void remove_abandoned_temporaries_in(const std::string& folder);
 
 // Makes SIGINT and SIGTERM remove every PartialFile's temporary file before
 // the process ends as the signal would end it. Called once, by main.

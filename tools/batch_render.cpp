@@ -27,6 +27,7 @@
 #include "tools/picture_drawing.hpp"
 #include "tools/picture_names.hpp"
 #include "tools/progress_bar.hpp"
+#include "tools/view_set_files.hpp"
 
 namespace umbra {
 namespace {
@@ -84,6 +85,17 @@ std::string json_line(const Record& r) {
 void render_one(const std::string& path, const std::string& root, const std::string& out, const BatchRenderOptions& o,
                 std::optional<HeadlessContext>& context, Record& record) {
   try {
+    if (o.views) {
+      inject_fault(path);
+      PictureChoices choices;
+      choices.settings = o.settings, choices.staging = o.staging, choices.gl = o.gl, choices.antialias = o.antialias;
+      choices.antialias_all = o.antialias_all, choices.show_volumes = o.show_volumes, choices.size_given = o.size_given;
+      const WrittenViews written = write_view_files(path, std::filesystem::path(out).parent_path().string(), choices, *o.views,
+                                                    TextureMaps{true, root, o.any_texture_path}, context, {}, record.messages);
+      record.status = kDrawn;
+      record.triangles = written.triangles;
+      return;
+    }
     // The picture's temporary file first, as a single render makes its
     // outputs: a folder that cannot be written fails before the drawing.
     std::filesystem::create_directories(std::filesystem::path(out).parent_path());
@@ -200,7 +212,7 @@ int run_batch_render(const BatchRenderOptions& o) {
   const size_t count = files.size();
   std::vector<Record> records(count);
   for (size_t i = 0; i < count; ++i)
-    records[i].path = files[i], records[i].picture = (std::filesystem::path(o.out_dir) / (names[i] + ".png")).string();
+    records[i].path = files[i], records[i].picture = (std::filesystem::path(o.out_dir) / (o.views ? names[i] + "/transforms.json" : names[i] + ".png")).string();
   const auto start = std::chrono::steady_clock::now();
 
   // Records are printed in file order, each as soon as it and those before
@@ -241,7 +253,11 @@ int run_batch_render(const BatchRenderOptions& o) {
           read_job_result(result, o.timeout_s, records[to_draw[k]]);
           // A worker killed while it wrote (a crash, or SIGKILL past a timeout's
           // grace: no handler ran) leaves its temporary file.
-          if (result.ending != IsolatedResult::Ending::kFinished) remove_abandoned_temporaries(records[to_draw[k]].picture);
+          if (result.ending != IsolatedResult::Ending::kFinished) {
+            const std::string& out = records[to_draw[k]].picture;
+            if (o.views) remove_abandoned_temporaries_in(std::filesystem::path(out).parent_path().string());
+            else remove_abandoned_temporaries(out);
+          }
           end(to_draw[k]);
         });
   } catch (const std::exception& e) {  // no process or pipe to be had: what was drawn stays
@@ -308,7 +324,8 @@ int run_batch_render(const BatchRenderOptions& o) {
             << (o.shard ? " (shard " + std::to_string(o.shard->index) + "/" + std::to_string(o.shard->count) + " of " +
                               std::to_string(found.meshes.size()) + ")"
                         : "")
-            << " in " << elapsed << ": " << drawn << (drawn == 1 ? " picture" : " pictures") << " in " << o.out_dir
+            << " in " << elapsed << ": " << drawn
+            << (o.views ? (drawn == 1 ? " file's views" : " files' views") : drawn == 1 ? " picture" : " pictures") << " in " << o.out_dir
             << (skipped ? ", " + std::to_string(skipped) + " up to date (--skip-existing)" : "") << ", " << failed << " failed"
             << (timed_out ? " (" + std::to_string(timed_out) + " timed out)" : "") << "\n";
   if (stopped_by) {

@@ -11,6 +11,7 @@
 #include "render/render_plan.hpp"
 #include "scene/staged_scene.hpp"
 #include "tools/mesh_paths.hpp"
+#include "tools/view_set.hpp"
 
 namespace umbra {
 
@@ -31,6 +32,10 @@ struct BatchRenderOptions {
   double timeout_s = 0.0;            // a file's render stopped after this long (0: no limit)
   bool skip_existing = false;        // a picture newer than its file is not drawn again
   bool json = false;                 // a line of JSON on stdout per input file
+  // --views or --cameras: each mesh file's views and their data into
+  // OUT_DIR/NAME/ (view_set_files.hpp), in place of one picture; its
+  // transforms.json, written last, stands for the file's output.
+  std::optional<ViewSetRequest> views;
 };
 
 // Writes OUT_DIR/NAME.png for each file, NAME its path relative to the

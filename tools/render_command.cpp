@@ -36,7 +36,7 @@ namespace umbra {
 const std::string kRenderUsage = usage_text(
     R"(usage: umbra render MESH -o OUT.png [options]
        umbra render SCENE -o OUT.png [options]
-       umbra render MESH --views N [--passes LIST] -o OUTDIR [options]
+       umbra render MESH|PATH... --views N [--passes LIST] -o OUTDIR [options]
        umbra render MESH --cameras transforms.json [--passes LIST] -o OUTDIR
        umbra render PATH... -o OUTDIR [--jobs N] [--shard K/N] [options]
        umbra render - -o OUT.png [options]   (a mesh on standard input)
@@ -137,7 +137,10 @@ options:
                         on, evenly spaced; the light holds still. Writes
                         NNN.png per view and transforms.json: each view's
                         camera pose and intrinsics in the mesh file's own
-                        coordinates and units (docs/rendering.md, "Many views")
+                        coordinates and units (docs/rendering.md, "Many views");
+                        with several files or a folder, each model's views
+                        into OUTDIR/its picture's name/, with --jobs,
+                        --timeout, --skip-existing, --json and --shard
   --views-on SPREAD     ring (default) or sphere: views evenly over the whole
                         sphere of directions (a Fibonacci lattice), without a
                         floor unless --floor is given
@@ -299,12 +302,11 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     throw UsageError("- (standard input) is one file: render it on its own");
   if (o.save_scene && o.scene_path == "-")
     throw UsageError("--save-scene names the mesh's file, and standard input has none: save the mesh to a file first");
+  const bool several = scenes.size() > 1 || std::filesystem::is_directory(o.scene_path, ec);
   if (!view_options.empty()) {
     const std::string& named = view_options.front();
     o.views = views;
-    if (scenes.size() > 1 || std::filesystem::is_directory(o.scene_path, ec))
-      throw UsageError(named + " draws the views of one mesh file; name one (a folder's views are not drawn yet)");
-    require_staged({named}, o.scene_path);
+    if (!several) require_staged({named}, o.scene_path);
     if (o.output.empty()) throw UsageError("no output folder given (-o OUTDIR): " + named + " writes each view's files there");
     if (std::filesystem::exists(o.output, ec) && !std::filesystem::is_directory(o.output, ec))
       throw UsageError("-o " + o.output + " is a file; " + named + " writes each view's files in a folder: name a folder");
@@ -315,15 +317,21 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
       throw UsageError("--cameras draws the views its file names; --views and --views-on place views of their own: give one or the other");
     for (const auto& [given, name] : {std::pair{o.mask.has_value(), "--mask"}, {o.save_scene.has_value(), "--save-scene"},
                                       {o.explain, "--explain"}, {o.staging.view.eye.has_value(), "--eye"},
-                                      {o.staging.view.target.has_value(), "--target"}, {sheet.has_value(), "--sheet"},
-                                      {shard.has_value(), "--shard"}, {timeout_s > 0.0, "--timeout"},
-                                      {skip_existing, "--skip-existing"}, {json, "--json"}})
+                                      {o.staging.view.target.has_value(), "--target"}, {sheet.has_value(), "--sheet"}})
       if (given)
         throw UsageError(std::string(name) + " is not for " + named + (std::string(name) == "--mask" ? " (--passes shadow draws each view's mask)" :
                                                             std::string(name) == "--eye" || std::string(name) == "--target"
                                                                 ? " (the views stand round the model, where the framing puts them)"
                                                                 : ""));
-  } else if (scenes.size() > 1 || std::filesystem::is_directory(o.scene_path, ec)) {
+    if (!several)
+      for (const auto& [given, name] : {std::pair{shard.has_value(), "--shard"}, {timeout_s > 0.0, "--timeout"},
+                                        {skip_existing, "--skip-existing"}, {json, "--json"}})
+        if (given) throw UsageError(std::string(name) + " is for several files or a folder; \"" + o.scene_path + "\" is one");
+    if (several)
+      o.batch = BatchRenderOptions{scenes, o.output, o.settings, o.staging, o.gl, o.antialias, o.antialias_all, o.show_volumes,
+                                   o.size_given, jobs.value_or(std::max(1u, std::thread::hardware_concurrency())), shard, sheet,
+                                   o.any_texture_path, timeout_s, skip_existing, json, views};
+  } else if (several) {
     if (o.output.empty()) throw UsageError("no output folder given (-o OUTDIR)");
     if (std::filesystem::exists(o.output, ec) && !std::filesystem::is_directory(o.output, ec))
       throw UsageError("-o " + o.output + " is a file; several inputs make one picture each, in a folder: name a folder");

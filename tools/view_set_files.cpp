@@ -70,57 +70,77 @@ class ViewFiles {
 
 }  // namespace
 
+WrittenViews write_view_files(const std::string& mesh_path, const std::string& folder, PictureChoices choices,
+                              const ViewSetRequest& request, const TextureMaps& maps, std::optional<HeadlessContext>& context,
+                              const ViewProgress& progress, std::string& messages) {
+  namespace fs = std::filesystem;
+  // A file umbra would stage, not a scene: its views stand round its model.
+  if (!is_mesh_file(mesh_path))
+    throw InputError({mesh_path}, "views are drawn of a mesh file on its own, which umbra stages; this is not one (a scene has its "
+                                  "own camera)", InputProblem::kUnsupportedFormat);
+  std::error_code ec;
+  fs::create_directories(folder, ec);
+  if (ec) throw std::runtime_error(folder + ": cannot make the folder: " + ec.message());
+  RenderSettings& settings = choices.settings;
+  if (progress) progress(0, 1, "loading " + mesh_path);
+  // The cameras file is read first: a bad one stops the run before the
+  // model's load, and its size is the picture's, which staging weighs.
+  std::optional<TransformsFile> given;
+  if (request.cameras) {
+    given = read_transforms(std::string(MappedFile(*request.cameras).bytes()), *request.cameras);
+    if (!choices.size_given) settings.width = given->width, settings.height = given->height, choices.size_given = true;
+  }
+  Scene scene = parse_scene_or_mesh_file(mesh_path, {}, nullptr, staging_for(choices.staging, settings), maps);
+  const MeshPlacement placement = placement_of(scene.meshes.at(0));
+  set_picture_size(settings, choices.size_given, scene);
+  const int count = given ? int(given->count()) : request.count;
+  set_picture_samples(settings, choices.antialias, choices.antialias_all, choices.show_volumes, scene, size_t(count));
+  require_drawable_size(settings.width, settings.height, settings.frame_samples());
+  for (const Warning& w : scene.warnings) messages += w.where.str() + ": warning: " + w.message + "\n";
+  require_lights_off_casters(scene);
+  require_caught_shadows_kept(scene, settings.method);
+  const std::vector<Camera> cameras =
+      given ? cameras_of(*given, scene, placement)
+            : view_cameras(scene, choices.staging.view, double(settings.width) / settings.height, count, request.spread);
+  std::vector<std::string> stems;
+  for (int i = 0; i < count; ++i) stems.push_back(view_stem(i, count));
+  PartialFile transforms((fs::path(folder) / "transforms.json").string(), "the cameras");
+  const auto drawing = [&](int i) { return "drawing view " + std::to_string(i + 1) + " of " + std::to_string(count); };
+  if (progress) progress(0, size_t(count), drawing(0));
+  draw_views(scene, cameras, placement, settings, request.passes, context, choices.gl, [&](int i, DrawnView&& view) {
+    if (progress && i + 1 < count) progress(size_t(i) + 1, size_t(count), drawing(i + 1));
+    ViewFiles files(folder, stems[size_t(i)], request.passes, scene.lights.size());
+    files.write(view, request.passes);
+    files.commit();
+  });
+  {
+    std::ofstream out(transforms.temporary_path());
+    out << transforms_json(cameras, scene, placement, settings.width, settings.height, request.passes, stems).dump(2) << "\n";
+    if (!out.flush()) throw std::runtime_error(transforms.path() + ": cannot write the cameras");
+  }
+  transforms.commit();
+  size_t triangles = scene.triangles.size();
+  for (const Mesh& m : scene.meshes) triangles += m.triangles.size();
+  return {count, settings.width, settings.height, triangles};
+}
+
 int write_view_set(const std::string& mesh_path, const std::string& folder, PictureChoices choices, const ViewSetRequest& request,
                    bool any_texture_path) {
-  namespace fs = std::filesystem;
   try {
-    std::error_code ec;
-    fs::create_directories(folder, ec);
-    if (ec) throw std::runtime_error(folder + ": cannot make the folder: " + ec.message());
-    RenderSettings& settings = choices.settings;
-    std::optional<ProgressBar> progress(std::in_place, 1);
-    progress->update(0, "loading " + mesh_path);
-    // The cameras file is read first: a bad one stops the run before the
-    // model's load, and its size is the picture's, which staging weighs.
-    std::optional<TransformsFile> given;
-    if (request.cameras) {
-      given = read_transforms(std::string(MappedFile(*request.cameras).bytes()), *request.cameras);
-      if (!choices.size_given) settings.width = given->width, settings.height = given->height, choices.size_given = true;
-    }
-    Scene scene = parse_scene_or_mesh_file(mesh_path, {}, nullptr, staging_for(choices.staging, settings),
-                                           TextureMaps{true, "", any_texture_path});
-    const MeshPlacement placement = placement_of(scene.meshes.at(0));
-    set_picture_size(settings, choices.size_given, scene);
-    const int count = given ? int(given->count()) : request.count;
-    set_picture_samples(settings, choices.antialias, choices.antialias_all, choices.show_volumes, scene, size_t(count));
-    require_drawable_size(settings.width, settings.height, settings.frame_samples());
-    for (const Warning& w : scene.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
-    require_lights_off_casters(scene);
-    require_caught_shadows_kept(scene, settings.method);
-    const std::vector<Camera> cameras =
-        given ? cameras_of(*given, scene, placement)
-              : view_cameras(scene, choices.staging.view, double(settings.width) / settings.height, count, request.spread);
-    std::vector<std::string> stems;
-    for (int i = 0; i < count; ++i) stems.push_back(view_stem(i, count));
-    progress.emplace(size_t(count));
-    PartialFile transforms((fs::path(folder) / "transforms.json").string(), "the cameras");
+    std::optional<ProgressBar> bar;
     std::optional<HeadlessContext> context;
-    draw_views(scene, cameras, placement, settings, request.passes, context, choices.gl, [&](int i, DrawnView&& view) {
-      progress->update(size_t(i), "drawing view " + std::to_string(i + 1) + " of " + std::to_string(count));
-      ViewFiles files(folder, stems[size_t(i)], request.passes, scene.lights.size());
-      files.write(view, request.passes);
-      files.commit();
-    });
-    {
-      std::ofstream out(transforms.temporary_path());
-      out << transforms_json(cameras, scene, placement, settings.width, settings.height, request.passes, stems).dump(2) << "\n";
-      if (!out.flush()) throw std::runtime_error(transforms.path() + ": cannot write the cameras");
-    }
-    transforms.commit();
-    progress.reset();
-    std::cout << "wrote " << count << (count == 1 ? " view" : " views") << " of " << mesh_path << " ("
-              << settings.width << "x" << settings.height << ") and their cameras to " << (fs::path(folder) / "transforms.json").string()
-              << "\n";
+    std::string messages;
+    const WrittenViews written = write_view_files(mesh_path, folder, choices, request, TextureMaps{true, "", any_texture_path},
+                                                  context, [&](size_t done, size_t total, const std::string& what) {
+      if (!bar || done == 0) bar.emplace(total);
+      if (!messages.empty()) bar->clear(), std::cerr << messages, messages.clear();
+      bar->update(done, what);
+    }, messages);
+    bar.reset();
+    std::cerr << messages;
+    std::cout << "wrote " << written.views << (written.views == 1 ? " view" : " views") << " of " << mesh_path << " ("
+              << written.width << "x" << written.height << ") and their cameras to "
+              << (std::filesystem::path(folder) / "transforms.json").string() << "\n";
     return 0;
   } catch (const UsageError& e) {
     std::cerr << "umbra render: " << e.what() << "\n(see umbra render --help)\n";

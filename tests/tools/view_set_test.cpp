@@ -2,8 +2,10 @@
 // passes, and transforms.json, whose poses and intrinsics put a point of
 // the mesh file where the depth pass says it is.
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
@@ -271,6 +273,45 @@ TEST_F(ViewSet, ACamerasFileUmbraCannotDrawIsRefusedSayingWhy) {
   EXPECT_EQ(both.status, 2);
   EXPECT_NE(both.err.find("--cameras draws the views its file names; --views and --views-on place views of their own"),
             std::string::npos) << both.err;
+}
+
+// A folder's models each get their views in OUTDIR/NAME/, in worker
+// processes as a folder's pictures are drawn; --json names each one's
+// transforms.json, and --skip-existing passes over those newer than the file.
+TEST_F(ViewSet, AFoldersModelsEachGetTheirViewsInAFolderOfTheirOwn) {
+  fs::create_directories(path("in/sub"));
+  fs::copy_file(std::string(UMBRA_SOURCE_DIR) + "/scenes/meshes/torus.obj", path("in/torus.obj"));
+  fs::copy_file(std::string(UMBRA_SOURCE_DIR) + "/scenes/meshes/icosphere.obj", path("in/sub/icosphere.obj"));
+  const std::string scene = std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene";
+  const std::string args = "render " + path("in") + " " + scene + " --views 2 --passes object --size 40x40 --json -o " + path("out");
+  const CommandResult r = run(args);
+  EXPECT_EQ(r.status, 1) << r.err;  // the scene has no views
+  std::vector<json> lines;
+  std::istringstream out(r.out);
+  for (std::string line; std::getline(out, line);) lines.push_back(json::parse(line));
+  ASSERT_EQ(lines.size(), 3u) << r.out;
+  EXPECT_EQ(lines[0]["path"], path("in/sub/icosphere.obj"));
+  EXPECT_EQ(lines[0]["picture"], path("out/sub/icosphere.obj/transforms.json"));
+  EXPECT_EQ(lines[0]["status"], "drawn");
+  EXPECT_EQ(lines[1]["picture"], path("out/torus.obj/transforms.json"));
+  EXPECT_EQ(lines[2]["status"], "failed");
+  EXPECT_EQ(lines[2]["error"], scene + ": views are drawn of a mesh file on its own, which umbra stages; this is not one (a scene "
+                                       "has its own camera)");
+  EXPECT_NE(r.err.find("3 files in"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("2 files' views in " + path("out") + ", 1 failed"), std::string::npos) << r.err;
+  for (const std::string model : {"sub/icosphere.obj", "torus.obj"}) {
+    for (const std::string file : {"000.png", "001.png", "000.object.png", "001.object.png"})
+      EXPECT_TRUE(fs::exists(path("out/" + model + "/" + file))) << model << " " << file;
+    EXPECT_EQ(transforms(path("out/" + model))["frames"].size(), 2u);
+  }
+  EXPECT_FALSE(fs::exists(path("out/demo.scene")));
+  // A model's views are its single run's.
+  ASSERT_EQ(run("render " + path("in/torus.obj") + " --views 2 --passes object --size 40x40 -o " + path("one")).status, 0);
+  EXPECT_TRUE(read(path("one/001.png")) == read(path("out/torus.obj/001.png")));
+  const CommandResult again = run("render " + path("in") + " --views 2 --passes object --size 40x40 --json --skip-existing -o " + path("out"));
+  EXPECT_EQ(again.status, 0) << again.err;
+  EXPECT_EQ(std::count(again.out.begin(), again.out.end(), '\n'), 2);
+  EXPECT_EQ(again.out.find("\"drawn\""), std::string::npos) << again.out;
 }
 
 TEST_F(ViewSet, OptionsThatCannotMeanAnythingForViewsAreRefused) {
