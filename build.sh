@@ -60,6 +60,7 @@ test_packages=(
   parallel                           # docs/batch-checks.md: sharded checks with GNU parallel (tested)
   python3-pytest python3-pil         # the Python module's tests (pytest), reading the command's pictures (Pillow)
   python3-distributed                # docs/batch-checks.md: the Dask recipe (tested)
+  mypy                               # the Python module's type stubs, type-checked (tested)
   slurm-wlm munge                    # docs/batch-checks.md: the Slurm recipe, on a cluster the test starts (tested)
   chromium                           # umbra check --report's page, opened in a real browser (tested)
 )

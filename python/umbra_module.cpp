@@ -395,5 +395,6 @@ PYBIND11_MODULE(_umbra, m) {
     return py::make_tuple(picture.channels, owned_array(std::move(picture.values), {h, w, c}));
   }, py::arg("path"));
   m.attr("max_hole_edges") = kDefaultMaxHoleEdges;
+  m.attr("__version__") = UMBRA_VERSION;
   m.attr("largest_picture_side") = kLargestPictureSide;
 }

@@ -29,7 +29,9 @@ import numpy as np
 from . import _umbra
 from ._umbra import InputError, OptionError
 
-__all__ = ["render", "check", "repair", "load", "Renderer", "Mesh", "InputError", "OptionError", "UmbraWarning"]
+__all__ = ["render", "check", "repair", "load", "Renderer", "Mesh", "InputError", "OptionError", "UmbraWarning", "__version__"]
+
+__version__ = _umbra.__version__  # the umbra command's own: umbra --version
 
 
 class UmbraWarning(UserWarning):
@@ -265,10 +267,13 @@ _renderers = threading.local()  # render()'s: one context per thread
 
 
 def render(mesh, size=None, *, mask=False, depth=False, views=None, views_on="ring", cameras=None, passes=(), **options):
-    """Renderer.render on this thread's own Renderer, made on first use."""
     if not hasattr(_renderers, "default"):
         _renderers.default = Renderer()
     return _renderers.default._draw(mesh, size, mask, depth, options, views, views_on, cameras, passes)
+
+
+render.__doc__ = ("Renderer.render on this thread's own Renderer, made on first use (one GL context per thread).\n\n"
+                  + Renderer.render.__doc__)
 
 
 def check(mesh, *, time_limit=60.0, picture=None):
