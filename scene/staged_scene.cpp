@@ -3,9 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <iomanip>
 #include <limits>
-#include <sstream>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -16,6 +14,7 @@
 #include "mesh/io/mesh_format.hpp"
 #include "scene/pose_choice.hpp"
 #include "scene/scene_parser.hpp"
+#include "scene/stage_statements.hpp"
 #include "scene/up_axis.hpp"
 
 namespace umbra {
@@ -56,13 +55,6 @@ glm::dvec3 light_position(const glm::dvec3& centre, const StageView& view) {
   return view.light_turn_deg != 0.0 ? rotated_about_z(light, view.light_turn_deg) : light;
 }
 
-// Numbers as the staged text writes them: short, and read back as the same doubles.
-std::string num(double v) {
-  std::ostringstream s;
-  s << std::setprecision(6) << (std::abs(v) < 1e-9 ? 0.0 : v);
-  return s.str();
-}
-std::string vec(const glm::dvec3& v) { return num(v.x) + " " + num(v.y) + " " + num(v.z); }
 // The floor's height: a thousandth below the model's lowest point (the fitted
 // model spans 2), so that a face lying on the floor is never coplanar with
 // it (which would stripe the picture as the two fight over depth), written
@@ -170,9 +162,9 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
   if (view.eye) {
     // As the staged text will hold them, to 6 digits: a given eye may meet
     // the framing's target there, or stand straight above it.
-    const auto written = [](const glm::dvec3& p) { return glm::dvec3(std::stod(num(p.x)), std::stod(num(p.y)), std::stod(num(p.z))); };
-    const glm::dvec3 e = written(eye), a = written(aim);
-    const std::string given = "--eye " + num(eye.x) + "," + num(eye.y) + "," + num(eye.z);
+    const glm::dvec3 e = StageStatements::written(eye), a = StageStatements::written(aim);
+    const std::string given =
+        "--eye " + StageStatements::number(eye.x) + "," + StageStatements::number(eye.y) + "," + StageStatements::number(eye.z);
     if (e == a)
       throw StagingChoiceError(given + " is the point the staged camera looks at (the middle of the model and its shadow): give "
                                "--target as well, or put the eye elsewhere");
@@ -213,16 +205,15 @@ Scene stage_mesh(const std::string& path, const std::shared_ptr<const PolygonSou
   const auto load = [&](const std::string& axis) {
     const UpTurn& turn = up_turn(axis);
     mesh_statement = "mesh \"" + written_name + "\" fit";
-    if (turn.degrees != 0) mesh_statement += " rotate " + vec(turn.axis) + " " + num(turn.degrees);
+    if (turn.degrees != 0) mesh_statement += " rotate " + StageStatements::point(turn.axis) + " " + StageStatements::number(turn.degrees);
     if (staging.plain_model) mesh_statement += " plain";
     if (!nameable) mesh_statement += "  # a scene cannot name this file (a double quote or a line break in its name): rename it";
     MeshStatement statement;
     statement.mesh.path = file_name;
     statement.mesh.fit = true;
-    statement.mesh.rotation_axis = turn.axis;
-    statement.mesh.rotation_deg = turn.degrees;
+    if (turn.degrees != 0) statement.mesh.rotation_axis = turn.axis, statement.mesh.rotation_deg = turn.degrees;  // as its text says
     statement.mesh.plain = staging.plain_model;
-    if (!staging.flat) statement.mesh.smooth_deg = staging.crease_deg;
+    if (!staging.flat) statement.mesh.smooth_deg = StageStatements::written(staging.crease_deg);  // as its text reads back
     if (!staging.crease_given && staging.frame_pixels > 0) statement.mesh.smooth_triangle_limit = staging.frame_pixels;
     statement.mesh.where = {name, mesh_line, 1};
     statement.path_at = {name, mesh_line, 6};
@@ -246,7 +237,8 @@ Scene stage_mesh(const std::string& path, const std::shared_ptr<const PolygonSou
     if (m.triangles.empty()) throw InputError({path}, "has no faces: there is nothing to show", InputProblem::kNoFaces);
     if (m.smooth_deg) {
       const size_t comment = mesh_statement.find("  #");  // the statement's words come before its comment
-      mesh_statement.insert(comment == std::string::npos ? mesh_statement.size() : comment, " smooth " + num(*m.smooth_deg));
+      mesh_statement.insert(comment == std::string::npos ? mesh_statement.size() : comment,
+                            " smooth " + StageStatements::number(*m.smooth_deg));
     }
     return loaded;
   };
@@ -282,32 +274,31 @@ Scene stage_mesh(const std::string& path, const std::shared_ptr<const PolygonSou
     view.light_elevation_deg = kLightElevationDeg;
   }
   const Stage stage = stage_for(mesh.bounds_min, mesh.bounds_max, framing_points(mesh), staging.frame_aspect, view);
-  const glm::dvec3 f = stage.floor_centre;
-  const Camera& c = stage.camera;
   // A studio's light: the key light casts the one shadow; a headlight and a
   // sky fill the shaded sides so that they keep their shape and stay lighter
   // than the shadow on the floor, and a soft tone curve keeps highlights
-  // from flattening at white.
-  std::string rest = "light " + vec(stage.light) + " color " + vec(kKeyLight) + " ambient 0 0 0\n"
-                     "headlight " + vec(kHeadlight) + "\nhemisphere sky " + vec(kSky) + " ground " + vec(kGround) + " up 0 0 1\n"
-                     "tone soft\n";
-  if (staging.model_color) rest += "material default ambient " + vec(*staging.model_color) + " diffuse " + vec(*staging.model_color) + "\n";
-  if (!staging.no_floor)
-    rest += (staging.floor_catches_shadow ? std::string("material floor shadow-catcher\n")
-             : staging.floor_color ? "material floor ambient " + vec(*staging.floor_color) + " diffuse " + vec(*staging.floor_color) + "\n"
-                                   : "material floor ambient " + vec(kFloor) + " diffuse " + vec(kFloor) + "\n") +
-            "floor " + num(f.z) + " centre " + num(f.x) + " " + num(f.y) + " size " + num(stage.floor_half_size) + " material floor\n";
-  rest += "camera eye " + vec(c.eye) + " target " + vec(c.target) + " up 0 0 1 fovy " + num(c.fovy_deg) + "\n";
-  const Background background = staging.background.value_or(Background{kStageBackground, false});
-  rest += background.transparent ? std::string("background transparent\n") : "background " + vec(background.color) + "\n";
-  if (staging.width > 0) rest += "size " + std::to_string(staging.width) + " " + std::to_string(staging.height) + "\n";
-  rest += "antialias " + std::to_string(staging.antialias.value_or(kStagedAntialias)) + (staging.antialias_all ? " all" : "") + "\n";
-  if (staged) *staged = header + mesh_statement + "\n" + notes + rest;
-  // The rest of the stage from the same text, the mesh's line left blank
-  // (its mesh is the one loaded above), so that lines number alike. Its
-  // warnings (a floor beyond the cube) are about umbra's stage, not the file.
-  Scene scene = parse_scene_text(header + "\n" + notes + rest, name);
-  scene.warnings.clear();
+  // from flattening at white. Set as values and written as text together,
+  // after the header's lines, the mesh's and the notes'.
+  Scene scene;
+  scene.path = name;
+  scene.materials.emplace_back().name = "default";
+  const auto lines = [](const std::string& text) { return int(std::count(text.begin(), text.end(), '\n')); };
+  StageStatements statements(scene, lines(header) + 1 + lines(notes) + 1);
+  statements.light(stage.light, kKeyLight);
+  statements.headlight(kHeadlight);
+  statements.hemisphere(kSky, kGround);
+  statements.soft_tone();
+  if (staging.model_color) statements.model_color(*staging.model_color);
+  if (!staging.no_floor) {
+    statements.floor_material(staging.floor_color.value_or(kFloor), staging.floor_catches_shadow);
+    const glm::dvec3& f = stage.floor_centre;
+    statements.floor(f.z, f.x, f.y, stage.floor_half_size);
+  }
+  statements.camera(stage.camera.eye, stage.camera.target, stage.camera.fovy_deg);
+  statements.background(staging.background.value_or(Background{kStageBackground, false}));
+  if (staging.width > 0) statements.size(staging.width, staging.height);
+  statements.antialias(staging.antialias.value_or(kStagedAntialias), staging.antialias_all);
+  if (staged) *staged = header + mesh_statement + "\n" + notes + statements.text();
   // The file's own materials follow the stage's; the mesh's indices move with them.
   const int moved = int(scene.materials.size()) - 1;
   scene.materials.insert(scene.materials.end(), loaded.materials.begin() + 1, loaded.materials.end());
