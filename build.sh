@@ -121,14 +121,16 @@ case "${1:-}" in
     seconds="${2:-60}"
     CC=clang CXX=clang++ configure build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DUMBRA_FUZZERS=ON -DUMBRA_PYTHON=OFF \
       -DUMBRA_BUILD_TESTS=OFF -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link $sanitizers" -DCMAKE_C_FLAGS="$sanitizers"
-    cmake --build build-fuzz -j"$(nproc)" --target scene_fuzzer mesh_fuzzer mesh_seed
-    # Seed corpus: the bundled scenes, and the bundled meshes and fuzz/seeds/mesh/
+    cmake --build build-fuzz -j"$(nproc)" --target scene_fuzzer mesh_fuzzer cameras_fuzzer mesh_seed
+    # Seed corpus: the bundled scenes; transforms.json files (fuzz/seeds/cameras/);
+    # and the bundled meshes and fuzz/seeds/mesh/
     # (glTF, GLB, 3MF) behind their format byte (written by mesh_seed).
-    rm -rf build-fuzz/corpus && mkdir -p build-fuzz/corpus/scene build-fuzz/corpus/mesh build-fuzz/crashes
+    rm -rf build-fuzz/corpus && mkdir -p build-fuzz/corpus/scene build-fuzz/corpus/mesh build-fuzz/corpus/cameras build-fuzz/crashes
     cp scenes/*.scene fuzz/regressions/scene/* build-fuzz/corpus/scene/ 2>/dev/null || true
     cp fuzz/regressions/mesh/* build-fuzz/corpus/mesh/ 2>/dev/null || true
+    cp fuzz/seeds/cameras/* fuzz/regressions/cameras/* build-fuzz/corpus/cameras/ 2>/dev/null || true
     build-fuzz/fuzz/mesh_seed build-fuzz/corpus/mesh scenes/meshes/* fuzz/seeds/mesh/*
-    for target in scene mesh; do
+    for target in scene mesh cameras; do
       echo "fuzzing the $target input for $seconds s"
       "build-fuzz/fuzz/${target}_fuzzer" -max_total_time="$seconds" -max_len=8192 -timeout=20 -rss_limit_mb=4096 \
         -print_final_stats=1 -artifact_prefix="build-fuzz/crashes/$target-" "build-fuzz/corpus/$target" 2>&1 |

@@ -8,7 +8,10 @@
 
 #include "mesh/check/mesh_check.hpp"
 #include "mesh/io/mesh_file.hpp"
+#include "scene/mesh_placement.hpp"
 #include "scene/scene_checks.hpp"
+#include "scene/staged_scene.hpp"
+#include "tools/view_set.hpp"
 #include "scene/scene_parser.hpp"
 #include "render/render_plan.hpp"
 #include "silhouette/mesh_caster.hpp"
@@ -48,6 +51,28 @@ void mesh_input(const uint8_t* data, size_t size) {
       if (!volume.triangles.empty() && !has_no_boundary(volume))
         throw std::logic_error("a mesh's shadow volume has a boundary");
     }
+  } catch (const InputError&) {
+  }
+}
+
+void cameras_input(const uint8_t* data, size_t size) {
+  static const Scene staged = [] {
+    PolygonSoup soup;
+    soup.path = "tetrahedron";
+    soup.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    soup.polygon_starts = {0, 3, 6, 9, 12};
+    soup.corners = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+    return stage_polygon_soup(std::make_shared<const PolygonSoup>(std::move(soup)));
+  }();
+  try {
+    const TransformsFile file = read_transforms(std::string(reinterpret_cast<const char*>(data), size), "fuzz.json");
+    for (const Camera& camera : cameras_of(file, staged, placement_of(staged.meshes.at(0))))
+      for (const auto& [x, y] : {std::pair{0.0, 0.0}, {file.width - 1.0, file.height - 1.0}}) {
+        const Ray ray = camera.pixel_ray(file.width, file.height, x, y);
+        const double length = glm::length(ray.direction);
+        if (!std::isfinite(ray.origin.x + ray.origin.y + ray.origin.z) || !(std::abs(length - 1.0) < 1e-9))
+          throw std::logic_error("an accepted camera's pixel ray is not finite and unit");
+      }
   } catch (const InputError&) {
   }
 }

@@ -23,4 +23,9 @@ void scene_input(const uint8_t* data, size_t size);
 // std::logic_error, which the fuzzer reports as a crash.
 void mesh_input(const uint8_t* data, size_t size);
 
+// The bytes as a transforms.json (umbra render --cameras), its cameras for a
+// staged tetrahedron; each camera it accepts must give finite, unit pixel
+// rays at its picture's corners, or std::logic_error.
+void cameras_input(const uint8_t* data, size_t size);
+
 }  // namespace umbra::fuzz

@@ -245,6 +245,10 @@ std::vector<Camera> cameras_of(const TransformsFile& file, const Scene& staged, 
       const double along = glm::dot(centre - eye, forward);
       camera = Camera{eye, eye + forward * (along > 0.0 ? along : glm::length(centre - eye) + 1.0), up, file.fovy_deg};
     }
+    const auto finite = [](const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); };
+    if (!finite(camera.eye) || !finite(camera.target) || !finite(camera.up))
+      throw InputError({path}, where + "'s camera lies beyond what double precision holds, placed with the model",
+                       InputProblem::kMalformed);
     if (camera.eye == camera.target || !(camera.fovy_deg > 0.0 && camera.fovy_deg < 180.0) ||
         !(glm::length(glm::cross(camera.target - camera.eye, camera.up)) > 0.0))
       throw InputError({path}, where + "'s camera looks nowhere: its eye is its target, its up is along its view or its fovy is not "

@@ -48,6 +48,18 @@ TEST(FuzzRegressions, SceneInputsReturnNormally) {
   EXPECT_GT(inputs.size(), regressions.size());
 }
 
+TEST(FuzzRegressions, CamerasInputsReturnNormally) {
+  auto inputs = files_in(kSource / "fuzz/regressions/cameras");
+  const auto seeds = files_in(kSource / "fuzz/seeds/cameras");
+  ASSERT_FALSE(seeds.empty());
+  inputs.insert(inputs.end(), seeds.begin(), seeds.end());
+  for (const fs::path& p : inputs) {
+    SCOPED_TRACE(p.string());
+    const std::vector<uint8_t> bytes = bytes_of(p);
+    fuzz::cameras_input(bytes.data(), bytes.size());
+  }
+}
+
 TEST(FuzzRegressions, MeshInputsReturnNormally) {
   std::vector<std::vector<uint8_t>> inputs;
   for (const fs::path& p : files_in(kSource / "fuzz/regressions/mesh")) inputs.push_back(bytes_of(p));
