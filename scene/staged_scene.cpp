@@ -115,7 +115,7 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
   std::vector<glm::dvec3> points;
   for (const glm::dvec3& p : model_points) {
     points.push_back(p);
-    if (!(stage.light.z > p.z)) continue;
+    if (!view.frame_shadow || !(stage.light.z > p.z)) continue;
     glm::dvec3 shadow = stage.light + (p - stage.light) * ((stage.light.z - stage.floor_z) / (stage.light.z - p.z));
     const glm::dvec3 out(shadow.x - centre.x, shadow.y - centre.y, 0.0);
     if (glm::length(out) > kShadowReach) shadow = glm::dvec3(centre.x, centre.y, stage.floor_z) + out * (kShadowReach / glm::length(out));

@@ -66,12 +66,16 @@ struct StageView {
   std::optional<double> light_azimuth_deg, light_elevation_deg;
   std::optional<glm::dvec3> light;
   double light_turn_deg = 0.0;  // then turned about the z axis (--light-angle)
+  // Frame the model's shadow on the floor's plane too, whether or not a
+  // floor is drawn (the floor never moves the camera); a sphere of views,
+  // which looks from below too, frames the model alone.
+  bool frame_shadow = true;
 
   bool operator==(const StageView& o) const {
     return camera_azimuth_deg == o.camera_azimuth_deg && camera_elevation_deg == o.camera_elevation_deg &&
            camera_zoom == o.camera_zoom && fov_deg == o.fov_deg && eye == o.eye && target == o.target &&
            light_azimuth_deg == o.light_azimuth_deg && light_elevation_deg == o.light_elevation_deg && light == o.light &&
-           light_turn_deg == o.light_turn_deg;
+           light_turn_deg == o.light_turn_deg && frame_shadow == o.frame_shadow;
   }
 };
 

@@ -142,8 +142,9 @@ options:
                         into OUTDIR/its picture's name/, with --jobs,
                         --timeout, --skip-existing, --json and --shard
   --views-on SPREAD     ring (default) or sphere: views evenly over the whole
-                        sphere of directions (a Fibonacci lattice), without a
-                        floor unless --floor is given
+                        sphere of directions (a Fibonacci lattice), each
+                        framing the model alone, without a floor unless
+                        --floor is given
   --cameras FILE        instead of --views, draw the views a transforms.json
                         names (its frames' umbra_camera, else their
                         transform_matrix and the intrinsics: square pixels,

@@ -61,7 +61,8 @@ std::vector<Camera> view_cameras(const Scene& staged, const StageView& view, dou
   // and elevation in StageView's convention.
   const glm::dvec3 back = glm::normalize(first.eye - first.target);
   const double azimuth = glm::degrees(std::atan2(back.x, -back.y)), elevation = glm::degrees(std::asin(back.z));
-  std::vector<Camera> cameras{first};
+  std::vector<Camera> cameras;
+  if (spread == ViewSpread::kRing) cameras.push_back(first);
   const std::vector<glm::dvec3> points = framing_points(mesh);
   StageView turned = view;
   turned.light = staged.lights.at(0).position;  // held still in the model's frame
@@ -70,13 +71,15 @@ std::vector<Camera> view_cameras(const Scene& staged, const StageView& view, dou
   turned.eye = turned.target = std::nullopt;
   // The golden angle: each view on the sphere turns by it from the last.
   const double golden_deg = 180.0 * (3.0 - std::sqrt(5.0));
-  for (int i = 1; i < count; ++i) {
+  // Seen from below too, the sphere's views frame the model alone.
+  turned.frame_shadow = spread == ViewSpread::kRing;
+  for (int i = spread == ViewSpread::kRing ? 1 : 0; i < count; ++i) {
     if (spread == ViewSpread::kRing) {
       turned.camera_azimuth_deg = azimuth + 360.0 * i / count;
       turned.camera_elevation_deg = elevation;
     } else {
       // Fibonacci lattice: equal areas of the sphere, from near its top to
-      // near its bottom; view 0 keeps the staged camera.
+      // near its bottom, turning from the staged azimuth.
       const double z = 1.0 - (2.0 * i + 1.0) / count;
       turned.camera_azimuth_deg = azimuth + golden_deg * i;
       turned.camera_elevation_deg = glm::degrees(std::asin(z));

@@ -81,10 +81,11 @@ void leave_floor_out_of_sphere(StagingOptions& staging, const std::vector<std::s
 // "ring" or "sphere" as a spread; throws UsageError naming `option`.
 ViewSpread parse_view_spread(const std::string& option, const std::string& text);
 
-// The cameras of `count` views of the staged scene `staged` (whose camera is
-// view 0's), each framing the model and its shadow as staging frames it
-// (stage_for, with `view`'s elevation, zoom and lens), its light held still
-// in the model's frame. Throws StagingChoiceError for a spread that leaves
+// The cameras of `count` views of the staged scene `staged`, each framing
+// the model as staging frames it (stage_for, with `view`'s zoom and lens),
+// its light held still in the model's frame: round it at the staged
+// elevation, view 0 the staged camera's, each framing the model and its
+// shadow; or over the sphere, each framing the model alone. Throws StagingChoiceError for a spread that leaves
 // the view's framing nowhere to stand.
 std::vector<Camera> view_cameras(const Scene& staged, const StageView& view, double aspect, int count, ViewSpread spread);
 

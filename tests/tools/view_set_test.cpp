@@ -163,6 +163,28 @@ TEST_F(ViewSet, TheDepthAndNormalsOfASphereAreTheSurfacesWithinItsFacets) {
   }
 }
 
+// Views over the sphere look from below too, without a floor, and each
+// frames the model alone: centred, filling the frame's width or height to
+// within the framing's margin (1.2), where framing the shadow on a floor
+// that is not drawn once left the bull small and to one side.
+TEST_F(ViewSet, ASphereOfViewsFramesTheModelAlone) {
+  const std::string wuson = "/usr/share/assimp/models/OFF/Wuson.off";
+  if (!fs::exists(wuson)) GTEST_SKIP() << "needs Debian's assimp-testmodels (build.sh installs it)";
+  ASSERT_EQ(run("render " + wuson + " --views 8 --views-on sphere --passes object --size 100x100 -o " + path("out")).status, 0);
+  for (int i = 0; i < 8; ++i) {
+    SCOPED_TRACE(i);
+    const Image object = read_png(path("out/00" + std::to_string(i) + ".object.png"));
+    int lo_x = 100, hi_x = -1, lo_y = 100, hi_y = -1;
+    for (int y = 0; y < 100; ++y)
+      for (int x = 0; x < 100; ++x)
+        if (object.at(x, y)) lo_x = std::min(lo_x, x), hi_x = std::max(hi_x, x), lo_y = std::min(lo_y, y), hi_y = std::max(hi_y, y);
+    ASSERT_GE(hi_x, 0) << "no model in view";
+    EXPECT_GE(std::max(hi_x - lo_x, hi_y - lo_y) + 1, 100 / 1.2 - 3);
+    EXPECT_NEAR((lo_x + hi_x) / 2.0, 49.5, 6.0);
+    EXPECT_NEAR((lo_y + hi_y) / 2.0, 49.5, 6.0);
+  }
+}
+
 // Each view's shadow mask is the exact one: the GL's, against shadow rays
 // from the same camera, as --mask is tested (mask_comparison.hpp).
 TEST_F(ViewSet, EachViewsShadowIsTheExactShadow) {
