@@ -17,6 +17,7 @@
 #include "image/partial_file.hpp"
 #include "image/picture_file.hpp"
 #include "mesh/input_error.hpp"
+#include "mesh/io/mapped_file.hpp"
 #include "render/headless_context.hpp"
 #include "scene/scene_checks.hpp"
 #include "scene/staged_scene.hpp"
@@ -171,6 +172,13 @@ void read_job_result(const IsolatedResult& result, double timeout_s, Record& rec
   record.messages.assign(std::istreambuf_iterator<char>(in), {});
 }
 
+// A model's first view, for the contact sheet: the picture its
+// transforms.json names first, in the same folder.
+std::string first_view_picture(const std::string& transforms) {
+  const nlohmann::json json = nlohmann::json::parse(MappedFile(transforms).bytes());
+  return (std::filesystem::path(transforms).parent_path() / json.at("frames").at(0).at("file_path").get<std::string>()).string();
+}
+
 // Whether `picture` is newer than `input` (--skip-existing).
 bool up_to_date(const std::string& picture, const std::string& input) {
   std::error_code a, b;
@@ -198,6 +206,9 @@ int run_batch_render(const BatchRenderOptions& o) {
     std::string refusal;
     for (size_t i = 0; i < found.meshes.size() && refusal.empty(); ++i) {
       if (same_file(*o.sheet, found.meshes[i])) refusal = "--sheet would overwrite its input \"" + found.meshes[i] + "\"";
+      else if (o.views && same_file(std::filesystem::path(*o.sheet).parent_path().string(),
+                                    (std::filesystem::path(o.out_dir) / all_names[i]).string()))
+        refusal = "--sheet " + *o.sheet + " is in the folder of the views of \"" + found.meshes[i] + "\"";
       else if (same_file(*o.sheet, (std::filesystem::path(o.out_dir) / (all_names[i] + ".png")).string()))
         refusal = "--sheet " + *o.sheet + " is where the picture of \"" + found.meshes[i] + "\" goes";
     }
@@ -302,7 +313,8 @@ int run_batch_render(const BatchRenderOptions& o) {
         continue;
       }
       try {
-        sheet.push_back({names[i], thumbnail(read_png(records[i].picture), kSheetThumbWidth), ""});
+        sheet.push_back({names[i], thumbnail(read_png(o.views ? first_view_picture(records[i].picture) : records[i].picture),
+                                             kSheetThumbWidth), ""});
       } catch (const std::exception& e) {
         std::cerr << e.what() << "\n";
       }

@@ -164,7 +164,8 @@ options:
   --shard K/N           with several files: draw only part K (counting from 0)
                         of N disjoint parts, as umbra check --shard splits them
   --sheet SHEET.png     with several files: also one picture of this run's
-                        pictures, each shrunk to at most 200 pixels wide and
+                        pictures (with --views, each model's first view),
+                        each shrunk to at most 200 pixels wide and
                         labelled with its file's name (.png or .jpg; never
                         an input's or a picture's name)
   --timeout SECONDS     with several files: stop a file's render after this
@@ -318,7 +319,8 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
       throw UsageError("--cameras draws the views its file names; --views and --views-on place views of their own: give one or the other");
     for (const auto& [given, name] : {std::pair{o.mask.has_value(), "--mask"}, {o.save_scene.has_value(), "--save-scene"},
                                       {o.explain, "--explain"}, {o.staging.view.eye.has_value(), "--eye"},
-                                      {o.staging.view.target.has_value(), "--target"}, {sheet.has_value(), "--sheet"}})
+                                      {o.staging.view.target.has_value(), "--target"},
+                                      {sheet.has_value() && !several, "--sheet"}})
       if (given)
         throw UsageError(std::string(name) + " is not for " + named + (std::string(name) == "--mask" ? " (--passes shadow draws each view's mask)" :
                                                             std::string(name) == "--eye" || std::string(name) == "--target"

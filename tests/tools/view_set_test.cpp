@@ -330,6 +330,15 @@ TEST_F(ViewSet, AFoldersModelsEachGetTheirViewsInAFolderOfTheirOwn) {
   // A model's views are its single run's.
   ASSERT_EQ(run("render " + path("in/torus.obj") + " --views 2 --passes object --size 40x40 -o " + path("one")).status, 0);
   EXPECT_TRUE(read(path("one/001.png")) == read(path("out/torus.obj/001.png")));
+  // A contact sheet of each model's first view; never inside a model's folder of views.
+  const CommandResult sheet = run("render " + path("in") + " --views 2 --size 40x40 --skip-existing --sheet " + path("sheet.png") + " -o " + path("out"));
+  EXPECT_EQ(sheet.status, 0) << sheet.err;
+  EXPECT_NE(sheet.err.find("wrote the contact sheet " + path("sheet.png") + " (2 pictures)"), std::string::npos) << sheet.err;
+  EXPECT_GT(read_png(path("sheet.png")).width, 2 * 40);
+  const CommandResult inside = run("render " + path("in") + " --views 2 --sheet " + path("out/torus.obj/sheet.png") + " -o " + path("out"));
+  EXPECT_EQ(inside.status, 2);
+  EXPECT_NE(inside.err.find("--sheet " + path("out/torus.obj/sheet.png") + " is in the folder of the views of \"" + path("in/torus.obj") + "\""),
+            std::string::npos) << inside.err;
   const CommandResult again = run("render " + path("in") + " --views 2 --passes object --size 40x40 --json --skip-existing -o " + path("out"));
   EXPECT_EQ(again.status, 0) << again.err;
   EXPECT_EQ(std::count(again.out.begin(), again.out.end(), '\n'), 2);
