@@ -308,7 +308,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   if (!view_options.empty()) {
     const std::string& named = view_options.front();
     o.views = views;
-    if (!several) require_staged({named}, o.scene_path);
+    if (!several && o.scene_path != "-") require_staged({named}, o.scene_path);  // standard input's once read
     if (o.output.empty()) throw UsageError("no output folder given (-o OUTDIR): " + named + " writes each view's files there");
     if (std::filesystem::exists(o.output, ec) && !std::filesystem::is_directory(o.output, ec))
       throw UsageError("-o " + o.output + " is a file; " + named + " writes each view's files in a folder: name a folder");
@@ -378,7 +378,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   const std::optional<int> samples = !o.batch ? o.antialias.value_or(default_antialias(o.scene_path)) : o.antialias;
   if (samples && antialiased_pixels(o.antialias_all, o.show_volumes, o.settings) == AntialiasedPixels::kAll)
     require_drawable_size(o.settings.width, o.settings.height, *samples);
-  if (!o.batch) require_staged(o.staging_given, o.scene_path);
+  if (!o.batch && o.scene_path != "-") require_staged(o.staging_given, o.scene_path);  // standard input's once read
   if (o.save_scene && !o.batch) {
     require_staged({"--save-scene"}, o.scene_path);
     require_other_than_input("--save-scene", *o.save_scene, o.scene_path);
@@ -439,8 +439,8 @@ int run_render_command(const std::vector<std::string>& argv) {
   if (const auto exit_status = parse_command_line("render", kRenderUsage, argv, parse_render_options, options))
     return *exit_status;
   if (options.batch) return run_batch_render(*options.batch);
-  if (options.views) return write_view_set(options.scene_path, options.output, options, *options.views, options.any_texture_path);
   // "-": the mesh (or scene) on standard input, copied to a file for the readers.
+  const bool standard_input = options.scene_path == "-";
   std::optional<StandardInputFile> input;
   try {
     input.emplace(options.scene_path);
@@ -453,6 +453,19 @@ int run_render_command(const std::vector<std::string>& argv) {
     std::cerr << error->what() << "\n";
     return 2;
   }
+  // The staging options, and views, ask standard input for a mesh, which only its content can say.
+  if (standard_input && !is_mesh_file(options.scene_path)) {
+    std::vector<std::string> given = options.staging_given;
+    if (options.views) given.insert(given.begin(), options.views->cameras ? "--cameras" : "--views");
+    if (!given.empty()) {
+      std::cerr << "umbra render: " << given.front() << " is for a mesh file on its own, which umbra stages; standard input holds "
+                << "a scene (a scene has its own camera and lights)\n(see umbra render --help)\n";
+      return 2;
+    }
+  }
+  if (options.views)
+    return write_view_set(options.scene_path, options.output, options, *options.views, options.any_texture_path,
+                          standard_input ? "standard input" : options.scene_path);
   keep_freed_memory_for_reuse();
   try {
     RenderOutputs outputs(options);

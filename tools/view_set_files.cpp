@@ -125,7 +125,7 @@ WrittenViews write_view_files(const std::string& mesh_path, const std::string& f
 }
 
 int write_view_set(const std::string& mesh_path, const std::string& folder, PictureChoices choices, const ViewSetRequest& request,
-                   bool any_texture_path) {
+                   bool any_texture_path, const std::string& shown) {
   try {
     std::optional<ProgressBar> bar;
     std::optional<HeadlessContext> context;
@@ -138,7 +138,7 @@ int write_view_set(const std::string& mesh_path, const std::string& folder, Pict
     }, messages);
     bar.reset();
     std::cerr << messages;
-    std::cout << "wrote " << written.views << (written.views == 1 ? " view" : " views") << " of " << mesh_path << " ("
+    std::cout << "wrote " << written.views << (written.views == 1 ? " view" : " views") << " of " << shown << " ("
               << written.width << "x" << written.height << ") and their cameras to "
               << (std::filesystem::path(folder) / "transforms.json").string() << "\n";
     return 0;

@@ -35,8 +35,9 @@ WrittenViews write_view_files(const std::string& mesh_path, const std::string& f
                               const ViewProgress& progress, std::string& messages);
 
 // The command's: returns the exit status: 0 written, 1 a file that cannot
-// be read or written, 2 an option the model rules out.
+// be read or written, 2 an option the model rules out. `shown` names the
+// mesh in what it says ("standard input" for a copy of it).
 int write_view_set(const std::string& mesh_path, const std::string& folder, PictureChoices choices, const ViewSetRequest& request,
-                   bool any_texture_path);
+                   bool any_texture_path, const std::string& shown);
 
 }  // namespace umbra

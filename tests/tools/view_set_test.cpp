@@ -345,6 +345,27 @@ TEST_F(ViewSet, AFoldersModelsEachGetTheirViewsInAFolderOfTheirOwn) {
   EXPECT_EQ(again.out.find("\"drawn\""), std::string::npos) << again.out;
 }
 
+// A mesh on standard input takes the staging options and has views as a
+// file does (its name once refused --camera-azimuth: "-" is no mesh file's
+// name); a scene there has none.
+TEST_F(ViewSet, AMeshOnStandardInputTakesTheOptionsAndViewsAFileTakes) {
+  const std::string torus = std::string(UMBRA_SOURCE_DIR) + "/scenes/meshes/torus.obj";
+  const CommandResult r = run("render - --views 2 --camera-azimuth 10 --size 32x32 -o " + path("piped") + " < " + torus);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("wrote 2 views of standard input (32x32)"), std::string::npos) << r.out;
+  ASSERT_EQ(run("render " + torus + " --views 2 --camera-azimuth 10 --size 32x32 -o " + path("named")).status, 0);
+  EXPECT_TRUE(read(path("piped/001.png")) == read(path("named/001.png")));
+  ASSERT_EQ(run("render - --camera-azimuth 10 --size 32x32 -o " + path("piped.png") + " < " + torus).status, 0);
+  ASSERT_EQ(run("render " + torus + " --camera-azimuth 10 --size 32x32 -o " + path("named.png")).status, 0);
+  EXPECT_TRUE(read(path("piped.png")) == read(path("named.png")));
+  const std::string scene = std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene";
+  const CommandResult piped_scene = run("render - --views 2 -o " + path("s") + " < " + scene);
+  EXPECT_EQ(piped_scene.status, 2);
+  EXPECT_NE(piped_scene.err.find("--views is for a mesh file on its own, which umbra stages; standard input holds a scene"),
+            std::string::npos) << piped_scene.err;
+  EXPECT_FALSE(fs::exists(path("s")));
+}
+
 TEST_F(ViewSet, OptionsThatCannotMeanAnythingForViewsAreRefused) {
   const std::string torus = std::string(UMBRA_SOURCE_DIR) + "/scenes/meshes/torus.obj";
   const std::string scene = std::string(UMBRA_SOURCE_DIR) + "/scenes/demo.scene";
