@@ -185,7 +185,7 @@ TransformsFile read_transforms(const std::string& text, const std::string& path)
   nlohmann::json json;
   try {
     json = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // a parse error, or a number beyond a double (out_of_range)
     throw InputError({path}, std::string("not JSON: ") + e.what(), InputProblem::kMalformed);
   }
   if (!json.is_object()) throw InputError({path}, "a transforms.json is an object, with \"frames\"", InputProblem::kMalformed);
