@@ -57,13 +57,13 @@ double light_reach(const Surface& s, const glm::dvec3& p, const std::vector<std:
 // The shader's shade() for one sample, in double precision (shaders.hpp),
 // unclamped as the GL's float frame keeps it, with its coverage: (colour, 1),
 // or for a shadow catcher (lit, unlit, 0, -1); with `masks`, each light's
-// mask at (x, y) too.
+// mask at (x, y) too. `eye` is where the sample's ray starts (the eye, for
+// a perspective camera).
 glm::dvec4 shade(const Scene& scene, const RayCaster& caster, const glm::dvec3& ambient_sum, const Terminators& terminators,
-                 const RayHit& hit, std::vector<Image>* masks, int x, int y) {
+                 const RayHit& hit, const glm::dvec3& eye, std::vector<Image>* masks, int x, int y) {
   const Surface surface = surface_of(scene, hit.object);
   const Material& m = scene.materials[size_t(surface.material)];
   const glm::dvec3 tint = surface_colour(scene, surface, hit.point);
-  const glm::dvec3 eye = scene.camera.eye;
   glm::dvec3 n = hit.normal;
   if (glm::dot(n, eye - hit.point) < 0.0) n = -n;
   const std::optional<glm::dvec3> smooth = shading_normal(surface, hit.point);
@@ -123,8 +123,9 @@ class FrameSampler {
   // colour and coverage, the background where it sees nothing, as the GL
   // clears its frame (pixel_mean.hpp).
   glm::dvec4 sample(double px, double py, std::vector<Image>* masks, int x, int y) const {
-    const auto hit = caster_.nearest_hit(rays_.ray(px - 0.5, py - 0.5));
-    return hit ? resolved_sample(shade(scene_, caster_, ambient_sum_, terminators_, *hit, masks, x, y), scene_.background.color,
+    const Ray ray = rays_.ray(px - 0.5, py - 0.5);
+    const auto hit = caster_.nearest_hit(ray);
+    return hit ? resolved_sample(shade(scene_, caster_, ambient_sum_, terminators_, *hit, ray.origin, masks, x, y), scene_.background.color,
                                  scene_.background.transparent)
                : nothing_;
   }

@@ -119,6 +119,9 @@ RayCaster::RayCaster(const Scene& scene, Search search) : impl_(std::make_unique
     largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
   };
   grow(scene.camera.eye);
+  // An orthographic camera's rays start beside its eye, as far off as a
+  // picture 64 times wider than high reaches.
+  if (scene.camera.orthographic()) grow(glm::abs(scene.camera.eye) + 64.0 * scene.camera.ortho_height);
   for (const Light& l : scene.lights) grow(l.position);
   for (const Sphere& s : scene.spheres) {
     m.primitives.push_back({&s, {}});

@@ -1,6 +1,7 @@
 #include "render/frame_drawing.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <string>
 
@@ -95,10 +96,9 @@ FrameDrawing::~FrameDrawing() = default;
 void FrameDrawing::apply_view(int samples) {
   samples_per_side_ = samples;
   const RenderSettings& s = plan_.settings;
-  const glm::dmat4 view_projection =
-      plan_.camera.view_projection(double(s.width) / s.height, plan_.near_plane);
+  const glm::dmat4 view_projection = plan_.projection() * plan_.camera.view();
   const int width = s.width * samples_per_side_, height = s.height * samples_per_side_;
-  view_from(plan_.camera.eye, view_projection, width, height);
+  view_from(culling_viewpoint(), view_projection, width, height);
   for (ShaderProgram* p : {volume_program_.get(), count_program_.get(), planar_program_.get()}) {
     p->use();
     p->set("view_projection", glm::mat4(view_projection));
@@ -107,18 +107,28 @@ void FrameDrawing::apply_view(int samples) {
   glViewport(0, 0, width, height);
 }
 
+glm::dvec3 FrameDrawing::culling_viewpoint() const {
+  const Camera& c = plan_.camera;
+  if (!c.orthographic()) return c.eye;
+  // An orthographic camera's rays start on its eye's plane: a point behind
+  // that plane stands for them all where every surface lies ahead of it;
+  // where the plane cuts the surfaces, a ray may start inside a closed
+  // mesh, and NaN, outside no box, culls nothing.
+  const glm::dvec3 forward = c.axes().forward;
+  const double ahead = glm::dot(scene_center_ - c.eye, forward);
+  if (ahead - scene_radius_ > 0.0) return c.eye - forward * (ahead + scene_radius_);
+  return glm::dvec3(std::numeric_limits<double>::quiet_NaN());
+}
+
 void FrameDrawing::view_from(const glm::dvec3& viewpoint, const glm::dmat4& view_projection, int width, int height) {
   viewpoint_ = viewpoint;
   view_ = {view_projection, width, height};
+  const WindowRays rays = window_rays(view_projection, viewpoint, width, height);
   for (ShaderProgram* p : {triangle_program_.get(), sphere_program_.get()}) {
     p->use();
     p->set("view_projection", glm::mat4(view_projection));
-    p->set("eye", f(viewpoint));
-  }
-  const glm::mat3 rays(window_ray_directions(view_projection, viewpoint, width, height));
-  for (ShaderProgram* p : {triangle_program_.get(), sphere_program_.get()}) {
-    p->use();
-    p->set("window_rays", rays);
+    p->set("window_rays", glm::mat3(rays.directions));
+    p->set("window_origins", glm::mat3(rays.origins));
   }
 }
 

@@ -102,6 +102,8 @@ class FrameDrawing {
   std::unique_ptr<VolumeBuffer> volumes_;
   std::vector<std::unique_ptr<VolumeBuffer>> mesh_volumes_;  // per scene mesh; made when first drawn
   glm::dvec3 viewpoint_{0.0};  // where the surfaces are drawn from: the eye, or a light for its shadow map
+  // The camera's viewpoint for culling back faces (SurfaceBuffers::culls).
+  glm::dvec3 culling_viewpoint() const;
   // The view drawn from (view_from), and those from which
   // draw_nearest_surfaces found no back face showing: a still camera asks once.
   struct View {

@@ -126,7 +126,7 @@ SceneBounds kept_casters_box(const Scene& scene, const LightCulling& c) {
 }
 
 // Decides z-pass or z-fail for a light and says why.
-void choose_count(RenderMethod method, const LightCulling& c, LightPlan& lp) {
+void choose_count(RenderMethod method, bool orthographic, const LightCulling& c, LightPlan& lp) {
   const std::string near_plane_hit =
       c.shadows_near_plane ? "the caster at line " + std::to_string(c.shadows_near_plane->line) + " may shadow the near plane"
                            : "the near plane is outside every volume";
@@ -137,6 +137,11 @@ void choose_count(RenderMethod method, const LightCulling& c, LightPlan& lp) {
       if (c.shadows_near_plane) lp.count_reason += "; may be wrong here: " + near_plane_hit;
       return;
     case VolumeCounting::kPerLight:
+      if (orthographic) {  // volume parts behind its eye's plane clamp to depth 0, which z-pass would count
+        lp.count = DepthCount::kWhereDepthFails;
+        lp.count_reason = "z-fail with caps: the camera is orthographic";
+        return;
+      }
       lp.count = c.shadows_near_plane ? DepthCount::kWhereDepthFails : DepthCount::kWhereDepthPasses;
       lp.count_reason = lp.capped() ? "z-fail with caps: " + near_plane_hit : "z-pass without caps: " + near_plane_hit;
       return;
@@ -215,7 +220,9 @@ void place_camera(const Scene& scene, RenderPlan& plan) {
   plan.camera = c;
   if (view == plan.near_plane_view) return;
   plan.near_plane_view = view;
-  plan.near_plane = near_plane(c, aspect, surface_bounds(scene), nearest_surface_distance(scene, c.eye));
+  const SceneBounds bounds = surface_bounds(scene);
+  plan.near_plane = near_plane(c, aspect, bounds, nearest_surface_distance(scene, c.eye));
+  plan.far_plane = c.orthographic() ? far_plane(c, bounds) : 0.0;
 }
 
 }  // namespace
@@ -303,8 +310,10 @@ void update_render_lights(const Scene& scene, const std::vector<MeshCaster>& mes
     }
     const LightCulling culling = cull_for_light(scene, plan, near, light.position);
     lp.culled_casters = culling.culled;
-    choose_count(plan.settings.method, culling, lp);
+    choose_count(plan.settings.method, plan.camera.orthographic(), culling, lp);
     lp.volume_reach = volume_reach(light.position, kept_casters_box(scene, culling), region);
+    if (std::isinf(lp.volume_reach) && plan.camera.orthographic())  // no orthographic picture holds infinity
+      lp.volume_reach = finite_volume_reach(light.position, region, nearest_surface_distance(scene, light.position));
     const bool per_triangle = casts_per_triangle(plan.settings.method);
     size_t slot = 0;
     for (size_t k = 0; k < scene.spheres.size(); ++k) {
@@ -350,10 +359,16 @@ void print_render_plan(std::ostream& out, const Scene& scene, const RenderPlan& 
   const Camera& c = plan.camera;
   out << "render plan for " << scene.path << "\n";
   out << "  image: " << image_phrase(plan.settings) << "\n";
-  out << "  camera: eye " << c.eye << " target " << c.target << " up " << c.up << " fovy " << c.fovy_deg
-      << " deg" << (plan.camera_is_spec_default ? " (the default view)" : " (from the scene file)") << "\n";
-  out << "  projection: perspective, near " << plan.near_plane << " (from the surfaces' bounds as the eye sees them), "
-      << "far plane at infinity (epsilon 2^-22)\n";
+  out << "  camera: eye " << c.eye << " target " << c.target << " up " << c.up;
+  if (c.orthographic()) out << " orthographic " << c.ortho_height;
+  else out << " fovy " << c.fovy_deg << " deg";
+  out << (plan.camera_is_spec_default ? " (the default view)" : " (from the scene file)") << "\n";
+  if (c.orthographic())
+    out << "  projection: orthographic, " << c.ortho_height << " high, from the eye's plane to far " << plan.far_plane
+        << " (past the surfaces' bounds); shadow volumes stop at a finite reach, drawn with depth clamping\n";
+  else
+    out << "  projection: perspective, near " << plan.near_plane << " (from the surfaces' bounds as the eye sees them), "
+        << "far plane at infinity (epsilon 2^-22)\n";
   out << "  shading: ambient + diffuse" << (plan.specular_used ? " + specular" : " (no material has a specular term: skipped)")
       << "\n";
   out << "  method: " << method_name(plan.settings.method) << "; " << method_technique(plan.settings.method) << "\n";

@@ -91,6 +91,9 @@ struct RenderPlan {
   Camera camera;
   bool camera_is_spec_default = true;
   double near_plane = 0.05;  // near_plane(camera, aspect, the surfaces' bounds, the nearest surface's distance)
+  double far_plane = 0.0;    // orthographic: far_plane(camera, the surfaces' bounds); perspective: at infinity
+  // The camera's projection for the picture's shape, with these planes.
+  glm::dmat4 projection() const { return camera.projection(double(settings.width) / settings.height, near_plane, far_plane); }
   // The view the near plane was worked out for: a camera and its aspect.
   std::optional<std::pair<Camera, double>> near_plane_view;
   // Shading terms that some material and light use; the shader skips the

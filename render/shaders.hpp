@@ -6,7 +6,7 @@
 namespace umbra::shaders {
 
 // What a surface pass writes (uniform `pass`). kDistance draws a shadow map
-// face: with `eye` at the light, the distance from it.
+// face: seen from the light, the distance from it.
 // kMarkReceiver keeps only the fragments of triangles in `receiver_plane`,
 // writing nothing but the stencil (planar shadows).
 enum SurfacePass { kAmbient = 0, kDirect = 1, kMaskLit = 3, kDistance = 4, kMarkReceiver = 5 };
@@ -30,7 +30,9 @@ enum TextureUnit { kMaterialTextureUnit = 0, kShadowMapUnit = 1, kVolumeCountUni
 // rounding varies across a face in the light's plane and would speckle it.
 inline constexpr const char* kShading = R"(
 uniform int pass;
-uniform vec3 eye;
+// Where the ray through window point (x, y) starts: window_origins * (x, y,
+// 1), the eye for a perspective (window_rays in camera.hpp).
+uniform mat3 window_origins;
 uniform vec3 ambient_sum;      // sum over lights of their ambient intensity
 // The scene's FillLight: a headlight at the eye, and a hemisphere's sky and
 // ground (weighted by the seen side's turn to `sky_up`), added in the
@@ -96,8 +98,11 @@ bool in_shadow(vec3 p, float n_dot_l) {
 // Whether the side of a sphere's point `p` with normal `n` that the camera
 // sees faces the light (its terminator is a curve, which no rounding moves
 // by more than a pixel's part).
+// From `p` back along its pixel's ray to where the ray starts.
+vec3 to_viewer(vec3 p) { return window_origins * vec3(gl_FragCoord.xy, 1.0) - p; }
+
 bool seen_side_faces_light(vec3 p, vec3 n) {
-  if (dot(n, eye - p) < 0.0) n = -n;
+  if (dot(n, to_viewer(p)) < 0.0) n = -n;
   return dot(n, light_position - p) > 0.0;
 }
 
@@ -115,7 +120,7 @@ void shade(vec3 p, vec3 n, vec3 s, bool smoothed, float reach, bool faces_light)
     frag_color = vec4(0.0);
     return;
   }
-  if (dot(n, eye - p) < 0.0) n = -n;
+  if (dot(n, to_viewer(p)) < 0.0) n = -n;
   if (!smoothed) s = n;
   else if (dot(s, n) < 0.0) s = -s;
   vec3 l = unit(light_position - p);
@@ -124,7 +129,7 @@ void shade(vec3 p, vec3 n, vec3 s, bool smoothed, float reach, bool faces_light)
   float s_dot_l = smoothed ? max(dot(s, l), 0.0) * reach : n_dot_l;
   if (pass == 0) {
     vec3 ambient = ambient_sum + mix(ground, sky, 0.5 + 0.5 * dot(s, sky_up));
-    vec3 head = headlight * max(dot(s, normalize(eye - p)), 0.0);
+    vec3 head = headlight * max(dot(s, normalize(to_viewer(p))), 0.0);
     float unshadowed = dot(ambient + head, vec3(1.0 / 3.0));
     frag_color = material_catcher ? vec4(unshadowed, unshadowed, 0.0, -1.0)
                                   : vec4((ambient * material_ambient + head * material_diffuse) * surface_color, 1.0);
@@ -138,7 +143,7 @@ void shade(vec3 p, vec3 n, vec3 s, bool smoothed, float reach, bool faces_light)
     if (in_shadow(p, n_dot_l)) discard;
     vec3 colour = material_diffuse * surface_color * s_dot_l;
     if (specular_used) {
-      vec3 v = normalize(eye - p);
+      vec3 v = normalize(to_viewer(p));
       vec3 r = reflect(-l, s);
       float highlight = material_shininess > 0.0 ? pow(max(dot(r, v), 0.0), material_shininess) : 1.0;
       colour += material_specular * highlight * (smoothed ? reach : 1.0);
@@ -254,15 +259,16 @@ void main() {
   // corners, far more than the point's own. Where the ray grazes the plane,
   // the interpolated one.
   vec3 ray = window_rays * vec3(gl_FragCoord.xy, 1.0);
+  vec3 origin = window_origins * vec3(gl_FragCoord.xy, 1.0);
   float along = dot(world_normal, ray);
   vec3 p = world_position;
   if (abs(along) > 1e-3 * length(world_normal) * length(ray)) {
-    float t = (plane_offset - dot(world_normal, eye)) / along;
-    if (t > 0.0) p = eye + t * ray;
+    float t = (plane_offset - dot(world_normal, origin)) / along;
+    if (t > 0.0) p = origin + t * ray;
   }
   // The camera's side of the plane: it can round only where the plane
-  // nearly holds the eye, and the face is seen edge-on.
-  int eye_side = dot(world_normal, eye - p) < 0.0 ? -1 : 1;
+  // nearly holds the ray's start, and the face is seen edge-on.
+  int eye_side = dot(world_normal, origin - p) < 0.0 ? -1 : 1;
   bool faces_light = triangle_light_side != 0 && triangle_light_side == eye_side;
   vec3 n = normalize(world_normal);
 #ifdef UMBRA_SMOOTH
@@ -278,7 +284,7 @@ void main() {
 // Spheres are exact: a box around the sphere is rasterised (back faces, so it
 // covers the sphere from outside and inside) and each fragment intersects its
 // eye ray with the true sphere, writing the hit's depth. The ray is the one
-// through the pixel's centre, from gl_FragCoord (window_ray_directions), as
+// through the pixel's centre, from gl_FragCoord (window_rays), as
 // the ray-cast reference traces it. Near the outline the hit's depth goes
 // as the square root of the distance to it, so a ray aimed at a position
 // interpolated across the box, which the GL computes to a precision of its
@@ -304,16 +310,17 @@ uniform vec3 sphere_center;
 uniform float sphere_radius;
 void main() {
   vec3 d = normalize(window_rays * vec3(gl_FragCoord.xy, 1.0));
-  vec3 oc = eye - sphere_center;
+  vec3 origin = window_origins * vec3(gl_FragCoord.xy, 1.0);
+  vec3 oc = origin - sphere_center;
   float b = dot(oc, d);
   vec3 closest = oc - b * d;  // h = R^2 - |oc - b d|^2 avoids b^2 - c cancellation
   float h = sphere_radius * sphere_radius - dot(closest, closest);
   if (h < 0.0) discard;
   float s = sqrt(h);
   float t = -b - s;
-  if (t <= 0.0) t = -b + s;  // the eye is inside the sphere
+  if (t <= 0.0) t = -b + s;  // the ray starts inside the sphere
   if (t <= 0.0) discard;
-  vec3 p = eye + t * d;
+  vec3 p = origin + t * d;
   vec4 clip = view_projection * vec4(p, 1.0);
   gl_FragDepth = 0.5 * (clip.z / clip.w) + 0.5;
   vec3 n = (p - sphere_center) / sphere_radius;

@@ -117,7 +117,7 @@ std::vector<float> ShadowRenderer::view_depth() {
     } while (drawing_->back_faces_showed());
   const std::vector<float> window = read_depth();
   const RenderSettings& s = plan_.settings;
-  const glm::dmat4 projection = plan_.camera.projection(double(s.width) / s.height, plan_.near_plane);
+  const glm::dmat4 projection = plan_.projection();
   std::vector<float> depth(window.size());
   const int w = s.width, h = s.height;
   for (int y = 0; y < h; ++y)

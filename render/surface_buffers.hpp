@@ -32,8 +32,9 @@ class SurfaceBuffers {
     int vertex_count = 0;
   };
   const std::vector<TriangleGroup>& triangle_groups() const { return groups_; }
-  // Seen from `viewpoint` (the eye, or the light for a shadow map): a closed
-  // group's back faces are culled when the viewpoint is outside its box, where
+  // Seen from `viewpoint` (the eye, or the light for a shadow map; NaN, outside
+  // no box, culls nothing): a closed group's back faces are culled when the
+  // viewpoint is outside its box, where
   // they are never visible (and where rasterisation lets one show at an
   // outline pixel, two-sided shading would paint it unlit); from inside, as
   // when a viewer zooms into a mesh, they are drawn.

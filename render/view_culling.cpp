@@ -88,12 +88,16 @@ bool volume_may_reach_view(const Camera& camera, const NearRectangle& near, cons
                            const BoundingSphere& caster) {
   const glm::dvec3* c = near.corners;
   const glm::dvec3 centre = 0.25 * (c[0] + c[1] + c[2] + c[3]);
-  const glm::dvec3 inside = camera.eye + 2.0 * (centre - camera.eye);  // beyond the near plane, on the axis
+  // The frustum's sides: through the eye and an edge of the near
+  // rectangle, or orthographic, through the edge along the view axis.
+  const glm::dvec3 along = camera.axes().forward * glm::length(c[0] - centre);
+  const glm::dvec3 inside = camera.orthographic() ? centre + along : camera.eye + 2.0 * (centre - camera.eye);  // beyond the near plane, on the axis
   const double margin = caster.radius + slack(light, caster);
   for (int i = 0; i <= 4; ++i) {
     Plane p;
-    const bool made = i < 4 ? plane_through(camera.eye, c[i], c[(i + 1) % 4], inside, p)
-                            : plane_through(c[0], c[1], c[2], inside, p);
+    const bool made = i == 4                  ? plane_through(c[0], c[1], c[2], inside, p)
+                      : camera.orthographic() ? plane_through(c[i], c[(i + 1) % 4], c[i] + along, inside, p)
+                                              : plane_through(camera.eye, c[i], c[(i + 1) % 4], inside, p);
     if (!made) continue;
     // Outside when the ball is, and every ray from the light through it
     // heads no further in.

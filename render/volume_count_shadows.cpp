@@ -32,7 +32,7 @@ void VolumeCountShadows::cast(size_t light) {
   // units back so the cap reliably counts as behind its own surface, which
   // leaves the surface lit, whatever the rasteriser's rounding.
   glEnable(GL_POLYGON_OFFSET_FILL);
-  glPolygonOffset(0.0f, 4.0f);
+glPolygonOffset(0.0f, 4.0f);
   // Edges between two vertices at infinity that cross the plane through the
   // eye (a dark cap of a large triangle reaching behind the camera) would be
   // clipped at the near plane to points with clip w = 0, which the

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include <glm/geometric.hpp>
+
 namespace umbra {
 
 double volume_reach(const glm::dvec3& light, const SceneBounds& casters, const SceneBounds& region) {
@@ -15,6 +17,13 @@ double volume_reach(const glm::dvec3& light, const SceneBounds& casters, const S
     if (l < casters.lo[axis]) reach = std::min(reach, (region.hi[axis] - l) / (casters.lo[axis] - l));
   }
   return kVolumeReachMargin * reach;
+}
+
+double finite_volume_reach(const glm::dvec3& light, const SceneBounds& region, double nearest_caster) {
+  if (!(nearest_caster > 0.0) || region.empty()) return std::numeric_limits<double>::infinity();
+  const glm::dvec3 centre = 0.5 * (region.lo + region.hi);
+  const double radius = 0.5 * glm::length(region.hi - region.lo);
+  return kVolumeReachMargin * std::max(1.0, (glm::length(light - centre) + radius) / nearest_caster);
 }
 
 }  // namespace umbra

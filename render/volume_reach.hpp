@@ -30,6 +30,18 @@ namespace umbra {
 // stays inside `region`, which is convex.
 double volume_reach(const glm::dvec3& light, const SceneBounds& casters, const SceneBounds& region);
 
+// A finite reach however the light lies among the casters, for a camera
+// that cannot draw a volume at infinity (an orthographic one): the least s
+// past which every point of `region`'s bounding sphere (centre C, radius
+// R) lies, margin included: s = (|L - C| + R) / d, d a lower bound on the
+// light's distance from every caster point (nearest_surface_distance). A
+// point X of the sphere inside the infinite volume is L + t (P - L) with
+// |X - L| <= |L - C| + R and |P - L| >= d, so t < s; and the finite volume
+// is the union of the segments from P to L + s (P - L), exactly: its far
+// cap is the casters' triangles scaled about L by the one s, which maps a
+// triangle onto a triangle. Infinity where d is 0 (a light on a surface).
+double finite_volume_reach(const glm::dvec3& light, const SceneBounds& region, double nearest_caster);
+
 // The margin: the far cap lies beyond `region`'s face by at least a tenth of
 // the light's distance from that face, far past depth-buffer rounding. (A
 // quarter, as first chosen, cost the staged engine 0.1 s of its 0.6 s on

@@ -38,13 +38,21 @@ struct Projected {
   double px = 0.0, py = 0.0, depth = 0.0;
 };
 
+// A perspective camera sees along rays from its eye; an orthographic one
+// (ortho_height above 0) along parallel rays, one through each pixel, from
+// the plane through its eye square to its view axis, forward: what lies
+// behind that plane it does not see.
 struct Camera {
   glm::dvec3 eye{0.0};
   glm::dvec3 target{0.0};
   glm::dvec3 up{0.0, 1.0, 0.0};
-  double fovy_deg = 45.0;  // the vertical field of view
+  double fovy_deg = 45.0;     // perspective: the vertical field of view
+  double ortho_height = 0.0;  // above 0: orthographic, the height it sees, in scene units (fovy_deg unused)
 
-  bool operator==(const Camera& o) const { return eye == o.eye && target == o.target && up == o.up && fovy_deg == o.fovy_deg; }
+  bool orthographic() const { return ortho_height > 0.0; }
+  bool operator==(const Camera& o) const {
+    return eye == o.eye && target == o.target && up == o.up && fovy_deg == o.fovy_deg && ortho_height == o.ortho_height;
+  }
   bool operator!=(const Camera& o) const { return !(*this == o); }
 
   CameraAxes axes() const;
@@ -52,15 +60,20 @@ struct Camera {
   glm::dmat4 view() const;
   // The camera's frame back to world: a dataset's camera pose (inverse of view()).
   glm::dmat4 pose() const;
-  // Perspective whose far plane is at infinity, with depth scaled by
+  // Perspective: its far plane at infinity, with depth scaled by
   // (1 - kInfiniteFarEpsilon) (Everitt and Kilgard, "Practical and Robust
   // Stenciled Shadow Volumes for Hardware-Accelerated Rendering", 2002):
-  // shadow volumes extruded to infinity stay inside it.
-  glm::dmat4 projection(double aspect, double near) const;
-  glm::dmat4 view_projection(double aspect, double near) const { return projection(aspect, near) * view(); }
-  // tan(fovy / 2): the picture's half-height at unit depth.
+  // shadow volumes extruded to infinity stay inside it; `far` unused.
+  // Orthographic: depth from `near` to `far` along the view axis, which
+  // no projection can take to infinity (a point at infinity lies off every
+  // orthographic picture but along the axis): its shadow volumes stop at a
+  // finite reach (volume_reach.hpp) and are drawn with depth clamping.
+  glm::dmat4 projection(double aspect, double near, double far = 0.0) const;
+  glm::dmat4 view_projection(double aspect, double near, double far = 0.0) const { return projection(aspect, near, far) * view(); }
+  // Perspective: tan(fovy / 2), the picture's half-height at unit depth.
   double half_height_at_unit_depth() const;
-  // The focal length in pixels of a picture `height` pixels high (width and height alike: square pixels).
+  // Perspective: the focal length in pixels of a picture `height` pixels
+  // high; orthographic: pixels per scene unit (width and height alike: square pixels).
   double focal_length_pixels(int height) const;
   // The ray through pixel (px, py) of a width x height picture.
   Ray pixel_ray(int width, int height, double px, double py) const;
@@ -73,7 +86,7 @@ struct Camera {
   std::array<glm::dvec3, 4> section_corners(double aspect, double depth) const;
 };
 // A member added to Camera must join operator== (plans are kept while the camera compares equal).
-static_assert(sizeof(Camera) == 10 * sizeof(double), "compare the new member of Camera in operator==");
+static_assert(sizeof(Camera) == 11 * sizeof(double), "compare the new member of Camera in operator==");
 
 // The pixel rays of one camera and picture size, with the axes and the
 // lens's scale worked out once (the ray caster's samples).
@@ -83,7 +96,8 @@ class PixelRays {
   Ray ray(double px, double py) const;
 
  private:
-  double width_, height_, scale_;  // scale_: tan(fovy / 2)
+  double width_, height_, scale_;  // scale_: tan(fovy / 2), or orthographic, half the height seen
+  bool orthographic_;
   glm::dvec3 eye_;
   CameraAxes axes_;
 };
@@ -110,7 +124,11 @@ constexpr double kLeastNearPlaneFraction = 1.0 / (1 << 20);
 // depth that fine, and would push the near plane past what the camera
 // looks at.
 constexpr double kDepthsOfInterest = 64.0;
+// An orthographic camera's near plane is its eye's (0: it sees from there).
 double near_plane(const Camera& camera, double aspect, const SceneBounds& surfaces, double nearest_surface);
+// An orthographic camera's far plane: past the far side of the surfaces'
+// box by a hundredth of its depth (1 where nothing lies ahead).
+double far_plane(const Camera& camera, const SceneBounds& surfaces);
 
 // With the far plane at infinity, a vertex at infinity lands exactly on the
 // far plane and rounding may clip it. Scaling depth by (1 - eps) keeps it
@@ -123,17 +141,23 @@ constexpr double kInfiniteFarEpsilon = 1.0 / (1 << 22);
 glm::dmat4 infinite_perspective(double fovy_deg, double aspect, double near);
 
 // The depth along the view axis of a window depth `window` (0 to 1) that
-// `projection` (Camera::projection's) wrote; infinity at 1.
+// `projection` (Camera::projection's) wrote; perspective: infinity at 1.
 double view_depth_of_window_depth(const glm::dmat4& projection, double window);
 
-// The matrix M for which M (x, y, 1) is the direction (not unit) of the ray
-// from `eye` through the point (x, y) of a width x height viewport, in GL
-// window coordinates (pixel centres at half-integers, row 0 at the bottom),
-// for a perspective `view_projection` whose centre of projection is `eye`.
-// A fragment shader that traces its pixel's ray from gl_FragCoord by it
+// The rays of a width x height viewport, in GL window coordinates (pixel
+// centres at half-integers, row 0 at the bottom): the ray through window
+// point (x, y) starts at origins (x, y, 1) and runs along directions (x, y,
+// 1) (not unit). Perspective: every origin the centre of projection;
+// orthographic: on the near plane, every direction the view axis. A
+// fragment shader that traces its pixel's ray from gl_FragCoord by them
 // aims within about 1e-7 of the ray's angle; one that interpolates a
 // position across a triangle aims only as well as the rasteriser's
 // attribute interpolation, which the GL leaves to the implementation.
-glm::dmat3 window_ray_directions(const glm::dmat4& view_projection, const glm::dvec3& eye, int width, int height);
+struct WindowRays {
+  glm::dmat3 origins{0.0}, directions{0.0};
+};
+// For the projection `view_projection`, whose centre of projection is
+// `eye` where it is a perspective one.
+WindowRays window_rays(const glm::dmat4& view_projection, const glm::dvec3& eye, int width, int height);
 
 }  // namespace umbra

@@ -298,20 +298,33 @@ class SceneBuilder {
       throw InputError(r.statement_loc(), "a second camera statement (the first is at line " +
                                               std::to_string(scene_.camera_from->line) + ")");
     Camera c;
-    FileLoc fovy_at;
-    while (auto k = r.keyword_of("camera", {"eye", "target", "up", "fovy"})) {
-      if (*k == "eye") c.eye = r.vec3("camera eye");
-      else if (*k == "target") c.target = r.vec3("camera target");
-      else if (*k == "up") c.up = direction(r.vec3("camera up"));
-      else {
-        fovy_at = r.next_loc();
+    FileLoc lens_at;
+    while (auto k = r.keyword_of("camera", {"eye", "target", "up", "fovy", "orthographic"})) {
+      if (*k == "eye") {
+        c.eye = r.vec3("camera eye");
+      } else if (*k == "target") {
+        c.target = r.vec3("camera target");
+      } else if (*k == "up") {
+        c.up = direction(r.vec3("camera up"));
+      } else if (*k == "fovy") {
+        if (r.seen("orthographic")) r.fail_at_next("a camera has fovy (a perspective) or orthographic HEIGHT, not both");
+        lens_at = r.next_loc();
         c.fovy_deg = r.number("camera fovy");
+        if (!(c.fovy_deg > 0 && c.fovy_deg < 180))
+          throw InputError(lens_at, "fovy must be between 0 and 180 degrees, got " + number_text(c.fovy_deg));
+      } else {
+        if (r.seen("fovy")) r.fail_at_next("a camera has fovy (a perspective) or orthographic HEIGHT, not both");
+        lens_at = r.next_loc();
+        c.ortho_height = r.number("the orthographic camera's height");
+        if (!(c.ortho_height > 0 && std::isfinite(c.ortho_height)))
+          throw InputError(lens_at, "an orthographic camera's height must be above 0, got " + number_text(c.ortho_height));
       }
     }
-    for (const char* k : {"eye", "target", "up", "fovy"})
-      if (!r.seen(k)) r.fail_at_next(std::string("the camera needs \"") + k + "\" (camera eye X Y Z target X Y Z up X Y Z fovy DEG)");
-    if (!(c.fovy_deg > 0 && c.fovy_deg < 180))
-      throw InputError(fovy_at, "fovy must be between 0 and 180 degrees, got " + number_text(c.fovy_deg));
+    for (const char* k : {"eye", "target", "up"})
+      if (!r.seen(k))
+        r.fail_at_next(std::string("the camera needs \"") + k + "\" (camera eye X Y Z target X Y Z up X Y Z fovy DEG)");
+    if (!r.seen("fovy") && !r.seen("orthographic"))
+      r.fail_at_next("the camera needs \"fovy\" (camera eye X Y Z target X Y Z up X Y Z fovy DEG), or orthographic HEIGHT");
     const glm::dvec3 view = c.target - c.eye;
     if (glm::length(view) == 0)
       throw InputError(r.statement_loc(), "the camera eye and target are the same point");

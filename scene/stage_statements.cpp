@@ -73,10 +73,13 @@ void StageStatements::floor(double z, double centre_x, double centre_y, double h
   add("floor " + number(z) + " centre " + number(centre_x) + " " + number(centre_y) + " size " + number(half_size) + " material floor");
 }
 
-void StageStatements::camera(const glm::dvec3& eye, const glm::dvec3& target, double fovy_deg) {
-  scene_.camera = Camera{written(eye), written(target), {0.0, 0.0, 1.0}, written(fovy_deg)};
+void StageStatements::camera(const Camera& c) {
+  scene_.camera = Camera{written(c.eye), written(c.target), {0.0, 0.0, 1.0}};
+  if (c.orthographic()) scene_.camera.ortho_height = written(c.ortho_height);  // its fovy unwritten, the default
+  else scene_.camera.fovy_deg = written(c.fovy_deg);
   scene_.camera_from = here();
-  add("camera eye " + point(eye) + " target " + point(target) + " up 0 0 1 fovy " + number(fovy_deg));
+  add("camera eye " + point(c.eye) + " target " + point(c.target) + " up 0 0 1 " +
+      (c.orthographic() ? "orthographic " + number(c.ortho_height) : "fovy " + number(c.fovy_deg)));
 }
 
 void StageStatements::background(const Background& background) {

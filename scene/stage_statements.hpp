@@ -35,7 +35,7 @@ class StageStatements {
   void floor_material(const glm::dvec3& color, bool shadow_catcher);
   // A level square at height z, as the scene format's floor statement makes it, of material "floor".
   void floor(double z, double centre_x, double centre_y, double half_size);
-  void camera(const glm::dvec3& eye, const glm::dvec3& target, double fovy_deg);  // up +z
+  void camera(const Camera& camera);  // up +z
   void background(const Background& background);
   void size(int width, int height);
   void antialias(int samples, bool all);

@@ -154,7 +154,24 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
     target += shift;
     if (glm::length(shift) < 1e-9 * distance) break;
   }
-  distance /= view.camera_zoom;
+  double ortho_height = 0.0;
+  if (view.orthographic) {
+    // The points' extent across the view, centred; the eye stands where the
+    // perspective's would, or further back, behind every point, as an
+    // orthographic camera sees only what lies ahead of its eye's plane.
+    double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo, y_lo = x_lo, y_hi = -x_lo, behind = 0.0;
+    for (const glm::dvec3& p : points) {
+      const glm::dvec3 q = p - target;
+      x_lo = std::min(x_lo, glm::dot(q, right)), x_hi = std::max(x_hi, glm::dot(q, right));
+      y_lo = std::min(y_lo, glm::dot(q, up)), y_hi = std::max(y_hi, glm::dot(q, up));
+      behind = std::max(behind, -glm::dot(q, forward));
+    }
+    target += (x_lo + x_hi) / 2 * right + (y_lo + y_hi) / 2 * up;
+    ortho_height = std::max(y_hi - y_lo, (x_hi - x_lo) / aspect) * kMargin / view.camera_zoom;
+    distance = std::max(distance, behind + ortho_height);
+  } else {
+    distance /= view.camera_zoom;
+  }
   // An eye or target given outright replaces the framed one; the other keeps
   // its place relative to it.
   const glm::dvec3 aim = view.target.value_or(target);
@@ -172,7 +189,7 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
       throw StagingChoiceError(given + " is straight above or below the point the staged camera looks at, and the camera keeps +z "
                                "up: give --target as well, or move the eye sideways");
   }
-  stage.camera = Camera{eye, aim, {0, 0, 1}, view.fov_deg};
+  stage.camera = Camera{eye, aim, {0, 0, 1}, view.fov_deg, ortho_height};
   // Far past every edge of the frame: the floor's horizon is never in view.
   stage.floor_centre = {centre.x, centre.y, stage.floor_z};
   stage.floor_half_size = 20.0 * (view.eye ? std::max(distance, glm::length(eye - centre)) : distance);
@@ -294,7 +311,7 @@ Scene stage_mesh(const std::string& path, const std::shared_ptr<const PolygonSou
     const glm::dvec3& f = stage.floor_centre;
     statements.floor(f.z, f.x, f.y, stage.floor_half_size);
   }
-  statements.camera(stage.camera.eye, stage.camera.target, stage.camera.fovy_deg);
+  statements.camera(stage.camera);
   statements.background(staging.background.value_or(Background{kStageBackground, false}));
   if (staging.width > 0) statements.size(staging.width, staging.height);
   statements.antialias(staging.antialias.value_or(kStagedAntialias), staging.antialias_all);

@@ -58,6 +58,7 @@ struct StageView {
   double camera_elevation_deg = 30.0;
   double camera_zoom = 1.0;  // over the framing distance: 2 shows the model twice as large
   double fov_deg = 30.0;     // the lens's vertical field of view
+  bool orthographic = false; // parallel rays, framing the model and its shadow as the lens would
   std::optional<glm::dvec3> eye, target;
   // The light: `light` outright, or 4 model half-sizes from its centre in
   // the direction these give; unset, above and to the left of the front
@@ -73,7 +74,7 @@ struct StageView {
 
   bool operator==(const StageView& o) const {
     return camera_azimuth_deg == o.camera_azimuth_deg && camera_elevation_deg == o.camera_elevation_deg &&
-           camera_zoom == o.camera_zoom && fov_deg == o.fov_deg && eye == o.eye && target == o.target &&
+           camera_zoom == o.camera_zoom && fov_deg == o.fov_deg && orthographic == o.orthographic && eye == o.eye && target == o.target &&
            light_azimuth_deg == o.light_azimuth_deg && light_elevation_deg == o.light_elevation_deg && light == o.light &&
            light_turn_deg == o.light_turn_deg && frame_shadow == o.frame_shadow;
   }

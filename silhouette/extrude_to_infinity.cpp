@@ -24,11 +24,23 @@ ShadowVolume extrude_to_infinity(const std::vector<glm::dvec3>& loop, const glm:
   }
   const int cap_triangles = int(volume.triangles.size() / 2);
   // Side quad of edge a->b (counter-clockwise from the light) is b, a, a', b':
-  // its outward normal points away from the polygon's interior.
+  // its outward normal points away from the polygon's interior. It is split
+  // along the diagonal from the lesser end (its coordinates compared in
+  // order) to the other's far copy, so that the quad of a neighbour sharing
+  // the edge, which runs it b->a, is split alike: the two cover the same
+  // pixels at the same depths, and cancel, even seen nearly edge-on.
+  const auto lesser = [](const glm::dvec3& p, const glm::dvec3& q) {
+    return p.x != q.x ? p.x < q.x : p.y != q.y ? p.y < q.y : p.z < q.z;
+  };
   for (uint32_t a = 0; a < n; ++a) {
     const uint32_t b = (a + 1) % n;
-    volume.triangles.push_back({b, a, far(a)});
-    volume.triangles.push_back({b, far(a), far(b)});
+    if (lesser(loop[a], loop[b])) {  // diagonal a-b'
+      volume.triangles.push_back({b, a, far(b)});
+      volume.triangles.push_back({a, far(a), far(b)});
+    } else {  // diagonal b-a'
+      volume.triangles.push_back({b, a, far(a)});
+      volume.triangles.push_back({b, far(a), far(b)});
+    }
   }
   volume.light_cap_triangles = cap_triangles;
   volume.dark_cap_triangles = cap_triangles;

@@ -341,6 +341,7 @@ void add_staging_options(CommandOptions& options, StagingOptions& staging, std::
   add("--up", [&](const std::string& o, const std::string& t) { staging.up = parse_up_axis(o, t); });
   add_camera_orbit_options(options, v, given);
   add("--fov", [&](const std::string& o, const std::string& t) { v.fov_deg = parse_degrees_in(o, t, 1.0, 170.0); });
+  options.flag("--orthographic", v.orthographic);
   add("--eye", [&](const std::string& o, const std::string& t) { v.eye = parse_point(o, t); });
   add("--target", [&](const std::string& o, const std::string& t) { v.target = parse_point(o, t); });
   add("--light-azimuth", [&](const std::string& o, const std::string& t) { v.light_azimuth_deg = parse_finite_number(o, t); });
@@ -369,6 +370,7 @@ void add_staging_options(CommandOptions& options, StagingOptions& staging, std::
 void note_staging_flags(const StagingOptions& staging, std::vector<std::string>& given) {
   if (staging.plain_model) given.push_back("--plain");
   if (staging.flat) given.push_back("--flat");
+  if (staging.view.orthographic) given.push_back("--orthographic");
 }
 
 StagingOptions staging_for(StagingOptions staging, const RenderSettings& settings) {
@@ -383,6 +385,8 @@ void require_consistent_staging(const StagingOptions& staging) {
   if (v.light && (v.light_azimuth_deg || v.light_elevation_deg))
     throw UsageError("--light places the light outright; --light-azimuth and --light-elevation place it by angles: give one or the other");
   if (v.eye && v.target && *v.eye == *v.target) throw UsageError("--eye and --target are the same point: the camera would look nowhere");
+  if (v.orthographic && v.fov_deg != StageView{}.fov_deg)
+    throw UsageError("--fov is a perspective's lens; an --orthographic camera has none (its framing sets how much it sees)");
   if (v.eye && v.camera_zoom != 1.0)
     throw UsageError("--camera-zoom scales the framing's distance, which --eye replaces: give one or the other");
   if (v.eye && v.target && glm::length(glm::cross(*v.target - *v.eye, glm::dvec3(0, 0, 1))) == 0.0)

@@ -109,6 +109,9 @@ options:
                         to 100; not with --eye, which places the camera)
   --fov DEG             the lens's vertical field of view, 1 to 170 (default
                         30)
+  --orthographic        parallel rays (an orthographic camera), framing the
+                        model and its shadow as the lens would; shadows as
+                        exact (its volumes stop past the last surface)
   --eye X,Y,Z           put the camera there (aimed at the framing's target)
   --target X,Y,Z        aim the camera there (from the framing's direction)
   --light-azimuth DEG   the light's azimuth (default about -47.7: front left)

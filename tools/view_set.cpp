@@ -115,17 +115,29 @@ nlohmann::ordered_json transforms_json(const std::vector<Camera>& cameras, const
                                        const std::vector<std::string>& stems) {
   const FileFrame file{placement};
   const Camera& lens = cameras.at(0);
-  const double focal = lens.focal_length_pixels(height);
   nlohmann::ordered_json json;
-  json["camera_angle_x"] = 2.0 * std::atan(width / (2.0 * focal));
-  json["camera_angle_y"] = 2.0 * std::atan(height / (2.0 * focal));
-  json["fl_x"] = focal;
-  json["fl_y"] = focal;
+  // An orthographic camera has no focal length: what the picture spans, in
+  // the file's units, the first view's here and each view's in its frame,
+  // as each is framed (a pinhole's keys left out, so that a tool that knows
+  // only those stops).
+  const auto span = [&](nlohmann::ordered_json& into, const Camera& c) {
+    into["ortho_width"] = c.ortho_height * width / height / placement.scale;
+    into["ortho_height"] = c.ortho_height / placement.scale;
+  };
+  if (lens.orthographic()) {
+    span(json, lens);
+  } else {
+    const double focal = lens.focal_length_pixels(height);
+    json["camera_angle_x"] = 2.0 * std::atan(width / (2.0 * focal));
+    json["camera_angle_y"] = 2.0 * std::atan(height / (2.0 * focal));
+    json["fl_x"] = focal;
+    json["fl_y"] = focal;
+  }
   json["cx"] = width / 2.0;
   json["cy"] = height / 2.0;
   json["w"] = width;
   json["h"] = height;
-  json["camera_model"] = "PINHOLE";
+  json["camera_model"] = lens.orthographic() ? "ORTHOGRAPHIC" : "PINHOLE";
   nlohmann::ordered_json frames = nlohmann::ordered_json::array();
   for (size_t i = 0; i < cameras.size(); ++i) {
     const Camera& c = cameras[i];
@@ -139,6 +151,7 @@ nlohmann::ordered_json transforms_json(const std::vector<Camera>& cameras, const
     pose[3] = glm::dvec4(file.point(c.eye), 1.0);
     nlohmann::ordered_json frame;
     frame["file_path"] = stems[i] + ".png";
+    if (c.orthographic()) span(frame, c);
     for (const DataPass pass : passes) {
       const DataPassRow& row = data_pass_row(pass);
       if (pass == DataPass::kShadow && scene.lights.size() > 1) {
@@ -154,7 +167,9 @@ nlohmann::ordered_json transforms_json(const std::vector<Camera>& cameras, const
     for (const Light& l : scene.lights) lights.push_back(point_json(file.point(l.position)));
     frame["light_positions"] = lights;
     // The camera as umbra placed it, in the staged scene's coordinates: --cameras draws it again exactly.
-    frame["umbra_camera"] = {{"eye", point_json(c.eye)}, {"target", point_json(c.target)}, {"up", point_json(c.up)}, {"fovy", c.fovy_deg}};
+    frame["umbra_camera"] = {{"eye", point_json(c.eye)}, {"target", point_json(c.target)}, {"up", point_json(c.up)}};
+    if (c.orthographic()) frame["umbra_camera"]["orthographic"] = c.ortho_height;
+    else frame["umbra_camera"]["fovy"] = c.fovy_deg;
     frames.push_back(frame);
   }
   json["frames"] = frames;
@@ -196,15 +211,24 @@ TransformsFile read_transforms(const std::string& text, const std::string& path)
     throw InputError({path}, "w and h must be whole numbers of pixels from 1 to " + std::to_string(kLargestPictureSide),
                      InputProblem::kMalformed);
   file.width = int(w), file.height = int(h);
-  const double fl_x = number_at(json, "fl_x", path, "the file"), fl_y = number_at(json, "fl_y", path, "the file");
   const double cx = number_at(json, "cx", path, "the file"), cy = number_at(json, "cy", path, "the file");
-  // A pinhole with square pixels, centred: what umbra's camera is.
-  if (!(fl_y > 0.0) || std::abs(fl_x - fl_y) > 1e-9 * fl_y)
-    throw InputError({path}, "fl_x and fl_y must be one focal length above 0 (umbra draws square pixels)", InputProblem::kMalformed);
   if (std::abs(cx - w / 2) > 1e-9 * w || std::abs(cy - h / 2) > 1e-9 * h)
     throw InputError({path}, "cx and cy must be the picture's centre, w / 2 and h / 2 (umbra's camera looks through it)",
                      InputProblem::kMalformed);
-  file.fovy_deg = glm::degrees(2.0 * std::atan(h / (2.0 * fl_y)));
+  const auto model = json.find("camera_model");
+  if (model != json.end() && *model == "ORTHOGRAPHIC") {
+    const double ortho_w = number_at(json, "ortho_width", path, "the file"), ortho_h = number_at(json, "ortho_height", path, "the file");
+    if (!(ortho_h > 0.0) || std::abs(ortho_w - ortho_h * w / h) > 1e-9 * ortho_w)
+      throw InputError({path}, "ortho_width and ortho_height must be above 0 and in the picture's proportion (umbra draws square pixels)",
+                       InputProblem::kMalformed);
+    file.ortho_height = ortho_h;
+  } else {
+    const double fl_x = number_at(json, "fl_x", path, "the file"), fl_y = number_at(json, "fl_y", path, "the file");
+    // A pinhole with square pixels, centred: what umbra's camera is.
+    if (!(fl_y > 0.0) || std::abs(fl_x - fl_y) > 1e-9 * fl_y)
+      throw InputError({path}, "fl_x and fl_y must be one focal length above 0 (umbra draws square pixels)", InputProblem::kMalformed);
+    file.fovy_deg = glm::degrees(2.0 * std::atan(h / (2.0 * fl_y)));
+  }
   const auto frames = json.find("frames");
   if (frames == json.end() || !frames->is_array() || frames->empty())
     throw InputError({path}, "needs \"frames\", a list of at least one camera", InputProblem::kMalformed);
@@ -223,8 +247,14 @@ std::vector<Camera> cameras_of(const TransformsFile& file, const Scene& staged, 
     if (!frame.is_object()) throw InputError({path}, where + " is not an object", InputProblem::kMalformed);
     Camera camera;
     if (const auto placed = frame.find("umbra_camera"); placed != frame.end() && placed->is_object()) {
-      camera = Camera{point_at(*placed, "eye", path, where), point_at(*placed, "target", path, where),
-                      point_at(*placed, "up", path, where), number_at(*placed, "fovy", path, where)};
+      camera = Camera{point_at(*placed, "eye", path, where), point_at(*placed, "target", path, where), point_at(*placed, "up", path, where)};
+      if (placed->contains("orthographic")) {
+        camera.ortho_height = number_at(*placed, "orthographic", path, where);
+        if (!(camera.ortho_height > 0.0))
+          throw InputError({path}, where + "'s orthographic height must be above 0", InputProblem::kMalformed);
+      } else {
+        camera.fovy_deg = number_at(*placed, "fovy", path, where);
+      }
     } else {
       const auto m = frame.find("transform_matrix");
       if (m == frame.end() || !m->is_array() || m->size() < 3)
@@ -246,13 +276,20 @@ std::vector<Camera> cameras_of(const TransformsFile& file, const Scene& staged, 
       const glm::dvec3 forward = -glm::normalize(back);
       // Aimed along its axis, as far as the model's centre lies along it (or as far as the centre is).
       const double along = glm::dot(centre - eye, forward);
-      camera = Camera{eye, eye + forward * (along > 0.0 ? along : glm::length(centre - eye) + 1.0), up, file.fovy_deg};
+      // An orthographic frame's own span, where it gives one, else the file's.
+      const double ortho_height = file.ortho_height > 0.0 && frame.contains("ortho_height")
+                                      ? number_at(frame, "ortho_height", path, where)
+                                      : file.ortho_height;
+      if (file.ortho_height > 0.0 && !(ortho_height > 0.0))
+        throw InputError({path}, where + "'s ortho_height must be above 0", InputProblem::kMalformed);
+      camera = Camera{eye, eye + forward * (along > 0.0 ? along : glm::length(centre - eye) + 1.0), up, file.fovy_deg,
+                      ortho_height * placement.scale};
     }
     const auto finite = [](const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); };
     if (!finite(camera.eye) || !finite(camera.target) || !finite(camera.up))
       throw InputError({path}, where + "'s camera lies beyond what double precision holds, placed with the model",
                        InputProblem::kMalformed);
-    if (camera.eye == camera.target || !(camera.fovy_deg > 0.0 && camera.fovy_deg < 180.0) ||
+    if (camera.eye == camera.target || !(camera.fovy_deg > 0.0 && camera.fovy_deg < 180.0) || !std::isfinite(camera.ortho_height) ||
         !(glm::length(glm::cross(camera.target - camera.eye, camera.up)) > 0.0))
       throw InputError({path}, where + "'s camera looks nowhere: its eye is its target, its up is along its view or its fovy is not "
                                "between 0 and 180 degrees", InputProblem::kMalformed);

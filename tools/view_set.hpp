@@ -66,7 +66,8 @@ struct ViewSetRequest {
 struct TransformsFile {
   std::string path;  // for messages
   int width = 0, height = 0;  // its w and h
-  double fovy_deg = 0.0;
+  double fovy_deg = 45.0;     // a pinhole's
+  double ortho_height = 0.0;  // an orthographic camera's, in the file's units ("camera_model": "ORTHOGRAPHIC")
   nlohmann::json frames;  // at least one
   size_t count() const { return frames.size(); }
 };

@@ -261,3 +261,11 @@ def test_cameras_redraw_the_views_they_came_from(tmp_path, models):
         umbra.render(path, views=2, cameras=first["cameras"])
     with pytest.raises(umbra.InputError, match="cameras: fl_x and fl_y must be one focal length"):
         umbra.render(path, cameras={**first["cameras"], "fl_x": 1.0})
+
+
+def test_an_orthographic_picture_is_the_commands(tmp_path, models):
+    path = models / "OFF" / "Wuson.off"
+    image = umbra.render(path, (48, 32), orthographic=True)
+    assert np.array_equal(image, command_picture(tmp_path, path, "--size", "48x32", "--orthographic"))
+    views = umbra.render(path, (48, 32), views=2, orthographic=True, passes=("depth",))
+    assert views["cameras"]["camera_model"] == "ORTHOGRAPHIC"

@@ -78,8 +78,7 @@ TEST(RayCast, WindowRaysAreThePixelRays) {
   tilted.up = glm::dvec3(0.3, 1.0, 0.1);
   for (const Camera& camera : {spec_camera(), tilted}) {
     const int width = 160, height = 120;
-    const glm::dmat3 rays = window_ray_directions(
-        camera.view_projection(double(width) / height, 0.05), camera.eye, width, height);
+    const glm::dmat3 rays = window_rays(camera.view_projection(double(width) / height, 0.05), camera.eye, width, height).directions;
     for (const auto& [px, py] : {std::pair{0, 0}, {159, 0}, {0, 119}, {82, 84}, {159, 119}, {80, 60}}) {
       const glm::dvec3 window = glm::normalize(rays * glm::dvec3(px + 0.5, height - py - 0.5, 1.0));
       const glm::dvec3 pixel = camera.pixel_ray(width, height, px, py).direction;
@@ -88,8 +87,7 @@ TEST(RayCast, WindowRaysAreThePixelRays) {
   }
   // The spec camera looks down -z with y up: the window's centre is the axis,
   // its right edge tan(fovy / 2) * aspect to the side.
-  const glm::dmat3 spec = window_ray_directions(
-      spec_camera().view_projection(4.0 / 3.0, 0.05), spec_camera().eye, 160, 120);
+  const glm::dmat3 spec = window_rays(spec_camera().view_projection(4.0 / 3.0, 0.05), spec_camera().eye, 160, 120).directions;
   const glm::dvec3 axis = spec * glm::dvec3(80.0, 60.0, 1.0), edge = spec * glm::dvec3(160.0, 60.0, 1.0);
   EXPECT_NEAR(axis.x / -axis.z, 0.0, 1e-14);  // the inverse matrix, rounded
   EXPECT_NEAR(axis.y / -axis.z, 0.0, 1e-14);

@@ -530,7 +530,8 @@ TEST_F(StagedSceneText, EveryStagedSceneReadsBackFromItsTextAsTheSameValues) {
                                  std::string("/usr/share/assimp/models/STL/Spider_binary.stl")})
     if (std::filesystem::exists(real)) meshes.push_back(real);
   ASSERT_GE(meshes.size(), 4u);
-  std::vector<StagingOptions> variants(5);
+  std::vector<StagingOptions> variants(6);
+  variants[5].view.orthographic = true, variants[5].view.camera_zoom = 1.3;
   variants[1].no_floor = true, variants[1].crease_deg = 33.333333, variants[1].crease_given = true;
   variants[2].floor_catches_shadow = true, variants[2].background = Background{glm::dvec3(0.0), true};
   variants[3].floor_color = glm::dvec3(0.1234567, 0.2, 0.3), variants[3].model_color = glm::dvec3(0.7, 0.61111111, 0.5);

@@ -484,6 +484,16 @@ TEST(SceneParserErrors, CameraNeedsEveryPart) {
 }
 
 TEST(SceneParserErrors, CameraGeometry) {
+  // An orthographic camera: its height instead of a lens, never both.
+  const Scene ortho = parse_scene_text(kLight + "camera eye 0 0 5 target 0 0 0 up 0 1 0 orthographic 2.5\n", "t");
+  EXPECT_TRUE(ortho.camera.orthographic());
+  EXPECT_EQ(ortho.camera.ortho_height, 2.5);
+  EXPECT_EQ(error_of(kLight + "camera eye 0 0 5 target 0 0 0 up 0 1 0 fovy 40 orthographic 2\n"),
+            "t.scene:2:61: a camera has fovy (a perspective) or orthographic HEIGHT, not both");
+  EXPECT_EQ(error_of(kLight + "camera eye 0 0 5 target 0 0 0 up 0 1 0 orthographic 0\n"),
+            "t.scene:2:53: an orthographic camera's height must be above 0, got 0");
+  EXPECT_EQ(error_of(kLight + "camera eye 0 0 5 target 0 0 0 up 0 1 0\n"),
+            "t.scene:2:39: the camera needs \"fovy\" (camera eye X Y Z target X Y Z up X Y Z fovy DEG), or orthographic HEIGHT");
   EXPECT_EQ(error_of(kLight + "camera eye 0 0 5 target 0 0 0 up 0 1 0 fovy 180\n"),
             "t.scene:2:45: fovy must be between 0 and 180 degrees, got 180");
   EXPECT_EQ(error_of(kLight + "camera eye 0 0 5 target 0 0 5 up 0 1 0 fovy 40\n"),

@@ -116,6 +116,61 @@ TEST_F(ViewSet, AVertexProjectedWithItsPoseLandsWhereTheDepthPassSaysItIs) {
 // each pixel's depth and normal against the true sphere's, within what its
 // facets (48 rings of 96 quads, each pi/48 by at most pi/48) stray from
 // it. Pixels near the outline, where a ray grazes the sphere, are left out.
+// Orthographic views: transforms.json says so and gives what the picture
+// spans instead of a focal length; a corner projected by it lands on the
+// model, and the depth pass at that pixel is where its parallel ray (from
+// the camera's plane, along its axis) enters the cube, by hand; and
+// --cameras draws the same views again.
+TEST_F(ViewSet, OrthographicViewsProjectByWhatThePictureSpans) {
+  const std::string cube = write_obj("cube.obj", unit_cube(), 10.0, {100, 200, 300});
+  const CommandResult r = run("render " + cube + " --views 3 --orthographic --passes depth,object --size 96x64 -o " + path("out"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json all = transforms(path("out"));
+  EXPECT_EQ(all["camera_model"], "ORTHOGRAPHIC");
+  EXPECT_FALSE(all.contains("fl_x"));
+  EXPECT_EQ(all["ortho_height"], all["frames"][0]["ortho_height"]);
+  for (int i = 0; i < 3; ++i) {
+    SCOPED_TRACE(i);
+    const json& frame = all["frames"][size_t(i)];
+    // Each view framed as it is: its own span.
+    const double span_w = frame["ortho_width"], span_h = frame["ortho_height"];
+    EXPECT_NEAR(span_w / span_h, 96.0 / 64.0, 1e-12);
+    const std::string stem = "00" + std::to_string(i);
+    EXPECT_TRUE(frame["umbra_camera"].contains("orthographic"));
+    const glm::dmat3 rotation = FrameCamera(json{{"fl_x", 1}, {"fl_y", 1}, {"cx", 48}, {"cy", 32}}, frame).rotation;
+    const glm::dvec3 eye = FrameCamera(json{{"fl_x", 1}, {"fl_y", 1}, {"cx", 48}, {"cy", 32}}, frame).eye;
+    const ExrPicture depth = read_exr(path("out/" + stem + ".depth.exr"));
+    const Image object = read_png(path("out/" + stem + ".object.png"));
+    // The corner nearest the camera's plane; its pixel: u = cx + x w / ortho_width, v = cy - y h / ortho_height.
+    glm::dvec3 nearest(0.0), q_nearest(0.0);
+    double least = std::numeric_limits<double>::infinity();
+    for (const double x : {100.0, 110.0})
+      for (const double y : {200.0, 210.0})
+        for (const double z : {300.0, 310.0}) {
+          const glm::dvec3 q = glm::transpose(rotation) * (glm::dvec3(x, y, z) - eye);
+          if (-q.z < least) least = -q.z, nearest = {x, y, z}, q_nearest = q;
+        }
+    const double u = 48.0 + q_nearest.x * 96.0 / span_w, v = 32.0 - q_nearest.y * 64.0 / span_h;
+    const int px = int(std::floor(u)), py = int(std::floor(v));
+    ASSERT_TRUE(px >= 0 && px < 96 && py >= 0 && py < 64) << u << ", " << v;
+    EXPECT_EQ(object.at(px, py), 255);
+    // The pixel's ray: from (its offset on the camera's plane) along -z of the camera.
+    const glm::dvec3 origin = eye + rotation * glm::dvec3((px + 0.5 - 48.0) * span_w / 96.0, -(py + 0.5 - 32.0) * span_h / 64.0, 0.0);
+    const glm::dvec3 ray = -rotation[2], lo(100, 200, 300), hi(110, 210, 310);
+    double s = 0.0, leaves = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < 3; ++a) {
+      const double t0 = (lo[a] - origin[a]) / ray[a], t1 = (hi[a] - origin[a]) / ray[a];
+      s = std::max(s, std::min(t0, t1)), leaves = std::min(leaves, std::max(t0, t1));
+    }
+    ASSERT_LT(s, leaves) << "the pixel's ray misses the cube";
+    EXPECT_NEAR(depth.values[size_t(py) * 96 + size_t(px)], s, 1e-5 * s);
+  }
+  const CommandResult again = run("render " + cube + " --cameras " + path("out/transforms.json") + " --passes depth,object -o " + path("again"));
+  ASSERT_EQ(again.status, 0) << again.err;
+  for (const std::string file : {"000.png", "002.png", "001.depth.exr", "transforms.json"})
+    EXPECT_TRUE(read(path("out/" + file)) == read(path("again/" + file))) << file;
+}
+
 TEST_F(ViewSet, TheDepthAndNormalsOfASphereAreTheSurfacesWithinItsFacets) {
   const glm::dvec3 centre(10, 20, 30);
   const double radius = 5.0;
