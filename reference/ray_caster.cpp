@@ -112,16 +112,18 @@ struct RayCaster::Impl {
   }
 };
 
+double RayCaster::farthest_ray_start(const Camera& camera) {
+  const glm::dvec3 eye = glm::abs(camera.eye);
+  return std::max({eye.x, eye.y, eye.z}) + 64.0 * camera.ortho_height;
+}
+
 RayCaster::RayCaster(const Scene& scene, Search search) : impl_(std::make_unique<Impl>(scene)) {
   Impl& m = *impl_;
   double largest = 0.0;  // coordinate, over everything a ray may start from or go to
   const auto grow = [&](const glm::dvec3& p) {
     largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
   };
-  grow(scene.camera.eye);
-  // An orthographic camera's rays start beside its eye, as far off as a
-  // picture 64 times wider than high reaches.
-  if (scene.camera.orthographic()) grow(glm::abs(scene.camera.eye) + 64.0 * scene.camera.ortho_height);
+  grow(glm::dvec3(farthest_ray_start(scene.camera)));
   for (const Light& l : scene.lights) grow(l.position);
   for (const Sphere& s : scene.spheres) {
     m.primitives.push_back({&s, {}});

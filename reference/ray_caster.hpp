@@ -22,8 +22,14 @@ class RayCaster {
   enum class Search { kAuto, kHierarchy, kBruteForce };
   static constexpr size_t kHierarchyFrom = 16;
 
+  // How far from the origin, coordinate by coordinate, a ray of `camera` may
+  // start: its eye, or an orthographic camera's plane as far as a picture 64
+  // times wider than high reaches. The hierarchy pads its boxes by it.
+  static double farthest_ray_start(const Camera& camera);
+
   // Builds the hierarchy over every sphere, triangle and mesh triangle. The
-  // scene must outlive the caster and stay unchanged. Throws
+  // scene must outlive the caster and stay unchanged but for its camera,
+  // whose rays start no further out than the scene's own (farthest_ray_start). Throws
   // std::runtime_error when Embree cannot start.
   explicit RayCaster(const Scene& scene, Search search = Search::kAuto);
   ~RayCaster();

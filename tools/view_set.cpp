@@ -306,7 +306,16 @@ void draw_views(Scene& scene, const std::vector<Camera>& cameras, const MeshPlac
   std::optional<RayCaster> caster;
   // One hierarchy over the surfaces, which no view moves, for the passes'
   // rays and the edges' (where the GL's frame does not take every sample).
-  if (surface || settings.antialias != settings.frame_samples()) caster.emplace(scene);
+  // It pads its boxes by the largest coordinate a ray starts from: built
+  // with the camera whose rays start furthest out.
+  if (surface || settings.antialias != settings.frame_samples()) {
+    const Camera placed = scene.camera;
+    scene.camera = *std::max_element(cameras.begin(), cameras.end(), [](const Camera& a, const Camera& b) {
+      return RayCaster::farthest_ray_start(a) < RayCaster::farthest_ray_start(b);
+    });
+    caster.emplace(scene);
+    scene.camera = placed;
+  }
   PictureRequest request;
   request.every_mask = asked(DataPass::kShadow);
   const glm::dmat3 to_file = glm::transpose(placement.rotation);
