@@ -153,13 +153,13 @@ options:
                         transform_matrix and the intrinsics: square pixels,
                         centred), at its w x h unless --size is given; the
                         file --views wrote redraws the same pictures
-  --passes LIST         with --views or --cameras, each view's data too, comma-separated:
-                        depth (NNN.depth.exr, float, along the view axis in
-                        the file's units, +inf off the model), normal
-                        (NNN.normal.exr, float RGB, the file's axes), object
-                        (NNN.object.png, 255 on the model), shadow
-                        (NNN.shadow.png, as --mask; NNN.shadowK.png per light
-                        where there are several)
+  --passes LIST         with --views or --cameras, each view's data too,
+                        comma-separated: depth (NNN.depth.exr, float, along
+                        the view axis in the file's units, +inf off the
+                        model), normal (NNN.normal.exr, float RGB, the
+                        file's axes), object (NNN.object.png, 255 on the
+                        model), shadow (NNN.shadow.png, as --mask;
+                        NNN.shadowK.png per light where there are several)
 
   --jobs N              with several files: draw N at a time, each in its own
                         GL context, using at most N threads in all (default:
@@ -308,6 +308,11 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   if (o.save_scene && o.scene_path == "-")
     throw UsageError("--save-scene names the mesh's file, and standard input has none: save the mesh to a file first");
   const bool several = scenes.size() > 1 || std::filesystem::is_directory(o.scene_path, ec);
+  const auto batch = [&](std::optional<ViewSetRequest> views) {
+    return BatchRenderOptions{scenes, o.output, o.settings, o.staging, o.gl, o.antialias, o.antialias_all, o.show_volumes,
+                              o.size_given, jobs.value_or(std::max(1u, std::thread::hardware_concurrency())), shard, sheet,
+                              o.any_texture_path, timeout_s, skip_existing, json, std::move(views)};
+  };
   if (!view_options.empty()) {
     const std::string& named = view_options.front();
     o.views = views;
@@ -318,25 +323,24 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     if (is_picture_name(o.output))
       throw UsageError("-o " + o.output + " names a picture, but " + named + " writes each view's files in a folder: name a folder");
     leave_floor_out_of_sphere(o.staging, o.staging_given, views.spread);
-    if (views.cameras && std::count_if(view_options.begin(), view_options.end(), [](const std::string& v) { return v == "--views" || v == "--views-on"; }))
+    const auto named_too = [&](const char* option) { return std::count(view_options.begin(), view_options.end(), option) > 0; };
+    if (views.cameras && (named_too("--views") || named_too("--views-on")))
       throw UsageError("--cameras draws the views its file names; --views and --views-on place views of their own: give one or the other");
-    for (const auto& [given, name] : {std::pair{o.mask.has_value(), "--mask"}, {o.save_scene.has_value(), "--save-scene"},
-                                      {o.explain, "--explain"}, {o.staging.view.eye.has_value(), "--eye"},
-                                      {o.staging.view.target.has_value(), "--target"},
-                                      {sheet.has_value() && !several, "--sheet"}})
-      if (given)
-        throw UsageError(std::string(name) + " is not for " + named + (std::string(name) == "--mask" ? " (--passes shadow draws each view's mask)" :
-                                                            std::string(name) == "--eye" || std::string(name) == "--target"
-                                                                ? " (the views stand round the model, where the framing puts them)"
-                                                                : ""));
+    const auto refuse = [&](bool given, const std::string& option, const std::string& why) {
+      if (given) throw UsageError(option + " is not for " + named + why);
+    };
+    const std::string framed = " (the views stand round the model, where the framing puts them)";
+    refuse(o.mask.has_value(), "--mask", " (--passes shadow draws each view's mask)");
+    refuse(o.save_scene.has_value(), "--save-scene", "");
+    refuse(o.explain, "--explain", "");
+    refuse(o.staging.view.eye.has_value(), "--eye", framed);
+    refuse(o.staging.view.target.has_value(), "--target", framed);
+    refuse(sheet.has_value() && !several, "--sheet", " of one file (it shows several files' first views)");
     if (!several)
       for (const auto& [given, name] : {std::pair{shard.has_value(), "--shard"}, {timeout_s > 0.0, "--timeout"},
                                         {skip_existing, "--skip-existing"}, {json, "--json"}})
         if (given) throw UsageError(std::string(name) + " is for several files or a folder; \"" + o.scene_path + "\" is one");
-    if (several)
-      o.batch = BatchRenderOptions{scenes, o.output, o.settings, o.staging, o.gl, o.antialias, o.antialias_all, o.show_volumes,
-                                   o.size_given, jobs.value_or(std::max(1u, std::thread::hardware_concurrency())), shard, sheet,
-                                   o.any_texture_path, timeout_s, skip_existing, json, views};
+    if (several) o.batch = batch(views);
   } else if (several) {
     if (o.output.empty()) throw UsageError("no output folder given (-o OUTDIR)");
     if (std::filesystem::exists(o.output, ec) && !std::filesystem::is_directory(o.output, ec))
@@ -347,9 +351,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     if (o.mask) throw UsageError("--mask writes one scene's mask; with several files there is none to choose");
     if (o.explain) throw UsageError("--explain prints one scene's plan; with several files, ask for one of them");
     if (o.save_scene) throw UsageError("--save-scene saves one mesh file's staged scene; with several files, ask for one of them");
-    o.batch = BatchRenderOptions{scenes, o.output, o.settings, o.staging, o.gl, o.antialias, o.antialias_all, o.show_volumes,
-                                 o.size_given, jobs.value_or(std::max(1u, std::thread::hardware_concurrency())), shard, sheet,
-                                 o.any_texture_path, timeout_s, skip_existing, json};
+    o.batch = batch(std::nullopt);
   } else {
     if (shard) throw UsageError("--shard splits several files; \"" + o.scene_path + "\" is one");
     if (sheet) throw UsageError("--sheet shows several files; \"" + o.scene_path + "\" is one");
