@@ -126,10 +126,10 @@ WrittenViews write_view_files(const std::string& mesh_path, const std::string& f
 
 int write_view_set(const std::string& mesh_path, const std::string& folder, PictureChoices choices, const ViewSetRequest& request,
                    bool any_texture_path, const std::string& shown) {
+  std::string messages;  // the mesh's warnings, said before any error
   try {
     std::optional<ProgressBar> bar;
     std::optional<HeadlessContext> context;
-    std::string messages;
     const WrittenViews written = write_view_files(mesh_path, folder, choices, request, TextureMaps{true, "", any_texture_path},
                                                   context, [&](size_t done, size_t total, const std::string& what) {
       if (!bar || done == 0) bar.emplace(total);
@@ -143,17 +143,17 @@ int write_view_set(const std::string& mesh_path, const std::string& folder, Pict
               << (std::filesystem::path(folder) / "transforms.json").string() << "\n";
     return 0;
   } catch (const UsageError& e) {
-    std::cerr << "umbra render: " << e.what() << "\n(see umbra render --help)\n";
+    std::cerr << messages << "umbra render: " << e.what() << "\n(see umbra render --help)\n";
     return 2;
   } catch (const FrameTooLarge& e) {
-    std::cerr << "umbra render: --size " << choices.settings.width << "x" << choices.settings.height << ": " << e.what()
+    std::cerr << messages << "umbra render: --size " << choices.settings.width << "x" << choices.settings.height << ": " << e.what()
               << "; make --size or --antialias smaller\n(see umbra render --help)\n";
     return 2;
   } catch (const StagingChoiceError& e) {
-    std::cerr << "umbra render: " << e.what() << "\n(see umbra render --help)\n";
+    std::cerr << messages << "umbra render: " << e.what() << "\n(see umbra render --help)\n";
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << e.what() << "\n";
+    std::cerr << messages << e.what() << "\n";
     return 1;
   }
 }
