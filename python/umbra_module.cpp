@@ -151,8 +151,9 @@ class Renderer {
       Scene scene = staged(source, c, warnings, size_t(count));
       lights = scene.lights.size();
       const MeshPlacement placement = placement_of(scene.meshes.at(0));
+      const double aspect = double(c.settings.width) / c.settings.height;
       const std::vector<Camera> cameras =
-          given ? cameras_of(*given, scene, placement) : view_cameras(scene, c.staging.view, double(c.settings.width) / c.settings.height, count, spread_of);
+          given ? cameras_of(*given, scene, placement) : view_cameras(scene, c.staging.view, aspect, count, spread_of);
       std::vector<std::string> stems;
       for (int i = 0; i < count; ++i) stems.push_back(view_stem(i, count));
       transforms_text = transforms_json(cameras, scene, placement, c.settings.width, c.settings.height, passes, stems).dump();

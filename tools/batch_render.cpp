@@ -223,7 +223,9 @@ int run_batch_render(const BatchRenderOptions& o) {
   const size_t count = files.size();
   std::vector<Record> records(count);
   for (size_t i = 0; i < count; ++i)
-    records[i].path = files[i], records[i].picture = (std::filesystem::path(o.out_dir) / (o.views ? names[i] + "/transforms.json" : names[i] + ".png")).string();
+    // A model's views stand for its picture by their transforms.json, written last.
+    const std::string output = o.views ? names[i] + "/transforms.json" : names[i] + ".png";
+    records[i].path = files[i], records[i].picture = (std::filesystem::path(o.out_dir) / output).string();
   const auto start = std::chrono::steady_clock::now();
 
   // Records are printed in file order, each as soon as it and those before
