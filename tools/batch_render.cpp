@@ -222,10 +222,11 @@ int run_batch_render(const BatchRenderOptions& o) {
   const std::vector<std::string> roots = o.shard ? shard_of(found.roots, *o.shard) : found.roots;
   const size_t count = files.size();
   std::vector<Record> records(count);
-  for (size_t i = 0; i < count; ++i)
+  for (size_t i = 0; i < count; ++i) {
     // A model's views stand for its picture by their transforms.json, written last.
     const std::string output = o.views ? names[i] + "/transforms.json" : names[i] + ".png";
     records[i].path = files[i], records[i].picture = (std::filesystem::path(o.out_dir) / output).string();
+  }
   const auto start = std::chrono::steady_clock::now();
 
   // Records are printed in file order, each as soon as it and those before
