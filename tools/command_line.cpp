@@ -15,6 +15,7 @@
 #include "mesh/check/mesh_repair.hpp"
 #include "mesh/io/mesh_format.hpp"
 #include "mesh/word_list.hpp"
+#include "render/frame_target.hpp"
 #include "render/headless_context.hpp"
 #include "render/render_method.hpp"
 #include "scene/staged_scene.hpp"
@@ -400,6 +401,25 @@ void require_staged(const std::vector<std::string>& given, const std::string& pa
 }
 
 void add_any_texture_path_option(CommandOptions& options, bool& anywhere) { options.flag("--any-texture-path", anywhere); }
+
+int render_failure_status(const RenderSettings& settings, const std::string& said_before) {
+  std::cerr << said_before;
+  try {
+    throw;
+  } catch (const UsageError& e) {  // an option that the file's content rules out (require_drawable_size)
+    std::cerr << "umbra render: " << e.what() << "\n(see umbra render --help)\n";
+  } catch (const FrameTooLarge& e) {  // the options' size and samples, more than this GL can draw
+    std::cerr << "umbra render: --size " << settings.width << "x" << settings.height << " at " << settings.frame_samples() << " x "
+              << settings.frame_samples() << " samples (--antialias): " << e.what()
+              << "; make --size or --antialias smaller\n(see umbra render --help)\n";
+  } catch (const StagingChoiceError& e) {  // a camera option that this model's framing rules out
+    std::cerr << "umbra render: " << e.what() << "\n(see umbra render --help)\n";
+  } catch (const std::exception& e) {
+    std::cerr << e.what() << "\n";
+    return 1;
+  }
+  return 2;
+}
 
 void require_drawable_size(int width, int height, int samples) {
   if (std::max(width, height) * samples <= kLargestImage) return;

@@ -97,6 +97,13 @@ constexpr int kLargestImage = kLargestPictureSide;  // along a side of the frame
 // A UsageError when `samples` x `samples` supersampling makes a frame of
 // `width` x `height` larger than kLargestImage along a side.
 void require_drawable_size(int width, int height, int samples);
+
+// Inside a catch block of `umbra render`: says why the render stopped (the
+// exception being handled) on stderr, after `said_before` (its scene's
+// warnings), and returns the exit status: 2 for an option the input rules
+// out (UsageError, a frame larger than the GL draws for `settings`, a
+// camera option the framing rules out), 1 for the rest.
+int render_failure_status(const RenderSettings& settings, const std::string& said_before = "");
 void add_help_option(CommandOptions& options, bool& help);                            // -h, --help
 void add_size_option(CommandOptions& options, int& width, int& height, bool* given = nullptr);               // --size WxH
 void add_light_angle_option(CommandOptions& options, double& degrees);                // --light-angle DEG

@@ -20,7 +20,6 @@
 #include "image/image.hpp"
 #include "image/partial_file.hpp"
 #include "image/picture_file.hpp"
-#include "render/frame_target.hpp"
 #include "render/render_plan.hpp"
 #include "tools/command_line.hpp"
 #include "tools/freed_memory_reuse.hpp"
@@ -523,20 +522,8 @@ int run_render_command(const std::vector<std::string>& argv) {
     if (options.save_scene) said << ", and saved its scene to " << *options.save_scene;
     said << "\n";
     return 0;
-  } catch (const UsageError& e) {  // an option that the file's content rules out (require_drawable_size)
-    std::cerr << "umbra render: " << e.what() << "\n(see umbra render --help)\n";
-    return 2;
-  } catch (const FrameTooLarge& e) {  // the options' size and samples, more than this GL can draw
-    const RenderSettings& s = options.settings;
-    std::cerr << "umbra render: --size " << s.width << "x" << s.height << " at " << s.frame_samples() << " x " << s.frame_samples()
-              << " samples (--antialias): " << e.what() << "; make --size or --antialias smaller\n(see umbra render --help)\n";
-    return 2;
-  } catch (const StagingChoiceError& e) {  // a camera option that this model's framing rules out
-    std::cerr << "umbra render: " << e.what() << "\n(see umbra render --help)\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << e.what() << "\n";
-    return 1;
+  } catch (const std::exception&) {
+    return render_failure_status(options.settings);
   }
 }
 

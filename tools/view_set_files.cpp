@@ -9,7 +9,6 @@
 #include "image/partial_file.hpp"
 #include "image/picture_file.hpp"
 #include "mesh/io/mapped_file.hpp"
-#include "render/frame_target.hpp"
 #include "scene/mesh_placement.hpp"
 #include "scene/scene_checks.hpp"
 #include "tools/command_line.hpp"
@@ -142,19 +141,8 @@ int write_view_set(const std::string& mesh_path, const std::string& folder, Pict
               << written.width << "x" << written.height << ") and their cameras to "
               << (std::filesystem::path(folder) / "transforms.json").string() << "\n";
     return 0;
-  } catch (const UsageError& e) {
-    std::cerr << messages << "umbra render: " << e.what() << "\n(see umbra render --help)\n";
-    return 2;
-  } catch (const FrameTooLarge& e) {
-    std::cerr << messages << "umbra render: --size " << choices.settings.width << "x" << choices.settings.height << ": " << e.what()
-              << "; make --size or --antialias smaller\n(see umbra render --help)\n";
-    return 2;
-  } catch (const StagingChoiceError& e) {
-    std::cerr << messages << "umbra render: " << e.what() << "\n(see umbra render --help)\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << messages << e.what() << "\n";
-    return 1;
+  } catch (const std::exception&) {
+    return render_failure_status(choices.settings, messages);
   }
 }
 
