@@ -91,15 +91,6 @@ std::vector<Camera> view_cameras(const Scene& staged, const StageView& view, dou
 
 namespace {
 
-// The placement's inverse: scene coordinates back to the mesh file's.
-struct FileFrame {
-  const MeshPlacement& placement;
-  glm::dvec3 point(const glm::dvec3& p) const {
-    return glm::transpose(placement.rotation) * (p - placement.translation) / placement.scale + placement.fit_centre;
-  }
-  glm::dvec3 direction(const glm::dvec3& d) const { return glm::transpose(placement.rotation) * d; }
-};
-
 nlohmann::ordered_json row_major(const glm::dmat4& m) {
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   for (int r = 0; r < 4; ++r) rows.push_back({m[0][r], m[1][r], m[2][r], m[3][r]});
@@ -113,7 +104,6 @@ nlohmann::ordered_json point_json(const glm::dvec3& p) { return {p.x, p.y, p.z};
 nlohmann::ordered_json transforms_json(const std::vector<Camera>& cameras, const Scene& scene, const MeshPlacement& placement,
                                        int width, int height, const std::vector<DataPass>& passes,
                                        const std::vector<std::string>& stems) {
-  const FileFrame file{placement};
   const Camera& lens = cameras.at(0);
   nlohmann::ordered_json json;
   // An orthographic camera has no focal length: what the picture spans, in
@@ -121,8 +111,8 @@ nlohmann::ordered_json transforms_json(const std::vector<Camera>& cameras, const
   // as each is framed (a pinhole's keys left out, so that a tool that knows
   // only those stops).
   const auto span = [&](nlohmann::ordered_json& into, const Camera& c) {
-    into["ortho_width"] = c.ortho_height * width / height / placement.scale;
-    into["ortho_height"] = c.ortho_height / placement.scale;
+    into["ortho_width"] = placement.file_length(c.ortho_height * width / height);
+    into["ortho_height"] = placement.file_length(c.ortho_height);
   };
   if (lens.orthographic()) {
     span(json, lens);
@@ -145,10 +135,10 @@ nlohmann::ordered_json transforms_json(const std::vector<Camera>& cameras, const
     // Camera to the file's world: its axes (x right, y up, z back) and eye
     // in the file's coordinates; rigid, as the placement's scale is uniform.
     glm::dmat4 pose(1.0);
-    pose[0] = glm::dvec4(file.direction(a.right), 0.0);
-    pose[1] = glm::dvec4(file.direction(a.up), 0.0);
-    pose[2] = glm::dvec4(file.direction(-a.forward), 0.0);
-    pose[3] = glm::dvec4(file.point(c.eye), 1.0);
+    pose[0] = glm::dvec4(placement.file_direction(a.right), 0.0);
+    pose[1] = glm::dvec4(placement.file_direction(a.up), 0.0);
+    pose[2] = glm::dvec4(placement.file_direction(-a.forward), 0.0);
+    pose[3] = glm::dvec4(placement.file_point(c.eye), 1.0);
     nlohmann::ordered_json frame;
     frame["file_path"] = stems[i] + ".png";
     if (c.orthographic()) span(frame, c);
@@ -164,7 +154,7 @@ nlohmann::ordered_json transforms_json(const std::vector<Camera>& cameras, const
     }
     frame["transform_matrix"] = row_major(pose);
     nlohmann::ordered_json lights = nlohmann::ordered_json::array();
-    for (const Light& l : scene.lights) lights.push_back(point_json(file.point(l.position)));
+    for (const Light& l : scene.lights) lights.push_back(point_json(placement.file_point(l.position)));
     frame["light_positions"] = lights;
     // The camera as umbra placed it, in the staged scene's coordinates: --cameras draws it again exactly.
     frame["umbra_camera"] = {{"eye", point_json(c.eye)}, {"target", point_json(c.target)}, {"up", point_json(c.up)}};
@@ -269,7 +259,7 @@ std::vector<Camera> cameras_of(const TransformsFile& file, const Scene& staged, 
       }
       // The file's frame into the staged scene's: the eye placed, the axes turned.
       const glm::dvec3 eye = placement(glm::dvec3(pose[3]));
-      const glm::dvec3 back = placement.rotation * glm::dvec3(pose[2]), up = placement.rotation * glm::dvec3(pose[1]);
+      const glm::dvec3 back = placement.direction(glm::dvec3(pose[2])), up = placement.direction(glm::dvec3(pose[1]));
       if (!(glm::length(back) > 0.0) || !(glm::length(glm::cross(back, up)) > 0.0))
         throw InputError({path}, where + "'s transform_matrix has no camera axes (its z and y columns are 0 or parallel)",
                          InputProblem::kMalformed);
@@ -283,7 +273,7 @@ std::vector<Camera> cameras_of(const TransformsFile& file, const Scene& staged, 
       if (file.ortho_height > 0.0 && !(ortho_height > 0.0))
         throw InputError({path}, where + "'s ortho_height must be above 0", InputProblem::kMalformed);
       camera = Camera{eye, eye + forward * (along > 0.0 ? along : glm::length(centre - eye) + 1.0), up, file.fovy_deg,
-                      ortho_height * placement.scale};
+                      placement.length(ortho_height)};
     }
     const auto finite = [](const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); };
     if (!finite(camera.eye) || !finite(camera.target) || !finite(camera.up))
@@ -318,13 +308,12 @@ void draw_views(Scene& scene, const std::vector<Camera>& cameras, const MeshPlac
   }
   PictureRequest request;
   request.every_mask = asked(DataPass::kShadow);
-  const glm::dmat3 to_file = glm::transpose(placement.rotation);
   draw_pictures(scene, cameras, settings, request, context, gl, caster ? &*caster : nullptr, [&](size_t i, DrawnPicture&& drawn) {
     DrawnView view{std::move(drawn.image), std::move(drawn.masks), {}};
     if (surface) {
       view.surface = surface_passes(scene, *caster, 0, settings.width, settings.height);
-      for (float& d : view.surface.depth) d = float(d / placement.scale);  // infinity stays
-      for (glm::vec3& n : view.surface.normal) n = glm::vec3(to_file * glm::dvec3(n));
+      for (float& d : view.surface.depth) d = float(placement.file_length(d));  // infinity stays
+      for (glm::vec3& n : view.surface.normal) n = glm::vec3(placement.file_direction(glm::dvec3(n)));
     }
     each(int(i), std::move(view));
   });
