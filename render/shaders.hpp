@@ -98,8 +98,12 @@ bool in_shadow(vec3 p, float n_dot_l) {
 // Whether the side of a sphere's point `p` with normal `n` that the camera
 // sees faces the light (its terminator is a curve, which no rounding moves
 // by more than a pixel's part).
+// Where this fragment's pixel ray starts (window_origins at gl_FragCoord),
+// worked out once by main() before anything is shaded.
+vec3 ray_origin;
+
 // From `p` back along its pixel's ray to where the ray starts.
-vec3 to_viewer(vec3 p) { return window_origins * vec3(gl_FragCoord.xy, 1.0) - p; }
+vec3 to_viewer(vec3 p) { return ray_origin - p; }
 
 bool seen_side_faces_light(vec3 p, vec3 n) {
   if (dot(n, to_viewer(p)) < 0.0) n = -n;
@@ -259,16 +263,16 @@ void main() {
   // corners, far more than the point's own. Where the ray grazes the plane,
   // the interpolated one.
   vec3 ray = window_rays * vec3(gl_FragCoord.xy, 1.0);
-  vec3 origin = window_origins * vec3(gl_FragCoord.xy, 1.0);
+  ray_origin = window_origins * vec3(gl_FragCoord.xy, 1.0);
   float along = dot(world_normal, ray);
   vec3 p = world_position;
   if (abs(along) > 1e-3 * length(world_normal) * length(ray)) {
-    float t = (plane_offset - dot(world_normal, origin)) / along;
-    if (t > 0.0) p = origin + t * ray;
+    float t = (plane_offset - dot(world_normal, ray_origin)) / along;
+    if (t > 0.0) p = ray_origin + t * ray;
   }
   // The camera's side of the plane: it can round only where the plane
   // nearly holds the ray's start, and the face is seen edge-on.
-  int eye_side = dot(world_normal, origin - p) < 0.0 ? -1 : 1;
+  int eye_side = dot(world_normal, ray_origin - p) < 0.0 ? -1 : 1;
   bool faces_light = triangle_light_side != 0 && triangle_light_side == eye_side;
   vec3 n = normalize(world_normal);
 #ifdef UMBRA_SMOOTH
@@ -310,8 +314,8 @@ uniform vec3 sphere_center;
 uniform float sphere_radius;
 void main() {
   vec3 d = normalize(window_rays * vec3(gl_FragCoord.xy, 1.0));
-  vec3 origin = window_origins * vec3(gl_FragCoord.xy, 1.0);
-  vec3 oc = origin - sphere_center;
+  ray_origin = window_origins * vec3(gl_FragCoord.xy, 1.0);
+  vec3 oc = ray_origin - sphere_center;
   float b = dot(oc, d);
   vec3 closest = oc - b * d;  // h = R^2 - |oc - b d|^2 avoids b^2 - c cancellation
   float h = sphere_radius * sphere_radius - dot(closest, closest);
@@ -320,7 +324,7 @@ void main() {
   float t = -b - s;
   if (t <= 0.0) t = -b + s;  // the ray starts inside the sphere
   if (t <= 0.0) discard;
-  vec3 p = origin + t * d;
+  vec3 p = ray_origin + t * d;
   vec4 clip = view_projection * vec4(p, 1.0);
   gl_FragDepth = 0.5 * (clip.z / clip.w) + 0.5;
   vec3 n = (p - sphere_center) / sphere_radius;
