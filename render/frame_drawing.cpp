@@ -1,7 +1,6 @@
 #include "render/frame_drawing.hpp"
 
 #include <algorithm>
-#include <limits>
 #include <cmath>
 #include <string>
 
@@ -98,7 +97,8 @@ void FrameDrawing::apply_view(int samples) {
   const RenderSettings& s = plan_.settings;
   const glm::dmat4 view_projection = plan_.projection() * plan_.camera.view();
   const int width = s.width * samples_per_side_, height = s.height * samples_per_side_;
-  view_from(culling_viewpoint(), view_projection, width, height);
+  view_from(plan_.camera.eye, view_projection, width, height);
+  viewpoint_ = culling_viewpoint();
   for (ShaderProgram* p : {volume_program_.get(), count_program_.get(), planar_program_.get()}) {
     p->use();
     p->set("view_projection", glm::mat4(view_projection));
@@ -107,17 +107,17 @@ void FrameDrawing::apply_view(int samples) {
   glViewport(0, 0, width, height);
 }
 
-glm::dvec3 FrameDrawing::culling_viewpoint() const {
+std::optional<glm::dvec3> FrameDrawing::culling_viewpoint() const {
   const Camera& c = plan_.camera;
   if (!c.orthographic()) return c.eye;
   // An orthographic camera's rays start on its eye's plane: a point behind
   // that plane stands for them all where every surface lies ahead of it;
   // where the plane cuts the surfaces, a ray may start inside a closed
-  // mesh, and NaN, outside no box, culls nothing.
+  // mesh, and nothing is culled.
   const glm::dvec3 forward = c.axes().forward;
   const double ahead = glm::dot(scene_center_ - c.eye, forward);
   if (ahead - scene_radius_ > 0.0) return c.eye - forward * (ahead + scene_radius_);
-  return glm::dvec3(std::numeric_limits<double>::quiet_NaN());
+  return std::nullopt;
 }
 
 void FrameDrawing::view_from(const glm::dvec3& viewpoint, const glm::dmat4& view_projection, int width, int height) {

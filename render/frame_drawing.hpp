@@ -4,6 +4,7 @@
 // technique (stencil volumes, shadow maps, planar projection) borrows it.
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -101,9 +102,11 @@ class FrameDrawing {
   std::unique_ptr<SurfaceBuffers> surfaces_;
   std::unique_ptr<VolumeBuffer> volumes_;
   std::vector<std::unique_ptr<VolumeBuffer>> mesh_volumes_;  // per scene mesh; made when first drawn
-  glm::dvec3 viewpoint_{0.0};  // where the surfaces are drawn from: the eye, or a light for its shadow map
-  // The camera's viewpoint for culling back faces (SurfaceBuffers::culls).
-  glm::dvec3 culling_viewpoint() const;
+  // Where the surfaces are drawn from, for culling back faces
+  // (SurfaceBuffers::culls): the eye, or a light for its shadow map.
+  std::optional<glm::dvec3> viewpoint_;
+  // The camera's: its eye, or an orthographic camera's stand-in behind its eye's plane.
+  std::optional<glm::dvec3> culling_viewpoint() const;
   // The view drawn from (view_from), and those from which
   // draw_nearest_surfaces found no back face showing: a still camera asks once.
   struct View {

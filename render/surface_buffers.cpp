@@ -304,13 +304,14 @@ unsigned SurfaceBuffers::material_texture(int material) const {
   return size_t(material) < textures_.size() ? textures_[size_t(material)] : 0;
 }
 
-bool SurfaceBuffers::culls(const TriangleGroup& group, const glm::dvec3& viewpoint) const {
-  const bool outside = glm::any(glm::lessThan(viewpoint, group.closed_lo)) || glm::any(glm::greaterThan(viewpoint, group.closed_hi));
+bool SurfaceBuffers::culls(const TriangleGroup& group, const std::optional<glm::dvec3>& viewpoint) const {
+  if (!viewpoint) return false;
+  const bool outside = glm::any(glm::lessThan(*viewpoint, group.closed_lo)) || glm::any(glm::greaterThan(*viewpoint, group.closed_hi));
   const bool seen = back_faces_seen_[size_t(&group - groups_.data())];
   return outside && (group.back_faces == BackFaces::kHidden || (group.back_faces == BackFaces::kHiddenUnlessSeen && !seen));
 }
 
-bool SurfaceBuffers::culls_on_trust(const TriangleGroup& group, const glm::dvec3& viewpoint) const {
+bool SurfaceBuffers::culls_on_trust(const TriangleGroup& group, const std::optional<glm::dvec3>& viewpoint) const {
   return group.back_faces == BackFaces::kHiddenUnlessSeen && culls(group, viewpoint);
 }
 
@@ -342,7 +343,8 @@ bool SurfaceBuffers::back_faces_showed() {
   return shown;
 }
 
-void SurfaceBuffers::draw_triangle_group(const TriangleGroup& group, const glm::dvec3& viewpoint, DrawPacing& pacing) const {
+void SurfaceBuffers::draw_triangle_group(const TriangleGroup& group, const std::optional<glm::dvec3>& viewpoint,
+                                         DrawPacing& pacing) const {
   if (culls(group, viewpoint)) {
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);

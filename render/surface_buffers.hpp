@@ -32,14 +32,15 @@ class SurfaceBuffers {
     int vertex_count = 0;
   };
   const std::vector<TriangleGroup>& triangle_groups() const { return groups_; }
-  // Seen from `viewpoint` (the eye, or the light for a shadow map; NaN, outside
-  // no box, culls nothing): a closed group's back faces are culled when the
-  // viewpoint is outside its box, where
+  // Seen from `viewpoint` (the eye, or the light for a shadow map; none where
+  // the rays start from no one point outside every box, which culls
+  // nothing): a closed group's back faces are culled when the viewpoint is
+  // outside its box, where
   // they are never visible (and where rasterisation lets one show at an
   // outline pixel, two-sided shading would paint it unlit); from inside, as
   // when a viewer zooms into a mesh, they are drawn.
   // They are sent through `pacing`.
-  void draw_triangle_group(const TriangleGroup& group, const glm::dvec3& viewpoint, DrawPacing& pacing) const;
+  void draw_triangle_group(const TriangleGroup& group, const std::optional<glm::dvec3>& viewpoint, DrawPacing& pacing) const;
   // Where `group`'s back faces are culled on trust (BackFaces::kHiddenUnlessSeen)
   // from `viewpoint`, with every surface's depth already drawn: asks whether
   // one would show. Its back faces are drawn a little behind where they are
@@ -47,7 +48,7 @@ class SurfaceBuffers {
   // a silhouette edge never beats), with the depth test and no writes, under
   // an occlusion query. Only where culls_on_trust, with a program that
   // places the triangles as the triangle shader does.
-  bool culls_on_trust(const TriangleGroup& group, const glm::dvec3& viewpoint) const;
+  bool culls_on_trust(const TriangleGroup& group, const std::optional<glm::dvec3>& viewpoint) const;
   void ask_whether_back_faces_show(const TriangleGroup& group, DrawPacing& pacing);
   // The answers to every question asked since last time, waiting for them:
   // whether some back face showed. Where one did, a shell crosses itself in
@@ -94,7 +95,7 @@ class SurfaceBuffers {
 
   std::vector<TriangleGroup> groups_;
   std::vector<uint8_t> back_faces_seen_;  // per group: some showed, so it is drawn whole
-  bool culls(const TriangleGroup& group, const glm::dvec3& viewpoint) const;
+  bool culls(const TriangleGroup& group, const std::optional<glm::dvec3>& viewpoint) const;
   void draw_triangles(const TriangleGroup& group, DrawPacing& pacing) const;  // with the culling as it is set
   // Occlusion queries, made as needed and kept; the first `asked_` are
   // waiting for their answers, each about group `asked_group_[k]`.
