@@ -44,6 +44,14 @@ packages=(
 # The Python module umbra (docs/python.md): built and installed by a plain
 # ./build.sh and by ./build.sh test (python, below).
 python_packages=(python3-dev pybind11-dev python3-numpy)
+# Animations (--turntable to .mp4, .webp or .gif): each library optional in
+# CMake, so that the demo builds without them; built in by a plain
+# ./build.sh and by ./build.sh test, sanitize and fuzz (motion, below).
+motion_packages=(
+  libavcodec-dev libavformat-dev libswscale-dev libx264-dev  # H.264 video in MP4 (libavcodec with libx264)
+  libwebp-dev                                                # animated WebP (libwebp's mux library)
+  libgif-dev                                                 # GIF (giflib)
+)
 # What the tests, benchmarks, sanitizers and fuzzers need besides: installed
 # by ./build.sh test, sanitize and fuzz.
 test_packages=(
@@ -63,9 +71,11 @@ test_packages=(
   mypy                               # the Python module's type stubs, type-checked (tested)
   slurm-wlm munge                    # docs/batch-checks.md: the Slurm recipe, on a cluster the test starts (tested)
   chromium                           # umbra check --report's page, opened in a real browser (tested)
+  ffmpeg                             # ffprobe reads back the MP4 videos umbra writes (tested)
 )
 case "${1:-}" in
-  test|sanitize|fuzz) packages+=("${test_packages[@]}") ;;
+  test|sanitize|fuzz) packages+=("${test_packages[@]}" "${motion_packages[@]}") ;;
+  "") packages+=("${motion_packages[@]}") ;;
 esac
 # Whether this command builds the Python module: not the demo, which renders
 # with umbra alone, nor the sanitizers' and fuzzers' builds (configured below
