@@ -66,9 +66,9 @@ void cameras_input(const uint8_t* data, size_t size) {
   }();
   try {
     const TransformsFile file = read_transforms(std::string(reinterpret_cast<const char*>(data), size), "fuzz.json");
-    for (const Camera& camera : cameras_of(file, staged, placement_of(staged.meshes.at(0))))
+    for (const Shot& shot : shots_of(file, staged, placement_of(staged.meshes.at(0))))
       for (const auto& [x, y] : {std::pair{0.0, 0.0}, {file.width - 1.0, file.height - 1.0}}) {
-        const Ray ray = camera.pixel_ray(file.width, file.height, x, y);
+        const Ray ray = shot.camera.pixel_ray(file.width, file.height, x, y);
         const double length = glm::length(ray.direction);
         if (!std::isfinite(ray.origin.x + ray.origin.y + ray.origin.z) || !(std::abs(length - 1.0) < 1e-9))
           throw std::logic_error("an accepted camera's pixel ray is not finite and unit");

@@ -29,6 +29,7 @@
 #include "tools/defect_picture.hpp"
 #include "tools/picture_choices.hpp"
 #include "tools/picture_drawing.hpp"
+#include "tools/view_preparation.hpp"
 #include "tools/view_set.hpp"
 
 namespace py = pybind11;
@@ -126,13 +127,18 @@ class Renderer {
   // as umbra render --views draws them.
   // With `cameras_text` (a transforms.json's content, named `cameras_name`
   // in messages), the views it names instead of `count`.
+  // With `turning` ("model" or "light"), a motion's `count` frames instead, as --turntable draws them.
   py::tuple render_views(const MeshSource& source, const std::vector<std::string>& words, int count, const std::string& spread,
-                         const std::string& pass_list, const std::string& cameras_text, const std::string& cameras_name) {
+                         const std::string& pass_list, const std::string& cameras_text, const std::string& cameras_name,
+                         const std::string& turning_word) {
     if (count < 1) throw UsageError("views must be at least 1, got " + std::to_string(count));
     const ViewSpread spread_of = parse_view_spread("--views-on", spread);
     const std::vector<DataPass> passes = pass_list.empty() ? std::vector<DataPass>{} : parse_data_passes("--passes", pass_list);
+    Turning turning = Turning::kNone;
+    if (!turning_word.empty() && !parse_turning(turning_word, turning))
+      throw UsageError("orbit takes \"model\" or \"light\", got \"" + turning_word + "\"");
     PictureChoices c = choices(source, words);
-    if (const auto* path = std::get_if<std::string>(&source)) require_staged({"--views"}, *path);
+    if (const auto* path = std::get_if<std::string>(&source); path && turning == Turning::kNone) require_staged({"--views"}, *path);
     leave_floor_out_of_sphere(c.staging, c.staging_given, spread_of);
     std::vector<std::string> warnings;
     std::vector<uint8_t> color, object, shadow;
@@ -147,19 +153,23 @@ class Renderer {
         given = read_transforms(cameras_text, cameras_name);
         count = int(given->count());
         if (!c.size_given) c.settings.width = given->width, c.settings.height = given->height, c.size_given = true;
+        turning = given->turning;
       }
+      c.staging.view.turning = turning;  // framed for the whole motion
       Scene scene = staged(source, c, warnings, size_t(count));
       lights = scene.lights.size();
-      const MeshPlacement placement = placement_of(scene.meshes.at(0));
+      // A staged mesh's views are in its file's coordinates; a scene's in its own.
+      const auto* path = std::get_if<std::string>(&source);
+      const MeshPlacement placement = path && !is_mesh_file(*path) ? MeshPlacement{} : placement_of(scene.meshes.at(0));
       const double aspect = double(c.settings.width) / c.settings.height;
-      const std::vector<Camera> cameras =
-          given ? cameras_of(*given, scene, placement) : view_cameras(scene, c.staging.view, aspect, count, spread_of);
+      const std::vector<Shot> shots = requested_shots(scene, placement, {count, spread_of, turning, {}, {}}, given, c.staging.view, aspect);
+      require_lights_off_casters(scene, shots);
       std::vector<std::string> stems;
       for (int i = 0; i < count; ++i) stems.push_back(view_stem(i, count));
-      transforms_text = transforms_json(cameras, scene, placement, c.settings.width, c.settings.height, passes, stems).dump();
+      transforms_text = transforms_json(shots, scene, placement, c.settings.width, c.settings.height, passes, stems, turning).dump();
       const std::lock_guard<std::mutex> one_at_a_time(drawing_);
       if (closed_) throw std::runtime_error("this Renderer is closed");
-      draw_views(scene, cameras, placement, c.settings, passes, context_, c.gl, [&](int, DrawnView&& view) {
+      draw_views(scene, shots, placement, c.settings, passes, context_, c.gl, [&](int, DrawnView&& view) {
         const Image rgba = view.color.channels == 4 ? std::move(view.color) : with_alpha(view.color);
         color.insert(color.end(), rgba.pixels.begin(), rgba.pixels.end());
         const SurfacePasses& s = view.surface;
@@ -382,7 +392,7 @@ PYBIND11_MODULE(_umbra, m) {
       .def(py::init<std::string>(), py::arg("gl"))
       .def("render", &Renderer::render, py::arg("source"), py::arg("words"), py::arg("mask"), py::arg("depth"))
       .def("render_views", &Renderer::render_views, py::arg("source"), py::arg("words"), py::arg("count"), py::arg("spread"),
-           py::arg("passes"), py::arg("cameras_text"), py::arg("cameras_name"))
+           py::arg("passes"), py::arg("cameras_text"), py::arg("cameras_name"), py::arg("turning"))
       .def("close", &Renderer::close)
       .def_property_readonly("platform", &Renderer::platform);
   m.def("check", &check, py::arg("source"), py::arg("time_limit"), py::arg("picture"));

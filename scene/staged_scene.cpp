@@ -44,6 +44,11 @@ const glm::dvec3 kStageBackground(0.8, 0.8, 0.82);
 // How far from the model's centre a shadow is framed: a point little below
 // a low light casts its shadow toward the horizon, which no frame holds.
 constexpr double kShadowReach = 8.0;
+// The steps a motion's framing takes through a whole turn: between two, a
+// point turns by at most 5 degrees from one, and moves out from the line
+// between them by under 0.4% of its distance from the axis, well inside
+// the frame's margin.
+constexpr int kFramingTurns = 36;
 
 // Where StageView puts the light round a model centred at `centre`.
 glm::dvec3 light_position(const glm::dvec3& centre, const StageView& view) {
@@ -112,14 +117,22 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
   // What the frame must hold: the model's points and their shadows on the
   // floor, where the light is above the point (else its shadow has no end),
   // the furthest drawn in to kShadowReach.
+  // Under a motion, every frame's: the model turned, or the light, through
+  // a whole turn about the z axis in kFramingTurns steps.
   std::vector<glm::dvec3> points;
-  for (const glm::dvec3& p : model_points) {
-    points.push_back(p);
-    if (!view.frame_shadow || !(stage.light.z > p.z)) continue;
-    glm::dvec3 shadow = stage.light + (p - stage.light) * ((stage.light.z - stage.floor_z) / (stage.light.z - p.z));
-    const glm::dvec3 out(shadow.x - centre.x, shadow.y - centre.y, 0.0);
-    if (glm::length(out) > kShadowReach) shadow = glm::dvec3(centre.x, centre.y, stage.floor_z) + out * (kShadowReach / glm::length(out));
-    points.push_back(shadow);
+  const int turns = view.turning == Turning::kNone ? 1 : kFramingTurns;
+  for (int turn = 0; turn < turns; ++turn) {
+    const double degrees = frame_turn_deg(turn, turns);
+    const glm::dvec3 light = view.turning == Turning::kLight ? rotated_about_z(stage.light, degrees) : stage.light;
+    for (const glm::dvec3& model_point : model_points) {
+      const glm::dvec3 p = view.turning == Turning::kModel ? rotated_about_z(model_point, degrees) : model_point;
+      if (turn == 0 || view.turning == Turning::kModel) points.push_back(p);
+      if (!view.frame_shadow || !(light.z > p.z)) continue;
+      glm::dvec3 shadow = light + (p - light) * ((light.z - stage.floor_z) / (light.z - p.z));
+      const glm::dvec3 out(shadow.x - centre.x, shadow.y - centre.y, 0.0);
+      if (glm::length(out) > kShadowReach) shadow = glm::dvec3(centre.x, centre.y, stage.floor_z) + out * (kShadowReach / glm::length(out));
+      points.push_back(shadow);
+    }
   }
   if (points.empty()) points = {lo, hi};
   const glm::dvec3 back = toward(view.camera_azimuth_deg.value_or(kCameraAzimuthDeg), view.camera_elevation_deg);

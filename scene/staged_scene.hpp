@@ -15,6 +15,7 @@
 #include <glm/vec3.hpp>
 
 #include "scene/mesh_loader.hpp"
+#include "scene/motion.hpp"
 #include "scene/scene.hpp"
 
 namespace umbra {
@@ -71,12 +72,15 @@ struct StageView {
   // floor is drawn (the floor never moves the camera); a sphere of views,
   // which looks from below too, frames the model alone.
   bool frame_shadow = true;
+  // A motion the frame holds in every frame of: the model turning through a
+  // whole turn under the light, or the light orbiting it (motion.hpp).
+  Turning turning = Turning::kNone;
 
   bool operator==(const StageView& o) const {
     return camera_azimuth_deg == o.camera_azimuth_deg && camera_elevation_deg == o.camera_elevation_deg &&
            camera_zoom == o.camera_zoom && fov_deg == o.fov_deg && orthographic == o.orthographic && eye == o.eye && target == o.target &&
            light_azimuth_deg == o.light_azimuth_deg && light_elevation_deg == o.light_elevation_deg && light == o.light &&
-           light_turn_deg == o.light_turn_deg && frame_shadow == o.frame_shadow;
+           light_turn_deg == o.light_turn_deg && frame_shadow == o.frame_shadow && turning == o.turning;
   }
 };
 

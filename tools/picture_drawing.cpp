@@ -45,7 +45,7 @@ void draw_each(const Scene& scene, size_t views, const std::function<void(size_t
     transparent.background.transparent = true;
     const auto place_both = [&](size_t i) {
       place(i);
-      transparent.camera = scene.camera;
+      transparent.camera = scene.camera, transparent.lights = scene.lights;
     };
     draw_each(transparent, views, place_both, settings, request, context, gl, before, caster, [&](size_t i, DrawnPicture&& picture) {
       picture.image = composited_over(picture.image, scene.background.color);
@@ -120,10 +120,10 @@ DrawnPicture draw_picture(const Scene& scene, const RenderSettings& settings, co
   return drawn;
 }
 
-void draw_pictures(Scene& scene, const std::vector<Camera>& cameras, const RenderSettings& settings, const PictureRequest& request,
+void draw_pictures(Scene& scene, const std::vector<Shot>& shots, const RenderSettings& settings, const PictureRequest& request,
                    std::optional<HeadlessContext>& context, HeadlessGl gl, const RayCaster* caster,
                    const std::function<void(size_t, DrawnPicture&&)>& each) {
-  draw_each(scene, cameras.size(), [&](size_t i) { scene.camera = cameras[i]; }, settings, request, context, gl, {}, caster, each);
+  draw_each(scene, shots.size(), [&](size_t i) { place_shot(scene, shots[i]); }, settings, request, context, gl, {}, caster, each);
 }
 
 }  // namespace umbra

@@ -12,6 +12,7 @@
 #include "image/image.hpp"
 #include "render/headless_context.hpp"
 #include "render/render_plan.hpp"
+#include "scene/motion.hpp"
 #include "scene/scene.hpp"
 
 namespace umbra {
@@ -50,11 +51,12 @@ DrawnPicture draw_picture(const Scene& scene, const RenderSettings& settings, co
                           std::optional<HeadlessContext>& context, HeadlessGl gl, const BeforeDrawing& before = {},
                           const RayCaster* caster = nullptr);
 
-// Many views of one scene, `scene.camera` put at each of `cameras` in turn
-// (and left at the last), each handed to `each` as it is drawn: as
-// draw_picture draws each, but with the plan made once and updated per view
-// and one renderer, whose buffers hold the surfaces for all of them.
-void draw_pictures(Scene& scene, const std::vector<Camera>& cameras, const RenderSettings& settings, const PictureRequest& request,
+// Many views of one scene, its camera and lights put where each of `shots`
+// puts them in turn (and left at the last), each handed to `each` as it is
+// drawn: as draw_picture draws each, but with the plan made once and
+// updated per view and one renderer, whose buffers hold the surfaces for
+// all of them.
+void draw_pictures(Scene& scene, const std::vector<Shot>& shots, const RenderSettings& settings, const PictureRequest& request,
                    std::optional<HeadlessContext>& context, HeadlessGl gl, const RayCaster* caster,
                    const std::function<void(size_t, DrawnPicture&&)>& each);
 

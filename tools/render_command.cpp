@@ -237,7 +237,8 @@ struct RenderOptions : PictureChoices {
   bool jpeg_quality_given = false;
   bool explain = false;
   std::optional<std::string> save_scene;  // for a mesh file: where to write the staged scene
-  std::optional<ViewSetRequest> views;    // --views, --views-on, --passes: many views into the folder -o names
+  std::optional<ViewSetRequest> views;    // --views, --views-on, --passes, --turntable: many views into the folder -o names
+  std::optional<AnimationRequest> animation;  // or into one animation, as -o's name asks
   bool any_texture_path = false;
   bool help = false;
 };
@@ -249,10 +250,14 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   add_help_option(options, o.help);
   add_output_option(options, o.output);
   options.value("--mask", [&](const std::string&, const std::string& t) { o.mask = t; });
-  options.value("--jpeg-quality", [&](const std::string& n, const std::string& t) {
-    o.picture.jpeg_quality = parse_int_in(n, t, 1, 100);
-    o.jpeg_quality_given = true;
-  });
+  std::optional<int> quality;
+  // --jpeg-quality: --quality's older name, for a JPEG alone.
+  for (const char* name : {"--quality", "--jpeg-quality"})
+    options.value(name, [&](const std::string& n, const std::string& t) {
+      quality = parse_int_in(n, t, 1, 100);
+      o.picture.jpeg_quality = *quality;
+      o.jpeg_quality_given = true;
+    });
   add_picture_choices(options, o);
   options.flag("--explain", o.explain);
   options.value("--save-scene", [&](const std::string&, const std::string& t) { o.save_scene = t; });
@@ -293,6 +298,22 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     views.passes = parse_data_passes(n, t);
     view_options.push_back(n);
   });
+  std::optional<Turning> orbit;
+  options.value("--turntable", [&](const std::string& n, const std::string& t) {
+    views.count = parse_int_in(n, t, 1, 100000);
+    views.turning = Turning::kModel;
+    view_options.push_back(n);
+  });
+  options.value("--orbit", [&](const std::string& n, const std::string& t) {
+    Turning turning = Turning::kNone;
+    if (!parse_turning(t, turning)) throw UsageError(n + " takes model or light, got \"" + t + "\"");
+    orbit = turning;
+  });
+  std::optional<double> fps;
+  options.value("--fps", [&](const std::string& n, const std::string& t) {
+    fps = parse_finite_number(n, t);
+    if (!(*fps >= 1.0 && *fps <= 240.0)) throw UsageError(n + " must be from 1 to 240 frames a second, got \"" + t + "\"");
+  });
   options.positionals(scenes);
   options.parse(argv);
   if (!scenes.empty()) o.scene_path = scenes[0];
@@ -312,19 +333,47 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
                               o.size_given, jobs.value_or(std::max(1u, std::thread::hardware_concurrency())), shard, sheet,
                               o.any_texture_path, timeout_s, skip_existing, json, std::move(views)};
   };
+  const bool turntable = views.turning != Turning::kNone;
+  if (orbit && !turntable) throw UsageError("--orbit says what --turntable turns: give --turntable N");
+  if (turntable) views.turning = orbit.value_or(Turning::kModel);
+  // -o's name: an animation, or a folder of each picture's files.
+  const bool folder_named = !o.output.empty() && (o.output.back() == '/' || std::filesystem::is_directory(o.output, ec));
+  const std::optional<AnimationFormat> animation = folder_named ? std::nullopt : animation_format_of(o.output);
+  if (fps && !animation) throw UsageError("--fps is an animation's pace: name one with -o (" + animation_extensions() + ")");
   if (!view_options.empty()) {
     const std::string& named = view_options.front();
     o.views = views;
-    if (!several && o.scene_path != "-") require_staged({named}, o.scene_path);  // standard input's once read
+    // A motion turns a scene's own camera and lights; views stand round a staged model.
+    if (!several && o.scene_path != "-" && !turntable) require_staged({named}, o.scene_path);  // standard input's once read
     if (o.output.empty()) throw UsageError("no output folder given (-o OUTDIR): " + named + " writes each view's files there");
-    if (std::filesystem::exists(o.output, ec) && !std::filesystem::is_directory(o.output, ec))
+    if (turntable && !folder_named && !animation && !std::filesystem::path(o.output).extension().empty())
+      throw UsageError("-o " + o.output + ": --turntable writes " + animation_extensions() +
+                       ", or each frame's files into a folder (a name ending in /)");
+    if (animation) {
+      const AnimationFormatRow& row = animation_row(*animation);
+      if (const std::string why = animation_unavailable(*animation); !why.empty()) throw UsageError(why);
+      if (!views.passes.empty())
+        throw UsageError("--passes writes each picture's data files, which " + std::string(row.name) + " has no room for: name a folder");
+      if (o.staging.background && o.staging.background->transparent && !row.alpha)
+        throw UsageError("--background transparent needs an alpha channel, which " + std::string(row.name) + " has not: name a .webp");
+      if (quality && !row.quality) throw UsageError("--quality is for a .jpg or .webp; " + std::string(row.name) + " takes none");
+      if (several) throw UsageError("-o " + o.output + " names one animation; several files make one each: name a folder");
+      require_other_than_input("-o", o.output, o.scene_path);
+      o.animation = AnimationRequest{*animation, fps.value_or(30.0), quality};
+    } else if (quality) {
+      throw UsageError("--quality is for a .jpg picture or a .webp animation; " + named + " writes PNG pictures into a folder");
+    }
+    if (!animation && std::filesystem::exists(o.output, ec) && !std::filesystem::is_directory(o.output, ec))
       throw UsageError("-o " + o.output + " is a file; " + named + " writes each view's files in a folder: name a folder");
-    if (is_picture_name(o.output))
+    if (!animation && is_picture_name(o.output))
       throw UsageError("-o " + o.output + " names a picture, but " + named + " writes each view's files in a folder: name a folder");
     leave_floor_out_of_sphere(o.staging, o.staging_given, views.spread);
     const auto named_too = [&](const char* option) { return std::count(view_options.begin(), view_options.end(), option) > 0; };
     if (views.cameras && (named_too("--views") || named_too("--views-on")))
       throw UsageError("--cameras draws the views its file names; --views and --views-on place views of their own: give one or the other");
+    if (turntable && (named_too("--views") || named_too("--views-on") || named_too("--cameras")))
+      throw UsageError("--turntable draws a motion's frames; --views, --views-on and --cameras place views of their own: give one or "
+                       "the other");
     const auto refuse = [&](bool given, const std::string& option, const std::string& why) {
       if (given) throw UsageError(option + " is not for " + named + why);
     };
@@ -332,8 +381,8 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     refuse(o.mask.has_value(), "--mask", " (--passes shadow draws each view's mask)");
     refuse(o.save_scene.has_value(), "--save-scene", "");
     refuse(o.explain, "--explain", "");
-    refuse(o.staging.view.eye.has_value(), "--eye", framed);
-    refuse(o.staging.view.target.has_value(), "--target", framed);
+    refuse(o.staging.view.eye.has_value() && !turntable, "--eye", framed);
+    refuse(o.staging.view.target.has_value() && !turntable, "--target", framed);
     refuse(sheet.has_value() && !several, "--sheet", " of one file (it shows several files' first views)");
     if (!several)
       for (const auto& [given, name] : {std::pair{shard.has_value(), "--shard"}, {timeout_s > 0.0, "--timeout"},
@@ -363,7 +412,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
       throw UsageError("--background transparent needs an alpha channel, which a " +
                        std::string(format_row(*picture_format_of(o.output)).name) + " picture has not: name a .png");
     if (o.jpeg_quality_given && picture_format_of(o.output) != PictureFormat::kJpeg)
-      throw UsageError("--jpeg-quality is for a JPEG picture; -o " + o.output + " is not one");
+      throw UsageError("--quality is for a JPEG picture, or a WebP animation (--turntable); -o " + o.output + " is neither");
     if (writes_standard_output(o.output) && o.explain)
       throw UsageError("--explain prints to standard output, where -o " + o.output + " writes the picture: name a file with -o");
     if (writes_standard_output(o.output) && ::isatty(STDOUT_FILENO))
@@ -460,7 +509,8 @@ int run_render_command(const std::vector<std::string>& argv) {
   // The staging options, and views, ask standard input for a mesh, which only its content can say.
   if (standard_input && !is_mesh_file(options.scene_path)) {
     std::vector<std::string> given = options.staging_given;
-    if (options.views) given.insert(given.begin(), options.views->cameras ? "--cameras" : "--views");
+    if (options.views && options.views->turning == Turning::kNone)
+      given.insert(given.begin(), options.views->cameras ? "--cameras" : "--views");
     if (!given.empty()) {
       std::cerr << "umbra render: " << given.front() << " is for a mesh file on its own, which umbra stages; standard input holds "
                 << "a scene (a scene has its own camera and lights)\n(see umbra render --help)\n";
@@ -468,7 +518,7 @@ int run_render_command(const std::vector<std::string>& argv) {
     }
   }
   if (options.views)
-    return write_view_set(options.scene_path, options.output, options, *options.views, options.any_texture_path,
+    return write_view_set(options.scene_path, options.output, options, *options.views, options.animation, options.any_texture_path,
                           standard_input ? "standard input" : options.scene_path);
   keep_freed_memory_for_reuse();
   try {

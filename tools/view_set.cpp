@@ -10,6 +10,7 @@
 
 #include "mesh/input_error.hpp"
 #include "reference/ray_caster.hpp"
+#include "scene/scene_checks.hpp"
 #include "tools/command_line.hpp"
 #include "tools/picture_drawing.hpp"
 
@@ -54,15 +55,16 @@ ViewSpread parse_view_spread(const std::string& option, const std::string& text)
   return text == "ring" ? ViewSpread::kRing : ViewSpread::kSphere;
 }
 
-std::vector<Camera> view_cameras(const Scene& staged, const StageView& view, double aspect, int count, ViewSpread spread) {
+std::vector<Shot> view_shots(const Scene& staged, const StageView& view, double aspect, int count, ViewSpread spread) {
   const Mesh& mesh = staged.meshes.at(0);
   const Camera& first = staged.camera;
   // The staged camera's own direction from what it looks at: its azimuth
   // and elevation in StageView's convention.
   const glm::dvec3 back = glm::normalize(first.eye - first.target);
   const double azimuth = glm::degrees(std::atan2(back.x, -back.y)), elevation = glm::degrees(std::asin(back.z));
-  std::vector<Camera> cameras;
-  if (spread == ViewSpread::kRing) cameras.push_back(first);
+  std::vector<Shot> shots;
+  const Shot still = shot_of(staged);  // its lights stay where they are
+  if (spread == ViewSpread::kRing) shots.push_back(still);
   const std::vector<glm::dvec3> points = framing_points(mesh);
   StageView turned = view;
   turned.light = staged.lights.at(0).position;  // held still in the model's frame
@@ -84,9 +86,9 @@ std::vector<Camera> view_cameras(const Scene& staged, const StageView& view, dou
       turned.camera_azimuth_deg = azimuth + golden_deg * i;
       turned.camera_elevation_deg = glm::degrees(std::asin(z));
     }
-    cameras.push_back(stage_for(mesh.bounds_min, mesh.bounds_max, points, aspect, turned).camera);
+    shots.push_back({stage_for(mesh.bounds_min, mesh.bounds_max, points, aspect, turned).camera, still.lights});
   }
-  return cameras;
+  return shots;
 }
 
 namespace {
@@ -101,10 +103,10 @@ nlohmann::ordered_json point_json(const glm::dvec3& p) { return {p.x, p.y, p.z};
 
 }  // namespace
 
-nlohmann::ordered_json transforms_json(const std::vector<Camera>& cameras, const Scene& scene, const MeshPlacement& placement,
+nlohmann::ordered_json transforms_json(const std::vector<Shot>& shots, const Scene& scene, const MeshPlacement& placement,
                                        int width, int height, const std::vector<DataPass>& passes,
-                                       const std::vector<std::string>& stems) {
-  const Camera& lens = cameras.at(0);
+                                       const std::vector<std::string>& stems, Turning turning) {
+  const Camera& lens = shots.at(0).camera;
   nlohmann::ordered_json json;
   // An orthographic camera has no focal length: what the picture spans, in
   // the file's units, the first view's here and each view's in its frame,
@@ -128,9 +130,11 @@ nlohmann::ordered_json transforms_json(const std::vector<Camera>& cameras, const
   json["w"] = width;
   json["h"] = height;
   json["camera_model"] = lens.orthographic() ? "ORTHOGRAPHIC" : "PINHOLE";
+  // The motion the frames were staged for: --cameras stages theirs alike.
+  if (turning != Turning::kNone) json["umbra_turning"] = turning_name(turning);
   nlohmann::ordered_json frames = nlohmann::ordered_json::array();
-  for (size_t i = 0; i < cameras.size(); ++i) {
-    const Camera& c = cameras[i];
+  for (size_t i = 0; i < shots.size(); ++i) {
+    const Camera& c = shots[i].camera;
     const CameraAxes a = c.axes();
     // Camera to the file's world: its axes (x right, y up, z back) and eye
     // in the file's coordinates; rigid, as the placement's scale is uniform.
@@ -153,13 +157,18 @@ nlohmann::ordered_json transforms_json(const std::vector<Camera>& cameras, const
       }
     }
     frame["transform_matrix"] = row_major(pose);
-    nlohmann::ordered_json lights = nlohmann::ordered_json::array();
-    for (const Light& l : scene.lights) lights.push_back(point_json(placement.file_point(l.position)));
+    nlohmann::ordered_json lights = nlohmann::ordered_json::array(), placed_lights = nlohmann::ordered_json::array();
+    for (const glm::dvec3& l : shots[i].lights) {
+      lights.push_back(point_json(placement.file_point(l)));
+      placed_lights.push_back(point_json(l));
+    }
     frame["light_positions"] = lights;
-    // The camera as umbra placed it, in the staged scene's coordinates: --cameras draws it again exactly.
+    // The camera and lights as umbra placed them, in the staged scene's
+    // coordinates: --cameras draws them again exactly.
     frame["umbra_camera"] = {{"eye", point_json(c.eye)}, {"target", point_json(c.target)}, {"up", point_json(c.up)}};
     if (c.orthographic()) frame["umbra_camera"]["orthographic"] = c.ortho_height;
     else frame["umbra_camera"]["fovy"] = c.fovy_deg;
+    frame["umbra_camera"]["lights"] = placed_lights;
     frames.push_back(frame);
   }
   json["frames"] = frames;
@@ -176,12 +185,17 @@ double number_at(const nlohmann::json& json, const char* key, const std::string&
   return found->get<double>();
 }
 
+// `value` as a point, or an InputError saying that `what` must be one.
+glm::dvec3 point_value(const nlohmann::json& value, const std::string& path, const std::string& what) {
+  if (!value.is_array() || value.size() != 3 ||
+      !std::all_of(value.begin(), value.end(), [](const nlohmann::json& v) { return v.is_number() && std::isfinite(v.get<double>()); }))
+    throw InputError({path}, what + " must be 3 finite numbers", InputProblem::kMalformed);
+  return {value[0].get<double>(), value[1].get<double>(), value[2].get<double>()};
+}
+
 glm::dvec3 point_at(const nlohmann::json& json, const char* key, const std::string& path, const std::string& where) {
   const auto found = json.find(key);
-  if (found == json.end() || !found->is_array() || found->size() != 3 ||
-      !std::all_of(found->begin(), found->end(), [](const nlohmann::json& v) { return v.is_number() && std::isfinite(v.get<double>()); }))
-    throw InputError({path}, where + "'s \"" + key + "\" must be 3 finite numbers", InputProblem::kMalformed);
-  return {(*found)[0].get<double>(), (*found)[1].get<double>(), (*found)[2].get<double>()};
+  return point_value(found == json.end() ? nlohmann::json() : *found, path, where + "'s \"" + key + "\"");
 }
 
 }  // namespace
@@ -226,17 +240,33 @@ TransformsFile read_transforms(const std::string& text, const std::string& path)
   return file;
 }
 
-std::vector<Camera> cameras_of(const TransformsFile& file, const Scene& staged, const MeshPlacement& placement) {
+std::vector<Shot> shots_of(const TransformsFile& file, const Scene& staged, const MeshPlacement& placement) {
   const std::string& path = file.path;
   const nlohmann::json* const frames = &file.frames;
-  std::vector<Camera> cameras;
+  std::vector<Shot> shots;
   const glm::dvec3 centre = 0.5 * (staged.meshes.at(0).bounds_min + staged.meshes.at(0).bounds_max);
   for (size_t i = 0; i < frames->size(); ++i) {
     const nlohmann::json& frame = (*frames)[i];
     const std::string where = "frame " + std::to_string(i);
     if (!frame.is_object()) throw InputError({path}, where + " is not an object", InputProblem::kMalformed);
     Camera camera;
+    Shot shot = shot_of(staged);
+    // The frame's lights, as many as the scene has: umbra's own exactly, or a file's placed with the model.
+    const auto lights_at = [&](const nlohmann::json& json, const char* key, bool in_file) {
+      const auto found = json.find(key);
+      if (found == json.end()) return;
+      if (!found->is_array() || found->size() != shot.lights.size())
+        throw InputError({path}, where + "'s \"" + key + "\" must list " + std::to_string(shot.lights.size()) +
+                                     (shot.lights.size() == 1 ? " light" : " lights") + ", as the scene has",
+                         InputProblem::kMalformed);
+      for (size_t l = 0; l < shot.lights.size(); ++l) {
+        const glm::dvec3 p = point_value((*found)[l], path, where + "'s \"" + key + "\" light " + std::to_string(l + 1));
+        shot.lights[l] = in_file ? placement(p) : p;
+      }
+    };
     if (const auto placed = frame.find("umbra_camera"); placed != frame.end() && placed->is_object()) {
+      if (placed->contains("lights")) lights_at(*placed, "lights", false);
+      else lights_at(frame, "light_positions", true);
       camera = Camera{point_at(*placed, "eye", path, where), point_at(*placed, "target", path, where), point_at(*placed, "up", path, where)};
       if (placed->contains("orthographic")) {
         camera.ortho_height = number_at(*placed, "orthographic", path, where);
@@ -274,6 +304,7 @@ std::vector<Camera> cameras_of(const TransformsFile& file, const Scene& staged, 
         throw InputError({path}, where + "'s ortho_height must be above 0", InputProblem::kMalformed);
       camera = Camera{eye, eye + forward * (along > 0.0 ? along : glm::length(centre - eye) + 1.0), up, file.fovy_deg,
                       placement.length(ortho_height)};
+      lights_at(frame, "light_positions", true);
     }
     const auto finite = [](const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); };
     if (!finite(camera.eye) || !finite(camera.target) || !finite(camera.up))
@@ -283,12 +314,26 @@ std::vector<Camera> cameras_of(const TransformsFile& file, const Scene& staged, 
         !(glm::length(glm::cross(camera.target - camera.eye, camera.up)) > 0.0))
       throw InputError({path}, where + "'s camera looks nowhere: its eye is its target, its up is along its view or its fovy is not "
                                "between 0 and 180 degrees", InputProblem::kMalformed);
-    cameras.push_back(camera);
+    for (const glm::dvec3& l : shot.lights)
+      if (!finite(l))
+        throw InputError({path}, where + "'s lights lie beyond what double precision holds, placed with the model",
+                         InputProblem::kMalformed);
+    shot.camera = camera;
+    shots.push_back(std::move(shot));
   }
-  return cameras;
+  return shots;
 }
 
-void draw_views(Scene& scene, const std::vector<Camera>& cameras, const MeshPlacement& placement,
+void require_lights_off_casters(Scene& scene, const std::vector<Shot>& shots) {
+  const Shot placed = shot_of(scene);
+  for (const Shot& shot : shots) {
+    place_shot(scene, shot);
+    require_lights_off_casters(static_cast<const Scene&>(scene));
+  }
+  place_shot(scene, placed);
+}
+
+void draw_views(Scene& scene, const std::vector<Shot>& shots, const MeshPlacement& placement,
                 const RenderSettings& settings, const std::vector<DataPass>& passes, std::optional<HeadlessContext>& context,
                 HeadlessGl gl, const std::function<void(int, DrawnView&&)>& each) {
   const auto asked = [&](DataPass p) { return std::count(passes.begin(), passes.end(), p) > 0; };
@@ -300,15 +345,15 @@ void draw_views(Scene& scene, const std::vector<Camera>& cameras, const MeshPlac
   // with the camera whose rays start furthest out.
   if (surface || settings.antialias != settings.frame_samples()) {
     const Camera placed = scene.camera;
-    scene.camera = *std::max_element(cameras.begin(), cameras.end(), [](const Camera& a, const Camera& b) {
-      return RayCaster::farthest_ray_start(a) < RayCaster::farthest_ray_start(b);
-    });
+    scene.camera = std::max_element(shots.begin(), shots.end(), [](const Shot& a, const Shot& b) {
+      return RayCaster::farthest_ray_start(a.camera) < RayCaster::farthest_ray_start(b.camera);
+    })->camera;
     caster.emplace(scene);
     scene.camera = placed;
   }
   PictureRequest request;
   request.every_mask = asked(DataPass::kShadow);
-  draw_pictures(scene, cameras, settings, request, context, gl, caster ? &*caster : nullptr, [&](size_t i, DrawnPicture&& drawn) {
+  draw_pictures(scene, shots, settings, request, context, gl, caster ? &*caster : nullptr, [&](size_t i, DrawnPicture&& drawn) {
     DrawnView view{std::move(drawn.image), std::move(drawn.masks), {}};
     if (surface) {
       view.surface = surface_passes(scene, *caster, 0, settings.width, settings.height);

@@ -20,6 +20,7 @@
 #include "render/headless_context.hpp"
 #include "render/render_settings.hpp"
 #include "scene/mesh_placement.hpp"
+#include "scene/motion.hpp"
 #include "scene/scene.hpp"
 #include "scene/staged_scene.hpp"
 
@@ -50,16 +51,19 @@ enum class ViewSpread { kRing, kSphere };
 struct ViewSetRequest {
   int count = 1;
   ViewSpread spread = ViewSpread::kRing;
+  Turning turning = Turning::kNone;  // --turntable's frames, not views round the model: the model or the light turning
   std::vector<DataPass> passes;
   std::optional<std::string> cameras;  // --cameras FILE: the views a transforms.json names, not count's
 };
 
 // The views a transforms.json names (transforms_json's own, or a dataset
 // tool's), for the staged scene `staged` whose model `placement` placed:
-// each frame's umbra_camera where it has one (exactly the camera that drew
-// it), else its transform_matrix (camera to the mesh file's world, OpenGL's
-// camera axes) and the intrinsics, which must be umbra's pinhole: square
-// pixels (fl_x = fl_y) and the principal point at the picture's centre.
+// each frame's umbra_camera where it has one (exactly the camera and
+// lights that drew it), else its transform_matrix (camera to the mesh
+// file's world, OpenGL's camera axes) and the intrinsics, which must be
+// umbra's pinhole: square pixels (fl_x = fl_y) and the principal point at
+// the picture's centre; and its light_positions where it has them (the
+// staged scene's lights where not).
 // Read in two steps: the file's picture size and lens first, since the
 // model's staging depends on the picture's size; then its cameras, for the
 // model staged.
@@ -68,13 +72,14 @@ struct TransformsFile {
   int width = 0, height = 0;  // its w and h
   double fovy_deg = 45.0;     // a pinhole's
   double ortho_height = 0.0;  // an orthographic camera's, in the file's units ("camera_model": "ORTHOGRAPHIC")
+  Turning turning = Turning::kNone;  // "umbra_turning": a motion's frames, staged as that motion stages them
   nlohmann::json frames;  // at least one
   size_t count() const { return frames.size(); }
 };
 // `text` is the file's content, `path` its name for messages. Throws
 // InputError naming the file and what in it is wrong.
 TransformsFile read_transforms(const std::string& text, const std::string& path);
-std::vector<Camera> cameras_of(const TransformsFile& file, const Scene& staged, const MeshPlacement& placement);
+std::vector<Shot> shots_of(const TransformsFile& file, const Scene& staged, const MeshPlacement& placement);
 
 // A sphere of views looks from below too, where a floor would hide the
 // model: it has none unless --floor (in `given`, the staging options named) asks.
@@ -82,22 +87,27 @@ void leave_floor_out_of_sphere(StagingOptions& staging, const std::vector<std::s
 // "ring" or "sphere" as a spread; throws UsageError naming `option`.
 ViewSpread parse_view_spread(const std::string& option, const std::string& text);
 
-// The cameras of `count` views of the staged scene `staged`, each framing
+// The shots of `count` views of the staged scene `staged`, each framing
 // the model as staging frames it (stage_for, with `view`'s zoom and lens),
 // its light held still in the model's frame: round it at the staged
 // elevation, view 0 the staged camera's, each framing the model and its
 // shadow; or over the sphere, each framing the model alone. Throws StagingChoiceError for a spread that leaves
 // the view's framing nowhere to stand.
-std::vector<Camera> view_cameras(const Scene& staged, const StageView& view, double aspect, int count, ViewSpread spread);
+std::vector<Shot> view_shots(const Scene& staged, const StageView& view, double aspect, int count, ViewSpread spread);
 
 // transforms.json's content for views of `width` x `height` pixels of the
 // mesh placed in the scene by `placement`: the intrinsics, and per frame
 // its picture's and passes' file names (from the folder the JSON is in),
 // its camera's pose (camera to world, OpenGL's camera axes) in the mesh
-// file's coordinates, and its lights there.
-nlohmann::ordered_json transforms_json(const std::vector<Camera>& cameras, const Scene& scene, const MeshPlacement& placement,
+// file's coordinates, and its lights there; and the motion that staged
+// them, where one did.
+nlohmann::ordered_json transforms_json(const std::vector<Shot>& shots, const Scene& scene, const MeshPlacement& placement,
                                        int width, int height, const std::vector<DataPass>& passes,
-                                       const std::vector<std::string>& stems);
+                                       const std::vector<std::string>& stems, Turning turning = Turning::kNone);
+
+// Every shot's lights off every caster of `scene` (require_lights_off_casters,
+// shot by shot; the scene is left as it was). Throws InputError.
+void require_lights_off_casters(Scene& scene, const std::vector<Shot>& shots);
 
 // One view drawn: its colour picture (as umbra render draws it), and the
 // passes asked for: every light's shadow mask (as --mask draws light 1's),
@@ -111,11 +121,11 @@ struct DrawnView {
 };
 
 // Draws `scene` (a staged mesh, its model scene.meshes[0] placed by
-// `placement`) from each of `cameras` in turn (its camera left at the
-// last), in one GL context (made in
+// `placement`) from each of `shots` in turn (its camera and lights left at
+// the last), in one GL context (made in
 // `context` where it holds none of the picture's size, and kept there),
 // handing each view to `each` as it is drawn.
-void draw_views(Scene& scene, const std::vector<Camera>& cameras, const MeshPlacement& placement,
+void draw_views(Scene& scene, const std::vector<Shot>& shots, const MeshPlacement& placement,
                 const RenderSettings& settings, const std::vector<DataPass>& passes, std::optional<HeadlessContext>& context,
                 HeadlessGl gl,
                 const std::function<void(int index, DrawnView&& view)>& each);

@@ -1,16 +1,18 @@
 #include "tools/view_set_files.hpp"
 
+#include <condition_variable>
 #include <deque>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <mutex>
+#include <thread>
 
+#include "image/animation_file.hpp"
 #include "image/exr_file.hpp"
 #include "image/partial_file.hpp"
 #include "image/picture_file.hpp"
-#include "mesh/io/mapped_file.hpp"
-#include "scene/mesh_placement.hpp"
-#include "scene/scene_checks.hpp"
 #include "tools/command_line.hpp"
 #include "tools/progress_bar.hpp"
 
@@ -69,44 +71,24 @@ class ViewFiles {
 
 }  // namespace
 
-WrittenViews write_view_files(const std::string& mesh_path, const std::string& folder, PictureChoices choices,
+WrittenViews write_view_files(const std::string& mesh_path, const std::string& folder, const PictureChoices& choices,
                               const ViewSetRequest& request, const TextureMaps& maps, std::optional<HeadlessContext>& context,
                               const ViewProgress& progress, std::string& messages) {
   namespace fs = std::filesystem;
-  // A file umbra would stage, not a scene: its views stand round its model.
-  if (!is_mesh_file(mesh_path))
-    throw InputError({mesh_path}, "views are drawn of a mesh file on its own, which umbra stages; this is not one (a scene has its "
-                                  "own camera)", InputProblem::kUnsupportedFormat);
+  PreparedViews prepared = prepare_views(mesh_path, choices, request, maps, progress, messages);
   std::error_code ec;
-  fs::create_directories(folder, ec);
+  fs::create_directories(folder, ec);  // once the file is known to make views
   if (ec) throw std::runtime_error(folder + ": cannot make the folder: " + ec.message());
-  RenderSettings& settings = choices.settings;
-  if (progress) progress(0, 1, "loading " + mesh_path);
-  // The cameras file is read first: a bad one stops the run before the
-  // model's load, and its size is the picture's, which staging weighs.
-  std::optional<TransformsFile> given;
-  if (request.cameras) {
-    given = read_transforms(std::string(MappedFile(*request.cameras).bytes()), *request.cameras);
-    if (!choices.size_given) settings.width = given->width, settings.height = given->height, choices.size_given = true;
-  }
-  Scene scene = parse_scene_or_mesh_file(mesh_path, {}, nullptr, staging_for(choices.staging, settings), maps);
-  const MeshPlacement placement = placement_of(scene.meshes.at(0));
-  set_picture_size(settings, choices.size_given, scene);
-  const int count = given ? int(given->count()) : request.count;
-  set_picture_samples(settings, choices.antialias, choices.antialias_all, choices.show_volumes, scene, size_t(count));
-  require_drawable_size(settings.width, settings.height, settings.frame_samples());
-  for (const Warning& w : scene.warnings) messages += w.where.str() + ": warning: " + w.message + "\n";
-  require_lights_off_casters(scene);
-  require_caught_shadows_kept(scene, settings.method);
-  const std::vector<Camera> cameras =
-      given ? cameras_of(*given, scene, placement)
-            : view_cameras(scene, choices.staging.view, double(settings.width) / settings.height, count, request.spread);
+  Scene& scene = prepared.scene;
+  const RenderSettings& settings = prepared.settings;
+  const int count = int(prepared.shots.size());
   std::vector<std::string> stems;
   for (int i = 0; i < count; ++i) stems.push_back(view_stem(i, count));
   PartialFile transforms((fs::path(folder) / "transforms.json").string(), "the cameras");
-  const auto drawing = [&](int i) { return "drawing view " + std::to_string(i + 1) + " of " + std::to_string(count); };
+  const char* what = prepared.turning == Turning::kNone ? "view" : "frame";
+  const auto drawing = [&](int i) { return std::string("drawing ") + what + " " + std::to_string(i + 1) + " of " + std::to_string(count); };
   if (progress) progress(0, size_t(count), drawing(0));
-  draw_views(scene, cameras, placement, settings, request.passes, context, choices.gl, [&](int i, DrawnView&& view) {
+  draw_views(scene, prepared.shots, prepared.placement, settings, request.passes, context, choices.gl, [&](int i, DrawnView&& view) {
     if (progress && i + 1 < count) progress(size_t(i) + 1, size_t(count), drawing(i + 1));
     ViewFiles files(folder, stems[size_t(i)], request.passes, scene.lights.size());
     files.write(view, request.passes);
@@ -114,32 +96,134 @@ WrittenViews write_view_files(const std::string& mesh_path, const std::string& f
   });
   {
     std::ofstream out(transforms.temporary_path());
-    out << transforms_json(cameras, scene, placement, settings.width, settings.height, request.passes, stems).dump(2) << "\n";
+    out << transforms_json(prepared.shots, scene, prepared.placement, settings.width, settings.height, request.passes, stems,
+                           prepared.turning)
+               .dump(2)
+        << "\n";
     if (!out.flush()) throw std::runtime_error(transforms.path() + ": cannot write the cameras");
   }
   transforms.commit();
-  size_t triangles = scene.triangles.size();
-  for (const Mesh& m : scene.meshes) triangles += m.triangles.size();
-  return {count, settings.width, settings.height, triangles};
+  return {count, settings.width, settings.height, prepared.triangles()};
 }
 
-int write_view_set(const std::string& mesh_path, const std::string& folder, PictureChoices choices, const ViewSetRequest& request,
-                   bool any_texture_path, const std::string& shown) {
+namespace {
+
+// Frames handed to an animation's writer on a thread of its own, so that
+// one is encoded while the next is drawn; at most two wait.
+class EncodingThread {
+ public:
+  explicit EncodingThread(AnimationWriter& writer) : writer_(writer), thread_([this] { run(); }) {}
+  ~EncodingThread() { stop(false); }
+  EncodingThread(const EncodingThread&) = delete;
+  EncodingThread& operator=(const EncodingThread&) = delete;
+
+  // Throws what the writer threw, once it has.
+  void add(Image frame) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    space_.wait(lock, [&] { return waiting_.size() < 2 || error_; });
+    if (error_) std::rethrow_exception(error_);
+    waiting_.push_back(std::move(frame));
+    ready_.notify_one();
+  }
+
+  // Every frame written and the file finished; throws what the writer threw.
+  void finish() {
+    stop(true);
+    if (error_) std::rethrow_exception(error_);
+  }
+
+ private:
+  void stop(bool finish) {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      closed_ = true, finish_ = finish;
+      ready_.notify_one();
+    }
+    if (thread_.joinable()) thread_.join();
+  }
+
+  void run() {
+    try {
+      for (;;) {
+        Image frame;
+        {
+          std::unique_lock<std::mutex> lock(mutex_);
+          ready_.wait(lock, [&] { return !waiting_.empty() || closed_; });
+          if (waiting_.empty()) break;
+          frame = std::move(waiting_.front());
+          waiting_.pop_front();
+          space_.notify_one();
+        }
+        writer_.add(frame);
+      }
+      if (finish_) writer_.finish();  // else the run stopped: its file is left unfinished, and removed
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      error_ = std::current_exception();
+      space_.notify_one();
+    }
+  }
+
+  AnimationWriter& writer_;
+  std::mutex mutex_;
+  std::condition_variable ready_, space_;
+  std::deque<Image> waiting_;
+  bool closed_ = false, finish_ = false;
+  std::exception_ptr error_;
+  std::thread thread_;  // last: it starts once the rest is made
+};
+
+}  // namespace
+
+WrittenViews write_animation_file(const std::string& path, const std::string& output, const PictureChoices& choices,
+                                  const ViewSetRequest& request, const AnimationRequest& animation, const TextureMaps& maps,
+                                  std::optional<HeadlessContext>& context, const ViewProgress& progress, std::string& messages) {
+  PartialFile file(output, "the animation", PartialFile::Ending::kKeepExtension);
+  PreparedViews prepared = prepare_views(path, choices, request, maps, progress, messages);
+  const RenderSettings& settings = prepared.settings;
+  if (animation.format == AnimationFormat::kMp4 && (settings.width % 2 != 0 || settings.height % 2 != 0))
+    throw UsageError("an MP4 video's frames (yuv420p) have an even width and height; the picture is " + std::to_string(settings.width) +
+                     "x" + std::to_string(settings.height) + ": give --size with even sides");
+  const std::unique_ptr<AnimationWriter> writer = open_animation(
+      animation.format, file.temporary_path(), output, {settings.width, settings.height, animation.fps, animation.quality});
+  const int count = int(prepared.shots.size());
+  const auto drawing = [&](int i) { return "drawing frame " + std::to_string(i + 1) + " of " + std::to_string(count); };
+  if (progress) progress(0, size_t(count), drawing(0));
+  EncodingThread encoding(*writer);
+  draw_views(prepared.scene, prepared.shots, prepared.placement, settings, {}, context, choices.gl, [&](int i, DrawnView&& view) {
+    if (progress && i + 1 < count) progress(size_t(i) + 1, size_t(count), drawing(i + 1));
+    encoding.add(std::move(view.color));
+  });
+  if (progress) progress(size_t(count), size_t(count), "encoding");
+  encoding.finish();
+  file.commit();
+  return {count, settings.width, settings.height, prepared.triangles()};
+}
+
+int write_view_set(const std::string& path, const std::string& output, PictureChoices choices, const ViewSetRequest& request,
+                   const std::optional<AnimationRequest>& animation, bool any_texture_path, const std::string& shown) {
   std::string messages;  // the mesh's warnings, said before any error
   try {
     std::optional<ProgressBar> bar;
     std::optional<HeadlessContext> context;
-    const WrittenViews written = write_view_files(mesh_path, folder, choices, request, TextureMaps{true, "", any_texture_path},
-                                                  context, [&](size_t done, size_t total, const std::string& what) {
+    const TextureMaps maps{true, "", any_texture_path};
+    const ViewProgress progress = [&](size_t done, size_t total, const std::string& what) {
       if (!bar || done == 0) bar.emplace(total);
       if (!messages.empty()) bar->clear(), std::cerr << messages, messages.clear();
       bar->update(done, what);
-    }, messages);
+    };
+    const WrittenViews written = animation
+                                     ? write_animation_file(path, output, choices, request, *animation, maps, context, progress, messages)
+                                     : write_view_files(path, output, choices, request, maps, context, progress, messages);
     bar.reset();
     std::cerr << messages;
-    std::cout << "wrote " << written.views << (written.views == 1 ? " view" : " views") << " of " << shown << " ("
-              << written.width << "x" << written.height << ") and their cameras to "
-              << (std::filesystem::path(folder) / "transforms.json").string() << "\n";
+    const std::string what = request.turning == Turning::kNone ? " view" : " frame";
+    std::cout << "wrote " << written.views << what << (written.views == 1 ? "" : "s") << " of " << shown << " (" << written.width
+              << "x" << written.height << ")";
+    if (animation)
+      std::cout << " to " << output << ", " << animation_row(animation->format).name << "\n";
+    else
+      std::cout << " and their cameras to " << (std::filesystem::path(output) / "transforms.json").string() << "\n";
     return 0;
   } catch (const std::exception&) {
     return render_failure_status(choices.settings, messages);

@@ -173,7 +173,7 @@ class Renderer:
         self._native = _umbra.Renderer(gl)
 
     def render(self, mesh, size=None, *, mask=False, depth=False, views=None, views_on="ring", cameras=None, passes=(),
-               **options):
+               turntable=None, orbit="model", **options):
         """The picture umbra render draws of `mesh`, as an (h, w, 4) uint8
         RGBA array; with mask=True also light 1's shadow mask ((h, w) uint8:
         255 lit, 0 in shadow or facing away, 128 no surface), with
@@ -200,16 +200,27 @@ class Renderer:
         views it names, as umbra render --cameras draws them, at its w x h
         unless size is given.
 
+        With turntable=N, the N frames umbra render --turntable N draws (the
+        model turning a whole turn under a studio that holds still; with
+        orbit="light", the light orbiting instead, its shadow sweeping), as
+        views are returned: "color" (N, h, w, 4) and "cameras", each
+        frame's camera and light positions. Writing a video is the
+        command's job.
+
         size: (width, height); unless given, a scene's size statement, or
         800 x 800."""
-        return self._draw(mesh, size, mask, depth, options, views, views_on, cameras, passes)
+        return self._draw(mesh, size, mask, depth, options, views, views_on, cameras, passes, turntable, orbit)
 
-    def _draw(self, mesh, size, mask, depth, options, views=None, views_on="ring", cameras=None, passes=()):
+    def _draw(self, mesh, size, mask, depth, options, views=None, views_on="ring", cameras=None, passes=(), turntable=None,
+              orbit="model"):
         if "gl" in options:
             raise TypeError("gl is the Renderer's: umbra.Renderer(gl=...)")
-        many = views is not None or cameras is not None
-        if views is not None and cameras is not None:
-            raise TypeError("views=N places views of its own, cameras= draws those it names: give one or the other")
+        many = views is not None or cameras is not None or turntable is not None
+        named = [name for name, given in (("views=N", views), ("cameras=", cameras), ("turntable=N", turntable)) if given is not None]
+        if len(named) > 1:
+            raise TypeError(f"{named[0]} and {named[1]} each say which pictures to draw: give one or the other")
+        if orbit != "model" and turntable is None:
+            raise TypeError("orbit says what turntable=N turns: render(mesh, size, turntable=24, orbit=\"light\")")
         if not many and (passes or views_on != "ring"):
             raise TypeError("passes and views_on are for views=N: render(mesh, size, views=12, passes=(\"depth\",))")
         if many and (mask or depth):
@@ -226,9 +237,11 @@ class Renderer:
         _about_to_draw()
         try:
             if many:
-                count = 1 if views is None else _number("views", views, least=1, most=100000, whole=True)
+                count = (_number("turntable", turntable, least=1, most=100000, whole=True) if turntable is not None
+                         else 1 if views is None else _number("views", views, least=1, most=100000, whole=True))
                 arrays, cameras, said = self._native.render_views(_source(mesh), _words(size, options), count, views_on,
-                                                                  ",".join(passes), cameras_text, cameras_name)
+                                                                  ",".join(passes), cameras_text, cameras_name,
+                                                                  "" if turntable is None else orbit)
             else:
                 image, mask_array, depth_array, said = self._native.render(_source(mesh), _words(size, options), mask, depth)
         except OptionError as e:
@@ -266,10 +279,11 @@ class Renderer:
 _renderers = threading.local()  # render()'s: one context per thread
 
 
-def render(mesh, size=None, *, mask=False, depth=False, views=None, views_on="ring", cameras=None, passes=(), **options):
+def render(mesh, size=None, *, mask=False, depth=False, views=None, views_on="ring", cameras=None, passes=(), turntable=None,
+           orbit="model", **options):
     if not hasattr(_renderers, "default"):
         _renderers.default = Renderer()
-    return _renderers.default._draw(mesh, size, mask, depth, options, views, views_on, cameras, passes)
+    return _renderers.default._draw(mesh, size, mask, depth, options, views, views_on, cameras, passes, turntable, orbit)
 
 
 render.__doc__ = ("Renderer.render on this thread's own Renderer, made on first use (one GL context per thread).\n\n"

@@ -373,7 +373,7 @@ TEST_F(ViewSet, AFoldersModelsEachGetTheirViewsInAFolderOfTheirOwn) {
   EXPECT_EQ(lines[1]["picture"], path("out/torus.obj/transforms.json"));
   EXPECT_EQ(lines[2]["status"], "failed");
   EXPECT_EQ(lines[2]["error"], scene + ": views are drawn of a mesh file on its own, which umbra stages; this is not one (a scene "
-                                       "has its own camera)");
+                                       "has its own camera: --turntable turns it)");
   EXPECT_NE(r.err.find("3 files in"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("2 files' views in " + path("out") + ", 1 failed"), std::string::npos) << r.err;
   for (const std::string model : {"sub/icosphere.obj", "torus.obj"}) {
