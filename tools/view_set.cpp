@@ -233,6 +233,10 @@ TransformsFile read_transforms(const std::string& text, const std::string& path)
       throw InputError({path}, "fl_x and fl_y must be one focal length above 0 (umbra draws square pixels)", InputProblem::kMalformed);
     file.fovy_deg = glm::degrees(2.0 * std::atan(h / (2.0 * fl_y)));
   }
+  if (const auto turning = json.find("umbra_turning"); turning != json.end())
+    if (!turning->is_string() || !parse_turning(turning->get<std::string>(), file.turning))
+      throw InputError({path}, "\"umbra_turning\" is \"model\" or \"light\": the motion that staged the frames",
+                       InputProblem::kMalformed);
   const auto frames = json.find("frames");
   if (frames == json.end() || !frames->is_array() || frames->empty())
     throw InputError({path}, "needs \"frames\", a list of at least one camera", InputProblem::kMalformed);

@@ -228,6 +228,37 @@ def test_views_are_the_commands_files_as_stacked_arrays(tmp_path, models):
         assert got["object"][i].sum() > 0
 
 
+def test_a_turntable_is_the_commands_frames_as_one_array(tmp_path, models):
+    """render(turntable=N, orbit=...) returns the frames umbra render
+    --turntable N --orbit ... draws, and their cameras and lights."""
+    import json
+    import subprocess
+    from PIL import Image
+    from conftest import UMBRA
+
+    path = models / "OFF" / "Wuson.off"
+    for orbit in ("model", "light"):
+        got = umbra.render(path, (48, 32), turntable=4, orbit=orbit)
+        out = tmp_path / orbit
+        subprocess.run([UMBRA, "render", str(path), "--size", "48x32", "--turntable", "4", "--orbit", orbit, "-o", f"{out}/"],
+                       check=True, capture_output=True)
+        assert got["color"].shape == (4, 32, 48, 4) and set(got) == {"color", "cameras"}
+        cameras = got["cameras"]
+        assert cameras == json.loads((out / "transforms.json").read_text()) and cameras["umbra_turning"] == orbit
+        for i in range(4):
+            assert np.array_equal(got["color"][i], np.asarray(Image.open(out / f"{i:03d}.png").convert("RGBA")))
+        # The orbiting light moves and the camera holds still; the turntable moves both about the model.
+        poses = [frame["transform_matrix"] for frame in cameras["frames"]]
+        lights = [frame["light_positions"] for frame in cameras["frames"]]
+        assert lights[1] != lights[0] and (poses[1] == poses[0]) == (orbit == "light")
+    with pytest.raises(TypeError, match="orbit says what turntable=N turns"):
+        umbra.render(path, (16, 16), orbit="light")
+    with pytest.raises(TypeError, match="views=N and turntable=N each say which pictures to draw"):
+        umbra.render(path, (16, 16), views=2, turntable=2)
+    with pytest.raises(umbra.OptionError, match='orbit takes "model" or "light", got "sun"'):
+        umbra.render(path, (16, 16), turntable=2, orbit="sun")
+
+
 def test_view_keywords_say_what_is_wrong_in_pythons_words():
     cube_mesh = cube()
     with pytest.raises(umbra.OptionError, match="passes takes depth, normal, object or shadow"):

@@ -335,6 +335,12 @@ TEST_F(ViewSet, ACamerasFileUmbraCannotDrawIsRefusedSayingWhy) {
        "frame 0's transform_matrix needs 4 rows of 4 finite numbers"},
       {"{" + lens + R"(, "frames": [{"transform_matrix": [[1,0,0,0],[0,0,0,0],[0,0,0,5],[0,0,0,1]]}]})",
        "frame 0's transform_matrix has no camera axes"},
+      {"{" + lens + R"(, "umbra_turning": "sideways", "frames": [)" + frame + "]}",
+       "\"umbra_turning\" is \"model\" or \"light\": the motion that staged the frames"},
+      {"{" + lens + R"(, "frames": [{"transform_matrix": [[1,0,0,0],[0,1,0,0],[0,0,1,5],[0,0,0,1]], "light_positions": [[1,2,9],[3,4,9]]}]})",
+       "frame 0's \"light_positions\" must list 1 light, as the scene has"},
+      {"{" + lens + R"(, "frames": [{"transform_matrix": [[1,0,0,0],[0,1,0,0],[0,0,1,5],[0,0,0,1]], "light_positions": [[1,2]]}]})",
+       "frame 0's \"light_positions\" light 1 must be 3 finite numbers"},
   };
   for (const auto& [text, message] : cases) {
     std::ofstream(path("cameras.json")) << text;
