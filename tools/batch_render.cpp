@@ -91,10 +91,17 @@ void render_one(const std::string& path, const std::string& root, const std::str
       PictureChoices choices;
       choices.settings = o.settings, choices.staging = o.staging, choices.gl = o.gl, choices.antialias = o.antialias;
       choices.antialias_all = o.antialias_all, choices.show_volumes = o.show_volumes, choices.size_given = o.size_given;
-      const WrittenViews written = write_view_files(path, std::filesystem::path(out).parent_path().string(), choices, *o.views,
-                                                    TextureMaps{true, root, o.any_texture_path}, context, {}, record.messages);
+      const TextureMaps maps{true, root, o.any_texture_path};
+      std::optional<WrittenViews> written;
+      if (o.animation) {
+        std::filesystem::create_directories(std::filesystem::path(out).parent_path());
+        written = write_animation_file(path, out, choices, *o.views, *o.animation, maps, context, {}, record.messages);
+      } else {
+        written = write_view_files(path, std::filesystem::path(out).parent_path().string(), choices, *o.views, maps, context, {},
+                                   record.messages);
+      }
       record.status = kDrawn;
-      record.triangles = written.triangles;
+      record.triangles = written->triangles;
       return;
     }
     // The picture's temporary file first, as a single render makes its
@@ -223,8 +230,10 @@ int run_batch_render(const BatchRenderOptions& o) {
   const size_t count = files.size();
   std::vector<Record> records(count);
   for (size_t i = 0; i < count; ++i) {
-    // A model's views stand for its picture by their transforms.json, written last.
-    const std::string output = o.views ? names[i] + "/transforms.json" : names[i] + ".png";
+    // A model's views stand for its picture by their transforms.json, written last; its animation is one file.
+    const std::string output = o.animation ? names[i] + animation_row(o.animation->format).extension
+                               : o.views   ? names[i] + "/transforms.json"
+                                           : names[i] + ".png";
     records[i].path = files[i], records[i].picture = (std::filesystem::path(o.out_dir) / output).string();
   }
   const auto start = std::chrono::steady_clock::now();
@@ -269,7 +278,7 @@ int run_batch_render(const BatchRenderOptions& o) {
           // grace: no handler ran) leaves its temporary file.
           if (result.ending != IsolatedResult::Ending::kFinished) {
             const std::string& out = records[to_draw[k]].picture;
-            if (o.views) remove_abandoned_temporaries_in(std::filesystem::path(out).parent_path().string());
+            if (o.views && !o.animation) remove_abandoned_temporaries_in(std::filesystem::path(out).parent_path().string());
             else remove_abandoned_temporaries(out);
           }
           end(to_draw[k]);
@@ -340,7 +349,10 @@ int run_batch_render(const BatchRenderOptions& o) {
                               std::to_string(found.meshes.size()) + ")"
                         : "")
             << " in " << elapsed << ": " << drawn
-            << (o.views ? (drawn == 1 ? " file's views" : " files' views") : drawn == 1 ? " picture" : " pictures") << " in " << o.out_dir
+            << (o.animation ? (drawn == 1 ? " animation" : " animations")
+                : o.views   ? (drawn == 1 ? " file's views" : " files' views")
+                            : (drawn == 1 ? " picture" : " pictures"))
+            << " in " << o.out_dir
             << (skipped ? ", " + std::to_string(skipped) + " up to date (--skip-existing)" : "") << ", " << failed << " failed"
             << (timed_out ? " (" + std::to_string(timed_out) + " timed out)" : "") << "\n";
   if (stopped_by) {

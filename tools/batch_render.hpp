@@ -11,7 +11,7 @@
 #include "render/render_plan.hpp"
 #include "scene/staged_scene.hpp"
 #include "tools/mesh_paths.hpp"
-#include "tools/view_set.hpp"
+#include "tools/view_set_files.hpp"
 
 namespace umbra {
 
@@ -36,6 +36,9 @@ struct BatchRenderOptions {
   // OUT_DIR/NAME/ (view_set_files.hpp), in place of one picture; its
   // transforms.json, written last, stands for the file's output.
   std::optional<ViewSetRequest> views;
+  // --turntable with --format: each file's frames as one animation,
+  // OUT_DIR/NAME.EXT, in place of its folder of frames.
+  std::optional<AnimationRequest> animation;
 };
 
 // Writes OUT_DIR/NAME.png for each file, NAME its path relative to the

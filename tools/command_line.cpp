@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <glm/geometric.hpp>
 
+#include "image/animation_file.hpp"
 #include "image/picture_file.hpp"
 #include "scene/scene_text.hpp"
 #include "mesh/check/mesh_repair.hpp"
@@ -104,6 +105,7 @@ std::string usage_text(std::string text) {
   replace_all(text, "{interactive methods}", word_list(interactive));
   replace_all(text, "{mesh formats}", mesh_format_names());
   replace_all(text, "{picture extensions}", picture_extensions());
+  replace_all(text, "{animation formats}", animation_extensions());
   replace_all(text, "{mesh extensions}", mesh_format_extensions());
   replace_all(text, "{repair extensions}", mesh_format_extensions(true));
   replace_all(text, "{max hole edges}", std::to_string(kDefaultMaxHoleEdges));

@@ -37,6 +37,7 @@ const std::string kRenderUsage = usage_text(
        umbra render SCENE -o OUT.png [options]
        umbra render MESH|PATH... --views N [--passes LIST] -o OUTDIR [options]
        umbra render MESH --cameras transforms.json [--passes LIST] -o OUTDIR
+       umbra render PATH --turntable N [--orbit light] -o OUT.mp4|OUTDIR/
        umbra render PATH... -o OUTDIR [--jobs N] [--shard K/N] [options]
        umbra render - -o OUT.png [options]   (a mesh on standard input)
 
@@ -64,7 +65,8 @@ options:
                         to write their pictures in (required): its name's
                         ending says the format, {picture extensions}; - writes
                         PNG to standard output
-  --jpeg-quality N      for a .jpg output: 1 to 100 (default 90)
+  --quality N           for a .jpg output: 1 to 100 (default 90); for a .webp
+                        animation: lossy at that quality (default lossless)
   --size WxH            image size in pixels (default: a scene's size
                         statement, else 800x800)
   --light-angle DEG     rotate every light about the z axis by DEG degrees (for
@@ -159,6 +161,25 @@ options:
                         file's axes), object (NNN.object.png, 255 on the
                         model), shadow (NNN.shadow.png, as --mask;
                         NNN.shadowK.png per light where there are several)
+
+  --turntable N         N frames of a motion, the model turning 360/N degrees a
+                        frame about its up axis (counter-clockwise seen from
+                        above) under a studio that holds still, from the
+                        camera's azimuth on, framed to hold it all the way
+                        round; a SCENE turns its own camera and lights. -o
+                        names an animation, {animation formats}, or a
+                        folder (ending in /) for NNN.png frames and
+                        transforms.json, as --views writes them (with
+                        --passes); --cameras of it draws them again
+  --orbit WHAT          with --turntable: model (default), or light: the
+                        camera and model hold still and every light orbits
+                        the z axis, its shadow sweeping
+  --fps F               an animation's frames a second, 1 to 240 (default
+                        30; a GIF keeps whole hundredths of a second)
+  --format EXT          with --turntable and several files: each file's
+                        frames as one animation, OUTDIR/its name.EXT: mp4,
+                        webp or gif (without: each file's frames into
+                        OUTDIR/its name/)
 
   --jobs N              with several files: draw N at a time, each in its own
                         GL context, using at most N threads in all (default:
@@ -309,6 +330,11 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     if (!parse_turning(t, turning)) throw UsageError(n + " takes model or light, got \"" + t + "\"");
     orbit = turning;
   });
+  std::optional<AnimationFormat> format;  // several files' animations
+  options.value("--format", [&](const std::string& n, const std::string& t) {
+    format = animation_format_of("animation." + t);
+    if (!format) throw UsageError(n + " takes mp4, webp or gif, got \"" + t + "\"");
+  });
   std::optional<double> fps;
   options.value("--fps", [&](const std::string& n, const std::string& t) {
     fps = parse_finite_number(n, t);
@@ -338,7 +364,9 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   if (turntable) views.turning = orbit.value_or(Turning::kModel);
   // -o's name: an animation, or a folder of each picture's files.
   const bool folder_named = !o.output.empty() && (o.output.back() == '/' || std::filesystem::is_directory(o.output, ec));
-  const std::optional<AnimationFormat> animation = folder_named ? std::nullopt : animation_format_of(o.output);
+  if (format && !(several && turntable))
+    throw UsageError("--format says which animation --turntable makes of each of several files; -o names one file's");
+  const std::optional<AnimationFormat> animation = format ? format : folder_named ? std::nullopt : animation_format_of(o.output);
   if (fps && !animation) throw UsageError("--fps is an animation's pace: name one with -o (" + animation_extensions() + ")");
   if (!view_options.empty()) {
     const std::string& named = view_options.front();
@@ -357,15 +385,18 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
       if (o.staging.background && o.staging.background->transparent && !row.alpha)
         throw UsageError("--background transparent needs an alpha channel, which " + std::string(row.name) + " has not: name a .webp");
       if (quality && !row.quality) throw UsageError("--quality is for a .jpg or .webp; " + std::string(row.name) + " takes none");
-      if (several) throw UsageError("-o " + o.output + " names one animation; several files make one each: name a folder");
-      require_other_than_input("-o", o.output, o.scene_path);
+      if (several && !format)
+        throw UsageError("-o " + o.output + " names one animation; several files make one each: name a folder, with --format " +
+                         std::string(row.extension + 1));
+      if (format && sheet) throw UsageError("--sheet shows pictures; --format makes animations");
+      if (!several) require_other_than_input("-o", o.output, o.scene_path);
       o.animation = AnimationRequest{*animation, fps.value_or(30.0), quality};
     } else if (quality) {
       throw UsageError("--quality is for a .jpg picture or a .webp animation; " + named + " writes PNG pictures into a folder");
     }
-    if (!animation && std::filesystem::exists(o.output, ec) && !std::filesystem::is_directory(o.output, ec))
+    if ((!animation || format) && std::filesystem::exists(o.output, ec) && !std::filesystem::is_directory(o.output, ec))
       throw UsageError("-o " + o.output + " is a file; " + named + " writes each view's files in a folder: name a folder");
-    if (!animation && is_picture_name(o.output))
+    if ((!animation || format) && (is_picture_name(o.output) || animation_format_of(o.output)))
       throw UsageError("-o " + o.output + " names a picture, but " + named + " writes each view's files in a folder: name a folder");
     leave_floor_out_of_sphere(o.staging, o.staging_given, views.spread);
     const auto named_too = [&](const char* option) { return std::count(view_options.begin(), view_options.end(), option) > 0; };
@@ -388,7 +419,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
       for (const auto& [given, name] : {std::pair{shard.has_value(), "--shard"}, {timeout_s > 0.0, "--timeout"},
                                         {skip_existing, "--skip-existing"}, {json, "--json"}})
         if (given) throw UsageError(std::string(name) + " is for several files or a folder; \"" + o.scene_path + "\" is one");
-    if (several) o.batch = batch(views);
+    if (several) o.batch = batch(views), o.batch->animation = o.animation;
   } else if (several) {
     if (o.output.empty()) throw UsageError("no output folder given (-o OUTDIR)");
     if (std::filesystem::exists(o.output, ec) && !std::filesystem::is_directory(o.output, ec))

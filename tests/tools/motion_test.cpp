@@ -217,6 +217,36 @@ TEST_F(Motion, ASceneTurnsItsOwnCameraAndLights) {
   EXPECT_FALSE(read(path("demo/000.png")) == read(path("demo/002.png")));
 }
 
+// A folder's models each make one animation, in worker processes as a
+// folder's pictures are made; --skip-existing passes over those newer
+// than their files.
+TEST_F(Motion, AFoldersModelsEachMakeOneAnimation) {
+  fs::create_directories(path("in"));
+  fs::copy_file(std::string(UMBRA_SOURCE_DIR) + "/scenes/meshes/torus.obj", path("in/torus.obj"));
+  fs::copy_file(std::string(UMBRA_SOURCE_DIR) + "/scenes/meshes/icosphere.obj", path("in/icosphere.obj"));
+  const std::string command = "render " + path("in") + " --turntable 3 --format gif --size 40x30 --json -o " + path("out");
+  const CommandResult r = run(command);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("2 animations in " + path("out")), std::string::npos) << r.err;
+  for (const std::string name : {"torus.obj.gif", "icosphere.obj.gif"}) {
+    SCOPED_TRACE(name);
+    EXPECT_NE(r.out.find("\"picture\":\"" + path("out/" + name) + "\",\"status\":\"drawn\""), std::string::npos) << r.out;
+    int error = 0;
+    GifFileType* gif = DGifOpenFileName(path("out/" + name).c_str(), &error);
+    ASSERT_NE(gif, nullptr);
+    ASSERT_EQ(DGifSlurp(gif), GIF_OK);
+    EXPECT_EQ(gif->ImageCount, 3);
+    DGifCloseFile(gif, &error);
+  }
+  const CommandResult again = run(command + " --skip-existing");
+  EXPECT_EQ(again.status, 0);
+  EXPECT_NE(again.err.find("2 up to date (--skip-existing)"), std::string::npos) << again.err;
+  const CommandResult one = run("render " + path("in/torus.obj") + " --turntable 3 --format gif -o " + path("one"));
+  EXPECT_EQ(one.status, 2);
+  EXPECT_EQ(one.err, "umbra render: --format says which animation --turntable makes of each of several files; -o names one file's\n"
+                     "(see umbra render --help)\n");
+}
+
 // Bad input: the exact message, exit 2 for a usage error and 1 for a file
 // that cannot be written, and no file left behind.
 TEST_F(Motion, BadRequestsAreRefusedSayingWhyAndLeaveNoFile) {
