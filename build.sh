@@ -48,9 +48,9 @@ python_packages=(python3-dev pybind11-dev python3-numpy)
 # CMake, so that the demo builds without them; built in by a plain
 # ./build.sh and by ./build.sh test, sanitize and fuzz (motion, below).
 motion_packages=(
-  libavcodec-dev libavformat-dev libswscale-dev libx264-dev  # H.264 video in MP4 (libavcodec with libx264)
-  libwebp-dev                                                # animated WebP (libwebp's mux library)
-  libgif-dev                                                 # GIF (giflib)
+  libavcodec-dev libavformat-dev libswscale-dev  # H.264 video in MP4 (Debian's libavcodec encodes it with libx264)
+  libwebp-dev                                    # animated WebP (libwebp's mux library)
+  libgif-dev                                     # GIF (giflib)
 )
 # What the tests, benchmarks, sanitizers and fuzzers need besides: installed
 # by ./build.sh test, sanitize and fuzz.

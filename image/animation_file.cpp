@@ -21,7 +21,7 @@ namespace umbra {
 
 const AnimationFormatRow kAnimationFormats[3] = {
     {AnimationFormat::kMp4, "an MP4 video (H.264)", ".mp4", false, false, "libavcodec with libx264",
-     "libavcodec-dev libavformat-dev libswscale-dev libx264-dev", UMBRA_HAVE_MP4 != 0},
+     "libavcodec-dev libavformat-dev libswscale-dev", UMBRA_HAVE_MP4 != 0},
     {AnimationFormat::kWebp, "an animated WebP", ".webp", true, true, "libwebp's animation encoder", "libwebp-dev",
      UMBRA_HAVE_WEBP != 0},
     {AnimationFormat::kGif, "a GIF", ".gif", false, false, "giflib", "libgif-dev", UMBRA_HAVE_GIF != 0},

@@ -14,7 +14,7 @@
 
 #include "render/gl_functions.hpp"
 #include "render/headless_surface.hpp"
-#include "render/loaded_library.hpp"
+#include "image/loaded_library.hpp"
 
 namespace umbra {
 

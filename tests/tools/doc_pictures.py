@@ -26,7 +26,7 @@ def ignored_by_git(path):
 missing = []
 docs = [source / "README.md", *sorted((source / "docs").glob("*.md"))]
 for doc in docs:
-    for target in re.findall(r"!\[[^\]]*\]\(([^)\s]+\.png)\)", doc.read_text(encoding="utf-8")):
+    for target in re.findall(r"!\[[^\]]*\]\(([^)\s]+\.(?:png|jpg|webp|gif))\)", doc.read_text(encoding="utf-8")):
         picture = doc.parent / target
         if not picture.is_file():
             missing.append(f"{doc.relative_to(source)} shows {target}, which is not in the source tree")

@@ -156,7 +156,10 @@ TEST_F(RenderCommand, TheOutputsNameSaysItsFormat) {
       {"-o " + path("d.webp"), "-o " + path("d.webp") + ": umbra does not write .webp pictures; name a .png, .jpg or .jpeg file, "
                                                        "or - for PNG on standard output"},
       {"-o " + path("d"), "-o " + path("d") + " has no extension; name a .png, .jpg or .jpeg file, or - for PNG on standard output"},
-      {"-o " + path("d.png") + " --jpeg-quality 50", "--jpeg-quality is for a JPEG picture; -o " + path("d.png") + " is not one"},
+      {"-o " + path("d.png") + " --jpeg-quality 50",
+       "--quality is for a JPEG picture, or a WebP animation (--turntable); -o " + path("d.png") + " is neither"},
+      {"-o " + path("d.png") + " --quality 50",
+       "--quality is for a JPEG picture, or a WebP animation (--turntable); -o " + path("d.png") + " is neither"},
       {"-o " + path("d.jpg") + " --jpeg-quality 101", "--jpeg-quality expects a whole number from 1 to 100, got \"101\""},
       {"-o " + path("d.png") + " --mask " + path("m.jpg"), "--mask writes a PNG file (a mask must stay exact), got \"" + path("m.jpg") + "\""},
       {"-o - --explain", "--explain prints to standard output, where -o - writes the picture: name a file with -o"}};

@@ -1,6 +1,8 @@
 #pragma once
-// A shared library opened at run time (dlopen), for the GL platforms that
-// umbra loads only when it draws (libEGL, libOSMesa).
+// A shared library opened at run time (dlopen), for what umbra loads only
+// when it uses it: the GL platforms when it draws (libEGL, libOSMesa), and
+// libavcodec's hundred-odd libraries when it writes a video, which every
+// other run would otherwise load and map at its start.
 
 #include <dlfcn.h>
 
