@@ -32,6 +32,7 @@ WindowContext::Key key_of(int glfw_key) {
     case GLFW_KEY_M: return Key::kM;
     case GLFW_KEY_R: return Key::kR;
     case GLFW_KEY_S: return Key::kS;
+    case GLFW_KEY_C: return Key::kC;
     case GLFW_KEY_O: return Key::kO;
     case GLFW_KEY_H: return Key::kH;
     case GLFW_KEY_Q: return Key::kQ;

@@ -29,7 +29,7 @@ class WindowContext {
   void* native_window() const;  // the GLFWwindow, for render/'s own GLFW code
 
   // The keys the viewer uses; press and repeat both call on_key.
-  enum class Key { kSpace, kLeft, kRight, kUp, kDown, kV, kM, kR, kS, kO, kH, kQ, kEscape, kLeftBracket, kRightBracket, kOther };
+  enum class Key { kSpace, kLeft, kRight, kUp, kDown, kV, kM, kR, kS, kC, kO, kH, kQ, kEscape, kLeftBracket, kRightBracket, kOther };
   std::function<void(Key key)> on_key;
   std::function<void(double dx, double dy)> on_drag;  // cursor moved with the left button down, in pixels
   std::function<void(double steps)> on_scroll;

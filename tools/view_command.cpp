@@ -6,6 +6,7 @@
 #include <cmath>
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -17,13 +18,16 @@
 #include "scene/scene_checks.hpp"
 #include "scene/scene_parser.hpp"
 #include "scene/staged_scene.hpp"
+#include "image/animation_file.hpp"
 #include "image/image.hpp"
+#include "image/partial_file.hpp"
 #include "image/picture_file.hpp"
 #include "render/render_plan.hpp"
 #include "render/shadow_renderer.hpp"
 #include "render/text_overlay.hpp"
 #include "render/window_context.hpp"
 #include "tools/command_line.hpp"
+#include "tools/encoding_thread.hpp"
 #include "tools/freed_memory_reuse.hpp"
 #include "tools/progress_bar.hpp"
 
@@ -50,6 +54,10 @@ keys:
                 (see umbra render --help)
   r             return to the scene's camera
   s             return to the default view (eye (0, 0, 3.4), looking down -z)
+  c             record what the window shows (without the overlay), or
+                stop recording and write the file: --record's, or
+                umbra-view.mp4 (umbra-view.webp where MP4 is not built);
+                a second recording adds -2 to the name, and so on
   o             show or hide the overlay
   h             print this help on the terminal
   q, escape     quit
@@ -91,6 +99,11 @@ options:
   --screenshot OUT.png with --frames: write the last frame to OUT.png (without
                        the overlay, so that it is the headless render's frame)
   --overlay-in-screenshot  include the overlay in the screenshot
+  --record OUT         record from the first frame into OUT: {animation formats},
+                       as umbra render --turntable writes them, at --fps
+                       frames a second by the clock (with --frames, every
+                       frame drawn, until the last); c stops it
+  --fps F              a recording's frames a second, 1 to 240 (default 30)
   -h, --help           show this help
 )");
 
@@ -109,6 +122,8 @@ struct ViewOptions {
   int frames = 0;  // 0: until the window is closed
   std::optional<std::string> screenshot;
   bool overlay_in_screenshot = false;
+  std::optional<std::string> record;  // where recordings go, the first from the first frame
+  double fps = 30.0;
   bool help = false;
 };
 
@@ -128,6 +143,16 @@ ViewOptions parse_view_options(const std::vector<std::string>& argv) {
   options.value("--frames", [&](const std::string& n, const std::string& t) { o.frames = parse_int_in(n, t, 1, 1 << 30); });
   options.value("--screenshot", [&](const std::string&, const std::string& t) { o.screenshot = t; });
   options.flag("--overlay-in-screenshot", o.overlay_in_screenshot);
+  options.value("--record", [&](const std::string& n, const std::string& t) {
+    const std::optional<AnimationFormat> format = animation_format_of(t);
+    if (!format) throw UsageError(n + " records into " + animation_extensions() + ", got \"" + t + "\"");
+    if (const std::string why = animation_unavailable(*format); !why.empty()) throw UsageError(why);
+    o.record = t;
+  });
+  options.value("--fps", [&](const std::string& n, const std::string& t) {
+    o.fps = parse_finite_number(n, t);
+    if (!(o.fps >= 1.0 && o.fps <= 240.0)) throw UsageError(n + " must be from 1 to 240 frames a second, got \"" + t + "\"");
+  });
   add_staging_options(options, o.staging, o.staging_given);
   add_any_texture_path_option(options, o.any_texture_path);
   options.positionals(scenes);
@@ -209,6 +234,50 @@ void zoom(Camera& camera, double factor) {
   else camera.eye = camera.target + (camera.eye - camera.target) / factor;
 }
 
+// What the window shows, written as an animation: from the key c to the
+// next, or from the first frame with --record. Frames are added by the
+// clock, `fps` a second (a view that stands still is added again), each
+// encoded on a thread of its own; the file appears whole when finished.
+class Recording {
+ public:
+  Recording(const std::string& path, int width, int height, double fps, double now)
+      : file_(path, "the recording", PartialFile::Ending::kKeepExtension), width_(width), height_(height), fps_(fps), started_(now) {
+    writer_ = open_animation(*animation_format_of(path), file_.temporary_path(), path, {width, height, fps, std::nullopt});
+    encoding_.emplace(*writer_);
+  }
+  // The frames the clock asks for by `now`: one at the start, then one each 1/fps.
+  size_t due(double now) const { return size_t(std::floor((now - started_) * fps_)) + 1; }
+  size_t frames() const { return frames_; }
+  bool fits(int width, int height) const { return width == width_ && height == height_; }
+  const std::string& path() const { return file_.path(); }
+  void add(Image frame) {
+    encoding_->add(std::move(frame));
+    ++frames_;
+  }
+  // The file written whole; what to say of it.
+  std::string finish() {
+    encoding_->finish();
+    file_.commit();
+    return "wrote " + file_.path() + " (" + std::to_string(frames_) + " frames at " + std::to_string(width_) + "x" +
+           std::to_string(height_) + ")";
+  }
+
+ private:
+  PartialFile file_;  // removed, unless committed
+  int width_, height_;
+  double fps_, started_;
+  size_t frames_ = 0;
+  std::unique_ptr<AnimationWriter> writer_;
+  std::optional<EncodingThread> encoding_;  // after the writer it uses: stopped first
+};
+
+// Where recording `k` (from 1) of a session goes: `base`, then NAME-2.EXT, NAME-3.EXT, ...
+std::string recording_path(const std::string& base, int k) {
+  if (k == 1) return base;
+  const std::filesystem::path path(base);
+  return (path.parent_path() / (path.stem().string() + "-" + std::to_string(k) + path.extension().string())).string();
+}
+
 // What the overlay shows: the frame, the volumes, a message (an error), the keys.
 std::vector<std::string> status_lines(const std::string& path, const RenderPlan& plan, double frame_ms, double angle,
                                       bool paused, double speed, const std::string& message) {
@@ -230,7 +299,7 @@ std::vector<std::string> status_lines(const std::string& path, const RenderPlan&
   lines.push_back(line);
   if (!message.empty()) lines.push_back(message);
   lines.push_back("space pause  left/right step  up/down speed  v volumes  [ ] N");
-  lines.push_back("drag orbit  scroll zoom  r scene camera  s default view  o overlay  h help  q quit");
+  lines.push_back("drag orbit  scroll zoom  r scene camera  s default view  c record  o overlay  h help  q quit");
   return lines;
 }
 
@@ -307,6 +376,20 @@ int run_view_command(const std::vector<std::string>& argv) {
   double good_angle = angle;  // the last angle with every light outside every sphere
   std::string light_error;    // why the light stopped, while it stays stopped
   std::string error;  // the last reload error, shown in the title until the next good load
+  // Recordings: the one under way, how many this session made, and whether c asked to start or stop one.
+  std::optional<Recording> recording;
+  int recordings = 0;
+  bool toggle_recording = options.record.has_value();  // --record starts one at the first frame
+  const std::string record_base =
+      options.record.value_or(animation_row(AnimationFormat::kMp4).built ? "umbra-view.mp4" : "umbra-view.webp");
+  const auto stop_recording = [&] {
+    try {
+      std::cout << recording->finish() << "\n";
+    } catch (const std::exception& e) {
+      std::cerr << "umbra view: the recording failed: " << e.what() << "\n";
+    }
+    recording.reset();
+  };
   using Key = WindowContext::Key;
   window->on_key = [&](Key key) {
     switch (key) {
@@ -321,6 +404,7 @@ int run_view_command(const std::vector<std::string>& argv) {
       case Key::kM: options.settings.method = next_interactive_method(options.settings.method); break;
       case Key::kR: orbited.reset(); scene.frame.camera = scene.file.camera; break;
       case Key::kS: orbited = spec_camera(); scene.frame.camera = *orbited; break;
+      case Key::kC: toggle_recording = true; break;
       case Key::kO: show_overlay = !show_overlay; break;
       case Key::kH: std::cout << kViewUsage; break;
       case Key::kQ: case Key::kEscape: window->close(); break;
@@ -421,15 +505,44 @@ int run_view_command(const std::vector<std::string>& argv) {
     // wait for it; the overlay keeps the last one that followed a drawn frame.
     if (drew_before) frame_ms = 1000.0 * (now - last_time);
     drew_before = drew;
+    // The frame as drawn (never the overlay) into the recording: each frame
+    // of a scripted run, else as many as the clock asks for.
+    if (toggle_recording && shows) {
+      toggle_recording = false;
+      if (recording) {
+        stop_recording();
+      } else {
+        try {
+          recording.emplace(recording_path(record_base, ++recordings), width, height, options.fps, now);
+          std::cout << "recording to " << recording->path() << " (c stops)\n";
+        } catch (const std::exception& e) {
+          std::cerr << "umbra view: cannot record: " << e.what() << "\n";
+        }
+      }
+    }
+    if (recording && !recording->fits(width, height)) {
+      std::cerr << "umbra view: the window changed size, which a recording cannot: stopped\n";
+      stop_recording();
+    }
+    try {
+      while (recording && recording->frames() < (options.frames > 0 ? size_t(frame) : recording->due(now)))
+        recording->add(scene.renderer->read_image());
+    } catch (const std::exception& e) {
+      std::cerr << "umbra view: the recording failed: " << e.what() << "\n";
+      recording.reset();
+    }
 
     const auto draw_overlay = [&] {
       if (overlay && show_overlay)
         overlay->draw(status_lines(options.scene_path, *scene.plan, frame_ms, angle, paused, speed,
                                    !error.empty()         ? "ERROR (showing the last good scene): " + error
                                    : !light_error.empty() ? "light stopped: " + light_error
+                                   : recording            ? "recording to " + recording->path() + ": " +
+                                                                std::to_string(recording->frames()) + " frames (c stops)"
                                                           : std::string()));
     };
     if (last_frame) {
+      if (recording) stop_recording();
       if (options.screenshot) {
         if (options.overlay_in_screenshot) draw_overlay();  // into the frame, drawn this time and still bound
         try {
@@ -451,7 +564,7 @@ int run_view_command(const std::vector<std::string>& argv) {
     // A window that shows a view standing still waits for something to do
     // (a key, the mouse; the view to settle; or half a second, to see
     // whether the file changed).
-    if (!drew && paused && options.frames == 0)
+    if (!drew && paused && options.frames == 0 && !recording)
       window->wait_events(drawn_samples == scene.still_samples ? 0.5 : std::max(0.0, kSettleSeconds - (now - changed_at)));
     else window->poll_events();
     // Scripted runs advance by a fixed 1/60 s a frame, interactive ones by the clock.
@@ -459,6 +572,7 @@ int run_view_command(const std::vector<std::string>& argv) {
     last_time = now;
     if (!paused) angle += speed * dt;
   }
+  if (recording) stop_recording();  // the window closed while it recorded
   if (!frame_times_ms.empty()) {
     std::vector<double> sorted = frame_times_ms;
     std::sort(sorted.begin(), sorted.end());

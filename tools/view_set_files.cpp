@@ -1,19 +1,16 @@
 #include "tools/view_set_files.hpp"
 
-#include <condition_variable>
 #include <deque>
-#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <mutex>
-#include <thread>
 
 #include "image/animation_file.hpp"
 #include "image/exr_file.hpp"
 #include "image/partial_file.hpp"
 #include "image/picture_file.hpp"
 #include "tools/command_line.hpp"
+#include "tools/encoding_thread.hpp"
 #include "tools/progress_bar.hpp"
 
 namespace umbra {
@@ -105,75 +102,6 @@ WrittenViews write_view_files(const std::string& mesh_path, const std::string& f
   transforms.commit();
   return {count, settings.width, settings.height, prepared.triangles()};
 }
-
-namespace {
-
-// Frames handed to an animation's writer on a thread of its own, so that
-// one is encoded while the next is drawn; at most two wait.
-class EncodingThread {
- public:
-  explicit EncodingThread(AnimationWriter& writer) : writer_(writer), thread_([this] { run(); }) {}
-  ~EncodingThread() { stop(false); }
-  EncodingThread(const EncodingThread&) = delete;
-  EncodingThread& operator=(const EncodingThread&) = delete;
-
-  // Throws what the writer threw, once it has.
-  void add(Image frame) {
-    std::unique_lock<std::mutex> lock(mutex_);
-    space_.wait(lock, [&] { return waiting_.size() < 2 || error_; });
-    if (error_) std::rethrow_exception(error_);
-    waiting_.push_back(std::move(frame));
-    ready_.notify_one();
-  }
-
-  // Every frame written and the file finished; throws what the writer threw.
-  void finish() {
-    stop(true);
-    if (error_) std::rethrow_exception(error_);
-  }
-
- private:
-  void stop(bool finish) {
-    {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      closed_ = true, finish_ = finish;
-      ready_.notify_one();
-    }
-    if (thread_.joinable()) thread_.join();
-  }
-
-  void run() {
-    try {
-      for (;;) {
-        Image frame;
-        {
-          std::unique_lock<std::mutex> lock(mutex_);
-          ready_.wait(lock, [&] { return !waiting_.empty() || closed_; });
-          if (waiting_.empty()) break;
-          frame = std::move(waiting_.front());
-          waiting_.pop_front();
-          space_.notify_one();
-        }
-        writer_.add(frame);
-      }
-      if (finish_) writer_.finish();  // else the run stopped: its file is left unfinished, and removed
-    } catch (...) {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      error_ = std::current_exception();
-      space_.notify_one();
-    }
-  }
-
-  AnimationWriter& writer_;
-  std::mutex mutex_;
-  std::condition_variable ready_, space_;
-  std::deque<Image> waiting_;
-  bool closed_ = false, finish_ = false;
-  std::exception_ptr error_;
-  std::thread thread_;  // last: it starts once the rest is made
-};
-
-}  // namespace
 
 WrittenViews write_animation_file(const std::string& path, const std::string& output, const PictureChoices& choices,
                                   const ViewSetRequest& request, const AnimationRequest& animation, const TextureMaps& maps,

@@ -1,8 +1,10 @@
 // `umbra view` under Xvfb (a real window, Mesa's GLX): a scripted run's
 // screenshot is pixel for pixel the headless render of the same frame.
 #include <gtest/gtest.h>
+#include <webp/demux.h>
 
 #include <regex>
+#include <vector>
 
 #include "mesh/word_list.hpp"
 #include "render/render_method.hpp"
@@ -99,6 +101,44 @@ TEST_F(ViewCommand, OrbitingLightScreenshotIsTheHeadlessRenderAtItsAngle) {
   EXPECT_EQ(view.out.substr(0, view.out.find('\n') + 1), "wrote " + path("v.png") + " (frame 7, light at 6 deg)\n");
   ASSERT_EQ(run("render " + scene("mesh_torus.scene") + " --size 160x120 --light-angle 6 -o " + path("h.png")).status, 0);
   expect_same_pixels(read_png(path("v.png")), read_png(path("h.png")));
+}
+
+// --record with --frames: every frame drawn, none of the overlay, read
+// back by libwebp's animation decoder: the first frame is the headless
+// render with the light where it starts, the last the screenshot (and so
+// the headless render at 6 degrees).
+TEST_F(ViewCommand, ARecordingHoldsEveryFrameTheWindowDrew) {
+  const CommandResult view = run_in_xvfb("view " + scene("mesh_torus.scene") + " --size 160x120 --speed 60 --frames 7 --record " +
+                                         path("rec.webp") + " --screenshot " + path("v.png"));
+  ASSERT_EQ(view.status, 0) << view.err;
+  EXPECT_EQ(view.out.substr(0, view.out.find("\nwrote " + path("v.png"))),
+            "recording to " + path("rec.webp") + " (c stops)\nwrote " + path("rec.webp") + " (7 frames at 160x120)");
+  ASSERT_EQ(run("render " + scene("mesh_torus.scene") + " --size 160x120 -o " + path("h0.png")).status, 0);
+  const std::string bytes = read(path("rec.webp"));
+  const WebPData data{reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()};
+  WebPAnimDecoderOptions options;
+  ASSERT_TRUE(WebPAnimDecoderOptionsInit(&options));
+  options.color_mode = MODE_RGBA;
+  WebPAnimDecoder* decoder = WebPAnimDecoderNew(&data, &options);
+  ASSERT_NE(decoder, nullptr);
+  std::vector<Image> frames;
+  while (WebPAnimDecoderHasMoreFrames(decoder)) {
+    uint8_t* rgba = nullptr;
+    int timestamp = 0;
+    ASSERT_TRUE(WebPAnimDecoderGetNext(decoder, &rgba, &timestamp));
+    Image frame(160, 120, 3);
+    for (size_t i = 0; i < 160 * 120; ++i)
+      for (size_t c = 0; c < 3; ++c) frame.pixels[i * 3 + c] = rgba[i * 4 + c];
+    frames.push_back(frame);
+  }
+  WebPAnimDecoderDelete(decoder);
+  ASSERT_EQ(frames.size(), 7u);
+  expect_same_pixels(frames.front(), read_png(path("h0.png")));
+  expect_same_pixels(frames.back(), read_png(path("v.png")));
+  // A name that is no animation's is refused before any window opens.
+  const CommandResult bad = run("view " + scene("demo.scene") + " --record " + path("rec.avi"));
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_EQ(bad.err, "umbra view: --record records into .mp4, .webp or .gif, got \"" + path("rec.avi") + "\"\n(see umbra view --help)\n");
 }
 
 TEST_F(ViewCommand, OverlayIsDrawnInTheTopLeftCornerOnly) {
