@@ -449,6 +449,10 @@ void require_other_than_input(const std::string& option, const std::string& outp
 void require_picture_name(const std::string& option, const std::string& path) {
   if (picture_format_of(path)) return;
   const std::string extension = std::filesystem::path(path).extension().string();
+  // An animation's name, for a picture: the option that makes one is missing.
+  if (animation_format_of(path))
+    throw UsageError(option + " " + path + " names an animation, which --turntable N makes (or --views N); a picture is a " +
+                     picture_extensions() + " file");
   throw UsageError(option + " " + path + (extension.empty() ? " has no extension" : ": umbra does not write " + extension + " pictures") +
                    "; name a " + picture_extensions() + " file, or - for PNG on standard output");
 }

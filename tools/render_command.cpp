@@ -66,7 +66,8 @@ options:
                         ending says the format, {picture extensions}; - writes
                         PNG to standard output
   --quality N           for a .jpg output: 1 to 100 (default 90); for a .webp
-                        animation: lossy at that quality (default lossless)
+                        animation: lossy at that quality (default lossless);
+                        --jpeg-quality is its older name
   --size WxH            image size in pixels (default: a scene's size
                         statement, else 800x800)
   --light-angle DEG     rotate every light about the z axis by DEG degrees (for
@@ -373,7 +374,10 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
     o.views = views;
     // A motion turns a scene's own camera and lights; views stand round a staged model.
     if (!several && o.scene_path != "-" && !turntable) require_staged({named}, o.scene_path);  // standard input's once read
-    if (o.output.empty()) throw UsageError("no output folder given (-o OUTDIR): " + named + " writes each view's files there");
+    if (o.output.empty())
+      throw UsageError(turntable ? "no output given (-o OUT" + std::string(animation_row(AnimationFormat::kMp4).extension) +
+                                       " or OUTDIR/): --turntable writes its frames there"
+                                 : "no output folder given (-o OUTDIR): " + named + " writes each view's files there");
     if (turntable && !folder_named && !animation && !std::filesystem::path(o.output).extension().empty())
       throw UsageError("-o " + o.output + ": --turntable writes " + animation_extensions() +
                        ", or each frame's files into a folder (a name ending in /)");

@@ -122,6 +122,25 @@ TEST_F(Motion, AGifHasOnePaletteForEveryFrame) {
   DGifCloseFile(gif, &error);
 }
 
+// Views round the model, and the views a cameras file names, make an
+// animation too: the camera going round under a light that holds still.
+TEST_F(Motion, ViewsAndCamerasFilesMakeAnimationsToo) {
+  const std::string torus = flat_torus();
+  ASSERT_EQ(run("render " + torus + " --views 3 --size 40x30 -o " + path("views/")).status, 0);
+  for (const std::string& source : {std::string("--views 3"), "--cameras " + path("views/transforms.json")}) {
+    SCOPED_TRACE(source);
+    const CommandResult r = run("render " + torus + " " + source + " --size 40x30 -o " + path("views.gif"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out, "wrote 3 views of " + torus + " (40x30) to " + path("views.gif") + ", a GIF\n");
+    int error = 0;
+    GifFileType* gif = DGifOpenFileName(path("views.gif").c_str(), &error);
+    ASSERT_NE(gif, nullptr);
+    ASSERT_EQ(DGifSlurp(gif), GIF_OK);
+    EXPECT_EQ(gif->ImageCount, 3);
+    DGifCloseFile(gif, &error);
+  }
+}
+
 // A torus lying flat, 24 quads round: turned by 45 degrees a frame (3 of
 // its quads) under a studio that holds still, every frame is the same
 // picture, pixel for pixel. Turned by 360/7 degrees, which no symmetry of

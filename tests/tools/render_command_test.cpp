@@ -153,8 +153,10 @@ TEST_F(RenderCommand, TheOutputsNameSaysItsFormat) {
   EXPECT_EQ(r.out, read(path("c.png")));  // standard output holds the PNG alone
   EXPECT_EQ(r.err, "wrote the picture to standard output (40x30)\n");
   const std::vector<std::pair<std::string, std::string>> refused = {
-      {"-o " + path("d.webp"), "-o " + path("d.webp") + ": umbra does not write .webp pictures; name a .png, .jpg or .jpeg file, "
-                                                       "or - for PNG on standard output"},
+      {"-o " + path("d.webp"), "-o " + path("d.webp") + " names an animation, which --turntable N makes (or --views N); a picture is "
+                                                       "a .png, .jpg or .jpeg file"},
+      {"-o " + path("d.bmp"), "-o " + path("d.bmp") + ": umbra does not write .bmp pictures; name a .png, .jpg or .jpeg file, "
+                                                     "or - for PNG on standard output"},
       {"-o " + path("d"), "-o " + path("d") + " has no extension; name a .png, .jpg or .jpeg file, or - for PNG on standard output"},
       {"-o " + path("d.png") + " --jpeg-quality 50",
        "--quality is for a JPEG picture, or a WebP animation (--turntable); -o " + path("d.png") + " is neither"},
@@ -168,7 +170,7 @@ TEST_F(RenderCommand, TheOutputsNameSaysItsFormat) {
     EXPECT_EQ(r.status, 2) << arguments;
     EXPECT_EQ(r.err, "umbra render: " + message + "\n(see umbra render --help)\n");
   }
-  for (const char* never : {"d.webp", "d", "d.png", "d.jpg", "m.jpg"}) EXPECT_FALSE(fs::exists(path(never))) << never;
+  for (const char* never : {"d.webp", "d.bmp", "d", "d.png", "d.jpg", "m.jpg"}) EXPECT_FALSE(fs::exists(path(never))) << never;
 }
 
 // --floor, --color and --background change what they say and nothing else,
