@@ -200,11 +200,17 @@ int run_batch_render(const BatchRenderOptions& o) {
   if (!searched) return 2;
   MeshPaths& found = *searched;
   // Said once for all the shards: by the first.
-  if (o.shard && o.shard->index > 0) found.passed_over.clear();
+  if (o.shard && o.shard->index > 0) found.passed_over.clear(), found.unsupported.clear();
   for (const auto& [path, what] : found.passed_over) {
     std::cerr << "umbra render: passed over " << path << ": " << what << "\n";
     if (o.json) std::cout << json_line({path, "", kPassedOver, 0.0, 0, what, input_problem_name(InputProblem::kUnsupportedFormat), ""});
   }
+  // Every file found has its record: those in no format umbra reads too, counted in one line.
+  const size_t passed_over = found.passed_over.size() + found.unsupported.size();
+  if (!found.unsupported.empty()) std::cerr << "umbra render: " << unsupported_summary(found.unsupported) << "\n";
+  if (o.json)
+    for (const std::string& path : found.unsupported)
+      std::cout << json_line({path, "", kPassedOver, 0.0, 0, unsupported_reason(), input_problem_name(InputProblem::kUnsupportedFormat), ""});
   // Named for all the files, before the shards part: every shard names alike.
   const std::vector<std::string> all_names = distinct_picture_names(found.meshes, found.names, found.roots);
   // The sheet is written last: it must not take the place of an input or of
@@ -354,7 +360,9 @@ int run_batch_render(const BatchRenderOptions& o) {
                             : (drawn == 1 ? " picture" : " pictures"))
             << " in " << o.out_dir
             << (skipped ? ", " + std::to_string(skipped) + " up to date (--skip-existing)" : "") << ", " << failed << " failed"
-            << (timed_out ? " (" + std::to_string(timed_out) + " timed out)" : "") << "\n";
+            << (timed_out ? " (" + std::to_string(timed_out) + " timed out)" : "")
+            << (passed_over ? "; " + std::to_string(passed_over) + (passed_over == 1 ? " file" : " files") + " passed over" : "")
+            << "\n";
   if (stopped_by) {
     std::cerr << "umbra render: stopped (" << signal_name(stopped_by) << "): " << stopped << " of " << count
               << (count == 1 ? " file" : " files") << " not drawn; the same command with --skip-existing draws only those\n";

@@ -428,6 +428,7 @@ int repair_each(const std::string& out_dir, const CheckCommandOptions& options) 
   if (!searched) return 2;
   const MeshPaths& found = *searched;
   for (const auto& [path, what] : found.passed_over) std::cerr << "umbra check: passed over " << path << ": " << what << "\n";
+  if (!found.unsupported.empty()) std::cerr << "umbra check: " << unsupported_summary(found.unsupported) << "\n";
   const std::vector<std::string> names = distinct_picture_names(found.meshes, found.names, found.roots);
   std::vector<std::string> outputs;
   for (size_t i = 0; i < found.meshes.size(); ++i) {
@@ -483,8 +484,13 @@ int run_check_command(const std::vector<std::string>& argv) {
   MeshPaths& found = *searched;
   const std::vector<std::string>& all = found.meshes;
   // Said once for all the shards: by the first.
-  if (options.shard && options.shard->index > 0) found.passed_over.clear();
+  if (options.shard && options.shard->index > 0) found.passed_over.clear(), found.unsupported.clear();
   for (const auto& [path, what] : found.passed_over) std::cerr << "umbra check: passed over " << path << ": " << what << "\n";
+  // Every file found has its record: those in no format umbra reads too, counted in one line.
+  if (!found.unsupported.empty()) std::cerr << "umbra check: " << unsupported_summary(found.unsupported) << "\n";
+  if (options.json)
+    for (const std::string& path : found.unsupported)
+      std::cout << json_passed_over_line(path, unsupported_reason(), input_problem_name(InputProblem::kUnsupportedFormat));
   const std::vector<std::string> meshes = options.shard ? shard_of(all, *options.shard) : all;
   // Each mesh's defect picture, if asked: named as umbra render names a
   // folder's pictures, for all the meshes before the shards part.
@@ -590,7 +596,8 @@ int run_check_command(const std::vector<std::string>& argv) {
       status = 2;
     }
   }
-  if (count > 1 || all.size() != options.meshes.size() || options.shard || !found.passed_over.empty()) {
+  const size_t passed_over = found.passed_over.size() + found.unsupported.size();
+  if (count > 1 || all.size() != options.meshes.size() || options.shard || passed_over > 0) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     char elapsed[32];
     std::snprintf(elapsed, sizeof elapsed, "%.1f s", seconds);
@@ -599,9 +606,7 @@ int run_check_command(const std::vector<std::string>& argv) {
               << " in " << elapsed << ": " << closed << " closed 2-manifold" << (closed == 1 ? "" : "s") << ", " << open
               << " not, " << unreadable << " unreadable"
               << (options.solid ? "; " + std::to_string(solids) + (solids == 1 ? " solid" : " solids") : std::string())
-              << (found.passed_over.empty() ? std::string()
-                                            : "; " + std::to_string(found.passed_over.size()) +
-                                                  (found.passed_over.size() == 1 ? " file" : " files") + " passed over")
+              << (passed_over == 0 ? std::string() : "; " + std::to_string(passed_over) + (passed_over == 1 ? " file" : " files") + " passed over")
               << "\n";
   }
   return status;

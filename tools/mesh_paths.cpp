@@ -3,8 +3,10 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <set>
 
 #include "mesh/io/mapped_file.hpp"
@@ -23,6 +25,7 @@ void meshes_in_folder(const std::string& folder, MeshPaths& out) {
   namespace fs = std::filesystem;
   std::vector<std::string> found;
   std::vector<std::pair<std::string, std::string>> passed_over;
+  std::vector<std::string> unsupported;
   std::set<fs::path> searched;  // folders, links resolved
   std::error_code ec;
   searched.insert(fs::canonical(folder, ec));
@@ -57,6 +60,8 @@ void meshes_in_folder(const std::string& folder, MeshPaths& out) {
       const std::string other = other_known_format_of_file(path);
       if (other.empty()) found.push_back(path);  // a mesh too broken to tell: its reader says why
       else passed_over.emplace_back(path, other + ", not a mesh");
+    } else {
+      unsupported.push_back(path);
     }
   }
   if (ec) throw UsageError("cannot search the folder \"" + folder + "\": " + ec.message());
@@ -65,6 +70,8 @@ void meshes_in_folder(const std::string& folder, MeshPaths& out) {
   for (const std::string& path : found) out.names.push_back(fs::path(path).lexically_relative(folder).string()), out.roots.push_back(folder);
   out.meshes.insert(out.meshes.end(), found.begin(), found.end());
   out.passed_over.insert(out.passed_over.end(), passed_over.begin(), passed_over.end());
+  std::sort(unsupported.begin(), unsupported.end());
+  out.unsupported.insert(out.unsupported.end(), unsupported.begin(), unsupported.end());
 }
 
 }  // namespace
@@ -80,6 +87,23 @@ MeshPaths expand_mesh_paths(const std::vector<std::string>& arguments) {
   }
   return paths;
 }
+
+std::string unsupported_summary(const std::vector<std::string>& unsupported) {
+  std::map<std::string, size_t> by_extension;
+  for (const std::string& path : unsupported) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    ++by_extension[extension.empty() ? "no extension" : extension];
+  }
+  std::vector<std::pair<std::string, size_t>> counts(by_extension.begin(), by_extension.end());
+  std::stable_sort(counts.begin(), counts.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
+  std::string line = "passed over " + std::to_string(unsupported.size()) + (unsupported.size() == 1 ? " file" : " files") +
+                     " in no format umbra reads:";
+  for (size_t i = 0; i < counts.size(); ++i) line += (i ? ", " : " ") + std::to_string(counts[i].second) + " " + counts[i].first;
+  return line;
+}
+
+std::string unsupported_reason() { return "no format umbra reads (" + mesh_format_names() + ")"; }
 
 Shard parse_shard(const std::string& option, const std::string& text) {
   const size_t slash = text.find('/');
@@ -101,7 +125,9 @@ std::vector<std::string> shard_of(const std::vector<std::string>& paths, const S
 std::optional<MeshPaths> found_mesh_paths(const std::vector<std::string>& arguments, const std::string& command) {
   try {
     MeshPaths found = expand_mesh_paths(arguments);
-    if (found.meshes.empty()) throw UsageError("no mesh files in " + arguments[0] + (arguments.size() > 1 ? " or the others" : ""));
+    if (found.meshes.empty())
+      throw UsageError("no mesh files in " + arguments[0] + (arguments.size() > 1 ? " or the others" : "") +
+                       (found.unsupported.empty() ? "" : " (" + unsupported_summary(found.unsupported) + ")"));
     return found;
   } catch (const UsageError& e) {
     std::cerr << "umbra " << command << ": " << e.what() << "\n";

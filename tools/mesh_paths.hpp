@@ -29,7 +29,16 @@ struct MeshPaths {
   std::vector<std::string> roots;
   // (path, what it is): "a JPEG image, not a mesh", "a link to nothing (x.obj)"
   std::vector<std::pair<std::string, std::string>> passed_over;
+  // A folder's regular files in no format umbra reads, by content or by
+  // name (a texture map, a README, a 3DS model), sorted: counted by
+  // extension in one line, and each given a JSON record where asked.
+  std::vector<std::string> unsupported;
 };
+// "passed over 3 files in no format umbra reads: 2 .3ds, 1 .png" (the
+// commonest extensions first, a file without one as "no extension").
+std::string unsupported_summary(const std::vector<std::string>& unsupported);
+// What a JSON record says of one of them: "no format umbra reads (OBJ, ...)".
+std::string unsupported_reason();
 MeshPaths expand_mesh_paths(const std::vector<std::string>& arguments);
 // The same for a command that needs some: where none is found (or a path
 // cannot be searched), "umbra COMMAND: why" on stderr and none.

@@ -386,4 +386,8 @@ std::string json_error_line(const std::string& path, const std::string& error) {
   return json_line(nlohmann::ordered_json{{"path", path}, {"error", error}});
 }
 
+std::string json_passed_over_line(const std::string& path, const std::string& why, const std::string& kind) {
+  return json_line(nlohmann::ordered_json{{"path", path}, {"passed_over", why}, {"kind", kind}});
+}
+
 }  // namespace umbra

@@ -84,6 +84,9 @@ const char* volume_kind_name(VolumeKind kind);
 // The JSON line for a file that could not be read: {"path": ..., "error": ...},
 // valid UTF-8 as print_json's lines are.
 std::string json_error_line(const std::string& path, const std::string& error);
+// {"path": ..., "passed_over": why, "kind": kind}: a file found in a folder
+// and not checked, in no format umbra reads ("unsupported-format").
+std::string json_passed_over_line(const std::string& path, const std::string& why, const std::string& kind);
 
 struct MeshReport {
   std::string path;

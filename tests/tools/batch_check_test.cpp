@@ -38,7 +38,7 @@ class BatchCheck : public test::CommandTest {
     std::ofstream(path("verdicts.py")) << "import json,sys\n"
                                           "for line in open(sys.argv[1]):\n"
                                           "  o = json.loads(line)\n"
-                                          "  print(o['path'].split('/meshes/')[-1], o.get('closed_manifold', 'error'))\n";
+                                          "  print(o['path'].split('/meshes/')[-1], o.get('closed_manifold', o.get('kind', 'error')))\n";
     EXPECT_EQ(std::system(("python3 " + path("verdicts.py") + " " + path("lines.json") + " >" + path("v.txt")).c_str()), 0);
     return read(path("v.txt"));
   }
@@ -55,8 +55,15 @@ class BatchCheck : public test::CommandTest {
 TEST_F(BatchCheck, AFolderIsSearchedRecursivelyForMeshesByContentInSortedOrder) {
   const CommandResult r = run("check --json " + mesh_folder());
   EXPECT_EQ(r.status, 1);
-  EXPECT_EQ(verdicts(r.out), "a-closed.obj True\nb/deep/tet True\nb/open.obj False\n");
-  EXPECT_EQ(without_time(r.err), "umbra check: 3 meshes in T s: 2 closed 2-manifolds, 1 not, 0 unreadable\n");
+  // Every file found has its line: a README and an OBJ's materials are in no format umbra reads.
+  EXPECT_EQ(verdicts(r.out), "README.txt unsupported-format\nb/deep/tet.mtl unsupported-format\n"
+                             "a-closed.obj True\nb/deep/tet True\nb/open.obj False\n");
+  EXPECT_NE(r.out.find("{\"path\":\"" + path("meshes/README.txt") + "\",\"passed_over\":\"no format umbra reads (OBJ, OFF, PLY, STL, "
+                       "glTF or 3MF)\",\"kind\":\"unsupported-format\"}\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(without_time(r.err), "umbra check: passed over 2 files in no format umbra reads: 1 .mtl, 1 .txt\n"
+                                 "umbra check: 3 meshes in T s: 2 closed 2-manifolds, 1 not, 0 unreadable; 2 files passed over\n");
 }
 
 TEST_F(BatchCheck, FilesThatAreNoMeshInAFolderArePassedOverAndNamed) {
@@ -68,10 +75,12 @@ TEST_F(BatchCheck, FilesThatAreNoMeshInAFolderArePassedOverAndNamed) {
   const std::string zip = write("meshes/notes.3mf", std::string("PK\x03\x04", 4) + "notes.txt");
   const CommandResult r = run("check --json " + folder);
   EXPECT_EQ(r.status, 1);
-  EXPECT_EQ(verdicts(r.out), "a-closed.obj True\nb/deep/tet True\nb/open.obj False\n");
+  EXPECT_EQ(verdicts(r.out), "README.txt unsupported-format\nb/deep/tet.mtl unsupported-format\n"
+                             "a-closed.obj True\nb/deep/tet True\nb/open.obj False\n");
   EXPECT_EQ(without_time(r.err), "umbra check: passed over " + zip + ": a zip archive without a 3D model part, not a mesh\n"
                                  "umbra check: passed over " + photo + ": a JPEG image, not a mesh\n"
-                                 "umbra check: 3 meshes in T s: 2 closed 2-manifolds, 1 not, 0 unreadable; 2 files passed over\n");
+                                 "umbra check: passed over 2 files in no format umbra reads: 1 .mtl, 1 .txt\n"
+                                 "umbra check: 3 meshes in T s: 2 closed 2-manifolds, 1 not, 0 unreadable; 4 files passed over\n");
   EXPECT_EQ(run("check " + photo).status, 2);
 }
 
@@ -80,9 +89,11 @@ TEST_F(BatchCheck, AMixOfGoodOpenAndUnreadableMeshesIsAllReportedAndExitsTwo) {
   const std::string broken = write("meshes/broken.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n");
   const CommandResult r = run("check --json " + folder);
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(verdicts(r.out), "a-closed.obj True\nb/deep/tet True\nb/open.obj False\nbroken.off error\n");
-  EXPECT_EQ(without_time(r.err), broken + ":4: the file ends before vertex 2 of 3\n"
-                                          "umbra check: 4 meshes in T s: 2 closed 2-manifolds, 1 not, 1 unreadable\n");
+  EXPECT_EQ(verdicts(r.out), "README.txt unsupported-format\nb/deep/tet.mtl unsupported-format\n"
+                             "a-closed.obj True\nb/deep/tet True\nb/open.obj False\nbroken.off error\n");
+  EXPECT_EQ(without_time(r.err), "umbra check: passed over 2 files in no format umbra reads: 1 .mtl, 1 .txt\n" + broken +
+                                     ":4: the file ends before vertex 2 of 3\n"
+                                     "umbra check: 4 meshes in T s: 2 closed 2-manifolds, 1 not, 1 unreadable; 2 files passed over\n");
   // Without the unreadable one, the open one decides: exit 1; with only closed ones, 0.
   EXPECT_EQ(run("check " + folder + "/a-closed.obj " + folder + "/b").status, 1);
   EXPECT_EQ(run("check " + folder + "/a-closed.obj " + folder + "/b/deep").status, 0);
@@ -200,7 +211,8 @@ TEST_F(BatchCheck, WithATimeoutAHangOrACrashCostsOnlyItsOwnReport) {
   write("meshes/b/crash.obj", obj_text(test::unit_cube()));
   const CommandResult r = run("check " + meshes + " --json --jobs 2 --timeout 2", "", UMBRA_FAULT_INJECTED_EXECUTABLE);
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(verdicts(r.out), "a-closed.obj True\nb/crash.obj error\nb/deep/tet True\nb/hang.obj error\nb/open.obj False\n");
+  EXPECT_EQ(verdicts(r.out), "README.txt unsupported-format\nb/deep/tet.mtl unsupported-format\n"
+                             "a-closed.obj True\nb/crash.obj error\nb/deep/tet True\nb/hang.obj error\nb/open.obj False\n");
   EXPECT_NE(r.out.find("{\"path\":\"" + path("meshes/b/hang.obj") + "\",\"error\":\"" + path("meshes/b/hang.obj") +
                        ": timed out after 2 s (--timeout)\"}\n"),
             std::string::npos)
@@ -271,7 +283,7 @@ TEST_F(BatchCheck, AFolderWithNoMeshExitsTwoAndSaysSo) {
   write("empty/notes.txt", "no meshes here\n");
   const CommandResult empty = run("check " + path("empty"));
   EXPECT_EQ(empty.status, 2);
-  EXPECT_EQ(empty.err, "umbra check: no mesh files in " + path("empty") + "\n");
+  EXPECT_EQ(empty.err, "umbra check: no mesh files in " + path("empty") + " (passed over 1 file in no format umbra reads: 1 .txt)\n");
 }
 
 TEST_F(BatchCheck, UsageErrorsForJobsAndShards) {

@@ -667,7 +667,7 @@ TEST_F(RenderCommand, AFolderRendersToOnePicturePerMeshAndShardsWriteTheSameSet)
             std::string::npos) << r.err;
   EXPECT_NE(r.err.find(path("models/parts/broken.obj") + ":2:"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("umbra render: 4 files in "), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find(": 3 pictures in " + path("out") + ", 1 failed\n"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(": 3 pictures in " + path("out") + ", 1 failed; 1 file passed over\n"), std::string::npos) << r.err;
   // The contact sheet: every file in file order, two to a row, each tile 6
   // pixels in from its cell, with a dark label line below it; the file that
   // failed a pale red tile that says so, in dark red.
