@@ -52,6 +52,10 @@ motion_packages=(
   libwebp-dev                                    # animated WebP (libwebp's mux library)
   libgif-dev                                     # GIF (giflib)
 )
+# The formats umbra does not parse itself (3DS, Collada, FBX, Blender,
+# LightWave, glTF 1.0, Draco glTF, ...), through Assimp: optional in CMake
+# like the encoders, built in by a plain ./build.sh and the tests.
+format_packages=(libassimp-dev)
 # What the tests, benchmarks, sanitizers and fuzzers need besides: installed
 # by ./build.sh test, sanitize and fuzz.
 test_packages=(
@@ -74,8 +78,8 @@ test_packages=(
   ffmpeg                             # ffprobe reads back the MP4 videos umbra writes (tested)
 )
 case "${1:-}" in
-  test|sanitize|fuzz) packages+=("${test_packages[@]}" "${motion_packages[@]}") ;;
-  "") packages+=("${motion_packages[@]}") ;;
+  test|sanitize|fuzz) packages+=("${test_packages[@]}" "${motion_packages[@]}" "${format_packages[@]}") ;;
+  "") packages+=("${motion_packages[@]}" "${format_packages[@]}") ;;
 esac
 # Whether this command builds the Python module: not the demo, which renders
 # with umbra alone, nor the sanitizers' and fuzzers' builds (configured below

@@ -1,6 +1,6 @@
 #pragma once
 // The mesh fuzzer's first byte: which format's name the rest of its input
-// is read under, numbered as mesh_formats() lists them.
+// is read under, numbered as mesh_formats() lists umbra's own readers.
 
 #include <cstdint>
 #include <optional>

@@ -79,7 +79,7 @@ std::optional<InputError> neither_scene_nor_mesh(const std::string& path) {
     const std::string_view bytes = file.bytes();
     // No statement at all: nothing to say of it but that, whatever its name.
     if (const std::string blank = blank_content(bytes); !blank.empty()) return InputError({path}, blank, InputProblem::kEmpty);
-    if (std::filesystem::path(path).extension() == ".scene" || !detect_mesh_format(bytes).empty()) return std::nullopt;
+    if (std::filesystem::path(path).extension() == ".scene" || !detect_mesh_format(bytes, path).empty()) return std::nullopt;
     std::string what = other_known_format(bytes);
     if (what.empty() && !looks_like_text(bytes.substr(0, 1 << 16))) what = "binary data";
     if (what.empty()) return std::nullopt;

@@ -589,27 +589,31 @@ std::string_view json_of(std::string_view bytes, bool binary) {
   return bytes.substr(20, length);
 }
 
-// What tinygltf would read wrongly or not name: glTF 1.0 (a GLB header of
-// version 1, or dictionaries where 2.0 has arrays), compressed meshes, a
-// mesh whose "primitives" is not an array (tinygltf reads none, silently).
-void require_gltf_2(std::string_view bytes, bool binary, const std::string& path) {
-  const auto refuse = [&](const std::string& message) { throw InputError({path, 0, 0}, message); };
-  const std::string version_one =
-      "glTF 1.0, which umbra does not read: only glTF 2.0 (convert it, with gltf-pipeline or Blender, say)";
+// glTF 1.0: a GLB header of version 1, an asset of version 1.x, or
+// dictionaries where 2.0 has arrays; `json` is the file's JSON.
+bool is_gltf_1(std::string_view bytes, bool binary, const nlohmann::json& json) {
   if (binary && bytes.size() >= 8) {
     uint32_t version = 0;
     std::memcpy(&version, bytes.data() + 4, 4);
-    if (version == 1) refuse(version_one);
+    if (version == 1) return true;
   }
-  const std::string_view text = json_of(bytes, binary);
-  const nlohmann::json json = nlohmann::json::parse(text.begin(), text.end(), nullptr, false);
-  if (!json.is_object()) return;
+  if (!json.is_object()) return false;
   const auto version = json.find("asset");
   if (version != json.end() && version->is_object() && version->contains("version") && (*version)["version"].is_string() &&
       (*version)["version"].get<std::string>().substr(0, 2) == "1.")
-    refuse(version_one);
+    return true;
   for (const char* key : {"meshes", "nodes", "accessors", "buffers", "bufferViews"})
-    if (json.contains(key) && json[key].is_object()) refuse(version_one);
+    if (json.contains(key) && json[key].is_object()) return true;
+  return false;
+}
+
+// What tinygltf would read wrongly or not name: glTF 1.0, compressed meshes,
+// a mesh whose "primitives" is not an array (tinygltf reads none, silently).
+void require_gltf_2(std::string_view bytes, bool binary, const nlohmann::json& json, const std::string& path) {
+  const auto refuse = [&](const std::string& message) { throw InputError({path, 0, 0}, message); };
+  if (is_gltf_1(bytes, binary, json))
+    refuse("glTF 1.0, which umbra does not read: only glTF 2.0 (convert it, with gltf-pipeline or Blender, say)");
+  if (!json.is_object()) return;
   if (const auto required = json.find("extensionsRequired"); required != json.end() && required->is_array())
     for (const nlohmann::json& name : *required)
       if (name == "EXT_meshopt_compression")
@@ -641,7 +645,14 @@ PolygonSoup read_gltf(std::string_view bytes, const std::string& path, const Tex
   const std::string folder;  // GltfFiles::path_of finds a uri beside the model
   const bool binary = bytes.substr(0, 4) == "glTF";
   if (bytes.size() > std::numeric_limits<unsigned>::max()) throw InputError({path, 0, 0}, "too large for the glTF reader (4 GiB or more)");
-  require_gltf_2(bytes, binary, path);
+  const std::string_view text = json_of(bytes, binary);
+  const nlohmann::json json = nlohmann::json::parse(text.begin(), text.end(), nullptr, false);
+#ifdef UMBRA_HAVE_ASSIMP
+  // glTF 1.0 and Draco-compressed meshes, which tinygltf does not read, are Assimp's glTF importers'.
+  if (is_gltf_1(bytes, binary, json) || bytes.find("KHR_draco_mesh_compression") != std::string_view::npos)
+    return read_assimp(bytes, path, maps);
+#endif
+  require_gltf_2(bytes, binary, json, path);
   const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &error, &warning, reinterpret_cast<const unsigned char*>(bytes.data()),
                                                       unsigned(bytes.size()), folder)
                          : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(), unsigned(bytes.size()), folder);

@@ -16,7 +16,7 @@ PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path, 
   if (const std::string blank = blank_content(bytes); !blank.empty()) throw InputError({path, 0, 0}, blank, InputProblem::kEmpty);
   // The content decides; the extension only names the reader whose located
   // errors best explain a file too broken for its content to say.
-  std::string format = detect_mesh_format(bytes);
+  std::string format = detect_mesh_format(bytes, path);
   // Not OBJ, though: any text would read as an OBJ without faces.
   // Nor for what is plainly some other format.
   if (format.empty() && mesh_format_of(path) != "obj" && other_known_format(bytes).empty()) format = mesh_format_of(path);

@@ -148,6 +148,11 @@ const std::vector<MeshFormat>& mesh_formats() {
        nullptr, "+y"},
       {"3mf", "3MF", {".3mf"}, [](std::string_view b) { return is_zip(b) && has_model_part(b); }, never, without_maps<read_3mf>,
        nullptr, "+z"},
+#ifdef UMBRA_HAVE_ASSIMP
+      // Told by name alone (the importers' own tests would open every file
+      // of a folder): after umbra's own readers, whose errors are located.
+      {"assimp", "Assimp's formats", assimp_extensions(), never, never, read_assimp, nullptr, "+y", assimp_up_axis},
+#endif
   };
   return formats;
 }
@@ -183,9 +188,23 @@ std::string detect_mesh_format(std::string_view bytes) {
   return "";
 }
 
+std::string detect_mesh_format(std::string_view bytes, const std::string& path) {
+  if (std::string format = detect_mesh_format(bytes); !format.empty()) return format;
+  // A format told by name alone, unless the content is plainly a picture
+  // or a document: markup, UTF-16 text and archives are what some of them
+  // are made of.
+  const MeshFormat* named = mesh_format_by_id(mesh_format_of(path));
+  if (!named || !told_by_name_alone(*named)) return "";
+  const std::string other = other_known_format(bytes);
+  const bool picture = starts_with(other, "a JPEG") || starts_with(other, "a PNG") || starts_with(other, "a PDF");
+  return picture ? "" : std::string(named->id);
+}
+
+bool told_by_name_alone(const MeshFormat& format) { return format.has_signature == never && format.has_text == never; }
+
 std::string detect_mesh_format_of_file(const std::string& path) {
   try {
-    return detect_mesh_format(MappedFile(path).bytes());
+    return detect_mesh_format(MappedFile(path).bytes(), path);
   } catch (const InputError&) {
     return "";
   }
@@ -193,7 +212,8 @@ std::string detect_mesh_format_of_file(const std::string& path) {
 
 std::string up_axis_of_file(const std::string& path) {
   const MeshFormat* format = mesh_format_by_id(detect_mesh_format_of_file(path));
-  return format ? std::string(format->up) : "+y";
+  if (!format) return "+y";
+  return format->up_by_name ? format->up_by_name(path) : std::string(format->up);
 }
 
 std::string mesh_format_of(const std::string& path) {

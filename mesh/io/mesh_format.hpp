@@ -34,6 +34,9 @@ struct MeshFormat {
   // as printing and CAD tools write it, OBJ, PLY and OFF +Y as most
   // exporters write them.
   std::string_view up;
+  // Where one row holds formats of several conventions (Assimp's), the up
+  // axis of the file at `path` by its name; null where `up` says it.
+  std::string (*up_by_name)(const std::string& path) = nullptr;
 };
 
 // Every format, in the order messages list them and the fuzzers number them.
@@ -49,6 +52,13 @@ std::string mesh_format_extensions(bool repair_writes_only = false);
 // The id of the format `bytes` (a whole file) plainly are, by signature
 // first, then as text; "" when they are none, or too broken to say.
 std::string detect_mesh_format(std::string_view bytes);
+
+// The same, then by `path`'s name for a format told by name alone (Assimp's:
+// told_by_name_alone), unless the bytes are plainly something else (an
+// image, a PDF; markup, UTF-16 text and zip archives are what some of them are).
+std::string detect_mesh_format(std::string_view bytes, const std::string& path);
+// Whether `format` has no test of content, and is told by name alone.
+bool told_by_name_alone(const MeshFormat& format);
 
 // The same for the file at `path`, read by memory mapping; "" too when it
 // cannot be read (whoever reads it next says why).

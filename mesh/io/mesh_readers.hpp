@@ -5,6 +5,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "mesh/io/polygon_soup.hpp"
 
@@ -21,6 +22,18 @@ PolygonSoup read_ply(std::string_view bytes, const std::string& path);  // ascii
 // .gltf or .glb; external buffers (and images) beside `path`
 PolygonSoup read_gltf(std::string_view bytes, const std::string& path, const TextureMaps& maps = {});
 PolygonSoup read_3mf(std::string_view bytes, const std::string& path);
+// The formats umbra does not parse itself, through Assimp (built with it
+// only: UMBRA_HAVE_ASSIMP); the files it names are read only as `maps`
+// lets texture maps be.
+PolygonSoup read_assimp(std::string_view bytes, const std::string& path, const TextureMaps& maps);
+// Assimp's extensions (".3ds", ".dae", ...) but those umbra reads itself
+// and those too generic or holding no mesh (.xml, .raw, .prj, motion).
+std::vector<std::string_view> assimp_extensions();
+// The up axis by the convention of the tool that writes the file at `path`
+// (by its name): +z for 3ds Max's, Blender's, AutoCAD's, IFC's and the
+// Quake engines' formats, +y for the rest (Collada's importer turns its own
+// files' up axis to +y).
+std::string assimp_up_axis(const std::string& path);
 
 // How many bytes (1 to 1023) follow the last triangle of `bytes` read as a
 // binary STL with at least one triangle; 0 when the size is exact, when so

@@ -286,7 +286,9 @@ TEST(MeshFormat, ABinaryFileWithAPlausibleCountIsNoStl) {
   const uint32_t count = 26;  // 84 + 26 * 50 = 1384: 16 bytes to spare
   std::memcpy(&blob[80], &count, 4);
   EXPECT_EQ(detect_mesh_format(blob), "");
-  EXPECT_EQ(test::read_error_of(blob, "scene.3ds"), "scene.3ds: not a mesh file (" + mesh_format_names() + "): binary data");
+  EXPECT_EQ(test::read_error_of(blob, "scene.bin"), "scene.bin: not a mesh file (" + mesh_format_names() + "): binary data");
+  // Named as one of Assimp's formats, it is that format's, whose importer says why it is none.
+  EXPECT_EQ(test::read_error_of(blob, "scene.3ds"), "scene.3ds: Assimp's Discreet 3DS Importer cannot read it: Chunk is too large");
   // The same count over real STL records is still an STL with trailing bytes.
   const std::string stl = binary_stl({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}, {{{0, 0, 0}, {0, 1, 0}, {0, 0, 1}}}});
   EXPECT_EQ(detect_mesh_format(stl + std::string(16, '\x7f')), "stl");
@@ -295,9 +297,12 @@ TEST(MeshFormat, ABinaryFileWithAPlausibleCountIsNoStl) {
             "");
   const std::string models = "/usr/share/assimp/models/";
   if (!std::filesystem::exists(models)) GTEST_SKIP() << "needs Debian's assimp-testmodels (build.sh installs it)";
+  // Real 3DS and NFF files: none an STL (nor an OBJ), each Assimp's by its name.
   for (const char* name : {"3DS/cube_with_diffuse_texture.3DS", "3DS/cube_with_specular_texture.3DS", "NFF/NFF/cone.nff",
-                           "NFF/NFF/WithCamera.nff", "NFF/NFF/hexahedron.nff"})
-    EXPECT_EQ(detect_mesh_format_of_file(models + name), "") << name;
+                           "NFF/NFF/WithCamera.nff", "NFF/NFF/hexahedron.nff"}) {
+    EXPECT_EQ(detect_mesh_format(MappedFile(models + name).bytes()), "") << name;
+    EXPECT_EQ(detect_mesh_format_of_file(models + name), "assimp") << name;
+  }
 }
 
 TEST(MeshFormat, FilesThatAreNoMeshSayWhatTheyAre) {

@@ -59,7 +59,7 @@ TEST_F(BatchCheck, AFolderIsSearchedRecursivelyForMeshesByContentInSortedOrder) 
   EXPECT_EQ(verdicts(r.out), "README.txt unsupported-format\nb/deep/tet.mtl unsupported-format\n"
                              "a-closed.obj True\nb/deep/tet True\nb/open.obj False\n");
   EXPECT_NE(r.out.find("{\"path\":\"" + path("meshes/README.txt") + "\",\"passed_over\":\"no format umbra reads (OBJ, OFF, PLY, STL, "
-                       "glTF or 3MF)\",\"kind\":\"unsupported-format\"}\n"),
+                       "glTF, 3MF or Assimp's formats)\",\"kind\":\"unsupported-format\"}\n"),
             std::string::npos)
       << r.out;
   EXPECT_EQ(without_time(r.err), "umbra check: passed over 2 files in no format umbra reads: 1 .mtl, 1 .txt\n"
