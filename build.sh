@@ -52,10 +52,12 @@ motion_packages=(
   libwebp-dev                                    # animated WebP (libwebp's mux library)
   libgif-dev                                     # GIF (giflib)
 )
-# The formats umbra does not parse itself (3DS, Collada, FBX, Blender,
-# LightWave, glTF 1.0, Draco glTF, ...), through Assimp: optional in CMake
-# like the encoders, built in by a plain ./build.sh and the tests.
-format_packages=(libassimp-dev)
+# The formats umbra does not parse itself, optional in CMake like the
+# encoders, built in by a plain ./build.sh and the tests.
+format_packages=(
+  libassimp-dev                      # 3DS, Collada, FBX, Blender, LightWave, glTF 1.0, Draco glTF, ... (Assimp)
+  libocct-data-exchange-dev libocct-modeling-algorithms-dev  # STEP, IGES and BREP, tessellated (Open CASCADE)
+)
 # What the tests, benchmarks, sanitizers and fuzzers need besides: installed
 # by ./build.sh test, sanitize and fuzz.
 test_packages=(

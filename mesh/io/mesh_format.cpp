@@ -114,6 +114,50 @@ bool is_obj(std::string_view head) {
 
 bool never(std::string_view) { return false; }
 
+// STEP's physical file ("ISO-10303-21;" first), but not IFC's, which is
+// written the same way with a schema of its own (Assimp's, by name).
+bool is_step(std::string_view bytes) {
+  const size_t first = bytes.find_first_not_of(" \t\r\n\xef\xbb\xbf");
+  if (first == std::string_view::npos || bytes.substr(first, 13) != "ISO-10303-21;") return false;
+  const std::string_view head = bytes.substr(0, kSniffBytes);
+  const size_t schema = head.find("FILE_SCHEMA");
+  return schema == std::string_view::npos || head.substr(schema, 80).find("IFC") == std::string_view::npos;
+}
+
+// IGES: 80-column records, each ending in its section's letter and its
+// number ("S0000001", "G0000001"): one of the first lines is such a record
+// (the first may have lost its leading blanks to the comment skipping).
+bool is_iges(std::string_view head) {
+  for (int line = 0; line < 3 && !head.empty(); ++line) {
+    const size_t end = std::min(head.find('\n'), head.size());
+    std::string_view record = head.substr(0, end);
+    if (!record.empty() && record.back() == '\r') record.remove_suffix(1);
+    if (record.size() == 80 && (record[72] == 'S' || record[72] == 'G') &&
+        record.substr(73).find_first_not_of("0123456789") == std::string_view::npos)
+      return true;
+    head.remove_prefix(std::min(end + 1, head.size()));
+  }
+  return false;
+}
+
+// Open CASCADE's own BREP text, as Draw's and BRepTools' writers start it.
+bool is_brep(std::string_view head) {
+  return starts_with(head, "DBRep_DrawableShape") || starts_with(head, "CASCADE Topology V");
+}
+
+// A CAD file's reader, or where this umbra was built without Open CASCADE,
+// the message that says how to build it in.
+template <CadFormat kFormat>
+PolygonSoup cad_reader(std::string_view bytes, const std::string& path, const TextureMaps&) {
+#ifdef UMBRA_HAVE_OCCT
+  return read_cad(bytes, path, kFormat);
+#else
+  (void)bytes;
+  throw InputError({path, 0, 0}, std::string(cad_format_name(kFormat)) + " files need Open CASCADE, which this umbra was built without: ./build.sh installs "
+                                 "libocct-data-exchange-dev and builds it in", InputProblem::kUnsupportedFormat);
+#endif
+}
+
 // `bytes` past the comment lines ('#', as OBJ, OFF and scenes write them)
 // and blank lines at its start, however many: what follows tells a text
 // format, and a file that opens with 64 KiB of comments is still an OBJ.
@@ -148,10 +192,14 @@ const std::vector<MeshFormat>& mesh_formats() {
        nullptr, "+y"},
       {"3mf", "3MF", {".3mf"}, [](std::string_view b) { return is_zip(b) && has_model_part(b); }, never, without_maps<read_3mf>,
        nullptr, "+z"},
+      // CAD exchange files, through Open CASCADE; Z up, as CAD tools model.
+      {"step", "STEP", {".step", ".stp"}, is_step, never, cad_reader<CadFormat::kStep>, nullptr, "+z", nullptr, false},
+      {"iges", "IGES", {".iges", ".igs"}, never, is_iges, cad_reader<CadFormat::kIges>, nullptr, "+z", nullptr, false},
+      {"brep", "BREP", {".brep", ".brp"}, never, is_brep, cad_reader<CadFormat::kBrep>, nullptr, "+z", nullptr, false},
 #ifdef UMBRA_HAVE_ASSIMP
       // Told by name alone (the importers' own tests would open every file
       // of a folder): after umbra's own readers, whose errors are located.
-      {"assimp", "Assimp's formats", assimp_extensions(), never, never, read_assimp, nullptr, "+y", assimp_up_axis},
+      {"assimp", "Assimp's formats", assimp_extensions(), never, never, read_assimp, nullptr, "+y", assimp_up_axis, false},
 #endif
   };
   return formats;

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "mesh/io/cad_module.hpp"
 #include "mesh/io/polygon_soup.hpp"
 
 namespace umbra {
@@ -22,6 +23,12 @@ PolygonSoup read_ply(std::string_view bytes, const std::string& path);  // ascii
 // .gltf or .glb; external buffers (and images) beside `path`
 PolygonSoup read_gltf(std::string_view bytes, const std::string& path, const TextureMaps& maps = {});
 PolygonSoup read_3mf(std::string_view bytes, const std::string& path);
+// CAD exchange files through Open CASCADE, tessellated, in the module
+// umbra-cad.so opened on first use (cad_module.hpp; built with Open
+// CASCADE only: UMBRA_HAVE_OCCT). Throws InputError naming the file, and
+// where the module cannot be opened, why.
+PolygonSoup read_cad(std::string_view bytes, const std::string& path, CadFormat format);
+
 // The formats umbra does not parse itself, through Assimp (built with it
 // only: UMBRA_HAVE_ASSIMP); the files it names are read only as `maps`
 // lets texture maps be.
