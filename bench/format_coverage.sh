@@ -14,7 +14,7 @@ folder=${1:-/usr/share/assimp/models}
 build=build
 . bench/timing.sh
 require_built $build
-for tool in f3d xvfb-run python3; do
+for tool in f3d xvfb-run /usr/bin/python3; do
   command -v "$tool" >/dev/null || { echo "bench: $tool is missing (apt-get install f3d xvfb python3-pil)" >&2; exit 2; }
 done
 [ -d "$folder" ] || { echo "bench: $folder is missing (apt-get install assimp-testmodels)" >&2; exit 2; }
@@ -30,7 +30,7 @@ xvfb-run -a bash -c '
     n=$((n + 1))
     if timeout 60 f3d --output="$1/f3d/$n.png" --resolution=64,64 "$file" >/dev/null 2>&1; then echo "$n"; fi
   done < "$1/files.txt" > "$1/f3d-exited-0.txt"' _ "$out"
-python3 - "$out" <<'PYTHON'
+/usr/bin/python3 - "$out" <<'PYTHON'
 import collections, json, os, sys
 from PIL import Image
 out = sys.argv[1]

@@ -18,7 +18,7 @@ help_of(top --help)
 string(CONCAT page ".TH UMBRA 1 \"\" \"umbra ${VERSION}\" \"User Commands\"\n"
                   ".SH NAME\numbra \\- exact hard shadows from stencil shadow volumes, for mesh files and scenes\n"
                   ".SH DESCRIPTION\n.nf\n${top}.fi\n")
-foreach(command render check view volume bench)
+foreach(command render check view volume bench formats)
   help_of(text ${command} --help)
   string(TOUPPER "${command}" title)
   string(APPEND page ".SH \"UMBRA ${title}\"\n.nf\n${text}.fi\n")

@@ -8,6 +8,7 @@
 #include "tools/bench_command.hpp"
 #include "tools/check_command.hpp"
 #include "tools/command_line.hpp"
+#include "tools/formats_command.hpp"
 #include "tools/nearest_word.hpp"
 #include "tools/huge_page_malloc.hpp"
 #include "tools/render_command.hpp"
@@ -31,6 +32,7 @@ const Command kCommands[] = {
     {"view", "MESH|SCENE", "an interactive window: the light orbits, the camera follows the mouse", umbra::run_view_command},
     {"volume", "MESH|SCENE -o OUT.obj", "a light's shadow volumes as a mesh, to look at", umbra::run_volume_command},
     {"bench", "[SCENES...]", "shadow error against frame time for every method", umbra::run_bench_command},
+    {"formats", "", "every mesh format umbra reads, and what reads it", umbra::run_formats_command},
 };
 
 std::string usage() {
@@ -38,7 +40,7 @@ std::string usage() {
 
 Exact hard shadows from stencil shadow volumes, for any mesh file on its own
 and for scenes of spheres, triangles and meshes.
-Mesh files: {mesh formats}, told by their content.
+Mesh files: umbra formats lists every format umbra reads.
 
   umbra render model.glb -o model.png    the model on a floor, with its shadow
   umbra render models/ -o pictures/      a picture of every mesh in a folder

@@ -153,8 +153,10 @@ PolygonSoup cad_reader(std::string_view bytes, const std::string& path, const Te
   return read_cad(bytes, path, kFormat);
 #else
   (void)bytes;
-  throw InputError({path, 0, 0}, std::string(cad_format_name(kFormat)) + " files need Open CASCADE, which this umbra was built without: ./build.sh installs "
-                                 "libocct-data-exchange-dev and builds it in", InputProblem::kUnsupportedFormat);
+  throw InputError({path, 0, 0},
+                   std::string(cad_format_name(kFormat)) + " files need Open CASCADE, which this umbra was built without: "
+                                                           "./build.sh installs libocct-data-exchange-dev and builds it in",
+                   InputProblem::kUnsupportedFormat);
 #endif
 }
 
@@ -180,26 +182,36 @@ PolygonSoup without_maps(std::string_view bytes, const std::string& path, const 
 
 }  // namespace
 
+#ifdef UMBRA_HAVE_OCCT
+constexpr bool kOpenCascadeBuilt = true;
+#else
+constexpr bool kOpenCascadeBuilt = false;
+#endif
+
 const std::vector<MeshFormat>& mesh_formats() {
   static const std::vector<MeshFormat> formats{
       {"obj", "OBJ", {".obj"}, never, is_obj, [](std::string_view b, const std::string& p, const TextureMaps& t) { return read_obj(b, p, t); },
-       write_obj_file, "+y"},
+       write_obj_file, "+y", nullptr, true, "umbra, with its .mtl"},
       {"off", "OFF", {".off"}, never, is_off, without_maps<read_off>, write_off_file, "+y"},
       {"ply", "PLY", {".ply"}, [](std::string_view b) { return starts_with(b, "ply\n") || starts_with(b, "ply\r"); }, never,
        without_maps<read_ply>, write_ply_file, "+y"},
       {"stl", "STL", {".stl"}, is_binary_stl, is_ascii_stl, without_maps<read_stl>, write_stl_file, "+z"},
       {"gltf", "glTF", {".gltf", ".glb"}, [](std::string_view b) { return starts_with(b, "glTF"); }, is_gltf_json, read_gltf,
-       nullptr, "+y"},
+       nullptr, "+y", nullptr, true, "tinygltf (1.0: Assimp)"},
       {"3mf", "3MF", {".3mf"}, [](std::string_view b) { return is_zip(b) && has_model_part(b); }, never, without_maps<read_3mf>,
-       nullptr, "+z"},
+       nullptr, "+z", nullptr, true, "lib3mf"},
       // CAD exchange files, through Open CASCADE; Z up, as CAD tools model.
-      {"step", "STEP", {".step", ".stp"}, is_step, never, cad_reader<CadFormat::kStep>, nullptr, "+z", nullptr, false},
-      {"iges", "IGES", {".iges", ".igs"}, never, is_iges, cad_reader<CadFormat::kIges>, nullptr, "+z", nullptr, false},
-      {"brep", "BREP", {".brep", ".brp"}, never, is_brep, cad_reader<CadFormat::kBrep>, nullptr, "+z", nullptr, false},
+      {"step", "STEP", {".step", ".stp"}, is_step, never, cad_reader<CadFormat::kStep>, nullptr, "+z", nullptr, false,
+       "Open CASCADE", kOpenCascadeBuilt},
+      {"iges", "IGES", {".iges", ".igs"}, never, is_iges, cad_reader<CadFormat::kIges>, nullptr, "+z", nullptr, false,
+       "Open CASCADE", kOpenCascadeBuilt},
+      {"brep", "BREP", {".brep", ".brp"}, never, is_brep, cad_reader<CadFormat::kBrep>, nullptr, "+z", nullptr, false,
+       "Open CASCADE", kOpenCascadeBuilt},
 #ifdef UMBRA_HAVE_ASSIMP
       // Told by name alone (the importers' own tests would open every file
       // of a folder): after umbra's own readers, whose errors are located.
-      {"assimp", "Assimp's formats", assimp_extensions(), never, never, read_assimp, nullptr, "+y", assimp_up_axis, false},
+      {"assimp", "Assimp's formats", assimp_extensions(), never, never, read_assimp, nullptr, "+y", assimp_up_axis, false,
+       "Assimp's importers"},
 #endif
   };
   return formats;

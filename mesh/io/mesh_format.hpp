@@ -41,6 +41,10 @@ struct MeshFormat {
   // mesh fuzzer covers; not Assimp's importers nor Open CASCADE, whose
   // crashes are theirs and cost only their file in a folder run.
   bool fuzzed = true;
+  // What reads it, as `umbra formats` says (at most 24 characters).
+  std::string_view reader = "umbra";
+  // Whether this build reads it (its library found when it was built).
+  bool built = true;
 };
 
 // Every format, in the order messages list them and the fuzzers number them.

@@ -61,6 +61,19 @@ TEST_F(AssimpFiles, TheCheckNamesTheImporter) {
   EXPECT_NE(r.out.find("components         1 (1 closed)"), std::string::npos) << r.out;
 }
 
+class FormatsCommand : public test::CommandTest {};
+
+// umbra formats prints the formats' table, and docs/check.md shows exactly that.
+TEST_F(FormatsCommand, TheDocsShowWhatItPrints) {
+  const CommandResult r = run("formats");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.substr(0, r.out.find('\n')), "format            extensions                    told by  read by");
+  EXPECT_NE(r.out.find("\nSTEP              .step .stp                    content  Open CASCADE\n"), std::string::npos) << r.out;
+  const std::string docs = read(std::string(UMBRA_SOURCE_DIR) + "/docs/check.md");
+  EXPECT_NE(docs.find("```\n" + r.out + "```\n"), std::string::npos) << "docs/check.md's copy of umbra formats differs from:\n" << r.out;
+  for (const std::string line : {"umbra formats", "umbra formats --help"}) EXPECT_EQ(run(line.substr(6)).status, 0) << line;
+}
+
 class CadFiles : public test::CommandTest {};
 
 // A STEP solid checks closed, so the check exits 0, under any name (told
