@@ -28,9 +28,11 @@
 #include <TopoDS_Shape.hxx>
 
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "mesh/io/cad_module.hpp"
 
