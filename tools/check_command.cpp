@@ -44,8 +44,8 @@ const std::string kCheckUsage = usage_text(
        umbra check PATH... --repair OUTDIR
        umbra check - [options]   (a mesh on standard input)
 
-Checks that each mesh ({mesh formats}, told by its
-content) is a closed, consistently oriented 2-manifold without
+Checks that each mesh (in any format umbra formats lists) is a closed,
+consistently oriented 2-manifold without
 self-intersections, which is what casting a shadow from silhouette edges
 needs, and says exactly why not: border edges and holes, non-manifold
 edges and vertices, duplicate and degenerate faces, faces to flip,
@@ -54,8 +54,8 @@ the file (counting from 0) and line. Exporters' quirks that are read anyway
 (docs/check.md) come as warnings.
 
 A PATH is a mesh file or a folder, searched recursively for mesh files (by
-content, or by a {mesh extensions} name), each
-folder's files in sorted order. Reports come in the order of the list, each
+content, or by a format's extension: umbra formats), each folder's files in
+sorted order. Reports come in the order of the list, each
 as soon as it and those before it are done; with more than one mesh, a
 summary line follows on stderr.
 

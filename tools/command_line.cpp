@@ -103,10 +103,8 @@ std::string usage_text(std::string text) {
   replace_all(text, "{gl platforms}\n", value_rows(platforms));
   replace_all(text, "{bench methods}", wrapped(bench_sweeps(), 0, 0, kWidth));
   replace_all(text, "{interactive methods}", word_list(interactive));
-  replace_all(text, "{mesh formats}", mesh_format_names());
   replace_all(text, "{picture extensions}", picture_extensions());
   replace_all(text, "{animation formats}", animation_extensions());
-  replace_all(text, "{mesh extensions}", mesh_format_extensions());
   replace_all(text, "{repair extensions}", mesh_format_extensions(true));
   replace_all(text, "{max hole edges}", std::to_string(kDefaultMaxHoleEdges));
   return text;

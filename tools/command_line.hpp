@@ -53,9 +53,10 @@ class CommandOptions {
   std::vector<std::string> value_names_;  // to say "--size needs a value"
 };
 
-// A command's --help text with the lists that live in tables filled in:
-// {mesh formats} ("OBJ, OFF, PLY, STL, glTF or 3MF"), {mesh extensions},
-// {repair extensions}, {interactive methods} ("auto, zfail, ... or planar")
+// A command's --help text with the lists that live in tables filled in
+// (the mesh formats are umbra formats' own table):
+// {repair extensions}, {picture extensions}, {animation formats},
+// {interactive methods} ("auto, zfail, ... or planar")
 // and {methods} (each method's name and help, one wrapped entry each, in
 // --method's column of umbra render --help).
 std::string usage_text(std::string text);

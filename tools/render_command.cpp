@@ -45,10 +45,10 @@ Draws a picture with exact hard shadows from stencil shadow volumes (Crow
 1977; Heidmann 1991), headless (EGL or OSMesa), and writes OUT.png. The
 sources cited here are listed in docs/references.md.
 
-A mesh file ({mesh formats}, told by its content) is staged
-on its own: stood on a floor in its up axis, lit by one light above and to
-the left, seen from a raised three-quarter view that frames it and its
-shadow. --explain prints that scene as text to save and edit.
+A mesh file (in any format umbra formats lists) is staged on its own: stood
+on a floor in its up axis, lit by one light above and to the left, seen from
+a raised three-quarter view that frames it and its shadow. --explain prints
+that scene as text to save and edit.
 
 Several files, or a folder (searched for mesh files by their content, as
 umbra check searches it), render to one picture each in OUTDIR: a file found
@@ -358,7 +358,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   const auto batch = [&](std::optional<ViewSetRequest> views) {
     return BatchRenderOptions{scenes, o.output, o.settings, o.staging, o.gl, o.antialias, o.antialias_all, o.show_volumes,
                               o.size_given, jobs.value_or(std::max(1u, std::thread::hardware_concurrency())), shard, sheet,
-                              o.any_texture_path, timeout_s, skip_existing, json, std::move(views)};
+                              o.any_texture_path, timeout_s, skip_existing, json, std::move(views), std::nullopt};
   };
   const bool turntable = views.turning != Turning::kNone;
   if (orbit && !turntable) throw UsageError("--orbit says what --turntable turns: give --turntable N");
@@ -367,7 +367,8 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   const bool folder_named = !o.output.empty() && (o.output.back() == '/' || std::filesystem::is_directory(o.output, ec));
   if (format && !(several && turntable))
     throw UsageError("--format says which animation --turntable makes of each of several files; -o names one file's");
-  const std::optional<AnimationFormat> animation = format ? format : folder_named ? std::nullopt : animation_format_of(o.output);
+  std::optional<AnimationFormat> animation = format;
+  if (!animation && !folder_named) animation = animation_format_of(o.output);
   if (fps && !animation) throw UsageError("--fps is an animation's pace: name one with -o (" + animation_extensions() + ")");
   if (!view_options.empty()) {
     const std::string& named = view_options.front();

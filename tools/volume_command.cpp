@@ -26,7 +26,7 @@ const std::string kVolumeUsage = usage_text(
 
 Writes the shadow volumes of one light as an OBJ file, to look at in any mesh
 viewer: one group per caster, named for its kind and line, and faces
-oriented outward. A mesh file ({mesh formats}) is
+oriented outward. A mesh file (umbra formats lists the formats) is
 staged as umbra render stages it, and only its own volume is written (not
 the floor's). A volume reaches infinity; here its vertices at infinity
 (P - L, 0) are put at P + D (P - L) / |P - L|, a finite distance D beyond

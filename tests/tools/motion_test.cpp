@@ -186,7 +186,9 @@ TEST_F(Motion, AnOrbitingLightSweepsTheExactShadowOfAModelThatHoldsStill) {
     const std::string stem = "00" + std::to_string(i);
     EXPECT_TRUE(read_png(path("out/" + stem + ".object.png")).pixels == outline.pixels);
     const Image mask = read_png(path("out/" + stem + ".shadow.png"));
-    if (i > 0) EXPECT_FALSE(mask.pixels == shadow.pixels);
+    if (i > 0) {
+      EXPECT_FALSE(mask.pixels == shadow.pixels);
+    }
     // Turned by 90 degrees i times about the z axis: (x, y) -> (-y, x).
     glm::dvec3 turned = light;
     for (int k = 0; k < i; ++k) turned = {-turned.y, turned.x, turned.z};
