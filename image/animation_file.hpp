@@ -58,7 +58,8 @@ std::unique_ptr<AnimationWriter> open_animation(AnimationFormat format, const st
 
 // Why a format cannot be written by this build, or "" where it can: "an MP4
 // video (H.264) needs libavcodec with libx264, which this umbra was built
-// without: ./build.sh installs libavcodec-dev libx264-dev and builds it in".
+// without: ./build.sh installs libavcodec-dev libavformat-dev libswscale-dev and
+// builds it in".
 std::string animation_unavailable(AnimationFormat format);
 
 }  // namespace umbra
