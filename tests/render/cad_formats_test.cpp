@@ -31,7 +31,9 @@ TEST_P(CadFormats, TessellatedAndShadowedAsExactRaysShadowIt) {
   const Scene scene = parse_scene_or_mesh_file(path);
   ASSERT_EQ(scene.meshes.size(), 1u);
   const SilhouetteComponents& c = scene.meshes[0].components;
-  if (GetParam().solid) EXPECT_EQ(c.silhouette_components, c.components);
+  if (GetParam().solid) {
+    EXPECT_EQ(c.silhouette_components, c.components);
+  }
   test::expect_masks_match_reference(scene, 48, 48, 64);
 }
 
