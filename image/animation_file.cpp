@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "image/animation_writers.hpp"
+#include "mesh/file_extension.hpp"
 
 namespace umbra {
 
@@ -30,8 +31,7 @@ const AnimationFormatRow kAnimationFormats[3] = {
 const AnimationFormatRow& animation_row(AnimationFormat format) { return kAnimationFormats[size_t(format)]; }
 
 std::optional<AnimationFormat> animation_format_of(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  const std::string extension = lowercase_extension(path);
   for (const AnimationFormatRow& row : kAnimationFormats)
     if (extension == row.extension) return row.format;
   return std::nullopt;

@@ -13,6 +13,7 @@
 #include <png.h>
 
 #include "image/partial_file.hpp"
+#include "mesh/file_extension.hpp"
 #include "mesh/word_list.hpp"
 
 namespace umbra {
@@ -99,8 +100,7 @@ std::optional<PictureFormat> picture_format_of(const std::string& path) {
   std::error_code ec;
   const std::filesystem::file_status there = std::filesystem::status(path, ec);
   if (path == "-" || std::filesystem::is_fifo(there) || std::filesystem::is_character_file(there)) return PictureFormat::kPng;
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  const std::string extension = lowercase_extension(path);
   for (const PictureFormatRow& row : kPictureFormats)
     for (const char* known : row.extensions)
       if (known && extension == known) return row.format;

@@ -19,6 +19,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "mesh/file_extension.hpp"
 #include "mesh/input_error.hpp"
 #include "mesh/check/mesh_check.hpp"
 #include "mesh/io/mesh_file.hpp"
@@ -198,8 +199,7 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
   if (o.merge_tolerance && !o.repair_output) throw UsageError("--merge-tolerance says which points --repair merges: give --repair OUT");
   if (o.report) {
     if (o.repair_output) throw UsageError("--report shows what the check finds; check the repaired file for its report");
-    std::string extension = std::filesystem::path(*o.report).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    const std::string extension = lowercase_extension(*o.report);
     if (extension != ".html" && extension != ".htm") throw UsageError("--report writes a web page: name a .html file, got \"" + *o.report + "\"");
     for (const std::string& mesh : o.meshes) require_other_than_input("--report", *o.report, mesh);
     if (o.no_pictures && o.picture) throw UsageError("--no-pictures leaves out the pictures --picture asks for: give one");

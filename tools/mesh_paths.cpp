@@ -9,6 +9,7 @@
 #include <map>
 #include <set>
 
+#include "mesh/file_extension.hpp"
 #include "mesh/io/mapped_file.hpp"
 #include "mesh/io/mesh_format.hpp"
 #include "tools/command_line.hpp"
@@ -91,8 +92,7 @@ MeshPaths expand_mesh_paths(const std::vector<std::string>& arguments) {
 std::string unsupported_summary(const std::vector<std::string>& unsupported) {
   std::map<std::string, size_t> by_extension;
   for (const std::string& path : unsupported) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    const std::string extension = lowercase_extension(path);
     ++by_extension[extension.empty() ? "no extension" : extension];
   }
   std::vector<std::pair<std::string, size_t>> counts(by_extension.begin(), by_extension.end());

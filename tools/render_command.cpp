@@ -12,6 +12,7 @@
 #include <optional>
 #include <thread>
 
+#include "mesh/file_extension.hpp"
 #include "scene/scene_checks.hpp"
 #include "scene/scene_parser.hpp"
 #include "scene/staged_scene.hpp"
@@ -233,8 +234,7 @@ namespace {
 
 // Whether `path` ends as a picture's name does (.png, .jpg, ...), case aside.
 bool is_picture_name(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  const std::string extension = lowercase_extension(path);
   for (const char* picture : {".png", ".jpg", ".jpeg", ".webp", ".bmp", ".tif", ".tiff"})
     if (extension == picture) return true;
   return false;

@@ -525,8 +525,12 @@ int run_view_command(const std::vector<std::string>& argv) {
       stop_recording();
     }
     try {
-      while (recording && recording->frames() < (options.frames > 0 ? size_t(frame) : recording->due(now)))
-        recording->add(scene.renderer->read_image());
+      // One read-back, however many frames the clock asks for (a view that stands still is added again).
+      const size_t due = !recording ? 0 : options.frames > 0 ? size_t(frame) : recording->due(now);
+      if (recording && recording->frames() < due) {
+        const Image shown = scene.renderer->read_image();
+        while (recording->frames() < due) recording->add(shown);
+      }
     } catch (const std::exception& e) {
       std::cerr << "umbra view: the recording failed: " << e.what() << "\n";
       recording.reset();

@@ -11,6 +11,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "mesh/file_extension.hpp"
 #include "image/partial_file.hpp"
 #include "scene/scene_checks.hpp"
 #include "scene/scene_parser.hpp"
@@ -81,8 +82,7 @@ VolumeOptions parse_volume_options(const std::vector<std::string>& argv) {
   require_other_than_input("-o", o.output, o.scene_path);
   // An OBJ file under another format's name (x.png, x.stl) would mislead
   // whatever opens it by its name.
-  std::string extension = std::filesystem::path(o.output).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string extension = lowercase_extension(o.output);
   struct stat there {};
   const bool device = ::stat(o.output.c_str(), &there) == 0 && (S_ISFIFO(there.st_mode) || S_ISCHR(there.st_mode));
   if (extension != ".obj" && !device)

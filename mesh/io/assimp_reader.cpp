@@ -23,6 +23,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "mesh/file_extension.hpp"
 #include "mesh/input_error.hpp"
 #include "mesh/io/mesh_readers.hpp"
 #include "mesh/io/texture_file.hpp"
@@ -74,14 +75,10 @@ class ConfinedFiles : public Assimp::IOSystem {
 std::filesystem::path file_in_any_case(const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::exists(path, ec)) return path;
-  const auto lower = [](std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return s;
-  };
-  const std::string name = lower(path.filename().string());
+  const std::string name = lowercase(path.filename().string());
   for (std::filesystem::directory_iterator it(path.parent_path().empty() ? "." : path.parent_path(), ec), end; !ec && it != end;
        it.increment(ec))
-    if (lower(it->path().filename().string()) == name) return path.parent_path() / it->path().filename();
+    if (lowercase(it->path().filename().string()) == name) return path.parent_path() / it->path().filename();
   return path;
 }
 
@@ -204,8 +201,7 @@ void add_instances(const aiScene& scene, PolygonSoup& soup, bool textured) {
 // extension (glTF's two importers both claim .gltf), the first whose own
 // test of the content takes it.
 std::string importer_of(Assimp::Importer& importer, const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  std::string extension = lowercase_extension(path);
   if (!extension.empty()) extension.erase(0, 1);
   std::string name = "importer";
   for (size_t i = 0; i < importer.GetImporterCount(); ++i) {
@@ -236,9 +232,8 @@ std::vector<std::string_view> assimp_extensions() {
     std::vector<std::string> kept;
     for (size_t start = 0; start < list.size();) {
       const size_t end = std::min(list.find(';', start), list.size());
-      std::string extension = list.substr(start, end - start);
+      std::string extension = lowercase(list.substr(start, end - start));
       if (extension.rfind("*.", 0) == 0) extension.erase(0, 1);
-      std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
       if (extension.size() > 1 && std::find(left_out.begin(), left_out.end(), extension) == left_out.end()) kept.push_back(extension);
       start = end + 1;
     }
@@ -248,8 +243,7 @@ std::vector<std::string_view> assimp_extensions() {
 }
 
 std::string assimp_up_axis(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  const std::string extension = lowercase_extension(path);
   for (const char* z_up : {".3ds", ".ase", ".ask", ".blend", ".dxf", ".ifc", ".ifczip", ".md2", ".md3", ".mdc", ".mdl", ".bsp", ".pk3"})
     if (extension == z_up) return "+z";
   return "+y";

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 
+#include "mesh/file_extension.hpp"
 #include "mesh/input_error.hpp"
 #include "mesh/io/mapped_file.hpp"
 #include "mesh/io/mesh_readers.hpp"
@@ -277,8 +278,7 @@ std::string up_axis_of_file(const std::string& path) {
 }
 
 std::string mesh_format_of(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = lowercase_extension(path);
   for (const MeshFormat& f : mesh_formats())
     for (const std::string_view e : f.extensions)
       if (e == ext) return std::string(f.id);
