@@ -9,12 +9,15 @@
 #                         UndefinedBehaviorSanitizer and runs the whole suite
 #   ./build.sh fuzz [SEC] builds the libFuzzer targets with clang into
 #                         build-fuzz/ and runs each for SEC seconds (default 60)
+#   ./build.sh fuzz-libraries [SEC]   the same for the fuzzer that reaches
+#                         Assimp's and Open CASCADE's readers too (not run by
+#                         CI: their bugs are theirs)
 #   ./build.sh        only builds
 set -euo pipefail
 cd "$(dirname "$0")"
 case "${1:-}" in  # before anything is installed
-  demo|test|sanitize|fuzz|"") ;;
-  *) echo "usage: ./build.sh [demo|test|sanitize|fuzz [SECONDS]]" >&2; exit 2 ;;
+  demo|test|sanitize|fuzz|fuzz-libraries|"") ;;
+  *) echo "usage: ./build.sh [demo|test|sanitize|fuzz [SECONDS]|fuzz-libraries [SECONDS]]" >&2; exit 2 ;;
 esac
 
 # What building umbra and rendering with it need: all that ./build.sh demo
@@ -80,7 +83,7 @@ test_packages=(
   ffmpeg                             # ffprobe reads back the MP4 videos umbra writes (tested)
 )
 case "${1:-}" in
-  test|sanitize|fuzz) packages+=("${test_packages[@]}" "${motion_packages[@]}" "${format_packages[@]}") ;;
+  test|sanitize|fuzz|fuzz-libraries) packages+=("${test_packages[@]}" "${motion_packages[@]}" "${format_packages[@]}") ;;
   "") packages+=("${motion_packages[@]}" "${format_packages[@]}") ;;
 esac
 # Whether this command builds the Python module: not the demo, which renders
@@ -133,24 +136,36 @@ case "${1:-}" in
     cd build-sanitize && ctest --output-on-failure -j"$(nproc)" --label-exclude osmesa
     exit
     ;;
-  fuzz)
+  fuzz|fuzz-libraries)
     seconds="${2:-60}"
     CC=clang CXX=clang++ configure build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DUMBRA_FUZZERS=ON -DUMBRA_PYTHON=OFF \
       -DUMBRA_BUILD_TESTS=OFF -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link $sanitizers" -DCMAKE_C_FLAGS="$sanitizers"
-    cmake --build build-fuzz -j"$(nproc)" --target scene_fuzzer mesh_fuzzer cameras_fuzzer mesh_seed
-    # Seed corpus: the bundled scenes; transforms.json files (fuzz/seeds/cameras/);
-    # and the bundled meshes and fuzz/seeds/mesh/
-    # (glTF, GLB, 3MF) behind their format byte (written by mesh_seed).
-    rm -rf build-fuzz/corpus && mkdir -p build-fuzz/corpus/scene build-fuzz/corpus/mesh build-fuzz/corpus/cameras build-fuzz/crashes
-    cp scenes/*.scene fuzz/regressions/scene/* build-fuzz/corpus/scene/ 2>/dev/null || true
-    cp fuzz/regressions/mesh/* build-fuzz/corpus/mesh/ 2>/dev/null || true
-    cp fuzz/seeds/cameras/* fuzz/regressions/cameras/* build-fuzz/corpus/cameras/ 2>/dev/null || true
-    build-fuzz/fuzz/mesh_seed build-fuzz/corpus/mesh scenes/meshes/* fuzz/seeds/mesh/*
-    for target in scene mesh cameras; do
+    rm -rf build-fuzz/corpus build-fuzz/crashes && mkdir -p build-fuzz/crashes
+    if [ "$1" = fuzz ]; then
+      targets=(scene mesh cameras)
+      cmake --build build-fuzz -j"$(nproc)" --target scene_fuzzer mesh_fuzzer cameras_fuzzer mesh_seed
+      # Seed corpus: the bundled scenes; transforms.json files (fuzz/seeds/cameras/);
+      # and the bundled meshes and fuzz/seeds/mesh/
+      # (glTF, GLB, 3MF) behind their format byte (written by mesh_seed).
+      mkdir -p build-fuzz/corpus/scene build-fuzz/corpus/mesh build-fuzz/corpus/cameras
+      cp scenes/*.scene fuzz/regressions/scene/* build-fuzz/corpus/scene/ 2>/dev/null || true
+      cp fuzz/regressions/mesh/* build-fuzz/corpus/mesh/ 2>/dev/null || true
+      cp fuzz/seeds/cameras/* fuzz/regressions/cameras/* build-fuzz/corpus/cameras/ 2>/dev/null || true
+      build-fuzz/fuzz/mesh_seed build-fuzz/corpus/mesh scenes/meshes/* fuzz/seeds/mesh/*
+    else
+      targets=(library)
+      cmake --build build-fuzz -j"$(nproc)" --target library_fuzzer mesh_seed
+      # Seeds: the small files of Assimp's test models and Open CASCADE's
+      # data (the inputs are cut at 8 KiB), and the library regressions.
+      mkdir -p build-fuzz/corpus/library
+      find /usr/share/assimp/models /usr/share/opencascade/data fuzz/regressions/library -type f -size -8k -print0 |
+        xargs -0 build-fuzz/fuzz/mesh_seed --every-reader build-fuzz/corpus/library
+    fi
+    for target in "${targets[@]}"; do
       echo "fuzzing the $target input for $seconds s"
       "build-fuzz/fuzz/${target}_fuzzer" -max_total_time="$seconds" -max_len=8192 -timeout=20 -rss_limit_mb=4096 \
         -print_final_stats=1 -artifact_prefix="build-fuzz/crashes/$target-" "build-fuzz/corpus/$target" 2>&1 |
-        grep -E "^(Done|stat::number|stat::new|==|SUMMARY)|ERROR|Test unit written" || true
+        grep -E "^(Done|stat::number|stat::new|==|SUMMARY)|ERROR|Test unit written|terminate called|what\(\)|runtime error" || true
       if compgen -G "build-fuzz/crashes/$target-*" > /dev/null; then
         echo "the $target fuzzer found a crash: build-fuzz/crashes/ (add it to fuzz/regressions/ once fixed)" >&2
         exit 1

@@ -1,6 +1,8 @@
 #pragma once
-// The mesh fuzzer's first byte: which format's name the rest of its input
-// is read under, numbered as mesh_formats() lists umbra's own readers.
+// The mesh fuzzers' first byte: which format's name the rest of their input
+// is read under. mesh_fuzzer numbers umbra's own readers as mesh_formats()
+// lists them; library_fuzzer numbers every extension of every format this
+// build reads, the libraries' too (Assimp picks its importer by the name).
 
 #include <cstdint>
 #include <optional>
@@ -8,10 +10,12 @@
 
 namespace umbra::fuzz {
 
-// A file name with the extension of the format numbered `byte` modulo the
-// number of formats, in a folder that does not exist.
-std::string mesh_format_name_of_byte(uint8_t byte);
-// The byte that names the format of `path`'s extension; none for another.
-std::optional<uint8_t> mesh_format_byte_of(const std::string& path);
+enum class Readers { kUmbras, kEvery };
+
+// A file name with the extension numbered `byte` modulo the number of
+// extensions, in a folder that does not exist.
+std::string mesh_format_name_of_byte(uint8_t byte, Readers readers = Readers::kUmbras);
+// The byte that names `path`'s extension; none for another.
+std::optional<uint8_t> mesh_format_byte_of(const std::string& path, Readers readers = Readers::kUmbras);
 
 }  // namespace umbra::fuzz

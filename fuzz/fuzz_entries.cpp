@@ -9,6 +9,7 @@
 #include "mesh/check/mesh_check.hpp"
 #include "mesh/io/mesh_file.hpp"
 #include "mesh/io/mesh_format.hpp"
+#include "mesh/io/mesh_readers.hpp"
 #include "scene/mesh_placement.hpp"
 #include "scene/scene_checks.hpp"
 #include "scene/staged_scene.hpp"
@@ -33,12 +34,11 @@ void scene_input(const uint8_t* data, size_t size) {
   }
 }
 
-void mesh_input(const uint8_t* data, size_t size) {
-  if (size == 0) return;
-  const std::string_view bytes(reinterpret_cast<const char*>(data) + 1, size - 1);
-  const std::string name = mesh_format_name_of_byte(data[0]);
-  // Content a library reads (a STEP header: Open CASCADE's) is not umbra's to fuzz.
-  if (const MeshFormat* format = mesh_format_by_id(detect_mesh_format(bytes, name)); format && !format->fuzzed) return;
+namespace {
+
+// The file read under `name`, the check's analysis, and the mesh's shadow
+// volume from a few fixed lights.
+void read_and_cast(std::string_view bytes, const std::string& name) {
   try {
     const PolygonSoup soup = parse_polygon_soup(bytes, name);
     CheckOptions options;
@@ -57,6 +57,25 @@ void mesh_input(const uint8_t* data, size_t size) {
     }
   } catch (const InputError&) {
   }
+}
+
+}  // namespace
+
+void mesh_input(const uint8_t* data, size_t size) {
+  if (size == 0) return;
+  const std::string_view bytes(reinterpret_cast<const char*>(data) + 1, size - 1);
+  const std::string name = mesh_format_name_of_byte(data[0]);
+  // Content a library reads (a STEP header: Open CASCADE's; glTF 1.0:
+  // Assimp's) is library_input's.
+  const std::string id = mesh_reader_of(bytes, name);
+  if (const MeshFormat* format = mesh_format_by_id(id); format && !format->fuzzed) return;
+  if (id == "gltf" && gltf_needs_assimp(bytes)) return;
+  read_and_cast(bytes, name);
+}
+
+void library_input(const uint8_t* data, size_t size) {
+  if (size == 0) return;
+  read_and_cast({reinterpret_cast<const char*>(data) + 1, size - 1}, mesh_format_name_of_byte(data[0], Readers::kEvery));
 }
 
 void cameras_input(const uint8_t* data, size_t size) {

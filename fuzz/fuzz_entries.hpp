@@ -21,7 +21,14 @@ void scene_input(const uint8_t* data, size_t size);
 // lights, which must have no boundary and only finite vertices (or true
 // directions at infinity): a volume that breaks either throws
 // std::logic_error, which the fuzzer reports as a crash.
+// Content that goes to a library's reader (Assimp, Open CASCADE) returns
+// at once: their bugs are theirs, and CI runs this fuzzer.
 void mesh_input(const uint8_t* data, size_t size);
+
+// The same through every reader this build has, Assimp's importers and Open
+// CASCADE's included, the first byte naming any extension of any format
+// (format_byte.hpp). Not run by CI (./build.sh fuzz-libraries).
+void library_input(const uint8_t* data, size_t size);
 
 // The bytes as a transforms.json (umbra render --cameras), its cameras for a
 // staged tetrahedron; each camera it accepts must give finite, unit pixel

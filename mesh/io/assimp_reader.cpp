@@ -19,6 +19,7 @@
 #include <assimp/scene.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <filesystem>
 #include <vector>
@@ -161,8 +162,15 @@ void add_instances(const aiScene& scene, PolygonSoup& soup, bool textured) {
       for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
         const aiVector3D& p = mesh.mVertices[v];
         const double x = p.x, y = p.y, z = p.z;
-        soup.points.push_back({m.a1 * x + m.a2 * y + m.a3 * z + m.a4, m.b1 * x + m.b2 * y + m.b3 * z + m.b4,
-                               m.c1 * x + m.c2 * y + m.c3 * z + m.c4});
+        const glm::dvec3 placed{m.a1 * x + m.a2 * y + m.a3 * z + m.a4, m.b1 * x + m.b2 * y + m.b3 * z + m.b4,
+                                m.c1 * x + m.c2 * y + m.c3 * z + m.c4};
+        // As umbra's own readers do: a coordinate that is not a number is the file's defect, named.
+        if (!std::isfinite(placed.x) || !std::isfinite(placed.y) || !std::isfinite(placed.z))
+          throw InputError({soup.path, 0, 0}, "mesh " + std::to_string(next.node->mMeshes[k]) + " vertex " + std::to_string(v) +
+                                                  " has a coordinate that is not a finite number" +
+                                                  (std::isfinite(x) && std::isfinite(y) && std::isfinite(z) ? " once placed by its node's transform" : ""),
+                            InputProblem::kMalformed);
+        soup.points.push_back(placed);
         if (colored) {
           const aiColor4D& c = mesh.mColors[0][v];
           soup.point_colors.push_back({std::clamp(c.r, 0.0f, 1.0f), std::clamp(c.g, 0.0f, 1.0f), std::clamp(c.b, 0.0f, 1.0f)});

@@ -92,7 +92,14 @@ PolygonSoup read_shape(std::string_view bytes, const std::string& path, CadForma
     std::istringstream in{std::string(bytes)};
     if (format == CadFormat::kBrep) {
       BRep_Builder builder;
-      BRepTools::Read(shape, in, builder);
+      // A stream that throws once it fails: past a broken file's end its
+      // reader loops for a number without end (a BREP found by library_fuzzer).
+      in.exceptions(std::ios::failbit | std::ios::badbit);
+      try {
+        BRepTools::Read(shape, in, builder);
+      } catch (const std::ios::failure&) {
+        throw fail("cannot read it: it ends before its shapes do, or holds text where a number belongs");
+      }
     } else {
       // IGES is read from its file (Open CASCADE reads it from no stream).
       std::unique_ptr<XSControl_Reader> reader;
@@ -115,6 +122,7 @@ PolygonSoup read_shape(std::string_view bytes, const std::string& path, CadForma
     BRepBndLib::Add(shape, box);
     if (box.IsVoid()) throw fail("finds no surface in it");
     const double diagonal = std::sqrt(box.SquareExtent());
+    if (!std::isfinite(diagonal)) throw fail("finds a shape whose size is not a finite number");
     BRepMesh_IncrementalMesh mesh(shape, kRelativeDeflection * diagonal, false, kAngularDeflection, true);
   } catch (const Standard_Failure& e) {
     throw fail(std::string("cannot read it: ") + e.GetMessageString());

@@ -607,6 +607,16 @@ bool is_gltf_1(std::string_view bytes, bool binary, const nlohmann::json& json) 
   return false;
 }
 
+// glTF 1.0 and Draco-compressed meshes, which tinygltf does not read, are Assimp's glTF importers'.
+bool needs_assimp(std::string_view bytes, bool binary, const nlohmann::json& json) {
+#ifdef UMBRA_HAVE_ASSIMP
+  return is_gltf_1(bytes, binary, json) || bytes.find("KHR_draco_mesh_compression") != std::string_view::npos;
+#else
+  (void)bytes, (void)binary, (void)json;
+  return false;
+#endif
+}
+
 // What tinygltf would read wrongly or not name: glTF 1.0, compressed meshes,
 // a mesh whose "primitives" is not an array (tinygltf reads none, silently).
 void require_gltf_2(std::string_view bytes, bool binary, const nlohmann::json& json, const std::string& path) {
@@ -629,6 +639,12 @@ void require_gltf_2(std::string_view bytes, bool binary, const nlohmann::json& j
 
 }  // namespace
 
+bool gltf_needs_assimp(std::string_view bytes) {
+  const bool binary = bytes.substr(0, 4) == "glTF";
+  const std::string_view text = json_of(bytes, binary);
+  return needs_assimp(bytes, binary, nlohmann::json::parse(text.begin(), text.end(), nullptr, false));
+}
+
 PolygonSoup read_gltf(std::string_view bytes, const std::string& path, const TextureMaps& maps) {
   tinygltf::TinyGLTF loader;
   EncodedImages encoded;
@@ -648,9 +664,7 @@ PolygonSoup read_gltf(std::string_view bytes, const std::string& path, const Tex
   const std::string_view text = json_of(bytes, binary);
   const nlohmann::json json = nlohmann::json::parse(text.begin(), text.end(), nullptr, false);
 #ifdef UMBRA_HAVE_ASSIMP
-  // glTF 1.0 and Draco-compressed meshes, which tinygltf does not read, are Assimp's glTF importers'.
-  if (is_gltf_1(bytes, binary, json) || bytes.find("KHR_draco_mesh_compression") != std::string_view::npos)
-    return read_assimp(bytes, path, maps);
+  if (needs_assimp(bytes, binary, json)) return read_assimp(bytes, path, maps);
 #endif
   require_gltf_2(bytes, binary, json, path);
   const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &error, &warning, reinterpret_cast<const unsigned char*>(bytes.data()),

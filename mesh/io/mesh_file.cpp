@@ -9,18 +9,32 @@
 
 namespace umbra {
 
-PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path, const TextureMaps& maps) {
-  // A UTF-8 byte-order mark, as some Windows tools write before OBJ, OFF or
-  // STL text, is no part of the content (columns are counted after it).
+namespace {
+
+// A UTF-8 byte-order mark, as some Windows tools write before OBJ, OFF or
+// STL text, is no part of the content (columns are counted after it).
+std::string_view without_byte_order_mark(std::string_view bytes) {
   if (bytes.substr(0, 3) == "\xef\xbb\xbf") bytes.remove_prefix(3);
-  if (const std::string blank = blank_content(bytes); !blank.empty()) throw InputError({path, 0, 0}, blank, InputProblem::kEmpty);
+  return bytes;
+}
+
+}  // namespace
+
+std::string mesh_reader_of(std::string_view bytes, const std::string& path) {
+  bytes = without_byte_order_mark(bytes);
   // The content decides; the extension only names the reader whose located
   // errors best explain a file too broken for its content to say.
-  std::string format = detect_mesh_format(bytes, path);
+  const std::string format = detect_mesh_format(bytes, path);
   // Not OBJ, though: any text would read as an OBJ without faces.
   // Nor for what is plainly some other format.
-  if (format.empty() && mesh_format_of(path) != "obj" && other_known_format(bytes).empty()) format = mesh_format_of(path);
-  const MeshFormat* reader = mesh_format_by_id(format);
+  if (format.empty() && mesh_format_of(path) != "obj" && other_known_format(bytes).empty()) return mesh_format_of(path);
+  return format;
+}
+
+PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path, const TextureMaps& maps) {
+  bytes = without_byte_order_mark(bytes);
+  if (const std::string blank = blank_content(bytes); !blank.empty()) throw InputError({path, 0, 0}, blank, InputProblem::kEmpty);
+  const MeshFormat* reader = mesh_format_by_id(mesh_reader_of(bytes, path));
   if (!reader)
     throw InputError({path, 0, 0}, "not a mesh file (" + mesh_format_names() + "): " + describe_content(bytes),
                      InputProblem::kUnsupportedFormat);

@@ -22,6 +22,9 @@ PolygonSoup read_stl(std::string_view bytes, const std::string& path);  // ascii
 PolygonSoup read_ply(std::string_view bytes, const std::string& path);  // ascii or binary
 // .gltf or .glb; external buffers (and images) beside `path`
 PolygonSoup read_gltf(std::string_view bytes, const std::string& path, const TextureMaps& maps = {});
+// Whether read_gltf hands these bytes to Assimp's glTF importers (glTF 1.0,
+// Draco-compressed meshes), in a build with Assimp.
+bool gltf_needs_assimp(std::string_view bytes);
 PolygonSoup read_3mf(std::string_view bytes, const std::string& path);
 // CAD exchange files through Open CASCADE, tessellated, in the module
 // umbra-cad.so opened on first use (cad_module.hpp; built with Open

@@ -78,5 +78,21 @@ TEST(FuzzRegressions, MeshInputsReturnNormally) {
   for (const auto& bytes : inputs) fuzz::mesh_input(bytes.data(), bytes.size());
 }
 
+// Stored as files under their own name: library_fuzzer's numbering of
+// extensions depends on the libraries a build has.
+TEST(FuzzRegressions, LibraryInputsReturnNormally) {
+  const auto inputs = files_in(kSource / "fuzz/regressions/library");
+  ASSERT_FALSE(inputs.empty());
+  for (const fs::path& p : inputs) {
+    SCOPED_TRACE(p.string());
+    const std::optional<uint8_t> byte = fuzz::mesh_format_byte_of(p.string(), fuzz::Readers::kEvery);
+    if (!byte) continue;  // a format this build does not read
+    EXPECT_EQ(fs::path(fuzz::mesh_format_name_of_byte(*byte, fuzz::Readers::kEvery)).extension(), p.extension());
+    std::vector<uint8_t> bytes = bytes_of(p);
+    bytes.insert(bytes.begin(), *byte);
+    fuzz::library_input(bytes.data(), bytes.size());
+  }
+}
+
 }  // namespace
 }  // namespace umbra

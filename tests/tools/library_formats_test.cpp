@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "tests/tools/command_fixture.hpp"
 
@@ -61,6 +63,24 @@ TEST_F(AssimpFiles, TheCheckNamesTheImporter) {
   EXPECT_NE(r.out.find("components         1 (1 closed)"), std::string::npos) << r.out;
 }
 
+// A coordinate that is not a number is the file's defect, named as umbra's
+// own readers name it, whether the file holds it or its frames' transforms
+// overflow to it; and no picture is written.
+TEST_F(AssimpFiles, ACoordinateThatIsNoNumberIsNamed) {
+  const std::string frame = "  FrameTransformMatrix { 1.0e30, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0;; }\n";
+  const std::string mesh = "  Mesh { 3; 0.0; 0.0; 0.0;, X; 0.0; 0.0;, 0.0; 1.0; 0.0;; 1; 3; 0, 1, 2;; }\n";
+  const auto with_x = [&](const std::string& x) { return std::string(mesh).replace(mesh.find('X'), 1, x); };
+  const std::string held = write("held.x", "xof 0303txt 0032\nFrame Root {\n" + with_x("nan") + "}\n");
+  const std::string placed = write("placed.x", "xof 0303txt 0032\nFrame Root {\n" + frame + "Frame Child {\n" + frame + with_x("1.0") + "}\n}\n");
+  CommandResult r = run("check " + held);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, held + ": mesh 0 vertex 1 has a coordinate that is not a finite number\n");
+  r = run("render " + placed + " --size 32x32 -o " + path("placed.png"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, placed + ": mesh 0 vertex 0 has a coordinate that is not a finite number once placed by its node's transform\n");
+  EXPECT_FALSE(fs::exists(path("placed.png")));
+}
+
 class FormatsCommand : public test::CommandTest {};
 
 // umbra formats prints the formats' table, and docs/check.md shows exactly that.
@@ -97,6 +117,23 @@ TEST_F(CadFiles, AStepSolidChecksClosedUnderAnyName) {
     const CommandResult r = run("check " + ifc);
     EXPECT_EQ(r.out.substr(0, r.out.find(',')), ifc + ": read through Assimp's Industry Foundation Classes (IFC) Importer");
   }
+}
+
+// A BREP cut short is refused saying so, and Open CASCADE prints nothing
+// (it found "no shape", printing "Not a TShape table"; another broken BREP
+// kept its reader looking for a number past the end without end:
+// fuzz/regressions/library/).
+TEST_F(CadFiles, ABrepCutShortIsRefused) {
+  const std::string brep = "/usr/share/opencascade/data/occ/MODERN_Table_1.brep";
+  if (!fs::exists(brep)) GTEST_SKIP() << "needs Debian's occt-misc (build.sh installs it)";
+  std::ifstream in(brep, std::ios::binary);
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const std::string cut = path("cut.brep");
+  std::ofstream(cut, std::ios::binary) << text.substr(0, text.size() / 2);
+  const CommandResult r = run("check " + cut);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(r.err, cut + ": Open CASCADE's BREP reader cannot read it: it ends before its shapes do, or holds text where a number belongs\n");
 }
 
 }  // namespace
