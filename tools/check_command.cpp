@@ -85,11 +85,12 @@ options:
                     OUT and say what changed and what is still wrong. Never
                     writes MESH. An .obj keeps the materials, texture
                     coordinates, normals and colours, its library and maps
-                    beside it (STEM.mtl, STEM.NAME); a .ply keeps the
-                    colours. With several meshes or a folder, OUT is a
-                    folder: each mesh's copy goes where umbra render puts
-                    a folder's pictures, in its own format (glTF and 3MF
-                    as NAME.obj)
+                    beside it (STEM.mtl, STEM.NAME); a .3mf keeps a
+                    3MF's objects, build items, transforms, unit and
+                    colours; a .ply keeps the colours. With several meshes
+                    or a folder, OUT is a folder: each mesh's copy goes
+                    where umbra render puts a folder's pictures, in its own
+                    format (glTF and the rest as NAME.obj)
   --max-hole-edges N
                     (with --repair) fill only holes of at most N edges
                     (default {max hole edges}; 0 fills none): a larger one is

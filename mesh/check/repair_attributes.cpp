@@ -136,7 +136,9 @@ TriangleFile with_soup_attributes(const PolygonSoup& soup, const std::vector<glm
   TriangleFile file;
   file.points = std::move(points);
   file.triangles = std::move(triangles);
-  if (soup.materials.empty() && soup.corner_uvs.empty() && soup.point_colors.empty() && soup.corner_normals.empty()) return file;
+  file.length_unit = soup.length_unit;
+  if (soup.materials.empty() && soup.corner_uvs.empty() && soup.point_colors.empty() && soup.corner_normals.empty() && soup.parts.empty())
+    return file;
 
   const CornersByPosition corners(soup, placed);
   enum class Found : uint8_t { kOnAPolygon, kCutFromOne, kNot };
@@ -173,17 +175,25 @@ TriangleFile with_soup_attributes(const PolygonSoup& soup, const std::vector<glm
         for (size_t k = 0; k < 3; ++k) blends[t][k] = blend_of_point[file.triangles[t][k]];
   }
 
+  // Each triangle's polygon's value of `of_polygon` (a material, a part);
+  // a patch takes the one most of its corners' sources have.
+  const auto per_triangle = [&](const std::vector<int>& of_polygon) {
+    const auto value = [&](size_t p) { return p < of_polygon.size() ? of_polygon[p] : -1; };
+    std::vector<int> values(file.triangles.size());
+    for (size_t t = 0; t < file.triangles.size(); ++t) {
+      std::array<int, 3> source;
+      for (size_t k = 0; k < 3; ++k) source[k] = blends[t][k].found() ? value(corners.polygon_of(blends[t][k].corners[0])) : -1;
+      values[t] = polygon[t] != kNone ? value(polygon[t]) : source[1] == source[2] ? source[1] : source[0];
+    }
+    return values;
+  };
   if (!soup.materials.empty()) {
     file.materials = soup.materials;
-    file.triangle_materials.resize(file.triangles.size());
-    for (size_t t = 0; t < file.triangles.size(); ++t) {
-      // A patch takes the material most of its corners' sources have.
-      std::array<int, 3> material;
-      for (size_t k = 0; k < 3; ++k)
-        material[k] = blends[t][k].found() ? soup.polygon_material(corners.polygon_of(blends[t][k].corners[0])) : -1;
-      file.triangle_materials[t] = polygon[t] != kNone ? soup.polygon_material(polygon[t])
-                                   : material[1] == material[2] ? material[1] : material[0];
-    }
+    file.triangle_materials = per_triangle(soup.polygon_materials);
+  }
+  if (!soup.parts.empty()) {
+    file.parts = soup.parts;
+    file.triangle_parts = per_triangle(soup.polygon_parts);
   }
   if (!soup.corner_uvs.empty()) {
     file.corner_uvs.resize(3 * file.triangles.size());

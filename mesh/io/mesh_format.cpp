@@ -200,7 +200,7 @@ const std::vector<MeshFormat>& mesh_formats() {
       {"gltf", "glTF", {".gltf", ".glb"}, [](std::string_view b) { return starts_with(b, "glTF"); }, is_gltf_json, read_gltf,
        nullptr, "+y", nullptr, true, "tinygltf (1.0: Assimp)"},
       {"3mf", "3MF", {".3mf"}, [](std::string_view b) { return is_zip(b) && has_model_part(b); }, never, without_maps<read_3mf>,
-       nullptr, "+z", nullptr, true, "lib3mf"},
+       write_3mf_file, "+z", nullptr, true, "lib3mf"},
       // CAD exchange files, through Open CASCADE; Z up, as CAD tools model.
       {"step", "STEP", {".step", ".stp"}, is_step, never, cad_reader<CadFormat::kStep>, nullptr, "+z", nullptr, false,
        "Open CASCADE", kOpenCascadeBuilt},

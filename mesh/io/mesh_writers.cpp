@@ -50,16 +50,6 @@ void write_bytes(const std::string& bytes, const std::string& path, const std::s
   if (!out) throw InputError({path, 0, 0}, std::string("cannot write the repaired mesh: ") + std::strerror(errno));
 }
 
-// What a format without them leaves out of `mesh`, a phrase each.
-std::vector<std::string> unkept(const TriangleFile& mesh, bool materials, bool uvs, bool colours, bool normals) {
-  std::vector<std::string> dropped;
-  if (!materials && !mesh.materials.empty()) dropped.push_back("materials");
-  if (!uvs && !mesh.corner_uvs.empty()) dropped.push_back("texture coordinates");
-  if (!colours && !mesh.point_colors.empty()) dropped.push_back("vertex colours");
-  if (!normals && !mesh.corner_normals.empty()) dropped.push_back("shading normals");
-  return dropped;
-}
-
 // Each distinct value of a per-corner attribute, numbered from 1 in order of
 // first use, as an OBJ's `vt` and `vn` lines are.
 template <size_t kSize>
@@ -78,11 +68,6 @@ struct NumberedValues {
     return at->second;
   }
 };
-
-std::string material_name(const TriangleFile& mesh, size_t m) {
-  const std::string& name = mesh.materials[m].name;
-  return name.empty() ? "material_" + std::to_string(m) : name;
-}
 
 // A texture map held inside its source, as PNG bytes.
 std::string png_bytes(const TextureImage& image) {
@@ -236,6 +221,20 @@ WrittenMesh write_stl_file(const TriangleFile& mesh, const std::string& path, co
   }
   write_bytes(bytes, path, write_to);
   return {{}, unkept(mesh, false, false, false, false)};
+}
+
+std::vector<std::string> unkept(const TriangleFile& mesh, bool materials, bool uvs, bool colours, bool normals) {
+  std::vector<std::string> dropped;
+  if (!materials && !mesh.materials.empty()) dropped.push_back("materials");
+  if (!uvs && !mesh.corner_uvs.empty()) dropped.push_back("texture coordinates");
+  if (!colours && !mesh.point_colors.empty()) dropped.push_back("vertex colours");
+  if (!normals && !mesh.corner_normals.empty()) dropped.push_back("shading normals");
+  return dropped;
+}
+
+std::string material_name(const TriangleFile& mesh, size_t m) {
+  const std::string& name = mesh.materials[m].name;
+  return name.empty() ? "material_" + std::to_string(m) : name;
 }
 
 }  // namespace umbra

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -33,6 +34,15 @@ struct SoupMaterial {
   // texture coordinates (PolygonSoup::corner_uvs); none when the file gives
   // none or it could not be read (a warning says so).
   std::shared_ptr<const TextureImage> texture;
+};
+
+// A part of the file that a writer can give back as it was: a 3MF build
+// item's object (or a component of it), with the transform that placed its
+// points where the soup holds them.
+struct SoupPart {
+  std::string name;            // the object's name; "" for none
+  std::string part_number;     // its build item's part number; "" for none
+  glm::dmat4 placement{1.0};   // from the object's own coordinates to the soup's
 };
 
 // Whether a reader reads its materials' texture maps, and from where. A
@@ -73,6 +83,13 @@ struct PolygonSoup {
   // when the file gives none, or the soup is read for a check, which has no
   // use for them.
   std::vector<glm::vec3> corner_normals;
+  // The file's parts (3MF's), and per polygon an index into them; both
+  // empty for a file read as one part.
+  std::vector<SoupPart> parts;
+  std::vector<int> polygon_parts;
+  // The unit of length the file names (3MF's "millimeter", "inch", ...);
+  // "" where it names none.
+  std::string length_unit;
 
   size_t polygon_count() const { return polygon_starts.size() - 1; }
   uint32_t corner_count(size_t p) const { return polygon_starts[p + 1] - polygon_starts[p]; }

@@ -4,6 +4,7 @@
 // the faces' materials.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <regex>
 #include <set>
@@ -16,6 +17,7 @@
 
 #include "mesh/input_error.hpp"
 #include "mesh/io/mesh_readers.hpp"
+#include "mesh/io/threemf_units.hpp"
 
 namespace umbra {
 namespace {
@@ -39,6 +41,18 @@ glm::dmat4 to_glm(const MODELTRANSFORM& t) {
   return m;
 }
 
+// A lib3mf text (an object's name, a build item's part number), whole; ""
+// when it has none.
+template <typename Object>
+std::string text_of(Object* object, LIB3MFRESULT (*get)(Object*, LPSTR, ULONG, ULONG*)) {
+  ULONG needed = 0;
+  if (get(object, nullptr, 0, &needed) != LIB3MF_OK || needed == 0) return "";
+  std::string text(needed + 1, '\0');  // room for the terminating zero, which `needed` does not count
+  if (get(object, text.data(), ULONG(text.size()), &needed) != LIB3MF_OK) return "";
+  text.resize(std::strlen(text.c_str()));
+  return text;
+}
+
 class ThreeMfReader {
  public:
   ThreeMfReader(PLib3MFModel* model, PolygonSoup& soup) : model_(model), soup_(soup) {}
@@ -53,6 +67,7 @@ class ThreeMfReader {
       check(lib3mf_builditem_getobjectresource(item.object, &object.object), item.object);
       MODELTRANSFORM transform;
       check(lib3mf_builditem_getobjecttransform(item.object, &transform), item.object);
+      part_number_ = text_of(item.object, lib3mf_builditem_getpartnumberutf8);
       add_object(object.object, to_glm(transform));
     }
   }
@@ -124,6 +139,7 @@ class ThreeMfReader {
     std::vector<MODELMESHTRIANGLE> triangles(triangle_count);
     if (vertex_count) check(lib3mf_meshobject_getvertices(mesh, vertices.data(), vertex_count, nullptr), mesh);
     if (triangle_count) check(lib3mf_meshobject_gettriangleindices(mesh, triangles.data(), triangle_count, nullptr), mesh);
+    soup_.parts.push_back({text_of(mesh, lib3mf_object_getnameutf8), part_number_, transform});
     const uint32_t first = uint32_t(soup_.points.size());
     for (DWORD v = 0; v < vertex_count; ++v) {
       const float* xyz = vertices[v].m_fPosition;
@@ -149,12 +165,14 @@ class ThreeMfReader {
                          type == MODELPROPERTYTYPE_BASEMATERIALS &&
                          lib3mf_propertyhandler_getbasematerial(properties.object, t, &group, &index) == LIB3MF_OK;
       soup_.polygon_materials.push_back(based ? material(group, index) : -1);
+      soup_.polygon_parts.push_back(int(soup_.parts.size() - 1));
     }
   }
 
   PLib3MFModel* model_;
   PolygonSoup& soup_;
   std::set<DWORD> on_path_;  // the objects from the build item to the one being read
+  std::string part_number_;  // the build item's being read
   std::map<std::pair<DWORD, DWORD>, int> materials_;
 };
 
@@ -250,6 +268,8 @@ PolygonSoup read_3mf(std::string_view bytes, const std::string& path) {
   }
   for (const auto& [text, count] : kinds)
     soup.warn(0, "lib3mf: " + text + (count > 1 ? " (" + std::to_string(count) + " times)" : ""));
+  if (DWORD unit = 0; lib3mf_model_getunit(model.object, &unit) == LIB3MF_OK && unit < kThreeMfUnits.size())
+    soup.length_unit = kThreeMfUnits[unit];
   ThreeMfReader(model.object, soup).read();
   return soup;
 }

@@ -137,9 +137,9 @@ inline std::string threemf_object(int id, const PolygonSoup& soup, int pindex = 
 }
 
 // A 3MF package: `resources` and `build` are the model's XML elements' contents.
-inline std::string threemf(const std::string& resources, const std::string& build) {
+inline std::string threemf(const std::string& resources, const std::string& build, const std::string& unit = "millimeter") {
   const std::string model =
-      R"(<?xml version="1.0" encoding="UTF-8"?><model unit="millimeter" xml:lang="en-US" )"
+      R"(<?xml version="1.0" encoding="UTF-8"?><model unit=")" + unit + R"(" xml:lang="en-US" )"
       R"(xmlns="http://schemas.microsoft.com/3dmanufacturing/core/2015/02"><resources>)" +
       resources + "</resources><build>" + build + "</build></model>";
   const std::string types =

@@ -526,7 +526,7 @@ TEST_F(StagedSceneText, EveryStagedSceneReadsBackFromItsTextAsTheSameValues) {
   std::vector<std::string> meshes;
   for (const auto& entry : std::filesystem::directory_iterator(std::string(UMBRA_SOURCE_DIR) + "/scenes/meshes"))
     if (entry.path().extension() != ".py") meshes.push_back(entry.path().string());
-  for (const std::string real : {kEngine, std::string("/usr/share/assimp/models/OFF/Wuson.off"),
+  for (const std::string& real : {kEngine, std::string("/usr/share/assimp/models/OFF/Wuson.off"),
                                  std::string("/usr/share/assimp/models/STL/Spider_binary.stl")})
     if (std::filesystem::exists(real)) meshes.push_back(real);
   ASSERT_GE(meshes.size(), 4u);
