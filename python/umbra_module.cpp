@@ -223,7 +223,7 @@ class Renderer {
     } else {
       const std::string& path = std::get<std::string>(source);
       if (const std::optional<InputError> error = neither_scene_nor_mesh(path)) throw *error;
-      scene = parse_scene_or_mesh_file(path, {}, nullptr, staging, TextureMaps{true, "", false});
+      scene = parse_scene_or_mesh_file(path, {}, nullptr, staging, ReadOptions{true, "", false});
     }
     warnings = warning_lines(scene);
     require_lights_off_casters(scene);
@@ -240,7 +240,7 @@ class Renderer {
   bool closed_ = false;
 };
 
-PolygonSoup read_source(const MeshSource& source, const TextureMaps& maps) {
+PolygonSoup read_source(const MeshSource& source, const ReadOptions& maps) {
   if (const auto* path = std::get_if<std::string>(&source)) return read_polygon_soup(*path, maps);
   return soup_of(std::get<ArraysMesh>(source));
 }
@@ -275,7 +275,7 @@ py::dict defect_arrays(const MeshReport::Examples& e) {
 // (the report as check --json prints it, its defects as arrays, and with
 // `picture` (width, height) its defect picture, as check --picture draws it).
 py::tuple check(const MeshSource& source, double time_limit_s, std::optional<std::pair<int, int>> picture) {
-  PolygonSoup soup = read_source(source, TextureMaps::skip());
+  PolygonSoup soup = read_source(source, ReadOptions::skip());
   MeshReport report;
   std::optional<Image> drawn;
   {
@@ -302,7 +302,7 @@ py::tuple check(const MeshSource& source, double time_limit_s, std::optional<std
 
 // (vertices, faces, changes, the repaired mesh's check --json report).
 py::tuple repair(const MeshSource& source, size_t max_hole_edges, double merge_tolerance, double time_limit_s) {
-  const PolygonSoup soup = read_source(source, TextureMaps::skip());
+  const PolygonSoup soup = read_source(source, ReadOptions::skip());
   RepairedTriangles repaired;
   std::ostringstream json;
   {
@@ -337,7 +337,7 @@ py::dict load(const std::string& path) {
   PolygonSoup soup;
   {
     py::gil_scoped_release released;
-    soup = read_polygon_soup(path, TextureMaps::skip());
+    soup = read_polygon_soup(path, ReadOptions::skip());
   }
   std::vector<double> points;
   points.reserve(soup.points.size() * 3);

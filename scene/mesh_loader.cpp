@@ -97,7 +97,7 @@ void smooth_normals(Mesh& m, std::vector<std::array<glm::vec3, 3>>& file_normals
 }
 
 // Reads, checks and places one mesh; throws its located InputError.
-LoadedMesh load_mesh(MeshStatement statement, const TextureMaps& maps) {
+LoadedMesh load_mesh(MeshStatement statement, const ReadOptions& maps) {
   LoadedMesh loaded{std::move(statement.mesh), {}, {}};
   Mesh& m = loaded.mesh;
   MeshAnalysis analysis;
@@ -176,7 +176,7 @@ void place_file_materials(LoadedMesh& loaded, const std::string& written, Scene&
 }  // namespace
 
 void load_scene_meshes(std::vector<MeshStatement> statements, Scene& scene, const MeshLoadProgress& progress,
-                       const TextureMaps& maps) {
+                       const ReadOptions& maps) {
   const std::filesystem::path folder = std::filesystem::path(scene.path).parent_path();
   std::vector<std::string> written(statements.size());
   for (size_t k = 0; k < statements.size(); ++k) {

@@ -38,7 +38,7 @@ struct MeshStatement {
 // file where it has a line, else at the statement's path. `maps` says where
 // the files' texture maps may be read from.
 void load_scene_meshes(std::vector<MeshStatement> statements, Scene& scene, const MeshLoadProgress& progress,
-                       const TextureMaps& maps = {});
+                       const ReadOptions& maps = {});
 
 // For a caller that draws one scene from many views (umbra view's window).
 // Loading leaves a closed mesh's self-crossings to the picture

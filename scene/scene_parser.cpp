@@ -165,7 +165,7 @@ class SceneBuilder {
     throw InputError(r.statement_loc(), "unknown statement " + in_quotes(k) + " (expected " + word_list(keywords) + ")");
   }
 
-  Scene finish(const MeshLoadProgress& progress, const TextureMaps& maps) {
+  Scene finish(const MeshLoadProgress& progress, const ReadOptions& maps) {
     // Every mesh file is read once the whole scene has parsed, so that a
     // typo later in the scene is reported before a large file is read.
     load_scene_meshes(std::move(pending_meshes_), scene_, progress, maps);
@@ -447,7 +447,7 @@ class SceneBuilder {
 }  // namespace
 
 Scene parse_scene_text(const std::string& text, const std::string& name, const MeshLoadProgress& progress,
-                       const TextureMaps& maps) {
+                       const ReadOptions& maps) {
   SceneBuilder builder(name);
   std::istringstream in(text);
   std::string line;
@@ -465,7 +465,7 @@ Scene parse_scene_text(const std::string& text, const std::string& name, const M
   return builder.finish(progress, maps);
 }
 
-Scene parse_scene_file(const std::string& path, const MeshLoadProgress& progress, const TextureMaps& maps) {
+Scene parse_scene_file(const std::string& path, const MeshLoadProgress& progress, const ReadOptions& maps) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw InputError({path}, "is a folder, not a scene file");
   // Mapped, as a regular file only: a FIFO named as a scene never blocks.

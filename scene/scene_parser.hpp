@@ -11,10 +11,10 @@ namespace umbra {
 
 // Reads and parses the file at `path`; throws InputError. `maps` says where
 // its meshes' texture maps may be read from.
-Scene parse_scene_file(const std::string& path, const MeshLoadProgress& progress = {}, const TextureMaps& maps = {});
+Scene parse_scene_file(const std::string& path, const MeshLoadProgress& progress = {}, const ReadOptions& maps = {});
 
 // Parses scene text; `name` is the file name used in messages.
 Scene parse_scene_text(const std::string& text, const std::string& name, const MeshLoadProgress& progress = {},
-                       const TextureMaps& maps = {});
+                       const ReadOptions& maps = {});
 
 }  // namespace umbra

@@ -216,7 +216,7 @@ namespace {
 // The stage for the mesh at `path`, or for `soup` (named `path`, its own up
 // axis `soup_up`) where given.
 Scene stage_mesh(const std::string& path, const std::shared_ptr<const PolygonSoup>& soup, const std::string& soup_up,
-                 const MeshLoadProgress& progress, std::string* staged, const StagingOptions& staging, const TextureMaps& maps) {
+                 const MeshLoadProgress& progress, std::string* staged, const StagingOptions& staging, const ReadOptions& maps) {
   const std::string& up = staging.up;
   const std::string file_name = std::filesystem::path(path).filename().string();
   // A scene's quoted path holds no double quote and no line break: such a
@@ -345,7 +345,7 @@ Scene stage_mesh(const std::string& path, const std::shared_ptr<const PolygonSou
 }  // namespace
 
 Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& progress, std::string* staged,
-                               const StagingOptions& staging, const TextureMaps& maps) {
+                               const StagingOptions& staging, const ReadOptions& maps) {
   if (is_mesh_file(path)) return stage_mesh(path, nullptr, "", progress, staged, staging, maps);
   if (staged) staged->clear();
   Scene scene = parse_scene_file(path, progress, maps);
@@ -357,7 +357,7 @@ Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& 
 Scene stage_polygon_soup(std::shared_ptr<const PolygonSoup> soup, std::string* staged, const StagingOptions& staging,
                          const std::string& own_up) {
   const std::string name = soup->path;
-  return stage_mesh(name, soup, own_up, {}, staged, staging, TextureMaps::skip());
+  return stage_mesh(name, soup, own_up, {}, staged, staging, ReadOptions::skip());
 }
 
 }  // namespace umbra

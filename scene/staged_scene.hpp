@@ -148,7 +148,7 @@ struct StagingOptions {
 // file. A mesh file with no faces is an InputError: there is nothing to show.
 // `maps` says where texture maps may be read from.
 Scene parse_scene_or_mesh_file(const std::string& path, const MeshLoadProgress& progress = {}, std::string* staged = nullptr,
-                               const StagingOptions& staging = {}, const TextureMaps& maps = {});
+                               const StagingOptions& staging = {}, const ReadOptions& maps = {});
 
 // The stage for a mesh already in memory (a mesh handed over as arrays:
 // array_soup.hpp; a file's, tinted for the defect picture), named

@@ -85,13 +85,14 @@ std::string json_line(const Record& r) {
 // `record`'s status, triangles, error and messages.
 void render_one(const std::string& path, const std::string& root, const std::string& out, const BatchRenderOptions& o,
                 std::optional<HeadlessContext>& context, Record& record) {
+  ReadOptions maps = o.reading;
+  maps.root = root;
   try {
     if (o.views) {
       inject_fault(path);
       PictureChoices choices;
       choices.settings = o.settings, choices.staging = o.staging, choices.gl = o.gl, choices.antialias = o.antialias;
       choices.antialias_all = o.antialias_all, choices.show_volumes = o.show_volumes, choices.size_given = o.size_given;
-      const TextureMaps maps{true, root, o.any_texture_path};
       std::optional<WrittenViews> written;
       if (o.animation) {
         std::filesystem::create_directories(std::filesystem::path(out).parent_path());
@@ -110,7 +111,7 @@ void render_one(const std::string& path, const std::string& root, const std::str
     PartialFile picture(out, "the image");
     inject_fault(path);
     if (const std::optional<InputError> error = neither_scene_nor_mesh(path)) throw *error;
-    Scene scene = parse_scene_or_mesh_file(path, {}, nullptr, staging_for(o.staging, o.settings), TextureMaps{true, root, o.any_texture_path});
+    Scene scene = parse_scene_or_mesh_file(path, {}, nullptr, staging_for(o.staging, o.settings), maps);
     for (const Warning& w : scene.warnings) record.messages += w.where.str() + ": warning: " + w.message + "\n";
     require_lights_off_casters(scene);
     require_caught_shadows_kept(scene, o.settings.method);

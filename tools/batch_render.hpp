@@ -28,7 +28,7 @@ struct BatchRenderOptions {
   size_t jobs = 1;  // pictures drawn at a time, each in its own GL context
   std::optional<Shard> shard;
   std::optional<std::string> sheet;  // also one PNG of every picture, labelled with its file's name
-  bool any_texture_path = false;     // texture maps from any folder, not only the one each file was found in
+  ReadOptions reading;               // texture maps from any folder, not only the one each file was found in (root aside); CAD tessellation
   double timeout_s = 0.0;            // a file's render stopped after this long (0: no limit)
   bool skip_existing = false;        // a picture newer than its file is not drawn again
   bool json = false;                 // a line of JSON on stdout per input file

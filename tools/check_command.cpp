@@ -124,6 +124,12 @@ options:
                     per mesh and report that it stopped (default 60; 0 skips
                     it). A mesh whose search was skipped or stopped is "not
                     known to be clean": no closed 2-manifold, exit status 1
+  --cad-deflection F, --cad-angle DEG
+                    how finely a STEP, IGES or BREP file's surfaces are cut
+                    into triangles: the farthest a triangle may stray, as a
+                    fraction of the model's size (default {cad deflection}),
+                    and the largest angle between neighbouring ones, in
+                    degrees (default {cad angle})
   --timeout SEC     check the meshes in worker processes and stop one after
                     SEC seconds: a mesh that hangs, crashes or runs out of
                     memory is reported as unreadable (exit status 2), and
@@ -160,6 +166,7 @@ struct CheckCommandOptions {
   StageView view;                      // the pictures' camera (--camera-azimuth, ...)
   std::vector<std::string> view_given;  // those named
   CheckOptions check;
+  ReadOptions reading = ReadOptions::skip();  // --cad-deflection, --cad-angle; no texture maps
   double timeout_s = 0.0;  // >0: meshes checked in worker processes, each stopped after this long
   bool help = false;
 };
@@ -191,6 +198,7 @@ CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
     o.check.self_intersection_seconds = parse_finite_number(n, t);
     if (o.check.self_intersection_seconds < 0.0) throw UsageError("--time-limit must not be negative");
   });
+  add_reading_options(options, o.reading, false);
   options.positionals(o.meshes);
   options.parse(argv);
   if (o.help) return o;
@@ -294,7 +302,7 @@ void write_defect_picture(const std::string& path, const PolygonSoup& soup, cons
 CheckOutcome check_one(const std::string& path, const CheckCommandOptions& options, const std::string& picture = "") {
   try {
     inject_fault(path);
-    PolygonSoup soup = read_polygon_soup(path, TextureMaps::skip());
+    PolygonSoup soup = read_polygon_soup(path, options.reading);
     CheckOptions check = options.check;
     if (!picture.empty()) check.max_examples = SIZE_MAX;  // every defect drawn; the report prints a few
     const MeshReport report = picture.empty() ? check_mesh(std::move(soup), check) : check_mesh(soup, check);
@@ -384,7 +392,9 @@ int repair_one(const std::string& path, const std::string& output, const CheckCo
   try {
     // Read with its maps, which an OBJ's material library names again; what
     // the reader passed over (a map it could not read) is said, as render says it.
-    const PolygonSoup soup = read_polygon_soup(path);
+    ReadOptions with_maps = options.reading;
+    with_maps.read = true;
+    const PolygonSoup soup = read_polygon_soup(path, with_maps);
     for (const ReadWarning& w : soup.warnings) std::cerr << FileLoc{path, w.line, 0}.str() << ": warning: " << w.message << "\n";
     PartialFile partial(output, "the repaired mesh", PartialFile::Ending::kKeepExtension);
     const RepairSummary summary = repair_mesh(
@@ -400,7 +410,7 @@ int repair_one(const std::string& path, const std::string& output, const CheckCo
     }
     for (const auto& companion : companions) companion->commit();
     partial.commit();
-    const MeshReport after = check_mesh(read_polygon_soup(output, TextureMaps::skip()), options.check);
+    const MeshReport after = check_mesh(read_polygon_soup(output, ReadOptions::skip()), options.check);
     if (options.json || options.brief) {
       print_report(after, options, std::cout);
     } else {

@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include "image/animation_file.hpp"
 #include "image/picture_file.hpp"
@@ -107,6 +108,11 @@ std::string usage_text(std::string text) {
   replace_all(text, "{animation formats}", animation_extensions());
   replace_all(text, "{repair extensions}", mesh_format_extensions(true));
   replace_all(text, "{max hole edges}", std::to_string(kDefaultMaxHoleEdges));
+  std::ostringstream deflection, angle;
+  deflection << CadTessellation{}.relative_deflection;
+  angle << std::round(glm::degrees(CadTessellation{}.angle) * 10.0) / 10.0;
+  replace_all(text, "{cad deflection}", deflection.str());
+  replace_all(text, "{cad angle}", angle.str());
   return text;
 }
 
@@ -400,7 +406,20 @@ void require_staged(const std::vector<std::string>& given, const std::string& pa
                    "\" is not one (a scene has its own camera and lights)");
 }
 
-void add_any_texture_path_option(CommandOptions& options, bool& anywhere) { options.flag("--any-texture-path", anywhere); }
+void add_reading_options(CommandOptions& options, ReadOptions& reading, bool maps) {
+  if (maps) options.flag("--any-texture-path", reading.anywhere);
+  options.value("--cad-deflection", [&](const std::string& o, const std::string& t) {
+    const double fraction = parse_finite_number(o, t);
+    // Finer than a millionth of the model makes meshes of billions of
+    // triangles; coarser than a tenth, no recognisable shape.
+    if (!(fraction >= 1e-6 && fraction <= 0.1))
+      throw UsageError(o + " expects a fraction of the model's size from 1e-06 to 0.1, got \"" + t + "\"");
+    reading.cad.relative_deflection = fraction;
+  });
+  options.value("--cad-angle", [&](const std::string& o, const std::string& t) {
+    reading.cad.angle = glm::radians(parse_degrees_in(o, t, 1.0, 90.0));
+  });
+}
 
 int render_failure_status(const RenderSettings& settings, const std::string& said_before) {
   std::cerr << said_before;

@@ -141,7 +141,10 @@ void require_consistent_staging(const StagingOptions& staging);
 // A UsageError naming the first of `given` when `path` is not a mesh file
 // (a scene has its own camera and lights).
 void require_staged(const std::vector<std::string>& given, const std::string& path);
-void add_any_texture_path_option(CommandOptions& options, bool& anywhere);            // --any-texture-path
+// How mesh files are read: --cad-deflection F and --cad-angle DEG (how
+// finely STEP, IGES and BREP surfaces are cut into triangles); with `maps`,
+// --any-texture-path too.
+void add_reading_options(CommandOptions& options, ReadOptions& reading, bool maps);
 
 // A UsageError when `path`, given to `option`, is not a picture's name that
 // umbra writes (picture_file.hpp): .png, .jpg, .jpeg, or - for standard output.

@@ -213,6 +213,13 @@ options:
                         the command line (the model's own, for a file named
                         on its own), so that a model from anywhere cannot
                         put another image you can read into its picture
+  --cad-deflection F    how far a STEP, IGES or BREP file's triangles may
+                        stray from its surfaces, as a fraction of the
+                        model's size (its box's diagonal; default
+                        {cad deflection})
+  --cad-angle DEG       the largest angle between neighbouring triangles'
+                        normals on those surfaces (default {cad angle}):
+                        smaller is smoother, and more triangles
   --save-scene FILE     for a MESH: also write the scene umbra stages for it,
                         the options' camera, light, floor and background
                         included, naming the mesh by its path from FILE's
@@ -261,7 +268,7 @@ struct RenderOptions : PictureChoices {
   std::optional<std::string> save_scene;  // for a mesh file: where to write the staged scene
   std::optional<ViewSetRequest> views;    // --views, --views-on, --passes, --turntable: many views into the folder -o names
   std::optional<AnimationRequest> animation;  // or into one animation, as -o's name asks
-  bool any_texture_path = false;
+  ReadOptions reading;  // --any-texture-path, --cad-deflection, --cad-angle
   bool help = false;
 };
 
@@ -283,7 +290,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   add_picture_choices(options, o);
   options.flag("--explain", o.explain);
   options.value("--save-scene", [&](const std::string&, const std::string& t) { o.save_scene = t; });
-  add_any_texture_path_option(options, o.any_texture_path);
+  add_reading_options(options, o.reading, true);
   std::optional<size_t> jobs;
   std::optional<Shard> shard;
   std::optional<std::string> sheet;
@@ -358,7 +365,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   const auto batch = [&](std::optional<ViewSetRequest> views) {
     return BatchRenderOptions{scenes, o.output, o.settings, o.staging, o.gl, o.antialias, o.antialias_all, o.show_volumes,
                               o.size_given, jobs.value_or(std::max(1u, std::thread::hardware_concurrency())), shard, sheet,
-                              o.any_texture_path, timeout_s, skip_existing, json, std::move(views), std::nullopt};
+                              o.reading, timeout_s, skip_existing, json, std::move(views), std::nullopt};
   };
   const bool turntable = views.turning != Turning::kNone;
   if (orbit && !turntable) throw UsageError("--orbit says what --turntable turns: give --turntable N");
@@ -554,7 +561,7 @@ int run_render_command(const std::vector<std::string>& argv) {
     }
   }
   if (options.views)
-    return write_view_set(options.scene_path, options.output, options, *options.views, options.animation, options.any_texture_path,
+    return write_view_set(options.scene_path, options.output, options, *options.views, options.animation, options.reading,
                           standard_input ? "standard input" : options.scene_path);
   keep_freed_memory_for_reuse();
   try {
@@ -564,7 +571,7 @@ int run_render_command(const std::vector<std::string>& argv) {
     std::string staged;
     Scene scene = parse_scene_or_mesh_file(options.scene_path, [&](size_t loaded, size_t total, const std::string& path) {
       progress->update(0, "loading mesh " + std::to_string(loaded + 1) + " of " + std::to_string(total) + ": " + path);
-    }, &staged, staging_for(options.staging, options.settings), TextureMaps{true, "", options.any_texture_path});
+    }, &staged, staging_for(options.staging, options.settings), options.reading);
     progress->clear();
     set_picture_size(options.settings, options.size_given, scene);
     set_picture_samples(options.settings, options.antialias, options.antialias_all, options.show_volumes, scene);

@@ -93,6 +93,9 @@ options:
   --background COLOR   the colour where no surface is (see umbra render --help)
   --any-texture-path   read texture maps from any folder, not only the
                        model's own (see umbra render --help)
+  --cad-deflection F, --cad-angle DEG
+                       how finely a STEP, IGES or BREP file's surfaces are
+                       cut into triangles (see umbra render --help)
   --frames N           draw N frames, then exit, printing the median and the
                        worst time a frame took; the light then advances by
                        SPEED/60 degrees per frame, so a run is reproducible
@@ -113,7 +116,7 @@ struct ViewOptions {
   std::string scene_path;
   StagingOptions staging;  // for a mesh file on its own
   std::vector<std::string> staging_given;
-  bool any_texture_path = false;
+  ReadOptions reading;  // --any-texture-path, --cad-deflection, --cad-angle
   RenderSettings settings;
   std::optional<int> antialias;  // a still view's samples per side; unset: the scene's (default_antialias)
   double light_angle_deg = 0.0;
@@ -154,7 +157,7 @@ ViewOptions parse_view_options(const std::vector<std::string>& argv) {
     if (!(o.fps >= 1.0 && o.fps <= 240.0)) throw UsageError(n + " must be from 1 to 240 frames a second, got \"" + t + "\"");
   });
   add_staging_options(options, o.staging, o.staging_given);
-  add_any_texture_path_option(options, o.any_texture_path);
+  add_reading_options(options, o.reading, true);
   options.positionals(scenes);
   options.parse(argv);
   if (scenes.size() > 1) throw UsageError("one scene at a time (got \"" + scenes[0] + "\" and \"" + scenes[1] + "\")");
@@ -321,7 +324,7 @@ int run_view_command(const std::vector<std::string>& argv) {
     std::optional<ProgressBar> progress(std::in_place, 2);  // loading, then preparing the shadows
     Scene parsed = parse_scene_or_mesh_file(options.scene_path, [&](size_t loaded, size_t total, const std::string& path) {
       progress->update(0, "loading mesh " + std::to_string(loaded + 1) + " of " + std::to_string(total) + ": " + path);
-    }, nullptr, staging_for(options.staging, options.settings), TextureMaps{true, "", options.any_texture_path});
+    }, nullptr, staging_for(options.staging, options.settings), options.reading);
     progress->clear();
     for (const Warning& w : parsed.warnings) std::cerr << w.where.str() << ": warning: " << w.message << "\n";
     // The camera moves, so the picture would be asked about back faces at

@@ -15,7 +15,7 @@ std::vector<Shot> requested_shots(const Scene& scene, const MeshPlacement& place
   return view_shots(scene, view, aspect, request.count, request.spread);
 }
 
-PreparedViews prepare_views(const std::string& path, PictureChoices choices, const ViewSetRequest& request, const TextureMaps& maps,
+PreparedViews prepare_views(const std::string& path, PictureChoices choices, const ViewSetRequest& request, const ReadOptions& maps,
                             const ViewProgress& progress, std::string& messages) {
   const bool mesh = is_mesh_file(path);
   // A file umbra would stage, not a scene: its views stand round its model.

@@ -49,7 +49,7 @@ struct PreparedViews {
 // (InputError for a scene), a motion takes a scene too. The mesh's
 // warnings' lines are added to `messages`. Throws as loading throws, and
 // as a frame's light on a caster does.
-PreparedViews prepare_views(const std::string& path, PictureChoices choices, const ViewSetRequest& request, const TextureMaps& maps,
+PreparedViews prepare_views(const std::string& path, PictureChoices choices, const ViewSetRequest& request, const ReadOptions& maps,
                             const ViewProgress& progress, std::string& messages);
 
 }  // namespace umbra

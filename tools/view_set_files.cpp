@@ -69,7 +69,7 @@ class ViewFiles {
 }  // namespace
 
 WrittenViews write_view_files(const std::string& mesh_path, const std::string& folder, const PictureChoices& choices,
-                              const ViewSetRequest& request, const TextureMaps& maps, std::optional<HeadlessContext>& context,
+                              const ViewSetRequest& request, const ReadOptions& maps, std::optional<HeadlessContext>& context,
                               const ViewProgress& progress, std::string& messages) {
   namespace fs = std::filesystem;
   PreparedViews prepared = prepare_views(mesh_path, choices, request, maps, progress, messages);
@@ -104,7 +104,7 @@ WrittenViews write_view_files(const std::string& mesh_path, const std::string& f
 }
 
 WrittenViews write_animation_file(const std::string& path, const std::string& output, const PictureChoices& choices,
-                                  const ViewSetRequest& request, const AnimationRequest& animation, const TextureMaps& maps,
+                                  const ViewSetRequest& request, const AnimationRequest& animation, const ReadOptions& maps,
                                   std::optional<HeadlessContext>& context, const ViewProgress& progress, std::string& messages) {
   PartialFile file(output, "the animation", PartialFile::Ending::kKeepExtension);
   PreparedViews prepared = prepare_views(path, choices, request, maps, progress, messages);
@@ -129,12 +129,11 @@ WrittenViews write_animation_file(const std::string& path, const std::string& ou
 }
 
 int write_view_set(const std::string& path, const std::string& output, PictureChoices choices, const ViewSetRequest& request,
-                   const std::optional<AnimationRequest>& animation, bool any_texture_path, const std::string& shown) {
+                   const std::optional<AnimationRequest>& animation, const ReadOptions& maps, const std::string& shown) {
   std::string messages;  // the mesh's warnings, said before any error
   try {
     std::optional<ProgressBar> bar;
     std::optional<HeadlessContext> context;
-    const TextureMaps maps{true, "", any_texture_path};
     const ViewProgress progress = [&](size_t done, size_t total, const std::string& what) {
       if (!bar || done == 0) bar.emplace(total);
       if (!messages.empty()) bar->clear(), std::cerr << messages, messages.clear();

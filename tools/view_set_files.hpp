@@ -25,7 +25,7 @@ namespace umbra {
 // is. Throws as prepare_views and drawing throw (InputError, UsageError,
 // StagingChoiceError, FrameTooLarge, ...).
 WrittenViews write_view_files(const std::string& mesh_path, const std::string& folder, const PictureChoices& choices,
-                              const ViewSetRequest& request, const TextureMaps& maps, std::optional<HeadlessContext>& context,
+                              const ViewSetRequest& request, const ReadOptions& maps, std::optional<HeadlessContext>& context,
                               const ViewProgress& progress, std::string& messages);
 
 // An animation's format and pace (--fps, --quality).
@@ -38,7 +38,7 @@ struct AnimationRequest {
 // frame encoded on another thread while the next is drawn, the file
 // renamed into place once whole (none is left where anything fails).
 WrittenViews write_animation_file(const std::string& path, const std::string& output, const PictureChoices& choices,
-                                  const ViewSetRequest& request, const AnimationRequest& animation, const TextureMaps& maps,
+                                  const ViewSetRequest& request, const AnimationRequest& animation, const ReadOptions& maps,
                                   std::optional<HeadlessContext>& context, const ViewProgress& progress, std::string& messages);
 
 // The command's: an animation where `animation` is given, else each
@@ -47,6 +47,6 @@ WrittenViews write_animation_file(const std::string& path, const std::string& ou
 // rules out. `shown` names the file in what it says ("standard input" for
 // a copy of it).
 int write_view_set(const std::string& path, const std::string& output, PictureChoices choices, const ViewSetRequest& request,
-                   const std::optional<AnimationRequest>& animation, bool any_texture_path, const std::string& shown);
+                   const std::optional<AnimationRequest>& animation, const ReadOptions& maps, const std::string& shown);
 
 }  // namespace umbra

@@ -87,7 +87,7 @@ std::filesystem::path file_in_any_case(const std::filesystem::path& path) {
 // one (or PBR's base colour): inside the file (Assimp's "*N"), or a file
 // beside it, read as OBJ's are.
 std::vector<SoupMaterial> materials_of(const aiScene& scene, const std::string& path, ModelFiles& files, PolygonSoup& soup,
-                                       const TextureMaps& maps) {
+                                       const ReadOptions& maps) {
   std::vector<SoupMaterial> materials;
   TextureBudget budget;
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
@@ -257,7 +257,7 @@ std::string assimp_up_axis(const std::string& path) {
   return "+y";
 }
 
-PolygonSoup read_assimp(std::string_view bytes, const std::string& path, const TextureMaps& maps) {
+PolygonSoup read_assimp(std::string_view bytes, const std::string& path, const ReadOptions& maps) {
   ModelFiles files(maps, path);
   Assimp::Importer importer;
   importer.SetIOHandler(new ConfinedFiles(bytes, path, files));  // the importer owns it

@@ -48,13 +48,13 @@ ReadCadEntry cad_entry(std::string& why) {
 
 }  // namespace
 
-PolygonSoup read_cad(std::string_view bytes, const std::string& path, CadFormat format) {
+PolygonSoup read_cad(std::string_view bytes, const std::string& path, CadFormat format, const CadTessellation& tessellation) {
   std::string why;
   const ReadCadEntry entry = cad_entry(why);
   if (!entry) throw InputError({path, 0, 0}, std::string(cad_format_name(format)) + " files need Open CASCADE: " + why);
   PolygonSoup soup;
   std::string error;
-  if (!entry(bytes.data(), bytes.size(), path.c_str(), int(format), &soup, &error)) throw InputError({path, 0, 0}, error);
+  if (!entry(bytes.data(), bytes.size(), path.c_str(), int(format), &tessellation, &soup, &error)) throw InputError({path, 0, 0}, error);
   return soup;
 }
 

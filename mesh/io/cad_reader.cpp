@@ -44,12 +44,6 @@ struct CadError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// How far the tessellation may stray from the surface: a thousandth of the
-// shape's diagonal, and half a radian between neighbouring facets' normals
-// (as f3d tessellates).
-constexpr double kRelativeDeflection = 1e-3;
-constexpr double kAngularDeflection = 0.5;
-
 // Open CASCADE's messages go to its own printers: none on the terminal.
 void quiet() {
   static const bool done = [] {
@@ -83,7 +77,7 @@ void add_faces(const TopoDS_Shape& shape, PolygonSoup& soup) {
   }
 }
 
-PolygonSoup read_shape(std::string_view bytes, const std::string& path, CadFormat format) {
+PolygonSoup read_shape(std::string_view bytes, const std::string& path, CadFormat format, const CadTessellation& tessellation) {
   quiet();
   TopoDS_Shape shape;
   const char* name = cad_format_name(format);
@@ -123,7 +117,7 @@ PolygonSoup read_shape(std::string_view bytes, const std::string& path, CadForma
     if (box.IsVoid()) throw fail("finds no surface in it");
     const double diagonal = std::sqrt(box.SquareExtent());
     if (!std::isfinite(diagonal)) throw fail("finds a shape whose size is not a finite number");
-    BRepMesh_IncrementalMesh mesh(shape, kRelativeDeflection * diagonal, false, kAngularDeflection, true);
+    BRepMesh_IncrementalMesh mesh(shape, tessellation.relative_deflection * diagonal, false, tessellation.angle, true);
   } catch (const Standard_Failure& e) {
     throw fail(std::string("cannot read it: ") + e.GetMessageString());
   }
@@ -137,10 +131,11 @@ PolygonSoup read_shape(std::string_view bytes, const std::string& path, CadForma
 }  // namespace
 }  // namespace umbra
 
-extern "C" int umbra_read_cad(const char* bytes, size_t size, const char* path, int format, umbra::PolygonSoup* soup,
+extern "C" int umbra_read_cad(const char* bytes, size_t size, const char* path, int format, const umbra::CadTessellation* tessellation,
+                              umbra::PolygonSoup* soup,
                               std::string* error) {
   try {
-    *soup = umbra::read_shape({bytes, size}, path, umbra::CadFormat(format));
+    *soup = umbra::read_shape({bytes, size}, path, umbra::CadFormat(format), *tessellation);
     return 1;
   } catch (const std::exception& e) {
     *error = e.what();

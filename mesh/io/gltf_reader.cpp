@@ -645,13 +645,13 @@ bool gltf_needs_assimp(std::string_view bytes) {
   return needs_assimp(bytes, binary, nlohmann::json::parse(text.begin(), text.end(), nullptr, false));
 }
 
-PolygonSoup read_gltf(std::string_view bytes, const std::string& path, const TextureMaps& maps) {
+PolygonSoup read_gltf(std::string_view bytes, const std::string& path, const ReadOptions& maps) {
   tinygltf::TinyGLTF loader;
   EncodedImages encoded;
   if (maps.read) loader.SetImageLoader(keep_encoded, &encoded);
   else loader.SetImageLoader(skip_image, nullptr);
   // A check decodes no image into a picture: any folder will do there.
-  TextureMaps rule = maps;
+  ReadOptions rule = maps;
   rule.anywhere = maps.anywhere || !maps.read;
   std::error_code ec;
   GltfFiles files{ModelFiles(rule, path), std::filesystem::absolute(path, ec).parent_path(), {}};

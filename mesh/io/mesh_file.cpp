@@ -31,7 +31,7 @@ std::string mesh_reader_of(std::string_view bytes, const std::string& path) {
   return format;
 }
 
-PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path, const TextureMaps& maps) {
+PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path, const ReadOptions& maps) {
   bytes = without_byte_order_mark(bytes);
   if (const std::string blank = blank_content(bytes); !blank.empty()) throw InputError({path, 0, 0}, blank, InputProblem::kEmpty);
   const MeshFormat* reader = mesh_format_by_id(mesh_reader_of(bytes, path));
@@ -47,7 +47,7 @@ PolygonSoup parse_polygon_soup(std::string_view bytes, const std::string& path, 
   return soup;
 }
 
-PolygonSoup read_polygon_soup(const std::string& path, const TextureMaps& maps) {
+PolygonSoup read_polygon_soup(const std::string& path, const ReadOptions& maps) {
   const MappedFile file(path);
   // A file cut short while it was read reads as zeros past its new end:
   // whatever that made of it, say what happened instead.

@@ -149,11 +149,11 @@ bool is_brep(std::string_view head) {
 // A CAD file's reader, or where this umbra was built without Open CASCADE,
 // the message that says how to build it in.
 template <CadFormat kFormat>
-PolygonSoup cad_reader(std::string_view bytes, const std::string& path, const TextureMaps&) {
+PolygonSoup cad_reader(std::string_view bytes, const std::string& path, const ReadOptions& options) {
 #ifdef UMBRA_HAVE_OCCT
-  return read_cad(bytes, path, kFormat);
+  return read_cad(bytes, path, kFormat, options.cad);
 #else
-  (void)bytes;
+  (void)bytes, (void)options;
   throw InputError({path, 0, 0},
                    std::string(cad_format_name(kFormat)) + " files need Open CASCADE, which this umbra was built without: "
                                                            "./build.sh installs libocct-data-exchange-dev and builds it in",
@@ -177,7 +177,7 @@ std::string_view after_leading_comments(std::string_view bytes) {
 
 // A reader of a format whose files hold no texture maps that umbra draws.
 template <PolygonSoup (*reader)(std::string_view, const std::string&)>
-PolygonSoup without_maps(std::string_view bytes, const std::string& path, const TextureMaps&) {
+PolygonSoup without_maps(std::string_view bytes, const std::string& path, const ReadOptions&) {
   return reader(bytes, path);
 }
 
@@ -191,7 +191,7 @@ constexpr bool kOpenCascadeBuilt = false;
 
 const std::vector<MeshFormat>& mesh_formats() {
   static const std::vector<MeshFormat> formats{
-      {"obj", "OBJ", {".obj"}, never, is_obj, [](std::string_view b, const std::string& p, const TextureMaps& t) { return read_obj(b, p, t); },
+      {"obj", "OBJ", {".obj"}, never, is_obj, [](std::string_view b, const std::string& p, const ReadOptions& t) { return read_obj(b, p, t); },
        write_obj_file, "+y", nullptr, true, "umbra, with its .mtl"},
       {"off", "OFF", {".off"}, never, is_off, without_maps<read_off>, write_off_file, "+y"},
       {"ply", "PLY", {".ply"}, [](std::string_view b) { return starts_with(b, "ply\n") || starts_with(b, "ply\r"); }, never,

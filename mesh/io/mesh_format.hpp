@@ -27,7 +27,7 @@ struct MeshFormat {
   bool (*has_signature)(std::string_view bytes);
   // Plainly this format as text: the file's first 64 KiB, known to be text.
   bool (*has_text)(std::string_view head);
-  PolygonSoup (*read)(std::string_view bytes, const std::string& path, const TextureMaps& maps);
+  PolygonSoup (*read)(std::string_view bytes, const std::string& path, const ReadOptions& maps);
   MeshWriter write;  // how --repair writes it (mesh_writers.hpp); null where it cannot
   // The axis that points up by the format's convention, which a model staged
   // on its own stands on: glTF +Y and 3MF +Z by their specifications, STL +Z

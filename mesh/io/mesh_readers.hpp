@@ -12,16 +12,16 @@
 
 namespace umbra {
 
-PolygonSoup read_obj(std::string_view text, const std::string& path, const TextureMaps& maps = {});
+PolygonSoup read_obj(std::string_view text, const std::string& path, const ReadOptions& maps = {});
 // The same, read on every core in stretches of about `chunk_bytes` bytes or
 // more (read_obj takes 1 MiB): the soup, and the first error, are the same
 // however the file is split.
-PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chunk_bytes, const TextureMaps& maps = {});
+PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chunk_bytes, const ReadOptions& maps = {});
 PolygonSoup read_off(std::string_view text, const std::string& path);
 PolygonSoup read_stl(std::string_view bytes, const std::string& path);  // ascii or binary
 PolygonSoup read_ply(std::string_view bytes, const std::string& path);  // ascii or binary
 // .gltf or .glb; external buffers (and images) beside `path`
-PolygonSoup read_gltf(std::string_view bytes, const std::string& path, const TextureMaps& maps = {});
+PolygonSoup read_gltf(std::string_view bytes, const std::string& path, const ReadOptions& maps = {});
 // Whether read_gltf hands these bytes to Assimp's glTF importers (glTF 1.0,
 // Draco-compressed meshes), in a build with Assimp.
 bool gltf_needs_assimp(std::string_view bytes);
@@ -30,12 +30,12 @@ PolygonSoup read_3mf(std::string_view bytes, const std::string& path);
 // umbra-cad.so opened on first use (cad_module.hpp; built with Open
 // CASCADE only: UMBRA_HAVE_OCCT). Throws InputError naming the file, and
 // where the module cannot be opened, why.
-PolygonSoup read_cad(std::string_view bytes, const std::string& path, CadFormat format);
+PolygonSoup read_cad(std::string_view bytes, const std::string& path, CadFormat format, const CadTessellation& tessellation);
 
 // The formats umbra does not parse itself, through Assimp (built with it
 // only: UMBRA_HAVE_ASSIMP); the files it names are read only as `maps`
 // lets texture maps be.
-PolygonSoup read_assimp(std::string_view bytes, const std::string& path, const TextureMaps& maps);
+PolygonSoup read_assimp(std::string_view bytes, const std::string& path, const ReadOptions& maps);
 // Assimp's extensions (".3ds", ".dae", ...) but those umbra reads itself
 // and those too generic or holding no mesh (.xml, .raw, .prj, motion).
 std::vector<std::string_view> assimp_extensions();

@@ -385,7 +385,7 @@ void read_stretch(ObjStretch& stretch, const std::string& path, PolygonSoup& sou
 // The material statements of `stretches`, in order: libraries read as they
 // are named, each face given the material named last before it.
 void replay_material_statements(const std::vector<ObjStretch>& stretches, size_t face_count, const std::string& path,
-                                PolygonSoup& soup, const TextureMaps& maps) {
+                                PolygonSoup& soup, const ReadOptions& maps) {
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   std::optional<ModelFiles> files;  // each map decoded once, however many materials name it
   if (maps.read) files.emplace(maps, path);
@@ -472,7 +472,7 @@ std::vector<Value> corner_values(const std::vector<ObjStretch>& stretches, ObjSt
 
 }  // namespace
 
-PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chunk_bytes, const TextureMaps& maps) {
+PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chunk_bytes, const ReadOptions& maps) {
   PolygonSoup soup;
   soup.path = path;
   soup.format = "OBJ";
@@ -539,7 +539,7 @@ PolygonSoup read_obj(std::string_view text, const std::string& path, size_t chun
   return soup;
 }
 
-PolygonSoup read_obj(std::string_view text, const std::string& path, const TextureMaps& maps) {
+PolygonSoup read_obj(std::string_view text, const std::string& path, const ReadOptions& maps) {
   return read_obj(text, path, size_t(1) << 20, maps);
 }
 

@@ -45,16 +45,28 @@ struct SoupPart {
   glm::dmat4 placement{1.0};   // from the object's own coordinates to the soup's
 };
 
-// Whether a reader reads its materials' texture maps, and from where. A
-// picture needs them (decoded, they can take far more memory than the mesh);
-// a check does not. A model from anywhere names its maps by any path it
-// likes, and a map is decoded into the picture: so a map is read only from
-// inside `root`, whatever path names it, unless `anywhere`.
-struct TextureMaps {
-  bool read = true;
+// How finely a CAD exchange file's surfaces are cut into triangles (Open
+// CASCADE's BRepMesh_IncrementalMesh): the farthest a triangle may stray
+// from its surface, as a fraction of the shape's bounding box diagonal, and
+// the largest angle between neighbouring triangles' normals, in radians.
+// The defaults are f3d's.
+struct CadTessellation {
+  double relative_deflection = 1e-3;
+  double angle = 0.5;
+};
+
+// How a reader reads. Whether it reads its materials' texture maps, and
+// from where: a picture needs them (decoded, they can take far more memory
+// than the mesh); a check does not. A model from anywhere names its maps by
+// any path it likes, and a map is decoded into the picture: so a map is
+// read only from inside `root`, whatever path names it, unless `anywhere`.
+// And how CAD files are tessellated.
+struct ReadOptions {
+  bool read = true;       // read texture maps
   std::string root;       // the folder the user named; "" for the model file's own folder
   bool anywhere = false;  // --any-texture-path: maps from any folder the user can read
-  static TextureMaps skip() { return {false, "", false}; }
+  CadTessellation cad;
+  static ReadOptions skip() { return {false, "", false, {}}; }  // no texture maps
 };
 
 struct PolygonSoup {

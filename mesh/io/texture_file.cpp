@@ -101,7 +101,7 @@ bool read_regular_file(const std::string& path, size_t most, std::vector<unsigne
   }
 }
 
-ModelFiles::ModelFiles(const TextureMaps& maps, const std::string& model_path) : anywhere_(maps.anywhere) {
+ModelFiles::ModelFiles(const ReadOptions& maps, const std::string& model_path) : anywhere_(maps.anywhere) {
   std::error_code ec;
   const std::filesystem::path root =
       maps.root.empty() ? std::filesystem::absolute(model_path, ec).parent_path() : std::filesystem::path(maps.root);

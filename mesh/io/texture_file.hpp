@@ -1,6 +1,6 @@
 #pragma once
 // Texture maps' image files for the mesh readers: which files a model may
-// name (TextureMaps), read only when they are plain files of a bounded size,
+// name (ReadOptions), read only when they are plain files of a bounded size,
 // and decoded (PNG, JPEG, BMP, TGA, ... as stb_image reads them) once each
 // and only within a pixel budget, whatever a file downloaded from anywhere
 // asks for.
@@ -63,7 +63,7 @@ bool read_regular_file(const std::string& path, size_t most, std::vector<unsigne
 class ModelFiles {
  public:
   // `model_path`: the mesh file, whose folder is the root when maps.root is "".
-  ModelFiles(const TextureMaps& maps, const std::string& model_path);
+  ModelFiles(const ReadOptions& maps, const std::string& model_path);
 
   // Why the file at `path` may not be read: "" when it may; else, say, "is
   // outside the folder ... (--any-texture-path reads it)" or "is not a

@@ -97,11 +97,11 @@ TEST_F(TextureMapReading, AMapThatCannotBeReadIsSaidOnceAndTheMeshStillLoads) {
 // there and costs no decoding.
 TEST_F(TextureMapReading, ACheckSkipsTheMaps) {
   write("m.mtl", "newmtl painted\nmap_Kd missing.png\n");
-  const PolygonSoup obj = read_polygon_soup(write("t.obj", kTriangleWithUvs), TextureMaps::skip());
+  const PolygonSoup obj = read_polygon_soup(write("t.obj", kTriangleWithUvs), ReadOptions::skip());
   EXPECT_TRUE(obj.warnings.empty()) << obj.warnings[0].message;
   EXPECT_FALSE(obj.materials[0].texture);
   EXPECT_TRUE(obj.corner_uvs.empty());
-  const PolygonSoup gltf = read_polygon_soup("/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb", TextureMaps::skip());
+  const PolygonSoup gltf = read_polygon_soup("/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb", ReadOptions::skip());
   EXPECT_FALSE(gltf.materials[0].texture);
   EXPECT_TRUE(gltf.corner_uvs.empty());
 }
@@ -219,7 +219,7 @@ TEST_F(TextureMapReading, AGltfWhoseImageIsMissingStillLoadsAndSaysSo) {
 class UntrustedMaps : public TextureMapReading {
  protected:
   // An OBJ triangle whose one material's map_Kd is `map`; its one warning, or "".
-  std::string obj_map_warning(const std::string& map, const TextureMaps& maps = {}) const {
+  std::string obj_map_warning(const std::string& map, const ReadOptions& maps = {}) const {
     write("m.mtl", "newmtl painted\nKd 0.5 0.5 0.5\nmap_Kd " + map + "\n");
     const PolygonSoup soup = read_polygon_soup(write("t.obj", kTriangleWithUvs), maps);
     EXPECT_LE(soup.warnings.size(), 1u);
@@ -249,7 +249,7 @@ TEST_F(UntrustedMaps, AFifoOrADeviceIsNoMapAndNothingWaits) {
   const std::string fifo = (folder_ / "fifo.png").string();
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   EXPECT_EQ(obj_map_warning("fifo.png"), refused(fifo, "is not a regular file (a FIFO), which umbra does not read as an image"));
-  TextureMaps anywhere;
+  ReadOptions anywhere;
   anywhere.anywhere = true;
   EXPECT_EQ(obj_map_warning("/dev/zero", anywhere),
             refused("/dev/zero", "is not a regular file (a character device), which umbra does not read as an image"));
@@ -268,7 +268,7 @@ TEST_F(UntrustedMaps, AMapOutsideTheNamedFolderIsRefusedUnlessAnyPathIsAllowed) 
   const std::string outside = "lies outside " + pack + ", the folder umbra reads this model's files from (--any-texture-path reads it)";
   // The folder the user named: the pack. A sibling folder in it is read;
   // what climbs out of it, by ../ or by an absolute path, is not.
-  TextureMaps maps;
+  ReadOptions maps;
   maps.root = (folder_ / "pack").string();
   const PolygonSoup soup = read_polygon_soup(obj, maps);
   ASSERT_EQ(soup.warnings.size(), 2u);

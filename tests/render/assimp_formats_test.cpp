@@ -31,7 +31,7 @@ class AssimpFormats : public ::testing::TestWithParam<AssimpFile> {};
 TEST_P(AssimpFormats, ReadByItsImporterAndShadowedAsExactRaysShadowIt) {
   const std::string path = kModels + GetParam().file;
   if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " is missing (build.sh installs assimp-testmodels)";
-  EXPECT_EQ(read_polygon_soup(path, TextureMaps::skip()).format, std::string("read through Assimp's ") + GetParam().importer);
+  EXPECT_EQ(read_polygon_soup(path, ReadOptions::skip()).format, std::string("read through Assimp's ") + GetParam().importer);
   const Scene scene = parse_scene_or_mesh_file(path);
   ASSERT_EQ(scene.meshes.size(), 1u);
   EXPECT_GT(scene.meshes[0].triangles.size(), 0u);

@@ -27,7 +27,7 @@ class CadFormats : public ::testing::TestWithParam<CadFile> {};
 TEST_P(CadFormats, TessellatedAndShadowedAsExactRaysShadowIt) {
   const std::string path = std::string("/usr/share/opencascade/data/") + GetParam().file;
   if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " is missing (build.sh installs occt-misc)";
-  EXPECT_EQ(read_polygon_soup(path, TextureMaps::skip()).format, std::string(GetParam().format) + ", tessellated by Open CASCADE");
+  EXPECT_EQ(read_polygon_soup(path, ReadOptions::skip()).format, std::string(GetParam().format) + ", tessellated by Open CASCADE");
   const Scene scene = parse_scene_or_mesh_file(path);
   ASSERT_EQ(scene.meshes.size(), 1u);
   const SilhouetteComponents& c = scene.meshes[0].components;

@@ -119,6 +119,32 @@ TEST_F(CadFiles, AStepSolidChecksClosedUnderAnyName) {
   }
 }
 
+// --cad-deflection and --cad-angle cut the screw's surfaces coarser or
+// finer (918 triangles by default), and it checks closed at each; a value
+// out of range is refused naming its range.
+TEST_F(CadFiles, TheTessellationIsTheUsersToChoose) {
+  const std::string screw = "/usr/share/opencascade/data/step/screw.step";
+  if (!fs::exists(screw)) GTEST_SKIP() << "needs Debian's occt-misc (build.sh installs it)";
+  const auto triangles = [&](const std::string& options) {
+    const CommandResult r = run("check " + screw + " --brief " + options);
+    EXPECT_EQ(r.status, 0) << options << ": " << r.out << r.err;
+    const size_t end = r.out.find(" triangles, 1 component: closed 2-manifold");
+    EXPECT_NE(end, std::string::npos) << r.out;
+    return std::stoul(r.out.substr(r.out.rfind(' ', end - 1) + 1));
+  };
+  const size_t coarse = triangles("--cad-deflection 0.01"), usual = triangles(""), smoother = triangles("--cad-angle 10");
+  EXPECT_EQ(usual, 918u);
+  EXPECT_LT(coarse, usual);
+  EXPECT_GT(smoother, usual);
+  CommandResult r = run("render " + screw + " --cad-angle 0.5 -o " + path("screw.png"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "umbra render: --cad-angle expects degrees from 1 to 90, got \"0.5\"\n(see umbra render --help)\n");
+  r = run("check " + screw + " --cad-deflection 0");
+  EXPECT_EQ(r.err, "umbra check: --cad-deflection expects a fraction of the model's size from 1e-06 to 0.1, got \"0\"\n(see umbra check --help)\n");
+  EXPECT_EQ(run("render " + screw + " --size 64x48 --cad-deflection 0.01 -o " + path("screw.png")).status, 0);
+  EXPECT_TRUE(fs::exists(path("screw.png")));
+}
+
 // A BREP cut short is refused saying so, and Open CASCADE prints nothing
 // (it found "no shape", printing "Not a TShape table"; another broken BREP
 // kept its reader looking for a number past the end without end:
