@@ -23,11 +23,15 @@ std::string_view without_byte_order_mark(std::string_view bytes) {
 std::string mesh_reader_of(std::string_view bytes, const std::string& path) {
   bytes = without_byte_order_mark(bytes);
   // The content decides; the extension only names the reader whose located
-  // errors best explain a file too broken for its content to say.
+  // errors best explain a file too broken for its content to say: one of
+  // umbra's own (a library's says only that it cannot read it, and a STEP
+  // file without STEP's header, such as a SystemTap script named .stp, is
+  // no STEP file).
   const std::string format = detect_mesh_format(bytes, path);
+  const MeshFormat* named = mesh_format_by_id(mesh_format_of(path));
   // Not OBJ, though: any text would read as an OBJ without faces.
   // Nor for what is plainly some other format.
-  if (format.empty() && mesh_format_of(path) != "obj" && other_known_format(bytes).empty()) return mesh_format_of(path);
+  if (format.empty() && named && named->fuzzed && named->id != "obj" && other_known_format(bytes).empty()) return std::string(named->id);
   return format;
 }
 

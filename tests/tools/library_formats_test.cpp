@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "mesh/io/mesh_format.hpp"
 #include "tests/tools/command_fixture.hpp"
 
 namespace umbra {
@@ -117,6 +118,17 @@ TEST_F(CadFiles, AStepSolidChecksClosedUnderAnyName) {
     const CommandResult r = run("check " + ifc);
     EXPECT_EQ(r.out.substr(0, r.out.find(',')), ifc + ": read through Assimp's Industry Foundation Classes (IFC) Importer");
   }
+}
+
+// A SystemTap script, which is named .stp too, is no STEP file: it has not
+// STEP's header, and is passed over as no mesh (not failed as a STEP file
+// that Open CASCADE could not read).
+TEST_F(CadFiles, AnStpFileWithoutStepsHeaderIsNoMesh) {
+  const std::string probe = path("probe.stp");
+  std::ofstream(probe) << "global count\nprobe syscall.open { count++ }\n";
+  const CommandResult r = run("check " + probe);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, probe + ": not a mesh file (" + mesh_format_names() + "): text starting with \"global\"\n");
 }
 
 // --cad-deflection and --cad-angle cut the screw's surfaces coarser or
