@@ -7,9 +7,11 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
 #include <fstream>
 #include <iterator>
 
+#include "mesh/io/mesh_file.hpp"
 #include "mesh/io/mesh_format.hpp"
 #include "tests/tools/command_fixture.hpp"
 
@@ -118,6 +120,23 @@ TEST_F(CadFiles, AStepSolidChecksClosedUnderAnyName) {
     const CommandResult r = run("check " + ifc);
     EXPECT_EQ(r.out.substr(0, r.out.find(',')), ifc + ": read through Assimp's Industry Foundation Classes (IFC) Importer");
   }
+}
+
+// A STEP file's colours (its styles, read through XCAF) are its faces'
+// materials: tests/data/coloured-boxes.step, written by Open CASCADE 7.6's
+// STEPCAFControl_Writer, has a box coloured red as a part, and a box of
+// which only the top face is coloured, blue.
+TEST_F(CadFiles, AStepFilesColoursAreItsFacesMaterials) {
+  const PolygonSoup soup = read_polygon_soup(std::string(UMBRA_SOURCE_DIR) + "/tests/data/coloured-boxes.step");
+  ASSERT_EQ(soup.materials.size(), 2u);
+  ASSERT_EQ(soup.polygon_materials.size(), soup.polygon_count());
+  std::map<std::string, size_t> faces_of;
+  for (size_t f = 0; f < soup.polygon_count(); ++f) {
+    const int m = soup.polygon_material(f);
+    ++faces_of[m < 0 ? "none" : soup.materials[size_t(m)].name];
+    if (m >= 0) EXPECT_EQ(soup.materials[size_t(m)].diffuse, soup.materials[size_t(m)].name == "#ff0000" ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 0, 1));
+  }
+  EXPECT_EQ(faces_of, (std::map<std::string, size_t>{{"#ff0000", 12}, {"#0000ff", 2}, {"none", 10}}));
 }
 
 // A SystemTap script, which is named .stp too, is no STEP file: it has not
