@@ -41,7 +41,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
