@@ -16,30 +16,14 @@
 #include <zip.h>
 
 #include "mesh/input_error.hpp"
+#include "mesh/io/lib3mf_support.hpp"
 #include "mesh/io/mesh_readers.hpp"
-#include "mesh/io/threemf_units.hpp"
 
 namespace umbra {
 namespace {
 
 using namespace NMR;
-
-// Releases a lib3mf object when it leaves scope.
-struct Held {
-  PLib3MFBase* object = nullptr;
-  ~Held() {
-    if (object) lib3mf_release(object);
-  }
-};
-
-// A 3MF transform acts on row vectors (p' = p M, M 4x3); lib3mf stores it as
-// fields[row][column] of the 3x4 matrix that acts on column vectors.
-glm::dmat4 to_glm(const MODELTRANSFORM& t) {
-  glm::dmat4 m(1.0);
-  for (int row = 0; row < 3; ++row)
-    for (int column = 0; column < 4; ++column) m[column][row] = t.m_fFields[row][column];
-  return m;
-}
+using lib3mf::Held;
 
 // A lib3mf text (an object's name, a build item's part number), whole; ""
 // when it has none.
@@ -68,7 +52,7 @@ class ThreeMfReader {
       MODELTRANSFORM transform;
       check(lib3mf_builditem_getobjecttransform(item.object, &transform), item.object);
       part_number_ = text_of(item.object, lib3mf_builditem_getpartnumberutf8);
-      add_object(object.object, to_glm(transform));
+      add_object(object.object, lib3mf::to_glm(transform));
     }
   }
 
@@ -78,10 +62,8 @@ class ThreeMfReader {
   // lib3mf's result, or its last error as an InputError.
   bool check(LIB3MFRESULT result, PLib3MFBase* source) const {
     if (result == LIB3MF_OK) return true;
-    DWORD code = 0;
-    LPCSTR message = nullptr;
-    lib3mf_getlasterror(source, &code, &message);
-    fail("lib3mf: " + std::string(message && *message ? message : "error " + std::to_string(result)));
+    const std::string said = lib3mf::last_error(source);
+    fail("lib3mf: " + (said.empty() ? "error " + std::to_string(result) : said));
   }
 
   DWORD resource_id(PLib3MFModelObjectResource* object) const {
@@ -107,7 +89,7 @@ class ThreeMfReader {
               component.object);
         MODELTRANSFORM local;
         check(lib3mf_component_gettransform(component.object, &local), component.object);
-        add_object(part.object, transform * to_glm(local));
+        add_object(part.object, transform * lib3mf::to_glm(local));
       }
     }
     on_path_.erase(id);
@@ -241,10 +223,8 @@ PolygonSoup read_3mf(std::string_view bytes, const std::string& path) {
   // lib3mf reads from a buffer it does not write to, whatever its signature says.
   std::vector<BYTE> copy(bytes.begin(), bytes.end());
   if (lib3mf_reader_readfrombuffer(reader.object, copy.data(), copy.size()) != LIB3MF_OK) {
-    DWORD code = 0;
-    LPCSTR message = nullptr;
-    lib3mf_getlasterror(reader.object, &code, &message);
-    const std::string said = message && *message ? message : "lib3mf could not read it";
+    std::string said = lib3mf::last_error(reader.object);
+    if (said.empty()) said = "lib3mf could not read it";
     if (said.find("no supported content type") != std::string::npos)
       if (const std::string empty = object_without_content(model_part(bytes)); !empty.empty())
         throw InputError({path, 0, 0}, "not a valid 3MF file: " + empty + " has neither a mesh nor components (lib3mf: " + said + ")");
@@ -268,8 +248,8 @@ PolygonSoup read_3mf(std::string_view bytes, const std::string& path) {
   }
   for (const auto& [text, count] : kinds)
     soup.warn(0, "lib3mf: " + text + (count > 1 ? " (" + std::to_string(count) + " times)" : ""));
-  if (DWORD unit = 0; lib3mf_model_getunit(model.object, &unit) == LIB3MF_OK && unit < kThreeMfUnits.size())
-    soup.length_unit = kThreeMfUnits[unit];
+  if (DWORD unit = 0; lib3mf_model_getunit(model.object, &unit) == LIB3MF_OK && unit < lib3mf::kUnits.size())
+    soup.length_unit = lib3mf::kUnits[unit];
   ThreeMfReader(model.object, soup).read();
   return soup;
 }

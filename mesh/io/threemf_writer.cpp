@@ -12,33 +12,15 @@
 #include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>
 
-#include <Model/COM/NMR_DLLInterfaces.h>
-
 #include "mesh/input_error.hpp"
+#include "mesh/io/lib3mf_support.hpp"
 #include "mesh/io/mesh_writers.hpp"
-#include "mesh/io/threemf_units.hpp"
 
 namespace umbra {
 namespace {
 
 using namespace NMR;
-
-// Releases a lib3mf object when it leaves scope.
-struct Held {
-  PLib3MFBase* object = nullptr;
-  ~Held() {
-    if (object) lib3mf_release(object);
-  }
-};
-
-// The 3MF transform (row vectors, 4x3) of a placement that acts on column
-// vectors: the inverse of the reader's.
-MODELTRANSFORM to_3mf(const glm::dmat4& m) {
-  MODELTRANSFORM t;
-  for (int row = 0; row < 3; ++row)
-    for (int column = 0; column < 4; ++column) t.m_fFields[row][column] = float(m[column][row]);
-  return t;
-}
+using lib3mf::Held;
 
 bool is_finite(const glm::dmat4& m) {
   for (int c = 0; c < 4; ++c)
@@ -60,8 +42,8 @@ class ThreeMfWriter {
 
   void write(const std::string& write_to) {
     check(lib3mf_createmodel(&model_.object), nullptr);
-    if (const auto unit = std::find(kThreeMfUnits.begin(), kThreeMfUnits.end(), mesh_.length_unit); unit != kThreeMfUnits.end())
-      check(lib3mf_model_setunit(model_.object, DWORD(unit - kThreeMfUnits.begin())), model_.object);
+    if (const auto unit = std::find(lib3mf::kUnits.begin(), lib3mf::kUnits.end(), mesh_.length_unit); unit != lib3mf::kUnits.end())
+      check(lib3mf_model_setunit(model_.object, DWORD(unit - lib3mf::kUnits.begin())), model_.object);
     add_materials();
     for (const Part& part : parts())
       if (!part.triangles.empty()) add_part(part);
@@ -74,11 +56,8 @@ class ThreeMfWriter {
   // lib3mf's result, or its last error as an InputError located at the output.
   void check(LIB3MFRESULT result, PLib3MFBase* source) const {
     if (result == LIB3MF_OK) return;
-    DWORD code = 0;
-    LPCSTR message = nullptr;
-    if (source) lib3mf_getlasterror(source, &code, &message);
-    throw InputError({path_, 0, 0}, "cannot write the repaired mesh: lib3mf: " +
-                                        std::string(message && *message ? message : "error " + std::to_string(result)));
+    const std::string said = lib3mf::last_error(source);
+    throw InputError({path_, 0, 0}, "cannot write the repaired mesh: lib3mf: " + (said.empty() ? "error " + std::to_string(result) : said));
   }
 
   // The file's parts with their triangles, then one for triangles of none.
@@ -152,7 +131,7 @@ class ThreeMfWriter {
             check(lib3mf_propertyhandler_setbasematerial(properties.object, DWORD(k), material_group_, DWORD(m)), properties.object);
       }
     }
-    MODELTRANSFORM transform = to_3mf(placement);
+    MODELTRANSFORM transform = lib3mf::to_3mf(placement);
     Held item;
     check(lib3mf_model_addbuilditem(model_.object, object.object, &transform, &item.object), model_.object);
     if (!part.part_number.empty()) check(lib3mf_builditem_setpartnumberutf8(item.object, part.part_number.c_str()), item.object);
