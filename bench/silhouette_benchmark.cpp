@@ -238,7 +238,7 @@ void BM_LightMovePlan(benchmark::State& state) {
 }
 BENCHMARK(BM_LightMovePlan)->Args({250, 200, 0})->Args({800, 640, 0})->Args({800, 640, 1})->Unit(benchmark::kMillisecond);
 
-// What a moved light costs a smooth mesh besides a flat one's: the corners
+// What a moved light costs a smooth mesh besides a flat one's: the triangles
 // on its terminator (scene/terminator.hpp), from each triangle's side of
 // the light, which SurfaceBuffers::use_light works out for each new light
 // position. The torus of BM_RenderFrame, shaded smooth.
@@ -247,7 +247,7 @@ void BM_SmoothTerminator(benchmark::State& state) {
   Mesh& mesh = scene.meshes[0];
   mesh.triangle_normals = crease_normals(mesh.positions, mesh.triangles, 40.0);
   const std::vector<int8_t> sides = triangle_light_sides(mesh, scene.lights[0].position);
-  for (auto _ : state) benchmark::DoNotOptimize(terminator_corners(mesh, sides).data());
+  for (auto _ : state) benchmark::DoNotOptimize(terminator_triangles(mesh, sides).data());
 }
 BENCHMARK(BM_SmoothTerminator)->Args({800, 640})->Unit(benchmark::kMillisecond);
 

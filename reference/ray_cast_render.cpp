@@ -32,26 +32,28 @@ glm::dvec3 surface_colour(const Scene& scene, const Surface& s, const glm::dvec3
   return colour;
 }
 
-// Per light, per mesh, which triangle corners the light fades to nothing
-// at (empty for a flat mesh; terminator.hpp).
-using Terminators = std::vector<std::vector<std::vector<std::array<uint8_t, 3>>>>;
+// Per light, per mesh, which triangles are on its terminator (empty for a
+// flat mesh; terminator.hpp).
+using Terminators = std::vector<std::vector<std::vector<uint8_t>>>;
 
 Terminators terminators_of(const Scene& scene) {
-  Terminators all(scene.lights.size(), std::vector<std::vector<std::array<uint8_t, 3>>>(scene.meshes.size()));
+  Terminators all(scene.lights.size(), std::vector<std::vector<uint8_t>>(scene.meshes.size()));
   for (size_t i = 0; i < scene.lights.size(); ++i)
     for (size_t k = 0; k < scene.meshes.size(); ++k)
       if (!scene.meshes[k].triangle_normals.empty())
-        all[i][k] = terminator_corners(scene.meshes[k], triangle_light_sides(scene.meshes[k], scene.lights[i].position));
+        all[i][k] = terminator_triangles(scene.meshes[k], triangle_light_sides(scene.meshes[k], scene.lights[i].position));
   return all;
 }
 
-// How much of a light a smooth face takes at `p`: its corners' 1, or 0
-// where it fades at the terminator, blended across it, as the GL blends them.
-double light_reach(const Surface& s, const glm::dvec3& p, const std::vector<std::array<uint8_t, 3>>& terminator) {
-  const auto& fade = terminator[s.triangle];
-  const std::array<glm::vec3, 3> reach{glm::vec3(fade[0] ? 0.0f : 1.0f), glm::vec3(fade[1] ? 0.0f : 1.0f),
-                                       glm::vec3(fade[2] ? 0.0f : 1.0f)};
-  return CornerBlend(s, p)(reach).x;
+// For a hit on a mesh's face that turns from the light, whether anything
+// more than the mesh's own surface, where the ray to the light leaves it,
+// stands between it and the light: the GL's count past one volume.
+bool shadowed_past_own_surface(const Scene& scene, const RayCaster& caster, const RayHit& hit, const glm::dvec3& light) {
+  const double distance = glm::length(light - hit.point);
+  const std::optional<RayHit> leaving = caster.nearest_hit(hit.point, (light - hit.point) / distance, hit.object);
+  if (!leaving || leaving->t >= distance) return false;
+  if (surface_of(scene, leaving->object).mesh != surface_of(scene, hit.object).mesh) return true;
+  return caster.shadow_ray_blocked(leaving->point, leaving->object, light);
 }
 
 // The shader's shade() for one sample, in double precision (shaders.hpp),
@@ -81,16 +83,19 @@ glm::dvec4 shade(const Scene& scene, const RayCaster& caster, const glm::dvec3& 
     const bool faces = seen_side_faces_light(hit, eye, light.position);
     const bool lit = faces && !caster.shadow_ray_blocked(hit.point, hit.object, light.position);
     if (masks) (*masks)[i].at(x, y) = lit ? kMaskLit : kMaskUnlit;
+    // A smooth face on the terminator that turns from the light takes the
+    // light its normals give it, unless more than its own surface shades it.
+    const bool lit_by_normals = smooth && !faces && terminators[i][size_t(surface.mesh - scene.meshes.data())][surface.triangle] &&
+                                !shadowed_past_own_surface(scene, caster, hit, light.position);
     // A face lit at a grazing angle may round to n . l just below 0: none.
     const double n_dot_l = std::max(glm::dot(n, l), 0.0);
     if (m.shadow_catcher && faces) caught += glm::dvec2(lit ? 1.0 : 0.0, 1.0) * (mean(light.color) * n_dot_l);
-    if (!lit) continue;
-    const double reach = smooth ? light_reach(surface, hit.point, terminators[i][size_t(surface.mesh - scene.meshes.data())]) : 1.0;
-    const double s_dot_l = smooth ? std::max(glm::dot(s, l), 0.0) * reach : n_dot_l;
+    if (!lit && !lit_by_normals) continue;
+    const double s_dot_l = smooth ? std::max(glm::dot(s, l), 0.0) : n_dot_l;
     const glm::dvec3 v = glm::normalize(eye - hit.point);
     const glm::dvec3 r = 2.0 * (smooth ? glm::dot(s, l) : n_dot_l) * s - l;  // reflect(-l, s)
     const double highlight = m.shininess > 0.0 ? std::pow(std::max(glm::dot(r, v), 0.0), m.shininess) : 1.0;
-    colour += light.color * (m.diffuse * tint * s_dot_l + m.specular * highlight * reach);
+    colour += light.color * (m.diffuse * tint * s_dot_l + m.specular * highlight);
   }
   return m.shadow_catcher ? glm::dvec4(caught, 0.0, -1.0) : glm::dvec4(colour, 1.0);
 }

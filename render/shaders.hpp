@@ -95,6 +95,15 @@ bool in_shadow(vec3 p, float n_dot_l) {
   return false;
 }
 
+// For a point of a mesh's face that turns from the light, whether anything
+// more than the mesh's own surface, where the light's ray leaves it, stands
+// between it and the light: a count past that surface's one volume. A
+// shadow map cannot tell them apart: the faces' shadow.
+bool shadowed_past_own_surface(vec3 p, float n_dot_l) {
+  if (shadow_test == 2) return abs(texelFetch(volume_count, ivec2(gl_FragCoord.xy), 0).r) > 1.5;
+  return in_shadow(p, n_dot_l);
+}
+
 // Whether the side of a sphere's point `p` with normal `n` that the camera
 // sees faces the light (its terminator is a curve, which no rounding moves
 // by more than a pixel's part).
@@ -110,10 +119,9 @@ bool seen_side_faces_light(vec3 p, vec3 n) {
   return dot(n, light_position - p) > 0.0;
 }
 
-// `reach`: how much of the light a smooth face takes, fading to 0 at the
-// terminator's points (terminator.hpp), where the shadow volume's exact edge
-// begins; 1 for everything else.
-void shade(vec3 p, vec3 n, vec3 s, bool smoothed, float reach, bool faces_light) {
+// `on_terminator`: a smooth face on its mesh's terminator (terminator.hpp),
+// where its normals, not its faces, say where the light ends.
+void shade(vec3 p, vec3 n, vec3 s, bool smoothed, bool on_terminator, bool faces_light) {
   if (pass == 4) {
     frag_color = vec4(safe_length(p - light_position));
     return;
@@ -129,8 +137,11 @@ void shade(vec3 p, vec3 n, vec3 s, bool smoothed, float reach, bool faces_light)
   else if (dot(s, n) < 0.0) s = -s;
   vec3 l = unit(light_position - p);
   float n_dot_l = max(dot(n, l), 0.0);  // may round below 0 where the face meets the light at a grazing angle
-  // What the shading takes: n . l, or for a smooth face, s . l faded at the terminator.
-  float s_dot_l = smoothed ? max(dot(s, l), 0.0) * reach : n_dot_l;
+  // What the shading takes: n . l, or for a smooth face, s . l.
+  float s_dot_l = smoothed ? max(dot(s, l), 0.0) : n_dot_l;
+  // A smooth face on the terminator that turns from the light takes the
+  // light its normals give it, unless more than its own surface shades it.
+  bool lit_by_normals = smoothed && on_terminator && !faces_light;
   if (pass == 0) {
     vec3 ambient = ambient_sum + mix(ground, sky, 0.5 + 0.5 * dot(s, sky_up));
     vec3 head = headlight * max(dot(s, normalize(to_viewer(p))), 0.0);
@@ -138,19 +149,19 @@ void shade(vec3 p, vec3 n, vec3 s, bool smoothed, float reach, bool faces_light)
     frag_color = material_catcher ? vec4(unshadowed, unshadowed, 0.0, -1.0)
                                   : vec4((ambient * material_ambient + head * material_diffuse) * surface_color, 1.0);
   } else if (pass == 1) {
-    if (!faces_light) discard;
+    if (!faces_light && !lit_by_normals) discard;
     if (material_catcher) {
       float direct = dot(light_color, vec3(1.0 / 3.0)) * n_dot_l;
       frag_color = vec4(in_shadow(p, n_dot_l) ? 0.0 : direct, direct, 0.0, 0.0);
       return;
     }
-    if (in_shadow(p, n_dot_l)) discard;
+    if (lit_by_normals ? shadowed_past_own_surface(p, n_dot_l) : in_shadow(p, n_dot_l)) discard;
     vec3 colour = material_diffuse * surface_color * s_dot_l;
     if (specular_used) {
       vec3 v = normalize(to_viewer(p));
       vec3 r = reflect(-l, s);
       float highlight = material_shininess > 0.0 ? pow(max(dot(r, v), 0.0), material_shininess) : 1.0;
-      colour += material_specular * highlight * (smoothed ? reach : 1.0);
+      colour += material_specular * highlight;
     }
     frag_color = vec4(light_color * colour, 0.0);  // alpha, coverage, is the ambient pass's
   } else {
@@ -169,13 +180,12 @@ layout(location = 3) in vec2 uv;     // texture coordinates, v down the image; (
 // Per triangle (gl_VertexID / 3: the triangles' vertices are drawn as
 // arrays), the light's side of its plane, exactly (SurfaceBuffers::use_light),
 // plus one: 2 where `normal` points, 0 the other side, 1 in the plane; and
-// 4 << c more where a smooth mesh's corner c is on the terminator
-// (terminator.hpp).
+// 4 more where a smooth mesh's triangle is on the terminator (terminator.hpp).
 uniform usamplerBuffer light_codes;
 #ifdef UMBRA_SMOOTH  // defined where some mesh is smooth: a flat scene interpolates nothing more
 layout(location = 5) in vec3 shading_normal;  // (0, 0, 0): flat
 out vec3 world_shading_normal;
-out float light_reach;  // 0 at a smooth mesh's terminator, 1 elsewhere, blended across the triangle
+flat out int on_terminator;  // 1 where the triangle is on a smooth mesh's terminator
 #endif
 uniform mat4 view_projection;
 out vec3 world_position;
@@ -193,7 +203,7 @@ void main() {
   triangle_light_side = int(light_code & 3u) - 1;
 #ifdef UMBRA_SMOOTH
   world_shading_normal = shading_normal;
-  light_reach = (light_code & (4u << uint(gl_VertexID % 3))) != 0u ? 0.0 : 1.0;
+  on_terminator = int(light_code >> 2u);
 #endif
   vertex_color = color;
   texture_uv = uv;
@@ -222,7 +232,7 @@ in vec2 texture_uv;
 flat in int triangle_light_side;
 #ifdef UMBRA_SMOOTH
 in vec3 world_shading_normal;
-in float light_reach;
+flat in int on_terminator;
 #endif
 uniform bool material_textured;
 uniform sampler2D material_texture;
@@ -278,9 +288,9 @@ void main() {
 #ifdef UMBRA_SMOOTH
   // A smooth face's corners all have normals; a flat one's are all 0, and so is what is blended of them.
   bool smoothed = world_shading_normal != vec3(0.0);
-  shade(p, n, smoothed ? normalize(world_shading_normal) : n, smoothed, light_reach, faces_light);
+  shade(p, n, smoothed ? normalize(world_shading_normal) : n, smoothed, on_terminator != 0, faces_light);
 #else
-  shade(p, n, n, false, 1.0, faces_light);
+  shade(p, n, n, false, false, faces_light);
 #endif
 }
 )";
@@ -328,7 +338,7 @@ void main() {
   vec4 clip = view_projection * vec4(p, 1.0);
   gl_FragDepth = 0.5 * (clip.z / clip.w) + 0.5;
   vec3 n = (p - sphere_center) / sphere_radius;
-  shade(p, n, n, false, 1.0, seen_side_faces_light(p, n));
+  shade(p, n, n, false, false, seen_side_faces_light(p, n));
 }
 )";
 

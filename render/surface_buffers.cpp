@@ -251,26 +251,23 @@ void SurfaceBuffers::use_light(size_t light, const glm::dvec3& position) {
 
 void SurfaceBuffers::write_light_codes(const glm::dvec3& position) {
   // Per triangle, its side of the light plus one (bits 0 and 1), and for a
-  // smooth mesh, bit 2 + c where its corner c is on the terminator, where
-  // the light fades to nothing (terminator.hpp).
+  // smooth mesh, bit 2 where it is on the terminator, where its normals
+  // rather than its faces say where the light ends (terminator.hpp).
   light_codes_.resize(triangle_count_);
   uint8_t* const codes = light_codes_.data();
-  const auto code = [](int side, const std::array<uint8_t, 3>& terminator) {
-    return uint8_t((side + 1) | terminator[0] << 2 | terminator[1] << 3 | terminator[2] << 4);
-  };
-  constexpr std::array<uint8_t, 3> kNoTerminator{0, 0, 0};
+  const auto code = [](int side, uint8_t on_terminator) { return uint8_t((side + 1) | on_terminator << 2); };
   // A smooth mesh's sides and terminator, worked out whole, once for all its
   // runs: the terminator needs the sides round each point. A flat mesh's
   // sides are worked out below, each triangle in the one run that holds it.
   struct SmoothSides {
     std::vector<int8_t> sides;
-    std::vector<std::array<uint8_t, 3>> terminator;
+    std::vector<uint8_t> terminator;
   };
   std::map<const Mesh*, SmoothSides> smooth;
   for (const Run& run : runs_) {
     if (run.triangle) {
       const Triangle& t = *run.triangle;
-      codes[run.first] = code(orientation(t.a, t.b, t.c, position), kNoTerminator);
+      codes[run.first] = code(orientation(t.a, t.b, t.c, position), 0);
       continue;
     }
     const Mesh& mesh = *run.mesh;
@@ -279,7 +276,7 @@ void SurfaceBuffers::write_light_codes(const glm::dvec3& position) {
       auto [found, first_run] = smooth.try_emplace(&mesh);
       if (first_run) {
         found->second.sides = triangle_light_sides(mesh, position);
-        found->second.terminator = terminator_corners(mesh, found->second.sides);
+        found->second.terminator = terminator_triangles(mesh, found->second.sides);
       }
       known = &found->second;
     }
@@ -293,7 +290,7 @@ void SurfaceBuffers::write_light_codes(const glm::dvec3& position) {
           const size_t k = run.subset ? (*run.subset)[i] : i;
           const auto& t = mesh.triangles[k];
           codes[run.first + i] = known ? code(known->sides[k], known->terminator[k])
-                                       : code(orientation(p[t[0]], p[t[1]], p[t[2]], position), kNoTerminator);
+                                       : code(orientation(p[t[0]], p[t[1]], p[t[2]], position), 0);
         }
       });
     });

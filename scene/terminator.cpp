@@ -29,9 +29,9 @@ std::vector<int8_t> triangle_light_sides(const Mesh& mesh, const glm::dvec3& lig
   return sides;
 }
 
-std::vector<std::array<uint8_t, 3>> terminator_corners(const Mesh& mesh, const std::vector<int8_t>& sides) {
+std::vector<uint8_t> terminator_triangles(const Mesh& mesh, const std::vector<int8_t>& sides) {
   const size_t count = mesh.triangles.size();
-  std::vector<std::array<uint8_t, 3>> fade(count, {0, 0, 0});
+  std::vector<uint8_t> on_terminator(count, 0);
   // The points round which the triangles have the light both strictly in
   // front and not, marked on every core (racing marks all write 1).
   std::vector<std::atomic<uint8_t>> in_front(mesh.positions.size()), not_in_front(mesh.positions.size());
@@ -68,12 +68,12 @@ std::vector<std::array<uint8_t, 3>> terminator_corners(const Mesh& mesh, const s
         const uint32_t t = c / 3, u = d / 3;
         if ((sides[t] > 0) == (sides[u] > 0)) continue;
         if (glm::dot(mesh.triangle_normals[t][c % 3], mesh.triangle_normals[u][d % 3]) < kSameShading) continue;
-        fade[t][c % 3] = 1;
+        on_terminator[t] = 1;
         break;
       }
     first = end;
   }
-  return fade;
+  return on_terminator;
 }
 
 }  // namespace umbra

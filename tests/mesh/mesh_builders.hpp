@@ -201,6 +201,26 @@ inline PolygonSoup uv_sphere(int rings, int segments) {
   return make_soup(points, faces);
 }
 
+// A cylinder of radius 1 round the z axis from z = -1 to 1: `segments`
+// sides, each cut into `stacks` quads, and each cap a fan of triangles from
+// its first corner; outward.
+inline PolygonSoup cylinder(int segments, int stacks) {
+  const double tau = 6.283185307179586;
+  std::vector<glm::dvec3> points;
+  for (int i = 0; i <= stacks; ++i)
+    for (int j = 0; j < segments; ++j)
+      points.push_back({std::cos(tau * j / segments), std::sin(tau * j / segments), -1.0 + 2.0 * i / stacks});
+  const auto at = [&](int i, int j) { return uint32_t(i * segments + (j + segments) % segments); };
+  std::vector<Face> faces;
+  for (int j = 1; j + 1 < segments; ++j) {
+    faces.push_back({at(0, 0), at(0, j + 1), at(0, j)});                  // bottom, facing -z
+    faces.push_back({at(stacks, 0), at(stacks, j), at(stacks, j + 1)});  // top, facing +z
+  }
+  for (int i = 0; i < stacks; ++i)
+    for (int j = 0; j < segments; ++j) faces.push_back({at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i + 1, j)});
+  return make_soup(points, faces);
+}
+
 // A Moebius strip of n quads: one border loop, not orientable.
 inline PolygonSoup moebius_strip(int n) {
   std::vector<glm::dvec3> points;
