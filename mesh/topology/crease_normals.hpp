@@ -17,7 +17,11 @@ namespace umbra {
 // planes turn from the triangle's by at most `crease_deg`, each weighted by
 // its angle at the point (Thurmer and Wuthrich, "Computing vertex normals
 // from polygonal meshes", 1998), so that how a surface is cut into
-// triangles does not tilt it. A degenerate triangle adds nothing, and its
+// triangles does not tilt it, and by its area, so that a large flat face
+// keeps its own normal where slivers of a shallow bevel or fillet meet it
+// (as Blender's Weighted Normal modifier weighs faces, by area and angle),
+// rather than tilting each of its corners its own way and showing the seams
+// between its triangles. A degenerate triangle adds nothing, and its
 // corners take (0, 0, 0): drawn flat. Normals point to the side the
 // triangle's corners wind counter-clockwise round.
 std::vector<std::array<glm::vec3, 3>> crease_normals(const std::vector<glm::dvec3>& points,

@@ -1,6 +1,6 @@
 // Normals for smooth shading where a file gives none, against values worked
-// out by hand: a cube's corners, a flat fan, a fold either side of the
-// crease angle, and a degenerate triangle.
+// out by hand: a cube's corners, a fold either side of the crease angle, a
+// flat face against a bevel's slivers, and a degenerate triangle.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -26,9 +26,9 @@ void expect_near(const glm::vec3& got, const glm::dvec3& want) {
 // Faces at right angles keep their own normals under a 30-degree crease;
 // over 90 degrees, each corner's is the mean of its three faces', each face
 // weighted by its angle there (90 degrees, however it is cut into
-// triangles), so along the cube's diagonal. Weighting by area or by
-// triangle count would tilt it: a face's two triangles meet some corners
-// twice and others once.
+// triangles) and by its flat face's area (the same for all six), so along
+// the cube's diagonal. Weighting by triangle count would tilt it: a face's
+// two triangles meet some corners twice and others once.
 TEST(CreaseNormals, ACubesCornersKeepTheirFacesBelowARightAngleAndBlendAlongItsDiagonalAbove) {
   const PolygonSoup cube = test::unit_cube();
   const auto triangles = triangles_of(cube);
@@ -63,6 +63,41 @@ TEST(CreaseNormals, AFoldIsSmoothBelowTheCreaseAngleAndSharpAbove) {
   expect_near(smooth[1][2], second);
   const auto sharp = crease_normals(points, triangles, fold - 1.0);
   for (size_t k = 0; k < 3; ++k) expect_near(sharp[0][k], first), expect_near(sharp[1][k], second);
+}
+
+// A flat face keeps nearly its own normal where a shallow bevel of small
+// triangles meets it, however it is cut: a 10 x 10 square, fanned from
+// either of two corners, with a bevel 1 wide falling at 10 degrees along
+// one side, cut into 20 triangles. At each point of that side, both meet
+// at the same angle (90 degrees at its ends, 180 between), so the normal is
+// their faces' normals weighted by their faces' areas alone: 100 against
+// 10 / cos 10. Weighted by angle alone it would be half way, 5 degrees off.
+TEST(CreaseNormals, AFlatFaceOutweighsTheSliversOfABevelHoweverItIsCut) {
+  const double slope = 10.0 * 3.141592653589793 / 180.0;
+  std::vector<glm::dvec3> points;
+  for (int k = 0; k <= 10; ++k) points.push_back({k, 0, 0});                             // 0..10: the side
+  for (int k = 0; k <= 10; ++k) points.push_back({k, -1, -std::tan(slope)});             // 11..21: the bevel's foot
+  points.push_back({0, 10, 0}), points.push_back({10, 10, 0});                          // 22, 23: the far corners
+  const glm::dvec3 bevel(0, -std::sin(slope), std::cos(slope));
+  const glm::dvec3 want = glm::normalize(100.0 * glm::dvec3(0, 0, 1) + 10.0 / std::cos(slope) * bevel);
+  for (const uint32_t apex : {22u, 23u}) {
+    SCOPED_TRACE(testing::Message() << "fanned from point " << apex);
+    std::vector<std::array<uint32_t, 3>> triangles;
+    for (uint32_t k = 0; k < 10; ++k) triangles.push_back({apex, k, k + 1});
+    triangles.push_back(apex == 22 ? std::array<uint32_t, 3>{22, 10, 23} : std::array<uint32_t, 3>{23, 22, 0});
+    const size_t top = triangles.size();
+    for (uint32_t k = 0; k < 10; ++k) {
+      triangles.push_back({k, 11 + k, 12 + k});
+      triangles.push_back({k, 12 + k, k + 1});
+    }
+    const auto normals = crease_normals(points, triangles, 30.0);
+    for (size_t t = 0; t < triangles.size(); ++t)
+      for (size_t c = 0; c < 3; ++c) {
+        if (triangles[t][c] > 10) continue;  // off the side: its own face's (or the fan's mean, at the apex)
+        SCOPED_TRACE(testing::Message() << "triangle " << t << (t < top ? " (top)" : " (bevel)") << " at point " << triangles[t][c]);
+        expect_near(normals[t][c], want);
+      }
+  }
 }
 
 // A degenerate triangle has no normal to give: its corners are drawn flat
