@@ -30,17 +30,56 @@ bool is_flat(const glm::dvec3& extent) {
   return extent[thinnest(extent)] < kFlat * std::max({extent.x, extent.y, extent.z});
 }
 
+// The way a flat model's face turns, in stage coordinates (not of unit
+// length), or 0 where nothing tells: its textured faces' (a label's side),
+// else, for a model that is one-sided (the area of its faces turned one way
+// over a tenth more than the other way), that way; with `by_detail`, else
+// the way most of its triangles turn (an engraved or embossed side is cut
+// into more of them than a plain one), by a tenth of them or more.
+glm::dvec3 face_side(const Mesh& mesh, const std::vector<Material>& materials, bool by_detail) {
+  glm::dvec3 textured(0.0), facing(0.0), counted(0.0);
+  double area = 0.0;
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& [a, b, c] = mesh.triangles[t];
+    const glm::dvec3 n = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
+    const double length = glm::length(n);
+    if (!(length > 0.0)) continue;
+    facing += n;
+    area += length;
+    counted += n / length;
+    const size_t material = size_t(mesh.material_of(t));
+    if (!mesh.triangle_uvs.empty() && material < materials.size() && materials[material].texture) textured += n;
+  }
+  if (textured != glm::dvec3(0.0)) return textured;
+  if (glm::length(facing) > 0.1 * area) return facing;
+  if (by_detail && glm::length(counted) > 0.1 * double(mesh.triangles.size())) return counted;
+  return glm::dvec3(0.0);
+}
+
 }  // namespace
 
-std::optional<PoseChoice> better_pose(const Mesh& mesh, const std::string& format_up) {
+std::optional<PoseChoice> better_pose(const Mesh& mesh, const std::string& format_up, const std::vector<Material>& materials) {
   if (mesh.triangles.empty()) return std::nullopt;
   const glm::dmat3 turn = up_rotation(format_up);
   const glm::dvec3 extent = mesh.bounds_max - mesh.bounds_min;  // on the stage
   if (is_flat(extent)) {
-    if (thinnest(extent) != 2) return std::nullopt;  // standing: it shows its face (view_turn_facing)
-    // The stage's +y (away from the camera) is the top of the file as seen from above.
-    const std::string up = axis_name(glm::transpose(turn) * glm::dvec3(0, 1, 0));
-    return PoseChoice{up, "it is flat and would lie flat, so it stands to show its face"};
+    // It lies flat, its face up. Lying already, it keeps its side up unless
+    // its texture or its one side plainly faces down; standing, the side
+    // that tells (by detail too), else the side the camera saw.
+    const int thin = thinnest(extent);
+    const glm::dvec3 side = face_side(mesh, materials, thin != 2);
+    glm::dvec3 up(0.0);
+    if (thin == 2) {
+      if (!(side.z < 0.0)) return std::nullopt;
+      up.z = -1.0;
+    } else {
+      // The default camera (azimuth 35) sees a panel's +x side, or its -y side.
+      const double seen = thin == 0 ? 1.0 : -1.0;
+      up[thin] = side[thin] > 0.0 ? 1.0 : side[thin] < 0.0 ? -1.0 : seen;
+    }
+    return PoseChoice{axis_name(glm::transpose(turn) * up),
+                      thin == 2 ? "it is flat and lay face down, so it is turned over to show its face"
+                                : "it is flat and stood on its edge, so it lies flat, its face up"};
   }
   // Where the file was built standing: its base at 0 along an axis.
   const glm::dvec3 lo = mesh.file_bounds_min, hi = mesh.file_bounds_max, size = hi - lo;
@@ -60,6 +99,11 @@ std::optional<PoseChoice> better_pose(const Mesh& mesh, const std::string& forma
   if (!built_on) return std::nullopt;
   return PoseChoice{*built_on, "it was built standing on that axis (its base is at 0 along it, not along " + format_up +
                                    "), on a footprint at least 1.5 times as large"};
+}
+
+bool lies_low(const Mesh& mesh) {
+  const glm::dvec3 extent = mesh.bounds_max - mesh.bounds_min;
+  return extent.z < 0.1 * std::min(extent.x, extent.y);
 }
 
 std::optional<double> view_turn_facing(const Mesh& mesh) {

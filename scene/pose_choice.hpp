@@ -2,7 +2,7 @@
 // Which way up a staged mesh stands. Each format has its convention (+z up
 // for STL and 3MF, +y for the others), but files often break it: a Y-up
 // model exported to STL stands on its tail, a Z-up plan saved as OBJ on its
-// side, and a flat part lies flat or shows its edge. Where the convention
+// side, and a flat part stands on its edge or lies face down. Where the convention
 // plainly gives a pose that does not read, a better one is chosen from the
 // geometry, and said.
 
@@ -21,17 +21,25 @@ struct PoseChoice {
 // For `mesh`, loaded fitted with its file's axis `format_up` turned to +z
 // (the stage's up), a better up axis, or none when the convention's pose
 // reads. It reads unless:
-// - the model is flat (its thinnest side under 2% of its longest) and lies
-//   flat: it is stood up, the file's top as seen from above up, so that the
-//   camera sees its face and its shadow falls on the floor (a flat model
-//   that stands keeps its pose, whatever else it might stand on);
+// - the model is flat (its thinnest side under 2% of its longest) and does
+//   not lie flat with its face up: it is laid flat, its face up, so that the
+//   camera sees its face, as it sees a plate's that lies flat as it is. Its
+//   face is the side its textured faces turn to (`materials` are the mesh's
+//   scene's), else the side a one-sided model's faces turn to, else, for one
+//   that stood, the side most of its triangles turn to, else the side the
+//   camera saw;
 // - the model was plainly built standing on another axis: its lowest point
 //   is at 0 along that axis and not along the convention's (a plan drawn on
 //   z = 0, a figure on y = 0), and it stands there on a footprint at least
-//   twice as large.
-std::optional<PoseChoice> better_pose(const Mesh& mesh, const std::string& format_up);
+//   1.5 times as large.
+std::optional<PoseChoice> better_pose(const Mesh& mesh, const std::string& format_up, const std::vector<Material>& materials);
 
-// For a flat model standing upright, the turn about the stage's up (in
+// Whether `mesh` (on the stage) lies low: its height under a tenth of its
+// footprint's shorter side, as a plate lying flat, whatever its thickness.
+// The default camera sees it from higher up, so that its face reads.
+bool lies_low(const Mesh& mesh);
+
+// For a flat model standing upright (as --up may stand it), the turn about the stage's up (in
 // degrees) of the default camera and light that puts both on the side its
 // faces turn to (by area; the stage's front, -y, when they turn neither
 // way), the camera seeing its face as it sees a model's front. Flat is thin

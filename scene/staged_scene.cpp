@@ -35,8 +35,9 @@ const double kLightElevationDeg = glm::degrees(std::asin(kToLight.z));
 // The studio's light (FillLight) and floor, chosen so that a face turned from
 // the key light is lighter than its shadow on the floor, and a pale model
 // stands out from the floor.
-const glm::dvec3 kKeyLight(0.85), kHeadlight(0.5), kSky(0.25), kGround(0.1), kFloor(0.5, 0.5, 0.53);
+const glm::dvec3 kKeyLight(0.55), kHeadlight(0.3), kSky(0.25), kGround(0.22), kFloor(0.55, 0.55, 0.58);
 constexpr double kCameraAzimuthDeg = 35.0;  // StageView's default
+constexpr double kCameraElevationDeg = 30.0, kLowModelElevationDeg = 60.0;
 constexpr double kLightDistance = 4.0;  // from the model's centre; the fitted model's longest side is 2
 constexpr double kMargin = 1.2;         // the frame's half-size over the framed points'
 // Behind the floor's horizon, where a low camera sees past it: a studio's pale grey.
@@ -135,7 +136,7 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
     }
   }
   if (points.empty()) points = {lo, hi};
-  const glm::dvec3 back = toward(view.camera_azimuth_deg.value_or(kCameraAzimuthDeg), view.camera_elevation_deg);
+  const glm::dvec3 back = toward(view.camera_azimuth_deg.value_or(kCameraAzimuthDeg), view.camera_elevation_deg.value_or(kCameraElevationDeg));
   // The camera's axes and lens, wherever along them it comes to stand.
   const Camera lens{back, glm::dvec3(0.0), {0, 0, 1}, view.fov_deg};
   const auto [right, up, forward] = lens.axes();
@@ -279,7 +280,7 @@ Scene stage_mesh(const std::string& path, const std::shared_ptr<const PolygonSou
   // --up decides outright.
   std::string notes;
   if (up.empty())
-    if (const auto better = better_pose(loaded.meshes[0], axis)) {
+    if (const auto better = better_pose(loaded.meshes[0], axis, loaded.materials)) {
       axis = better->up;
       loaded = load(axis);
       notes = "# up is " + axis + ", not " + format_up + " as its format has it: " + better->why + "\n";
@@ -303,6 +304,8 @@ Scene stage_mesh(const std::string& path, const std::shared_ptr<const PolygonSou
     view.light_azimuth_deg = kLightAzimuthDeg + *turn;
     view.light_elevation_deg = kLightElevationDeg;
   }
+  // A plate lying flat is seen from higher up, so that its face reads.
+  if (!view.camera_elevation_deg && !view.eye && lies_low(mesh)) view.camera_elevation_deg = kLowModelElevationDeg;
   const Stage stage = stage_for(mesh.bounds_min, mesh.bounds_max, framing_points(mesh), staging.frame_aspect, view);
   // A studio's light: the key light casts the one shadow; a headlight and a
   // sky fill the shaded sides so that they keep their shape and stay lighter

@@ -54,9 +54,10 @@ class StagingChoiceError : public std::runtime_error {
 };
 
 struct StageView {
-  // Unset: 35, or for a flat model standing upright, 35 degrees off its face (azimuth_facing).
+  // Unset: 35, or for a flat model standing upright, 35 degrees off its face (view_turn_facing).
   std::optional<double> camera_azimuth_deg;
-  double camera_elevation_deg = 30.0;
+  // Unset: 30, or 60 for a model that lies low (lies_low), whose face reads from there.
+  std::optional<double> camera_elevation_deg;
   double camera_zoom = 1.0;  // over the framing distance: 2 shows the model twice as large
   double fov_deg = 30.0;     // the lens's vertical field of view
   bool orthographic = false; // parallel rays, framing the model and its shadow as the lens would

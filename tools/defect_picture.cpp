@@ -58,7 +58,7 @@ DefectPicture::DefectPicture(const PolygonSoup& soup, const MeshReport& report, 
   StagingOptions staging;
   staging.view = view;
   // Seen from below, the floor would hide the model and its defects.
-  staging.no_floor = view.camera_elevation_deg < 0.0;
+  staging.no_floor = view.camera_elevation_deg.value_or(0.0) < 0.0;
   scene_ = stage_polygon_soup(std::make_shared<const PolygonSoup>(tinted(soup, report)), nullptr, staging_for(staging, settings), own_up);
   placed_ = placement_of(scene_.meshes.at(0));
 }

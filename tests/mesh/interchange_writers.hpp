@@ -34,6 +34,20 @@ void append_le(std::string& out, T value) {
   out.append(reinterpret_cast<const char*>(&value), sizeof value);  // little endian on the machines we build for
 }
 
+// `soup` (triangles) as ASCII STL, its coordinates to six decimals.
+inline std::string stl_text(const PolygonSoup& soup) {
+  std::string text = "solid s\n";
+  for (size_t p = 0; p < soup.polygon_count(); ++p) {
+    text += "facet normal 0 0 0\nouter loop\n";
+    for (uint32_t c = 0; c < 3; ++c) {
+      const glm::dvec3& q = soup.points[soup.polygon(p)[c]];
+      text += "vertex " + std::to_string(q.x) + " " + std::to_string(q.y) + " " + std::to_string(q.z) + "\n";
+    }
+    text += "endloop\nendfacet\n";
+  }
+  return text + "endsolid s\n";
+}
+
 // A triangle soup's points as float VEC3 and its corners as uint32 indices:
 // the one buffer of the glTF files below.
 inline std::string gltf_buffer(const PolygonSoup& soup) {

@@ -221,6 +221,40 @@ inline PolygonSoup cylinder(int segments, int stacks) {
   return make_soup(points, faces);
 }
 
+// A plate as CAD tools tessellate a printer's bed: 300 x 300 x 6, its top a
+// flat face at z = 0 fanned from one corner, a shallow bevel round it
+// (falling 0.3 over 2, 8.5 degrees) cut into `segments` quads a side, walls
+// fanned from their lower corners, and a bottom; closed and outward.
+inline PolygonSoup bevelled_plate(uint32_t segments) {
+  std::vector<glm::dvec3> points;
+  // A square ring of half-size h at height z, counter-clockwise seen from
+  // above from (-h, -h), `segments` points a side; its first point's index.
+  const auto ring = [&](double h, double z) {
+    const uint32_t first = uint32_t(points.size());
+    const glm::dvec2 corners[4] = {{-h, -h}, {h, -h}, {h, h}, {-h, h}};
+    for (int side = 0; side < 4; ++side)
+      for (uint32_t k = 0; k < segments; ++k) {
+        const glm::dvec2 p = corners[side] + (corners[(side + 1) % 4] - corners[side]) * (double(k) / segments);
+        points.emplace_back(p.x, p.y, z);
+      }
+    return first;
+  };
+  const uint32_t n = 4 * segments, top = ring(148.0, 0.0), edge = ring(150.0, -0.3), low = uint32_t(points.size());
+  for (const glm::dvec2 c : {glm::dvec2(-150, -150), glm::dvec2(150, -150), glm::dvec2(150, 150), glm::dvec2(-150, 150)})
+    points.emplace_back(c.x, c.y, -6.0);
+  std::vector<Face> faces;
+  for (uint32_t k = 1; k + 1 < n; ++k) faces.push_back({top, top + k, top + k + 1});
+  for (uint32_t k = 0; k < n; ++k) faces.push_back({edge + k, edge + (k + 1) % n, top + (k + 1) % n, top + k});
+  for (uint32_t side = 0; side < 4; ++side) {
+    const uint32_t a = low + side, b = low + (side + 1) % 4;
+    faces.push_back({a, b, edge + (side + 1) * segments % n});
+    for (uint32_t k = segments; k > 0; --k) faces.push_back({a, edge + (side * segments + k) % n, edge + side * segments + k - 1});
+  }
+  faces.push_back({low, low + 3, low + 2});
+  faces.push_back({low, low + 2, low + 1});
+  return make_soup(points, faces);
+}
+
 // A Moebius strip of n quads: one border loop, not orientable.
 inline PolygonSoup moebius_strip(int n) {
   std::vector<glm::dvec3> points;

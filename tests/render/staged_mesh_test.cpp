@@ -9,10 +9,12 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
 #include "hard_case_scenes.hpp"
 #include "image_agreement.hpp"
+#include "image/image.hpp"
 #include "mask_comparison.hpp"
 #include "scene/camera.hpp"
 #include "scene/scene_parser.hpp"
@@ -308,19 +310,6 @@ TEST(StagedMesh, CameraAndLightAnglesPlaceThemRoundTheModel) {
   EXPECT_EQ(there.lights[0].position, glm::dvec3(-2, 1, 3));
 }
 
-// `soup` (triangles) as ASCII STL.
-std::string stl_text(const PolygonSoup& soup) {
-  std::string text = "solid s\n";
-  for (size_t p = 0; p < soup.polygon_count(); ++p) {
-    text += "facet normal 0 0 0\nouter loop\n";
-    for (uint32_t c = 0; c < 3; ++c) {
-      const glm::dvec3& q = soup.points[soup.polygon(p)[c]];
-      text += "vertex " + std::to_string(q.x) + " " + std::to_string(q.y) + " " + std::to_string(q.z) + "\n";
-    }
-    text += "endloop\nendfacet\n";
-  }
-  return text + "endsolid s\n";
-}
 
 // The staged text's line that says why the pose is not the format's ("" when none).
 std::string pose_note(const std::string& text) {
@@ -337,7 +326,7 @@ std::string pose_note(const std::string& text) {
 TEST(StagedMesh, AModelBuiltStandingOnAnotherAxisStandsOnIt) {
   const PolygonSoup animal = test::box_triangles({-0.5, 0.0, -1.5}, {0.5, 1.5, 1.5});
   std::string text;
-  const Scene scene = parse_scene_or_mesh_file(test::write_mesh("animal.stl", stl_text(animal)), {}, &text);
+  const Scene scene = parse_scene_or_mesh_file(test::write_mesh("animal.stl", test::stl_text(animal)), {}, &text);
   EXPECT_EQ(pose_note(text), "# up is +y, not +z as its format has it: it was built standing on that axis (its base is at 0 along it, "
                              "not along +z), on a footprint at least 1.5 times as large");
   EXPECT_NE(text.find("mesh \"animal.stl\" fit rotate 1 0 0 90 "), std::string::npos) << text;
@@ -404,44 +393,104 @@ bool seen_and_lit(const Scene& scene) {
   return seen >= size * size / 50 && lit >= seen * 9 / 10;
 }
 
-// A flat part is seen by its face, lit, never by its edge or lying flat on
-// the floor: a quad lying flat in a Y-up OBJ is stood up (its top as seen
-// from above up), a panel standing across the stage's x axis has the camera
-// and light turned to its face, and Debian's real triangle.stl (lying flat
-// in z) stands too.
-TEST(StagedMesh, AFlatPartStandsAndShowsItsLitFace) {
+// The sine of the staged camera's elevation over what it looks at.
+double camera_rise(const Scene& scene) { return glm::normalize(scene.camera.eye - scene.camera.target).z; }
+
+// The way a staged mesh's faces turn, summed by area, or only its faces
+// that have texture coordinates.
+glm::dvec3 faces_turn(const Mesh& mesh, bool textured_only = false) {
+  glm::dvec3 sum(0.0);
+  for (size_t t = 0; t < mesh.triangles.size(); ++t)
+    if (!textured_only || mesh.triangle_uvs[t] != std::array<glm::vec2, 3>{})
+      sum += glm::cross(mesh.positions[mesh.triangles[t][1]] - mesh.positions[mesh.triangles[t][0]],
+                        mesh.positions[mesh.triangles[t][2]] - mesh.positions[mesh.triangles[t][0]]);
+  return sum;
+}
+
+// A flat part lies flat, its face up and lit, and is seen from higher up
+// (60 degrees) so that its face reads, never by its edge or from below: a
+// quad lying face up in a Y-up OBJ keeps its pose, one lying face down is
+// turned over, a panel standing across x in an STL and one standing in a
+// Y-up OBJ (as glTF's texture transform sample does) lie down face up, and
+// Debian's real triangle.stl lies as it is.
+TEST(StagedMesh, AFlatPartLiesFlatAndShowsItsLitFace) {
   std::string text;
-  const PolygonSoup lying = test::make_soup({{0, 0, 0}, {2, 0, 0}, {2, 0, -1}, {0, 0, -1}}, {{0, 1, 2}, {0, 2, 3}});  // facing +y
-  const Scene stood = parse_scene_or_mesh_file(test::write_mesh("lying.obj", test::obj_text(lying)), {}, &text);
-  EXPECT_EQ(pose_note(text), "# up is -z, not +y as its format has it: it is flat and would lie flat, so it stands to show its face");
-  EXPECT_NEAR(stood.meshes[0].bounds_max.z - stood.meshes[0].bounds_min.z, 1.0, 1e-12);
-  EXPECT_TRUE(seen_and_lit(stood));
-  // Standing across x (its face toward +x): seen and lit from +x.
-  const PolygonSoup across = test::make_soup({{0, 0, 0}, {0, 2, 0}, {0, 2, 1}, {0, 0, 1}}, {{0, 1, 2}, {0, 2, 3}});  // Z-up (STL)
-  const Scene turned = parse_scene_or_mesh_file(test::write_mesh("across.stl", stl_text(across)), {}, &text);
+  const PolygonSoup up = test::make_soup({{0, 0, 0}, {2, 0, 0}, {2, 0, -1}, {0, 0, -1}}, {{0, 1, 2}, {0, 2, 3}});  // facing +y
+  const Scene kept = parse_scene_or_mesh_file(test::write_mesh("face-up.obj", test::obj_text(up)), {}, &text);
   EXPECT_EQ(pose_note(text), "");
-  EXPECT_GT(turned.camera.eye.x, 0.5);
-  EXPECT_GT(turned.lights[0].position.x, 0.5);
-  EXPECT_TRUE(seen_and_lit(turned));
-  // Standing in a Y-up OBJ, its face toward +z at z = 0 (as glTF's texture
-  // transform sample is): it stays standing, though it lies "at 0" on z.
-  const PolygonSoup upright = test::make_soup({{0, -0.5, 0}, {2, -0.5, 0}, {2, 0.5, 0}, {0, 0.5, 0}}, {{0, 1, 2}, {0, 2, 3}});
-  const Scene kept = parse_scene_or_mesh_file(test::write_mesh("upright.obj", test::obj_text(upright)), {}, &text);
-  EXPECT_EQ(pose_note(text), "");
+  EXPECT_NEAR(camera_rise(kept), std::sin(glm::radians(60.0)), 1e-6);
+  EXPECT_GT(faces_turn(kept.meshes[0]).z, 0.0);
   EXPECT_TRUE(seen_and_lit(kept));
+  const Scene over = parse_scene_or_mesh_file(test::write_mesh("face-down.obj", test::obj_text(test::all_reversed(up))), {}, &text);
+  EXPECT_EQ(pose_note(text), "# up is -y, not +y as its format has it: it is flat and lay face down, so it is turned over to show its face");
+  EXPECT_GT(faces_turn(over.meshes[0]).z, 0.0);
+  EXPECT_TRUE(seen_and_lit(over));
+  // Standing across x (its face toward +x), in an STL: laid down on its back.
+  const PolygonSoup across = test::make_soup({{0, 0, 0}, {0, 2, 0}, {0, 2, 1}, {0, 0, 1}}, {{0, 1, 2}, {0, 2, 3}});
+  const Scene laid = parse_scene_or_mesh_file(test::write_mesh("across.stl", test::stl_text(across)), {}, &text);
+  EXPECT_EQ(pose_note(text), "# up is +x, not +z as its format has it: it is flat and stood on its edge, so it lies flat, its face up");
+  EXPECT_NEAR(camera_rise(laid), std::sin(glm::radians(60.0)), 1e-6);
+  EXPECT_GT(faces_turn(laid.meshes[0]).z, 0.0);
+  EXPECT_TRUE(seen_and_lit(laid));
+  // Standing in a Y-up OBJ, its face toward +z at z = 0.
+  const PolygonSoup upright = test::make_soup({{0, -0.5, 0}, {2, -0.5, 0}, {2, 0.5, 0}, {0, 0.5, 0}}, {{0, 1, 2}, {0, 2, 3}});
+  const Scene down = parse_scene_or_mesh_file(test::write_mesh("upright.obj", test::obj_text(upright)), {}, &text);
+  EXPECT_EQ(pose_note(text), "# up is +z, not +y as its format has it: it is flat and stood on its edge, so it lies flat, its face up");
+  EXPECT_GT(faces_turn(down.meshes[0]).z, 0.0);
+  EXPECT_TRUE(seen_and_lit(down));
   // Standing at a slant along the default view's line of sight (azimuth
-  // 35), which would see only its edge: the camera is turned to its face,
+  // 35): not flat along an axis, it stands, the camera turned to its face,
   // which looks to azimuth -55.
   const glm::dvec3 along(std::sin(glm::radians(35.0)), -std::cos(glm::radians(35.0)), 0.0);
   const PolygonSoup slanted = test::make_soup({{0, 0, 0}, 2.0 * along, 2.0 * along + glm::dvec3(0, 0, 1), {0, 0, 1}}, {{0, 1, 2}, {0, 2, 3}});
-  const Scene faced = parse_scene_or_mesh_file(test::write_mesh("slanted.stl", stl_text(slanted)), {}, &text);
+  const Scene faced = parse_scene_or_mesh_file(test::write_mesh("slanted.stl", test::stl_text(slanted)), {}, &text);
   EXPECT_EQ(pose_note(text), "");
   EXPECT_TRUE(seen_and_lit(faced));
   const std::string triangle = "/usr/share/assimp/models/STL/triangle.stl";
   if (!std::filesystem::exists(triangle)) GTEST_SKIP() << "needs Debian's assimp-testmodels (build.sh installs it)";
   const Scene real = parse_scene_or_mesh_file(triangle, {}, &text);
-  EXPECT_EQ(pose_note(text).substr(0, 16), "# up is +y, not ");
+  EXPECT_EQ(pose_note(text), "");
+  EXPECT_GT(faces_turn(real.meshes[0]).z, 0.0);
   EXPECT_TRUE(seen_and_lit(real));
+}
+
+// One plate at two sizes, as a printer's beds of one family come, posed and
+// seen alike: a closed box 220 x 220 x 3 (flat: thinner than 2% of its
+// side) and 150 x 150 x 3 (not flat) lie as their STL has them, seen from
+// 60 degrees up, at the same angles. A thin box textured on its underside
+// only (a label's side) is turned over to show it.
+TEST(StagedMesh, PlatesLieFlatAlikeAndShowTheirTexturedSide) {
+  std::string text;
+  const Scene large = parse_scene_or_mesh_file(
+      test::write_mesh("bed_220.stl", test::stl_text(test::box_triangles(glm::dvec3(0.0), glm::dvec3(220, 220, 3)))), {}, &text);
+  EXPECT_EQ(pose_note(text), "");
+  const Scene small = parse_scene_or_mesh_file(
+      test::write_mesh("bed_150.stl", test::stl_text(test::box_triangles(glm::dvec3(0.0), glm::dvec3(150, 150, 3)))), {}, &text);
+  EXPECT_EQ(pose_note(text), "");
+  for (const Scene* bed : {&large, &small}) {
+    EXPECT_NEAR(camera_rise(*bed), std::sin(glm::radians(60.0)), 1e-6);
+    EXPECT_TRUE(seen_and_lit(*bed));
+  }
+  EXPECT_NEAR(glm::dot(glm::normalize(large.camera.eye - large.camera.target), glm::normalize(small.camera.eye - small.camera.target)), 1.0,
+              1e-9);
+  // The label: a 2 x 1 x 0.01 box (Y-up OBJ) whose face at y = 0 (its underside) is mapped.
+  const std::filesystem::path folder = std::filesystem::path(test::write_mesh("label.mtl", "newmtl label\nmap_Kd label.png\nnewmtl plain\nKd 0.8 0.8 0.8\n")).parent_path();
+  Image map(2, 2, 3);
+  for (uint8_t& v : map.pixels) v = 200;
+  write_png(map, (folder / "label.png").string());
+  const PolygonSoup box = test::box_triangles(glm::dvec3(0.0), glm::dvec3(2, 0.01, 1));
+  std::string obj = "mtllib label.mtl\n";
+  for (const glm::dvec3& p : box.points) obj += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
+  obj += "vt 0 0\nvt 1 0\nvt 1 1\n";
+  for (size_t f = 0; f < box.polygon_count(); ++f) {
+    const uint32_t* c = box.polygon(f);
+    const bool underside = box.points[c[0]].y == 0.0 && box.points[c[1]].y == 0.0 && box.points[c[2]].y == 0.0;
+    obj += underside ? "usemtl label\nf " + std::to_string(c[0] + 1) + "/1 " + std::to_string(c[1] + 1) + "/2 " + std::to_string(c[2] + 1) + "/3\n"
+                     : "usemtl plain\nf " + std::to_string(c[0] + 1) + " " + std::to_string(c[1] + 1) + " " + std::to_string(c[2] + 1) + "\n";
+  }
+  const Scene label = parse_scene_or_mesh_file(test::write_mesh("label.obj", obj), {}, &text);
+  EXPECT_EQ(pose_note(text), "# up is -y, not +y as its format has it: it is flat and lay face down, so it is turned over to show its face");
+  EXPECT_GT(faces_turn(label.meshes[0], true).z, 0.0);
 }
 
 // A camera turned round the model sees it where the ray-cast reference does:

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
+#include <set>
 #include <regex>
 #include <string>
 
@@ -14,6 +16,7 @@
 #include "reference/ray_caster.hpp"
 #include "scene/scene_parser.hpp"
 #include "scene/staged_scene.hpp"
+#include "tests/mesh/interchange_writers.hpp"
 #include "tests/mesh/mesh_builders.hpp"
 #include "tests/render/image_agreement.hpp"
 #include "tests/scratch_folder.hpp"
@@ -157,6 +160,91 @@ TEST_F(StudioLook, AShadowCastAcrossTheTerminatorStaysWhole) {
       band += reference_mask_value(open, size, size, x, y, 0) == kMaskUnlit && before.cpu.at(x, y, 0) > unlit.cpu.at(x, y, 0) + 2;
     }
   EXPECT_GT(band, 20) << "the terminator's faces that turn from the light should take some of it without the wall";
+}
+
+// The studio's fill reaches every face the camera sees: staged and drawn
+// flat, each face of a coarse sphere (faces turned every way, some to the
+// floor) and of an open bowl (seen inside and out, its outside being the
+// back of its faces) is lighter, over its pixels, than the darkest pixel of
+// the shadow on the floor.
+TEST_F(StudioLook, EveryFaceTheCameraSeesIsLighterThanTheShadowOnTheFloor) {
+  write("sphere.obj", test::obj_text(test::uv_sphere(6, 10)));
+  write("bowl.obj", test::obj_text(test::bowl(4, 10)));
+  std::vector<std::string> files{(folder_ / "sphere.obj").string(), (folder_ / "bowl.obj").string()};
+  // Two triangles, one seen from its back, which was darker than the shadow.
+  const std::string real = "/usr/share/assimp/models/OBJ/multiple_spaces.obj";
+  if (std::filesystem::exists(real)) files.push_back(real);
+  for (const std::string& name : files) {
+    SCOPED_TRACE(name);
+    StagingOptions staging;
+    staging.flat = true;
+    const Scene scene = parse_scene_or_mesh_file(name, {}, nullptr, staging);
+    const int size = 200;
+    const Image picture = test::render_gl_and_ray_cast(scene, size).gl;
+    const RayCaster caster(scene);
+    const int first_mesh_object = int(scene.spheres.size() + scene.triangles.size());
+    const auto grey = [&](int x, int y) { return (picture.at(x, y, 0) + picture.at(x, y, 1) + picture.at(x, y, 2)) / 3.0; };
+    double darkest_shadow = 255.0;
+    std::map<int, std::pair<double, int>> faces;  // per face seen off its edges: its pixels' summed grey, and how many
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x) {
+        std::set<int> seen;
+        for (const double dx : {-0.5, 0.5})
+          for (const double dy : {-0.5, 0.5}) {
+            const auto hit = caster.nearest_hit(scene.camera.pixel_ray(size, size, x + dx, y + dy));
+            seen.insert(hit ? hit->object : -1);
+          }
+        if (seen.size() != 1 || *seen.begin() < 0) continue;
+        const int object = *seen.begin();
+        if (object >= first_mesh_object) {
+          faces[object].first += grey(x, y);
+          ++faces[object].second;
+        } else if (reference_mask_value(scene, size, size, x, y, 0) == kMaskUnlit) {
+          darkest_shadow = std::min(darkest_shadow, grey(x, y));
+        }
+      }
+    ASSERT_LT(darkest_shadow, 255.0) << "the shadow should be in view";
+    int shown = 0;
+    double darkest_face = 255.0;
+    for (const auto& [object, sum] : faces) darkest_face = std::min(darkest_face, sum.second >= 8 ? sum.first / sum.second : 255.0);
+    std::cerr << name << " darkest face " << darkest_face << " darkest shadow " << darkest_shadow << "\n";
+    for (const auto& [object, sum] : faces) {
+      if (sum.second < 8) continue;
+      ++shown;
+      EXPECT_GT(sum.first / sum.second, darkest_shadow) << "face " << object - first_mesh_object << " over " << sum.second << " pixels";
+    }
+    EXPECT_GE(shown, name == real ? 1 : 20) << "most faces should be seen";
+  }
+}
+
+// A flat face keeps its one normal, whatever its neighbours: a plate as
+// CAD tools tessellate a printer's bed (its top fanned from a corner, a
+// shallow bevel of small quads round it, 324 triangles), staged and shaded
+// smooth, draws within 6 levels of its flat picture on 99% of its pixels.
+// Weighed by their angles alone, the bevel's slivers tilted each of the
+// top's corners its own way, and the fan's seams showed.
+TEST_F(StudioLook, AFlatFaceKeepsItsNormalWhateverItsNeighbours) {
+  write("plate.stl", test::stl_text(test::triangulated(test::bevelled_plate(20))));
+  StagingOptions flat_staging;
+  flat_staging.flat = true;
+  const Scene smooth = parse_scene_or_mesh_file((folder_ / "plate.stl").string());
+  const Scene flat = parse_scene_or_mesh_file((folder_ / "plate.stl").string(), {}, nullptr, flat_staging);
+  ASSERT_FALSE(smooth.meshes[0].triangle_normals.empty());
+  const int size = 200;
+  const Image a = test::render_gl_and_ray_cast(smooth, size).gl, b = test::render_gl_and_ray_cast(flat, size).gl;
+  const RayCaster caster(flat);
+  int pixels = 0, near = 0, worst = 0;
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      if (!inside_the_model(flat, caster, size, x, y)) continue;
+      int off = 0;
+      for (int c = 0; c < 3; ++c) off = std::max(off, std::abs(int(a.at(x, y, c)) - int(b.at(x, y, c))));
+      ++pixels;
+      near += off <= 6;
+      worst = std::max(worst, off);
+    }
+  EXPECT_GT(pixels, size * size / 8) << "the plate should fill much of the picture";
+  EXPECT_GE(near, 0.99 * pixels) << near << " of " << pixels << " pixels within 6 levels; the worst is off by " << worst;
 }
 
 // Across a sharp edge nothing fades: a cube shaded `smooth 30` keeps its
