@@ -43,8 +43,12 @@ constexpr double kMargin = 1.2;         // the frame's half-size over the framed
 // Behind the floor's horizon, where a low camera sees past it: a studio's pale grey.
 const glm::dvec3 kStageBackground(0.8, 0.8, 0.82);
 // How far from the model's centre a shadow is framed: a point little below
-// a low light casts its shadow toward the horizon, which no frame holds.
-constexpr double kShadowReach = 8.0;
+// a low light casts its shadow toward the horizon, which no frame holds;
+// and, under the default light, over the model's own radius (half its box's
+// diagonal), how far the frame follows its shadow before the model's size
+// comes first: a spindly model's shadow, longer than the model, would leave
+// it small in the frame. A light the user moved has its whole shadow framed.
+constexpr double kShadowReach = 8.0, kShadowRoom = 1.25;
 // The steps a motion's framing takes through a whole turn: between two, a
 // point turns by at most 5 degrees from one, and moves out from the line
 // between them by under 0.4% of its distance from the axis, well inside
@@ -117,11 +121,14 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
   stage.light = light_position(centre, view);
   // What the frame must hold: the model's points and their shadows on the
   // floor, where the light is above the point (else its shadow has no end),
-  // the furthest drawn in to kShadowReach.
+  // the furthest drawn in to `reach`.
   // Under a motion, every frame's: the model turned, or the light, through
   // a whole turn about the z axis in kFramingTurns steps.
   std::vector<glm::dvec3> points;
   const int turns = view.turning == Turning::kNone ? 1 : kFramingTurns;
+  const bool light_moved = view.light || view.light_azimuth_deg || view.light_elevation_deg || view.light_turn_deg != 0.0 ||
+                           view.turning == Turning::kLight;
+  const double reach = light_moved ? kShadowReach : std::min(kShadowReach, kShadowRoom * glm::length(hi - lo) / 2.0);
   for (int turn = 0; turn < turns; ++turn) {
     const double degrees = frame_turn_deg(turn, turns);
     const glm::dvec3 light = view.turning == Turning::kLight ? rotated_about_z(stage.light, degrees) : stage.light;
@@ -131,7 +138,7 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
       if (!view.frame_shadow || !(light.z > p.z)) continue;
       glm::dvec3 shadow = light + (p - light) * ((light.z - stage.floor_z) / (light.z - p.z));
       const glm::dvec3 out(shadow.x - centre.x, shadow.y - centre.y, 0.0);
-      if (glm::length(out) > kShadowReach) shadow = glm::dvec3(centre.x, centre.y, stage.floor_z) + out * (kShadowReach / glm::length(out));
+      if (glm::length(out) > reach) shadow = glm::dvec3(centre.x, centre.y, stage.floor_z) + out * (reach / glm::length(out));
       points.push_back(shadow);
     }
   }

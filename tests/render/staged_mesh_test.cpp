@@ -493,6 +493,27 @@ TEST(StagedMesh, PlatesLieFlatAlikeAndShowTheirTexturedSide) {
   EXPECT_GT(faces_turn(label.meshes[0], true).z, 0.0);
 }
 
+// A spindly model is framed first, its shadow after: a lamp post (a pole
+// 2 tall, an arm 1 long at its top), whose shadow reaches twice as far as
+// the post does from its centre, spans 60% of the picture's height or more
+// (72%); framed round its whole shadow, it spanned 52%. Its shadow still
+// shows.
+TEST(StagedMesh, ASpindlyModelIsFramedBeforeItsShadow) {
+  const PolygonSoup post = test::combine(test::box_triangles(glm::dvec3(0.0), glm::dvec3(0.1, 0.1, 2.0)),
+                                         test::box_triangles(glm::dvec3(0.1, 0.0, 1.9), glm::dvec3(1.0, 0.1, 2.0)));
+  const Scene scene = parse_scene_or_mesh_file(test::write_mesh("post.stl", test::stl_text(post)));
+  const int size = 120;
+  int top = size, bottom = -1, shadow = 0;
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const auto hit = nearest_hit(scene, scene.camera.pixel_ray(size, size, x, y));
+      if (hit && hit->object >= int(scene.triangles.size())) top = std::min(top, y), bottom = std::max(bottom, y);
+      shadow += hit && hit->object < int(scene.triangles.size()) && reference_mask_value(scene, size, size, x, y, 0) == kMaskUnlit;
+    }
+  EXPECT_GT(bottom - top + 1, 0.6 * size) << "the post spans rows " << top << " to " << bottom;
+  EXPECT_GT(shadow, 100) << "its shadow should show";
+}
+
 // A camera turned round the model sees it where the ray-cast reference does:
 // the GL's image and mask against the reference's, from behind and below the
 // default view, with the light moved too.

@@ -205,9 +205,6 @@ TEST_F(StudioLook, EveryFaceTheCameraSeesIsLighterThanTheShadowOnTheFloor) {
       }
     ASSERT_LT(darkest_shadow, 255.0) << "the shadow should be in view";
     int shown = 0;
-    double darkest_face = 255.0;
-    for (const auto& [object, sum] : faces) darkest_face = std::min(darkest_face, sum.second >= 8 ? sum.first / sum.second : 255.0);
-    std::cerr << name << " darkest face " << darkest_face << " darkest shadow " << darkest_shadow << "\n";
     for (const auto& [object, sum] : faces) {
       if (sum.second < 8) continue;
       ++shown;
