@@ -138,7 +138,10 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
       if (!view.frame_shadow || !(light.z > p.z)) continue;
       glm::dvec3 shadow = light + (p - light) * ((light.z - stage.floor_z) / (light.z - p.z));
       const glm::dvec3 out(shadow.x - centre.x, shadow.y - centre.y, 0.0);
-      if (glm::length(out) > reach) shadow = glm::dvec3(centre.x, centre.y, stage.floor_z) + out * (reach / glm::length(out));
+      if (glm::length(out) > reach) {
+        shadow = glm::dvec3(centre.x, centre.y, stage.floor_z) + out * (reach / glm::length(out));
+        stage.shadow_cut = stage.shadow_cut || reach < kShadowReach;
+      }
       points.push_back(shadow);
     }
   }
@@ -312,8 +315,14 @@ Scene stage_mesh(const std::string& path, const std::shared_ptr<const PolygonSou
     view.light_elevation_deg = kLightElevationDeg;
   }
   // A plate lying flat is seen from higher up, so that its face reads.
-  if (!view.camera_elevation_deg && !view.eye && lies_low(mesh)) view.camera_elevation_deg = kLowModelElevationDeg;
+  if (!view.camera_elevation_deg && !view.eye && lies_low(mesh)) {
+    view.camera_elevation_deg = kLowModelElevationDeg;
+    notes += "# seen from " + StageStatements::number(kLowModelElevationDeg) + " degrees up, not " +
+             StageStatements::number(kCameraElevationDeg) + ": it lies low (its height under a tenth of its footprint's side), so its face reads\n";
+  }
   const Stage stage = stage_for(mesh.bounds_min, mesh.bounds_max, framing_points(mesh), staging.frame_aspect, view);
+  if (stage.shadow_cut)
+    notes += "# its shadow runs out of the frame: framed whole, it would leave the model small (moving the light frames it whole)\n";
   // A studio's light: the key light casts the one shadow; a headlight and a
   // sky fill the shaded sides so that they keep their shape and stay lighter
   // than the shadow on the floor, and a soft tone curve keeps highlights

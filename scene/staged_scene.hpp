@@ -95,6 +95,7 @@ struct Stage {
   glm::dvec3 floor_centre{0.0};
   double floor_half_size = 0.0;
   Camera camera;
+  bool shadow_cut = false;  // part of the shadow was left out of the frame so that the model comes first
 };
 Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<glm::dvec3>& points, double aspect = 1.0,
                 const StageView& view = {});

@@ -467,6 +467,10 @@ TEST(StagedMesh, PlatesLieFlatAlikeAndShowTheirTexturedSide) {
   const Scene small = parse_scene_or_mesh_file(
       test::write_mesh("bed_150.stl", test::stl_text(test::box_triangles(glm::dvec3(0.0), glm::dvec3(150, 150, 3)))), {}, &text);
   EXPECT_EQ(pose_note(text), "");
+  EXPECT_NE(text.find("\n# seen from 60 degrees up, not 30: it lies low (its height under a tenth of its footprint's side), so its face "
+                      "reads\n"),
+            std::string::npos)
+      << text;
   for (const Scene* bed : {&large, &small}) {
     EXPECT_NEAR(camera_rise(*bed), std::sin(glm::radians(60.0)), 1e-6);
     EXPECT_TRUE(seen_and_lit(*bed));
@@ -501,7 +505,12 @@ TEST(StagedMesh, PlatesLieFlatAlikeAndShowTheirTexturedSide) {
 TEST(StagedMesh, ASpindlyModelIsFramedBeforeItsShadow) {
   const PolygonSoup post = test::combine(test::box_triangles(glm::dvec3(0.0), glm::dvec3(0.1, 0.1, 2.0)),
                                          test::box_triangles(glm::dvec3(0.1, 0.0, 1.9), glm::dvec3(1.0, 0.1, 2.0)));
-  const Scene scene = parse_scene_or_mesh_file(test::write_mesh("post.stl", test::stl_text(post)));
+  std::string text;
+  const Scene scene = parse_scene_or_mesh_file(test::write_mesh("post.stl", test::stl_text(post)), {}, &text);
+  EXPECT_NE(text.find("\n# its shadow runs out of the frame: framed whole, it would leave the model small (moving the light frames it "
+                      "whole)\n"),
+            std::string::npos)
+      << text;
   const int size = 120;
   int top = size, bottom = -1, shadow = 0;
   for (int y = 0; y < size; ++y)
