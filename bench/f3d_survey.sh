@@ -15,11 +15,12 @@ for tool in f3d xvfb-run; do
 done
 [ -f "$survey/status.txt" ] || { echo "bench: run bench/staging_survey.sh $survey first" >&2; exit 2; }
 mkdir -p "$survey/f3d" "$survey/sheets"
+. bench/timing.sh
 rm -f "$survey"/sheets/sheet-*
 # Each file umbra rendered, by the name staging_survey.sh gave its picture.
 awk '$1 == 0 {print $2}' "$survey/status.txt" | sort > "$survey/rendered.txt"
 while read -r file; do
-  name=$(echo "$file" | sed 's|^/usr/share/assimp/models/||; s|^build/cgal-data/data/meshes/|cgal/|; s|/|_|g')
+  name=$(survey_name "$file")
   grep -qx "$name" "$survey/rendered.txt" || continue
   timeout 120 xvfb-run -a f3d --resolution=200,200 --output="$survey/f3d/$name.png" "$file" >/dev/null 2>&1 || true
   echo "$name"

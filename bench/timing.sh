@@ -83,3 +83,9 @@ require_engine_and_bunny() {
   require_built "$1" make_subdivided_mesh
   subdivided_bunny "$1/bench-data" 1M
 }
+
+# survey_name FILE: the name bench/staging_survey.sh and bench/f3d_survey.sh
+# give FILE's pictures: its path under the data set's folder, / as _
+survey_name() {
+  echo "$1" | sed 's|^/usr/share/assimp/models/||; s|^build/cgal-data/data/meshes/|cgal/|; s|^/usr/share/opencascade/data/|occt/|; s|/|_|g'
+}

@@ -106,6 +106,40 @@ bool lies_low(const Mesh& mesh) {
   return extent.z < 0.1 * std::min(extent.x, extent.y);
 }
 
+double silhouette_fill(const Mesh& mesh, const glm::dvec3& direction) {
+  if (mesh.triangles.empty()) return 0.0;
+  // Axes across the view: any two perpendicular to it and to each other.
+  const glm::dvec3 across = glm::normalize(std::abs(direction.z) < 0.9 ? glm::cross(direction, glm::dvec3(0, 0, 1))
+                                                                         : glm::cross(direction, glm::dvec3(1, 0, 0)));
+  const glm::dvec3 upward = glm::cross(across, direction);
+  std::vector<glm::dvec2> seen(mesh.positions.size());
+  glm::dvec2 lo(HUGE_VAL), hi(-HUGE_VAL);
+  for (const auto& triangle : mesh.triangles)
+    for (const uint32_t v : triangle) {
+      seen[v] = {glm::dot(mesh.positions[v], across), glm::dot(mesh.positions[v], upward)};
+      lo = glm::min(lo, seen[v]), hi = glm::max(hi, seen[v]);
+    }
+  constexpr int kCells = 64;
+  const glm::dvec2 cell = (hi - lo) / double(kCells);
+  if (!(cell.x > 0.0) || !(cell.y > 0.0)) return 0.0;
+  std::vector<uint8_t> covered(kCells * kCells, 0);
+  const auto index = [&](double x, double y) { return std::clamp(int((y - lo.y) / cell.y), 0, kCells - 1) * kCells + std::clamp(int((x - lo.x) / cell.x), 0, kCells - 1); };
+  for (const auto& [a, b, c] : mesh.triangles) {
+    const glm::dvec2 p = seen[a], q = seen[b], r = seen[c];
+    covered[size_t(index((p.x + q.x + r.x) / 3.0, (p.y + q.y + r.y) / 3.0))] = 1;
+    const double twice = (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x);
+    if (twice == 0.0) continue;
+    const glm::dvec2 box_lo = glm::min(p, glm::min(q, r)), box_hi = glm::max(p, glm::max(q, r));
+    for (int j = std::max(0, int((box_lo.y - lo.y) / cell.y - 0.5)); j < kCells && lo.y + (j + 0.5) * cell.y <= box_hi.y; ++j)
+      for (int i = std::max(0, int((box_lo.x - lo.x) / cell.x - 0.5)); i < kCells && lo.x + (i + 0.5) * cell.x <= box_hi.x; ++i) {
+        const glm::dvec2 o = lo + glm::dvec2(i + 0.5, j + 0.5) * cell;
+        const auto side = [&](const glm::dvec2& u, const glm::dvec2& w) { return ((w.x - u.x) * (o.y - u.y) - (w.y - u.y) * (o.x - u.x)) * twice; };
+        if (side(p, q) >= 0.0 && side(q, r) >= 0.0 && side(r, p) >= 0.0) covered[size_t(j * kCells + i)] = 1;
+      }
+  }
+  return double(std::count(covered.begin(), covered.end(), 1)) / double(kCells * kCells);
+}
+
 std::optional<double> view_turn_facing(const Mesh& mesh) {
   if (mesh.triangles.empty()) return std::nullopt;
   const glm::dvec3 extent = mesh.bounds_max - mesh.bounds_min;

@@ -43,12 +43,15 @@ constexpr double kMargin = 1.2;         // the frame's half-size over the framed
 // Behind the floor's horizon, where a low camera sees past it: a studio's pale grey.
 const glm::dvec3 kStageBackground(0.8, 0.8, 0.82);
 // How far from the model's centre a shadow is framed: a point little below
-// a low light casts its shadow toward the horizon, which no frame holds;
-// and, under the default light, over the model's own radius (half its box's
-// diagonal), how far the frame follows its shadow before the model's size
-// comes first: a spindly model's shadow, longer than the model, would leave
-// it small in the frame. A light the user moved has its whole shadow framed.
-constexpr double kShadowReach = 8.0, kShadowRoom = 1.25;
+// a low light casts its shadow toward the horizon, which no frame holds.
+constexpr double kShadowReach = 8.0;
+// A spindly model, which covers under kSpindly of the box it shows the
+// camera (a diplodocus's neck and legs, a lamp post), has its shadow framed
+// only as far as lets the camera stand kShadowRoom times as far back as
+// the model alone needs, under the default light: its shadow, which shows
+// more mass than the model does, would leave it small in the frame. A solid
+// model keeps its whole shadow in view, and so does a light the user moved.
+constexpr double kSpindly = 0.42, kShadowRoom = 1.25;
 // The steps a motion's framing takes through a whole turn: between two, a
 // point turns by at most 5 degrees from one, and moves out from the line
 // between them by under 0.4% of its distance from the axis, well inside
@@ -121,31 +124,28 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
   stage.light = light_position(centre, view);
   // What the frame must hold: the model's points and their shadows on the
   // floor, where the light is above the point (else its shadow has no end),
-  // the furthest drawn in to `reach`.
+  // the furthest drawn in to `reach` from the model's centre.
   // Under a motion, every frame's: the model turned, or the light, through
   // a whole turn about the z axis in kFramingTurns steps.
-  std::vector<glm::dvec3> points;
   const int turns = view.turning == Turning::kNone ? 1 : kFramingTurns;
-  const bool light_moved = view.light || view.light_azimuth_deg || view.light_elevation_deg || view.light_turn_deg != 0.0 ||
-                           view.turning == Turning::kLight;
-  const double reach = light_moved ? kShadowReach : std::min(kShadowReach, kShadowRoom * glm::length(hi - lo) / 2.0);
-  for (int turn = 0; turn < turns; ++turn) {
-    const double degrees = frame_turn_deg(turn, turns);
-    const glm::dvec3 light = view.turning == Turning::kLight ? rotated_about_z(stage.light, degrees) : stage.light;
-    for (const glm::dvec3& model_point : model_points) {
-      const glm::dvec3 p = view.turning == Turning::kModel ? rotated_about_z(model_point, degrees) : model_point;
-      if (turn == 0 || view.turning == Turning::kModel) points.push_back(p);
-      if (!view.frame_shadow || !(light.z > p.z)) continue;
-      glm::dvec3 shadow = light + (p - light) * ((light.z - stage.floor_z) / (light.z - p.z));
-      const glm::dvec3 out(shadow.x - centre.x, shadow.y - centre.y, 0.0);
-      if (glm::length(out) > reach) {
-        shadow = glm::dvec3(centre.x, centre.y, stage.floor_z) + out * (reach / glm::length(out));
-        stage.shadow_cut = stage.shadow_cut || reach < kShadowReach;
+  const auto framed_points = [&](double reach, bool shadows) {
+    std::vector<glm::dvec3> points;
+    for (int turn = 0; turn < turns; ++turn) {
+      const double degrees = frame_turn_deg(turn, turns);
+      const glm::dvec3 light = view.turning == Turning::kLight ? rotated_about_z(stage.light, degrees) : stage.light;
+      for (const glm::dvec3& model_point : model_points) {
+        const glm::dvec3 p = view.turning == Turning::kModel ? rotated_about_z(model_point, degrees) : model_point;
+        if (turn == 0 || view.turning == Turning::kModel) points.push_back(p);
+        if (!shadows || !(light.z > p.z)) continue;
+        glm::dvec3 shadow = light + (p - light) * ((light.z - stage.floor_z) / (light.z - p.z));
+        const glm::dvec3 out(shadow.x - centre.x, shadow.y - centre.y, 0.0);
+        if (glm::length(out) > reach) shadow = glm::dvec3(centre.x, centre.y, stage.floor_z) + out * (reach / glm::length(out));
+        points.push_back(shadow);
       }
-      points.push_back(shadow);
     }
-  }
-  if (points.empty()) points = {lo, hi};
+    if (points.empty()) points = {lo, hi};
+    return points;
+  };
   const glm::dvec3 back = toward(view.camera_azimuth_deg.value_or(kCameraAzimuthDeg), view.camera_elevation_deg.value_or(kCameraElevationDeg));
   // The camera's axes and lens, wherever along them it comes to stand.
   const Camera lens{back, glm::dvec3(0.0), {0, 0, 1}, view.fov_deg};
@@ -153,30 +153,53 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
   // How far off the axis a point may be, over its depth: up, by the lens,
   // and across, by the lens and the frame's shape.
   const double reach_up = lens.half_height_at_unit_depth() / kMargin, reach_across = reach_up * aspect;
-  // From the middle of the points' box, which no point's repeats move.
-  glm::dvec3 box_lo = points[0], box_hi = points[0];
-  for (const glm::dvec3& p : points) box_lo = glm::min(box_lo, p), box_hi = glm::max(box_hi, p);
-  glm::dvec3 target = box_lo / 2.0 + box_hi / 2.0;
-  double distance = 0.0;
-  // The distance at which every point is in the frame; then the target moves
-  // to the middle of the points as seen from there, until it stays put.
-  for (int pass = 0; pass < 200; ++pass) {
-    distance = 0.0;
-    for (const glm::dvec3& p : points) {
-      const glm::dvec3 q = p - target;
-      distance = std::max(distance, std::max(std::abs(glm::dot(q, right)) / reach_across, std::abs(glm::dot(q, up)) / reach_up) -
-                                        glm::dot(q, forward));
+  // Where the camera aims and how far back it stands to hold `points`.
+  const auto framing = [&](const std::vector<glm::dvec3>& points) {
+    // From the middle of the points' box, which no point's repeats move.
+    glm::dvec3 box_lo = points[0], box_hi = points[0];
+    for (const glm::dvec3& p : points) box_lo = glm::min(box_lo, p), box_hi = glm::max(box_hi, p);
+    glm::dvec3 target = box_lo / 2.0 + box_hi / 2.0;
+    double distance = 0.0;
+    // The distance at which every point is in the frame; then the target moves
+    // to the middle of the points as seen from there, until it stays put.
+    for (int pass = 0; pass < 200; ++pass) {
+      distance = 0.0;
+      for (const glm::dvec3& p : points) {
+        const glm::dvec3 q = p - target;
+        distance = std::max(distance, std::max(std::abs(glm::dot(q, right)) / reach_across, std::abs(glm::dot(q, up)) / reach_up) -
+                                          glm::dot(q, forward));
+      }
+      double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo, y_lo = x_lo, y_hi = -x_lo;
+      for (const glm::dvec3& p : points) {
+        const glm::dvec3 q = p - target;
+        const double depth = distance + glm::dot(q, forward);
+        x_lo = std::min(x_lo, glm::dot(q, right) / depth), x_hi = std::max(x_hi, glm::dot(q, right) / depth);
+        y_lo = std::min(y_lo, glm::dot(q, up) / depth), y_hi = std::max(y_hi, glm::dot(q, up) / depth);
+      }
+      const glm::dvec3 shift = distance * ((x_lo + x_hi) / 2 * right + (y_lo + y_hi) / 2 * up);
+      target += shift;
+      if (glm::length(shift) < 1e-9 * distance) break;
     }
-    double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo, y_lo = x_lo, y_hi = -x_lo;
-    for (const glm::dvec3& p : points) {
-      const glm::dvec3 q = p - target;
-      const double depth = distance + glm::dot(q, forward);
-      x_lo = std::min(x_lo, glm::dot(q, right) / depth), x_hi = std::max(x_hi, glm::dot(q, right) / depth);
-      y_lo = std::min(y_lo, glm::dot(q, up) / depth), y_hi = std::max(y_hi, glm::dot(q, up) / depth);
+    return std::pair{target, distance};
+  };
+  std::vector<glm::dvec3> points = framed_points(kShadowReach, view.frame_shadow);
+  auto [target, distance] = framing(points);
+  // The model comes first where `shadow_room` is set: where its whole
+  // shadow would set the camera back over that many times as far as the
+  // model alone does, the shadow is framed only as far from the model's
+  // centre as keeps the camera there (the furthest such reach, by bisection).
+  if (view.frame_shadow && view.shadow_room > 0.0) {
+    const double closest = view.shadow_room * framing(framed_points(0.0, false)).second;
+    if (distance > closest) {
+      double fits = 0.0, cut = kShadowReach;
+      for (int step = 0; step < 20; ++step) {
+        const double reach = (fits + cut) / 2.0;
+        (framing(framed_points(reach, true)).second <= closest ? fits : cut) = reach;
+      }
+      points = framed_points(fits, true);
+      std::tie(target, distance) = framing(points);
+      stage.shadow_cut = true;
     }
-    const glm::dvec3 shift = distance * ((x_lo + x_hi) / 2 * right + (y_lo + y_hi) / 2 * up);
-    target += shift;
-    if (glm::length(shift) < 1e-9 * distance) break;
   }
   double ortho_height = 0.0;
   if (view.orthographic) {
@@ -320,6 +343,12 @@ Scene stage_mesh(const std::string& path, const std::shared_ptr<const PolygonSou
     notes += "# seen from " + StageStatements::number(kLowModelElevationDeg) + " degrees up, not " +
              StageStatements::number(kCameraElevationDeg) + ": it lies low (its height under a tenth of its footprint's side), so its face reads\n";
   }
+  // A spindly model comes first in its frame, under the default light.
+  if (!view.light && !view.light_azimuth_deg && !view.light_elevation_deg && view.light_turn_deg == 0.0 &&
+      view.turning != Turning::kLight &&
+      silhouette_fill(mesh, toward(view.camera_azimuth_deg.value_or(kCameraAzimuthDeg), view.camera_elevation_deg.value_or(kCameraElevationDeg))) <
+          kSpindly)
+    view.shadow_room = kShadowRoom;
   const Stage stage = stage_for(mesh.bounds_min, mesh.bounds_max, framing_points(mesh), staging.frame_aspect, view);
   if (stage.shadow_cut)
     notes += "# its shadow runs out of the frame: framed whole, it would leave the model small (moving the light frames it whole)\n";

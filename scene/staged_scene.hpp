@@ -76,12 +76,16 @@ struct StageView {
   // A motion the frame holds in every frame of: the model turning through a
   // whole turn under the light, or the light orbiting it (motion.hpp).
   Turning turning = Turning::kNone;
+  // Over 0, the model comes first: its shadow is framed only as far as lets
+  // the camera stand this many times as far back as the model alone needs
+  // (staging sets it for a spindly model under the default light).
+  double shadow_room = 0.0;
 
   bool operator==(const StageView& o) const {
     return camera_azimuth_deg == o.camera_azimuth_deg && camera_elevation_deg == o.camera_elevation_deg &&
            camera_zoom == o.camera_zoom && fov_deg == o.fov_deg && orthographic == o.orthographic && eye == o.eye && target == o.target &&
            light_azimuth_deg == o.light_azimuth_deg && light_elevation_deg == o.light_elevation_deg && light == o.light &&
-           light_turn_deg == o.light_turn_deg && frame_shadow == o.frame_shadow && turning == o.turning;
+           light_turn_deg == o.light_turn_deg && frame_shadow == o.frame_shadow && turning == o.turning && shadow_room == o.shadow_room;
   }
 };
 
