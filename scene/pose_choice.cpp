@@ -97,8 +97,17 @@ std::optional<PoseChoice> better_pose(const Mesh& mesh, const std::string& forma
       built_on = std::string(positive ? "+" : "-") + "xyz"[axis];
     }
   if (!built_on) return std::nullopt;
-  return PoseChoice{*built_on, "it was built standing on that axis (its base is at 0 along it, not along " + format_up +
-                                   "), on a footprint at least 1.5 times as large"};
+  const std::string why = "it was built standing on that axis (its base is at 0 along it, not along " + format_up +
+                          "), on a footprint at least 1.5 times as large";
+  // A panel built on the plane at 0, its face turned away from the rest of
+  // it (a label over its backing), stands on its back, its face up: the side
+  // its textured faces, or a one-sided model's faces, plainly turn to.
+  const glm::dvec3 side = glm::transpose(turn) * face_side(mesh, materials, false);  // in the file's axes
+  const int axis = (*built_on)[1] - 'x';
+  const double up_sign = (*built_on)[0] == '+' ? 1.0 : -1.0;
+  if (side[axis] * up_sign < 0.0 && std::abs(side[axis]) > 0.5 * glm::length(side))
+    return PoseChoice{std::string(up_sign > 0.0 ? "-" : "+") + "xyz"[axis], why + ", and stands on its back to show its face"};
+  return PoseChoice{*built_on, why};
 }
 
 bool lies_low(const Mesh& mesh) {

@@ -31,7 +31,9 @@ struct PoseChoice {
 // - the model was plainly built standing on another axis: its lowest point
 //   is at 0 along that axis and not along the convention's (a plan drawn on
 //   z = 0, a figure on y = 0), and it stands there on a footprint at least
-//   1.5 times as large.
+//   1.5 times as large; a panel whose face (its textured faces', or a
+//   one-sided model's) plainly turns the other way, down into the floor,
+//   stands on its back instead.
 std::optional<PoseChoice> better_pose(const Mesh& mesh, const std::string& format_up, const std::vector<Material>& materials);
 
 // Whether `mesh` (on the stage) lies low: its height under a tenth of its
