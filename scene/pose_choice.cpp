@@ -121,21 +121,22 @@ double silhouette_fill(const Mesh& mesh, const glm::dvec3& direction) {
   const glm::dvec3 across = glm::normalize(std::abs(direction.z) < 0.9 ? glm::cross(direction, glm::dvec3(0, 0, 1))
                                                                          : glm::cross(direction, glm::dvec3(1, 0, 0)));
   const glm::dvec3 upward = glm::cross(across, direction);
-  std::vector<glm::dvec2> seen(mesh.positions.size());
+  const auto seen = [&](uint32_t v) { return glm::dvec2(glm::dot(mesh.positions[v], across), glm::dot(mesh.positions[v], upward)); };
+  // Up to 2^16 faces, spread over them: a fine mesh has hundreds to a cell.
+  const size_t stride = std::max<size_t>(1, mesh.triangles.size() >> 16);
   glm::dvec2 lo(HUGE_VAL), hi(-HUGE_VAL);
-  for (const auto& triangle : mesh.triangles)
-    for (const uint32_t v : triangle) {
-      seen[v] = {glm::dot(mesh.positions[v], across), glm::dot(mesh.positions[v], upward)};
-      lo = glm::min(lo, seen[v]), hi = glm::max(hi, seen[v]);
-    }
+  for (size_t t = 0; t < mesh.triangles.size(); t += stride)
+    for (const uint32_t v : mesh.triangles[t]) lo = glm::min(lo, seen(v)), hi = glm::max(hi, seen(v));
   constexpr int kCells = 64;
   const glm::dvec2 cell = (hi - lo) / double(kCells);
   if (!(cell.x > 0.0) || !(cell.y > 0.0)) return 0.0;
   std::vector<uint8_t> covered(kCells * kCells, 0);
-  const auto index = [&](double x, double y) { return std::clamp(int((y - lo.y) / cell.y), 0, kCells - 1) * kCells + std::clamp(int((x - lo.x) / cell.x), 0, kCells - 1); };
-  for (const auto& [a, b, c] : mesh.triangles) {
-    const glm::dvec2 p = seen[a], q = seen[b], r = seen[c];
-    covered[size_t(index((p.x + q.x + r.x) / 3.0, (p.y + q.y + r.y) / 3.0))] = 1;
+  const auto index = [&](const glm::dvec2& p) {
+    return size_t(std::clamp(int((p.y - lo.y) / cell.y), 0, kCells - 1) * kCells + std::clamp(int((p.x - lo.x) / cell.x), 0, kCells - 1));
+  };
+  for (size_t t = 0; t < mesh.triangles.size(); t += stride) {
+    const glm::dvec2 p = seen(mesh.triangles[t][0]), q = seen(mesh.triangles[t][1]), r = seen(mesh.triangles[t][2]);
+    covered[index((p + q + r) / 3.0)] = 1;
     const double twice = (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x);
     if (twice == 0.0) continue;
     const glm::dvec2 box_lo = glm::min(p, glm::min(q, r)), box_hi = glm::max(p, glm::max(q, r));

@@ -46,7 +46,8 @@ bool lies_low(const Mesh& mesh);
 // 0.22 for a lamp post, spindly; 0.6 to 0.8 for a bunny, a torus, a sphere
 // or a box. Counted on a 64 x 64 grid over that box: the cells whose centres a
 // face covers, and the cell of each face's centroid (a face smaller than a
-// cell covers no centre).
+// cell covers no centre), of up to 2^16 faces spread over the mesh (a finer
+// mesh has hundreds of faces to a cell).
 double silhouette_fill(const Mesh& mesh, const glm::dvec3& direction);
 
 // For a flat model standing upright (as --up may stand it), the turn about the stage's up (in
