@@ -86,6 +86,27 @@ bool inside_the_model(const Scene& scene, const RayCaster& caster, int size, int
   return true;
 }
 
+// How closely two pictures agree over the pixels `counted(x, y)` keeps: how
+// many of them, how many within `levels` in every channel, and the most
+// any channel is off.
+struct Agreement {
+  int pixels = 0, within = 0, worst = 0;
+};
+template <class Counted>
+Agreement agreement(const Image& a, const Image& b, int levels, Counted counted) {
+  Agreement result;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      if (!counted(x, y)) continue;
+      int off = 0;
+      for (int c = 0; c < 3; ++c) off = std::max(off, std::abs(int(a.at(x, y, c)) - int(b.at(x, y, c))));
+      ++result.pixels;
+      result.within += off <= levels;
+      result.worst = std::max(result.worst, off);
+    }
+  return result;
+}
+
 // A coarse sphere (1,224 triangles) and a coarse cylinder (188), staged and
 // shaded smooth, draw as a tessellation of the same surface 100 times finer
 // draws it. Their faces' exact self-shadow begins up to half a face before
@@ -117,18 +138,12 @@ TEST_F(StudioLook, CoarseSmoothMeshesDrawAsTheirFineTessellationsDo) {
     test::expect_images_agree(coarse, drawn);
     const Image finer = test::render_gl_and_ray_cast(fine, size).gl;
     const RayCaster coarse_caster(coarse), fine_caster(fine);
-    int pixels = 0, near = 0, worst = 0;
-    for (int y = 0; y < size; ++y)
-      for (int x = 0; x < size; ++x) {
-        if (!inside_the_model(coarse, coarse_caster, size, x, y) || !inside_the_model(fine, fine_caster, size, x, y)) continue;
-        int off = 0;
-        for (int c = 0; c < 3; ++c) off = std::max(off, std::abs(int(drawn.gl.at(x, y, c)) - int(finer.at(x, y, c))));
-        ++pixels;
-        near += off <= 12;
-        worst = std::max(worst, off);
-      }
-    EXPECT_GT(pixels, size * size / 8) << "the model should fill much of the picture";
-    EXPECT_GE(near, 0.998 * pixels) << near << " of " << pixels << " pixels within 12 levels; the worst is off by " << worst;
+    const Agreement near = agreement(drawn.gl, finer, 12, [&](int x, int y) {
+      return inside_the_model(coarse, coarse_caster, size, x, y) && inside_the_model(fine, fine_caster, size, x, y);
+    });
+    EXPECT_GT(near.pixels, size * size / 8) << "the model should fill much of the picture";
+    EXPECT_GE(near.within, 0.998 * near.pixels)
+        << near.within << " of " << near.pixels << " pixels within 12 levels; the worst is off by " << near.worst;
   }
 }
 
@@ -230,18 +245,10 @@ TEST_F(StudioLook, AFlatFaceKeepsItsNormalWhateverItsNeighbours) {
   const int size = 200;
   const Image a = test::render_gl_and_ray_cast(smooth, size).gl, b = test::render_gl_and_ray_cast(flat, size).gl;
   const RayCaster caster(flat);
-  int pixels = 0, near = 0, worst = 0;
-  for (int y = 0; y < size; ++y)
-    for (int x = 0; x < size; ++x) {
-      if (!inside_the_model(flat, caster, size, x, y)) continue;
-      int off = 0;
-      for (int c = 0; c < 3; ++c) off = std::max(off, std::abs(int(a.at(x, y, c)) - int(b.at(x, y, c))));
-      ++pixels;
-      near += off <= 6;
-      worst = std::max(worst, off);
-    }
-  EXPECT_GT(pixels, size * size / 8) << "the plate should fill much of the picture";
-  EXPECT_GE(near, 0.99 * pixels) << near << " of " << pixels << " pixels within 6 levels; the worst is off by " << worst;
+  const Agreement near = agreement(a, b, 6, [&](int x, int y) { return inside_the_model(flat, caster, size, x, y); });
+  EXPECT_GT(near.pixels, size * size / 8) << "the plate should fill much of the picture";
+  EXPECT_GE(near.within, 0.99 * near.pixels) << near.within << " of " << near.pixels << " pixels within 6 levels; the worst is off by "
+                                             << near.worst;
 }
 
 // Across a sharp edge nothing fades: a cube shaded `smooth 30` keeps its
