@@ -145,13 +145,12 @@ case "${1:-}" in
       targets=(scene mesh cameras)
       cmake --build build-fuzz -j"$(nproc)" --target scene_fuzzer mesh_fuzzer cameras_fuzzer mesh_seed
       # Seed corpus: the bundled scenes; transforms.json files (fuzz/seeds/cameras/);
-      # and the bundled meshes and fuzz/seeds/mesh/
-      # (glTF, GLB, 3MF) behind their format byte (written by mesh_seed).
+      # and the bundled meshes, fuzz/seeds/mesh/ (glTF, GLB, 3MF) and the mesh
+      # regressions behind their format byte (written by mesh_seed).
       mkdir -p build-fuzz/corpus/scene build-fuzz/corpus/mesh build-fuzz/corpus/cameras
       cp scenes/*.scene fuzz/regressions/scene/* build-fuzz/corpus/scene/ 2>/dev/null || true
-      cp fuzz/regressions/mesh/* build-fuzz/corpus/mesh/ 2>/dev/null || true
       cp fuzz/seeds/cameras/* fuzz/regressions/cameras/* build-fuzz/corpus/cameras/ 2>/dev/null || true
-      build-fuzz/fuzz/mesh_seed build-fuzz/corpus/mesh scenes/meshes/* fuzz/seeds/mesh/*
+      build-fuzz/fuzz/mesh_seed build-fuzz/corpus/mesh scenes/meshes/* fuzz/seeds/mesh/* fuzz/regressions/mesh/*
     else
       targets=(library)
       cmake --build build-fuzz -j"$(nproc)" --target library_fuzzer mesh_seed

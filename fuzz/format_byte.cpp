@@ -21,29 +21,65 @@ std::vector<std::string_view> extensions_of(Readers readers) {
   return extensions;
 }
 
-const std::vector<std::string_view>& numbered(Readers readers) {
-  static const std::vector<std::string_view> umbras = extensions_of(Readers::kUmbras), every = extensions_of(Readers::kEvery);
+// The byte each extension owns: the FNV-1a hash of its name (Fowler, Noll
+// and Vo), folded to a byte, or the next free byte where another took it
+// (in the order given, which is the formats' table's).
+std::array<int, 256> owners(const std::vector<std::string_view>& extensions) {
+  std::array<int, 256> owner;
+  owner.fill(-1);
+  for (size_t k = 0; k < extensions.size() && k < owner.size(); ++k) {
+    uint32_t hash = 2166136261u;
+    for (const char c : extensions[k]) hash = (hash ^ uint8_t(c)) * 16777619u;
+    size_t byte = (hash ^ hash >> 8 ^ hash >> 16 ^ hash >> 24) & 0xFF;
+    while (owner[byte] >= 0) byte = (byte + 1) % owner.size();
+    owner[byte] = int(k);
+  }
+  return owner;
+}
+
+struct Numbering {
+  std::vector<std::string_view> extensions;
+  std::array<std::string_view, 256> meanings;
+};
+
+const Numbering& numbered(Readers readers) {
+  static const Numbering umbras{extensions_of(Readers::kUmbras), byte_meanings(extensions_of(Readers::kUmbras))},
+      every{extensions_of(Readers::kEvery), byte_meanings(extensions_of(Readers::kEvery))};
   return readers == Readers::kUmbras ? umbras : every;
 }
 
 }  // namespace
 
+std::array<std::string_view, 256> byte_meanings(const std::vector<std::string_view>& extensions) {
+  const std::array<int, 256> owner = owners(extensions);
+  std::array<std::string_view, 256> meaning;
+  // Each byte names the extension that owns it or the nearest byte above it
+  // (round past 255 to 0).
+  int last = -1;
+  for (int pass = 0; pass < 2; ++pass)
+    for (int byte = 255; byte >= 0; --byte) {
+      if (owner[size_t(byte)] >= 0) last = owner[size_t(byte)];
+      if (last >= 0) meaning[size_t(byte)] = extensions[size_t(last)];
+    }
+  return meaning;
+}
+
 std::string mesh_format_name_of_byte(uint8_t byte, Readers readers) {
   // The name's extension picks the reader for content too broken to tell;
   // glTF's external buffers are looked for in a folder that does not exist.
-  const std::vector<std::string_view>& extensions = numbered(readers);
-  return "/nonexistent/fuzz" + std::string(extensions[byte % extensions.size()]);
+  return "/nonexistent/fuzz" + std::string(numbered(readers).meanings[byte]);
 }
 
 std::optional<uint8_t> mesh_format_byte_of(const std::string& path, Readers readers) {
-  const std::vector<std::string_view>& extensions = numbered(readers);
+  const std::vector<std::string_view>& extensions = numbered(readers).extensions;
   // umbra's own readers are numbered by format: any of a format's extensions names it.
   const std::string id = mesh_format_of(path);
   const MeshFormat* format = mesh_format_by_id(id);
   const std::string extension = readers == Readers::kUmbras && format ? std::string(format->extensions.front()) : lowercase_extension(path);
   const auto found = std::find(extensions.begin(), extensions.end(), extension);
   if (found == extensions.end()) return std::nullopt;
-  return uint8_t(found - extensions.begin());
+  const std::array<int, 256> owner = owners(extensions);
+  return uint8_t(std::find(owner.begin(), owner.end(), int(found - extensions.begin())) - owner.begin());
 }
 
 }  // namespace umbra::fuzz

@@ -2,6 +2,7 @@
 // the same entry points, in the ordinary build: each must return normally.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <optional>
 #include <fstream>
@@ -60,14 +61,19 @@ TEST(FuzzRegressions, CamerasInputsReturnNormally) {
   }
 }
 
+// The regressions and the seeds are stored as files under their own names,
+// and given to the fuzzer as it sees them: the format's byte, then the file.
 TEST(FuzzRegressions, MeshInputsReturnNormally) {
   std::vector<std::vector<uint8_t>> inputs;
-  for (const fs::path& p : files_in(kSource / "fuzz/regressions/mesh")) inputs.push_back(bytes_of(p));
-  // The seeds as the fuzzer sees them: the format's byte, then the file.
-  std::vector<fs::path> seeds = files_in(kSource / "scenes/meshes");
+  const std::vector<fs::path> regressions = files_in(kSource / "fuzz/regressions/mesh");
+  ASSERT_FALSE(regressions.empty());
+  std::vector<fs::path> seeds = regressions;
+  for (const fs::path& p : files_in(kSource / "scenes/meshes")) seeds.push_back(p);
   for (const fs::path& p : files_in(kSource / "fuzz/seeds/mesh")) seeds.push_back(p);
   for (const fs::path& p : seeds) {
     const std::optional<uint8_t> byte = fuzz::mesh_format_byte_of(p.string());
+    const bool regression = std::find(regressions.begin(), regressions.end(), p) != regressions.end();
+    EXPECT_TRUE(byte || !regression) << p << " is named as no format the fuzzer reads";
     if (!byte) continue;
     EXPECT_EQ(mesh_format_of(fuzz::mesh_format_name_of_byte(*byte)), mesh_format_of(p.string()));
     std::vector<uint8_t> bytes = bytes_of(p);
@@ -76,6 +82,27 @@ TEST(FuzzRegressions, MeshInputsReturnNormally) {
   }
   ASSERT_GE(inputs.size(), 7u);
   for (const auto& bytes : inputs) fuzz::mesh_input(bytes.data(), bytes.size());
+}
+
+// A format added to the table takes its own byte and a share of the bytes
+// below it; every other byte keeps its meaning (a fuzzer's corpus and its
+// regressions mean what they meant), and every extension's own byte names it.
+TEST(FuzzFormatByte, ARowAddedMovesOnlyTheBytesItTakes) {
+  const std::vector<std::string_view> formats{".obj", ".off", ".ply", ".stl", ".gltf", ".3mf"};
+  std::vector<std::string_view> more = formats;
+  more.push_back(".vtk");
+  const auto before = fuzz::byte_meanings(formats), after = fuzz::byte_meanings(more);
+  int moved = 0;
+  for (size_t byte = 0; byte < 256; ++byte) {
+    EXPECT_TRUE(after[byte] == before[byte] || after[byte] == ".vtk") << byte;
+    moved += after[byte] != before[byte];
+  }
+  EXPECT_GT(moved, 0);
+  EXPECT_LT(moved, 128) << "a new row should take a share of the bytes, not most of them";
+  for (const std::string_view extension : formats) EXPECT_NE(std::count(before.begin(), before.end(), extension), 0) << extension;
+  for (const MeshFormat& format : mesh_formats())
+    if (const auto byte = fuzz::mesh_format_byte_of("a" + std::string(format.extensions.front())); byte && format.fuzzed)
+      EXPECT_EQ(fs::path(fuzz::mesh_format_name_of_byte(*byte)).extension(), format.extensions.front());
 }
 
 // Stored as files under their own name: library_fuzzer's numbering of
