@@ -2,6 +2,14 @@
 // name column fits their longest name, and "did you mean".
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "mesh/io/mesh_format.hpp"
+#include "render/render_method.hpp"
 #include "tools/command_line.hpp"
 #include "tools/nearest_word.hpp"
 
@@ -27,6 +35,57 @@ TEST(HelpText, TheNearestWordIsASlipOfTheFingersAway) {
   EXPECT_EQ(nearest_word("x", commands), "");
   EXPECT_EQ(did_you_mean("--antialais", {"--antialias", "--any-texture-path"}), " (did you mean --antialias?)");
   EXPECT_EQ(did_you_mean("--frobnicate", {"--antialias", "--size"}), "");
+}
+
+// The lists of methods and formats a reader meets in the README and the
+// docs are the tables' (render_method.hpp, mesh_format.hpp), checked here
+// where they are written out: a method or a format added to its table
+// fails this test until the docs name it too.
+std::string doc(const std::string& name) {
+  std::ifstream in(std::string(UMBRA_SOURCE_DIR) + "/" + name);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_FALSE(text.str().empty()) << name;
+  return text.str();
+}
+
+// The words a regex's first group holds in `text`, split at `separators`,
+// each kept without its backquotes, and but for the prose between them
+// ("or", "(default)").
+std::set<std::string> listed(const std::string& text, const std::string& pattern, const std::string& separators) {
+  std::smatch match;
+  EXPECT_TRUE(std::regex_search(text, match, std::regex(pattern))) << pattern;
+  std::set<std::string> words;
+  std::string word;
+  const auto keep = [&] {
+    if (!word.empty() && word != "or" && word != "(default)") words.insert(word);
+    word.clear();
+  };
+  for (const char c : match.size() > 1 ? match[1].str() : std::string()) {
+    if (separators.find(c) != std::string::npos) keep();
+    else if (c != '`') word += c;
+  }
+  keep();
+  return words;
+}
+
+TEST(DocLists, EveryMethodListIsTheTable) {
+  std::set<std::string> all, interactive;
+  for (const RenderMethod m : all_methods()) {
+    all.insert(method_name(m));
+    if (is_interactive(m)) interactive.insert(method_name(m));
+  }
+  EXPECT_EQ(listed(doc("README.md"), "`--method ([a-z|]+)`", "|"), all);
+  EXPECT_EQ(listed(doc("docs/rendering.md"), "\\| `--method M` \\| ([^|]+) \\(below\\) \\|", ", "), all);
+  EXPECT_EQ(listed(doc("docs/rendering.md"), "`m`: switch method \\(([a-z, ]+):", ", "), interactive);
+}
+
+// The message check.md shows for a file of no mesh format names the
+// formats as the program does (mesh_format_names()).
+TEST(DocLists, CheckMdNamesTheFormatsAsTheMessageDoes) {
+  const std::string check = doc("docs/check.md");
+  EXPECT_NE(check.find("README.obj: not a mesh file (" + mesh_format_names() + "): text starting with"), std::string::npos)
+      << mesh_format_names();
 }
 
 }  // namespace
