@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "mesh/io/mesh_format.hpp"
 #include "render/render_method.hpp"
@@ -78,6 +79,31 @@ TEST(DocLists, EveryMethodListIsTheTable) {
   EXPECT_EQ(listed(doc("README.md"), "`--method ([a-z|]+)`", "|"), all);
   EXPECT_EQ(listed(doc("docs/rendering.md"), "\\| `--method M` \\| ([^|]+) \\(below\\) \\|", ", "), all);
   EXPECT_EQ(listed(doc("docs/rendering.md"), "`m`: switch method \\(([a-z, ]+):", ", "), interactive);
+}
+
+// Where the docs say which formats umbra reads itself (the rows the mesh
+// fuzzer covers: its own readers, tinygltf's and lib3mf's), they name those
+// rows, in the table's order.
+TEST(DocLists, TheFormatsUmbraReadsItselfAreTheTables) {
+  std::vector<std::string> own;
+  for (const MeshFormat& f : mesh_formats())
+    if (f.fuzzed) own.emplace_back(f.name);
+  const auto names = [](std::string list) {
+    list = std::regex_replace(list, std::regex(" 2\\.0|\\n"), " ");
+    std::vector<std::string> found;
+    std::smatch word;
+    for (std::string rest = list; std::regex_search(rest, word, std::regex("[A-Za-z0-9]+")); rest = word.suffix().str())
+      if (word.str() != "and" && word.str() != "or") found.push_back(word.str());
+    return found;
+  };
+  std::smatch match;
+  const std::string readme = doc("README.md"), check = doc("docs/check.md");
+  ASSERT_TRUE(std::regex_search(readme, match, std::regex("umbra reads ([A-Za-z0-9., \\n]*?) itself")));
+  EXPECT_EQ(names(match[1]), own);
+  ASSERT_TRUE(std::regex_search(check, match, std::regex("Reads each mesh \\(([A-Za-z0-9., \\n]*);")));
+  EXPECT_EQ(names(match[1]), own);
+  ASSERT_TRUE(std::regex_search(check, match, std::regex("umbra reads ([A-Za-z0-9., \\n]*?) itself")));
+  EXPECT_EQ(names(match[1]), own);
 }
 
 // The message check.md shows for a file of no mesh format names the
