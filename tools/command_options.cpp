@@ -18,6 +18,7 @@ CommandOptions::~CommandOptions() = default;
 
 void CommandOptions::value(const std::string& names, std::function<void(const std::string&, const std::string&)> take) {
   CLI::Option* option = app_->add_option_function<std::string>(names, [](const std::string&) {});
+  for (const std::string& name : option->get_lnames()) long_names_.push_back("--" + name);
   const std::string shown = option->get_name();  // the long name, as messages show it
   option->each([take = std::move(take), shown](const std::string& text) { take(shown, text); });
   option->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
@@ -25,7 +26,9 @@ void CommandOptions::value(const std::string& names, std::function<void(const st
   for (const std::string& name : option->get_snames()) value_names_.push_back("-" + name);
 }
 
-void CommandOptions::flag(const std::string& names, bool& set) { app_->add_flag(names, set); }
+void CommandOptions::flag(const std::string& names, bool& set) {
+  for (const std::string& name : app_->add_flag(names, set)->get_lnames()) long_names_.push_back("--" + name);
+}
 
 void CommandOptions::positionals(std::vector<std::string>& arguments) {
   app_->add_option("arguments", arguments)->allow_extra_args();
@@ -37,6 +40,7 @@ void CommandOptions::parse(const std::vector<std::string>& all) {
   // an argument, even "-name.obj".
   const auto end_of_options = std::find(all.begin(), all.end(), "--");
   const std::vector<std::string> argv(all.begin(), end_of_options);
+  if (std::find(argv.begin(), argv.end(), "--list-options") != argv.end()) throw OptionList{long_names_};
   // CLI11 would say "1 required TEXT missing"; say which option lacks its value.
   if (!argv.empty() && std::find(value_names_.begin(), value_names_.end(), argv.back()) != value_names_.end())
     throw UsageError(argv.back() + " needs a value");

@@ -43,15 +43,27 @@ class CommandOptions {
   // its callback refuses. Everything after "--" is a positional argument.
   void parse(const std::vector<std::string>& argv);
 
+  // With --list-options among its arguments, parse throws OptionList: the
+  // long names of the options defined here, in order (what `umbra COMMAND
+  // --list-options` prints, for shell completion, and for the tests that
+  // hold each command's --help and docs to its parser).
+
  private:
   std::unique_ptr<CLI::App> app_;
+  std::vector<std::string> long_names_;
   std::vector<std::string>* positionals_ = nullptr;
   std::vector<std::string> value_names_;  // to say "--size needs a value"
 };
 
+// What CommandOptions::parse throws for --list-options.
+struct OptionList {
+  std::vector<std::string> names;
+};
+
 // Runs `parse` over a command's arguments. On a usage error prints it with a
 // hint to --help and returns 2; when the options ask for help prints `usage`
-// and returns 0; otherwise returns nothing and the command goes on.
+// and returns 0, and for --list-options its options' names, one a line;
+// otherwise returns nothing and the command goes on.
 template <typename Options, typename Parse>
 std::optional<int> parse_command_line(const char* command, const std::string& usage, const std::vector<std::string>& argv,
                                       Parse parse, Options& options) {
@@ -60,6 +72,9 @@ std::optional<int> parse_command_line(const char* command, const std::string& us
   } catch (const UsageError& e) {
     std::cerr << "umbra " << command << ": " << e.what() << "\n(see umbra " << command << " --help)\n";
     return 2;
+  } catch (const OptionList& list) {
+    for (const std::string& name : list.names) std::cout << name << "\n";
+    return 0;
   }
   if (options.help) {
     std::cout << usage;

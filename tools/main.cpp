@@ -60,6 +60,7 @@ commands:
   }
   return umbra::usage_text(text) + R"(
   umbra help COMMAND (or umbra COMMAND --help) for a command's options
+  umbra COMMAND --list-options: its options' names, one a line (for shell completion)
   umbra --help, umbra --version
 )";
 }

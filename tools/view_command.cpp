@@ -85,8 +85,9 @@ options:
   --up AXIS            for a MESH: its axis that points up (see umbra render
                        --help)
   --camera-azimuth DEG, --camera-elevation DEG, --camera-zoom F, --fov DEG,
-  --eye X,Y,Z, --target X,Y,Z, --light-azimuth DEG, --light-elevation DEG,
-  --light X,Y,Z, --floor COLOR, --color COLOR, --plain, --flat,
+  --orthographic, --eye X,Y,Z, --target X,Y,Z, --light-azimuth DEG,
+  --light-elevation DEG, --light X,Y,Z, --floor COLOR, --color COLOR,
+  --plain, --flat,
   --crease-angle DEG   for a MESH: where the camera and light start, the
                        floor's and the model's colours, its shading (see
                        umbra render --help)

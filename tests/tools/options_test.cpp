@@ -1,6 +1,12 @@
 // Options as users write them: --opt=value and --opt value alike, in any
 // order, with umbra's own messages for what is wrong; --version.
 #include <gtest/gtest.h>
+#include <utility>
+#include <sstream>
+#include <set>
+#include <regex>
+#include <iterator>
+#include <fstream>
 
 #include "tests/mesh/mesh_builders.hpp"
 #include "tests/tools/command_fixture.hpp"
@@ -136,6 +142,44 @@ TEST_F(Options, VersionAndHelp) {
   EXPECT_NE(top.out.find("\n  umbra render models/ -o pictures/ "), std::string::npos) << top.out;
   EXPECT_NE(top.out.find("\n  render MESH|SCENE|FOLDER... -o OUT\n"), std::string::npos) << top.out;
   EXPECT_NE(top.out.find("\n  volume MESH|SCENE -o OUT.obj\n"), std::string::npos) << top.out;
+}
+
+// Each command's --help lists what its parser takes, and its docs name it:
+// `umbra COMMAND --list-options` (the parser's own names, for shell
+// completion) against the options --help lists (its lines that begin with
+// an option) and the doc that tells of the command. A new option fails this
+// test until its help line and its docs' sentence are written; a help line
+// for an option the parser lost fails it too.
+TEST_F(Options, EveryCommandsHelpAndDocsListWhatItsParserTakes) {
+  const auto doc = [](const std::string& name) {
+    std::ifstream in(std::string(UMBRA_SOURCE_DIR) + "/docs/" + name);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::pair<const char*, std::string> commands[] = {{"render", doc("rendering.md")}, {"check", doc("check.md")},
+                                                          {"view", doc("rendering.md")},   {"volume", doc("rendering.md")},
+                                                          {"bench", doc("methods-and-accuracy.md")}, {"formats", doc("check.md")}};
+  for (const auto& [command, docs] : commands) {
+    SCOPED_TRACE(command);
+    const CommandResult listed = run(std::string(command) + " --list-options"), help = run(std::string(command) + " --help");
+    ASSERT_EQ(listed.status, 0) << listed.err;
+    std::set<std::string> parsed;
+    std::istringstream names(listed.out);
+    for (std::string name; std::getline(names, name);) parsed.insert(name);
+    EXPECT_TRUE(parsed.count("--help"));
+    std::set<std::string> helped;
+    std::istringstream lines(help.out);
+    for (std::string line; std::getline(lines, line);) {
+      if (line.rfind("  -", 0) != 0) continue;
+      const std::regex option("--[a-z0-9-]+");
+      for (auto it = std::sregex_iterator(line.begin(), line.end(), option); it != std::sregex_iterator(); ++it) helped.insert(it->str());
+    }
+    for (const std::string& name : helped) EXPECT_TRUE(parsed.count(name)) << name << " is in --help but not parsed";
+    for (const std::string& name : parsed) {
+      if (name == "--help") continue;
+      EXPECT_NE(help.out.find(name), std::string::npos) << name << " is parsed but not in --help";
+      EXPECT_NE(docs.find(name), std::string::npos) << name << " is parsed but not in the docs";
+    }
+  }
 }
 
 // A mistyped command or option is named with the nearest one, where one is near.
