@@ -310,7 +310,6 @@ TEST(StagedMesh, CameraAndLightAnglesPlaceThemRoundTheModel) {
   EXPECT_EQ(there.lights[0].position, glm::dvec3(-2, 1, 3));
 }
 
-
 // The staged text's line that says why the pose is not the format's ("" when none).
 std::string pose_note(const std::string& text) {
   const size_t at = text.find("\n# up is ");
@@ -401,7 +400,7 @@ double camera_rise(const Scene& scene) { return glm::normalize(scene.camera.eye 
 glm::dvec3 faces_turn(const Mesh& mesh, bool textured_only = false) {
   glm::dvec3 sum(0.0);
   for (size_t t = 0; t < mesh.triangles.size(); ++t)
-    if (!textured_only || mesh.triangle_uvs[t] != std::array<glm::vec2, 3>{})
+    if (!textured_only || (!mesh.triangle_uvs.empty() && mesh.triangle_uvs[t] != std::array<glm::vec2, 3>{}))
       sum += glm::cross(mesh.positions[mesh.triangles[t][1]] - mesh.positions[mesh.triangles[t][0]],
                         mesh.positions[mesh.triangles[t][2]] - mesh.positions[mesh.triangles[t][0]]);
   return sum;
