@@ -223,7 +223,7 @@ class Renderer {
     } else {
       const std::string& path = std::get<std::string>(source);
       if (const std::optional<InputError> error = neither_scene_nor_mesh(path)) throw *error;
-      scene = parse_scene_or_mesh_file(path, {}, nullptr, staging, ReadOptions{true, "", false});
+      scene = parse_scene_or_mesh_file(path, {}, nullptr, staging, ReadOptions{true, "", false, {}});
     }
     warnings = warning_lines(scene);
     require_lights_off_casters(scene);

@@ -112,7 +112,7 @@ class FrameDrawing {
   struct View {
     glm::dmat4 view_projection{1.0};
     int width = 0, height = 0;
-    bool operator==(const View& o) const { return view_projection == o.view_projection && width == o.width && height == o.height; }
+    bool operator==(const View&) const = default;
   };
   View view_;
   std::vector<View> views_asked_, views_without_back_faces_;

@@ -30,9 +30,7 @@ struct LightPlanInputs {
   double near_plane = 0.0;
   RenderSettings settings;
 
-  bool operator==(const LightPlanInputs& o) const {
-    return light == o.light && camera == o.camera && near_plane == o.near_plane && settings == o.settings;
-  }
+  bool operator==(const LightPlanInputs&) const = default;
 };
 
 struct CasterEntry {

@@ -30,7 +30,7 @@ bool parse_turning(const std::string& word, Turning& turning);
 struct Shot {
   Camera camera;
   std::vector<glm::dvec3> lights;
-  bool operator==(const Shot& o) const { return camera == o.camera && lights == o.lights; }
+  bool operator==(const Shot&) const = default;
 };
 // The scene's own shot.
 Shot shot_of(const Scene& scene);

@@ -100,8 +100,8 @@ Stage stage_for(const glm::dvec3& lo, const glm::dvec3& hi, const std::vector<gl
   const glm::dvec3 back = toward(view.camera_azimuth_deg.value_or(kCameraAzimuthDeg), view.camera_elevation_deg.value_or(kCameraElevationDeg));
   // The camera's axes and lens, wherever along them it comes to stand.
   const Camera lens{back, glm::dvec3(0.0), {0, 0, 1}, view.fov_deg};
-  // Named, not bound: a lambda below reads them, which C++17 allows of
-  // variables only.
+  // Named, not bound: a lambda below reads them, which clang before 16
+  // (the fuzz build's) refuses of structured bindings.
   const CameraAxes axes = lens.axes();
   const glm::dvec3 right = axes.right, up = axes.up, forward = axes.forward;
   // How far off the axis a point may be, over its depth: up, by the lens,

@@ -81,12 +81,7 @@ struct StageView {
   // (staging sets it for a spindly model under the default light).
   double shadow_room = 0.0;
 
-  bool operator==(const StageView& o) const {
-    return camera_azimuth_deg == o.camera_azimuth_deg && camera_elevation_deg == o.camera_elevation_deg &&
-           camera_zoom == o.camera_zoom && fov_deg == o.fov_deg && orthographic == o.orthographic && eye == o.eye && target == o.target &&
-           light_azimuth_deg == o.light_azimuth_deg && light_elevation_deg == o.light_elevation_deg && light == o.light &&
-           light_turn_deg == o.light_turn_deg && frame_shadow == o.frame_shadow && turning == o.turning && shadow_room == o.shadow_room;
-  }
+  bool operator==(const StageView&) const = default;
 };
 
 // The floor, light and camera for a model whose box, fitted and turned so that

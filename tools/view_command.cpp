@@ -206,10 +206,7 @@ struct ViewState {
   RenderSettings settings;  // one sample
   bool show_volumes = false;
   int generation = 0;
-  bool operator==(const ViewState& o) const {
-    return camera == o.camera && light_angle_deg == o.light_angle_deg && settings == o.settings &&
-           show_volumes == o.show_volumes && generation == o.generation;
-  }
+  bool operator==(const ViewState&) const = default;
 };
 
 // Turns `camera` about its target: yaw about its up vector, pitch about its right.

@@ -100,9 +100,11 @@ TEST(FuzzFormatByte, ARowAddedMovesOnlyTheBytesItTakes) {
   EXPECT_GT(moved, 0);
   EXPECT_LT(moved, 128) << "a new row should take a share of the bytes, not most of them";
   for (const std::string_view extension : formats) EXPECT_NE(std::count(before.begin(), before.end(), extension), 0) << extension;
-  for (const MeshFormat& format : mesh_formats())
-    if (const auto byte = fuzz::mesh_format_byte_of("a" + std::string(format.extensions.front())); byte && format.fuzzed)
+  for (const MeshFormat& format : mesh_formats()) {
+    if (const auto byte = fuzz::mesh_format_byte_of("a" + std::string(format.extensions.front())); byte && format.fuzzed) {
       EXPECT_EQ(fs::path(fuzz::mesh_format_name_of_byte(*byte)).extension(), format.extensions.front());
+    }
+  }
 }
 
 // Stored as files under their own name: library_fuzzer's numbering of

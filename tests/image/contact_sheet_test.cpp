@@ -14,8 +14,8 @@ namespace {
 
 // The label band under the first tile of a one-picture sheet.
 std::vector<uint8_t> label_of(const std::string& label, int columns = 1, const std::vector<std::string>& others = {}) {
-  std::vector<SheetPicture> pictures{{label, Image(120, 40, 3, 200)}};
-  for (const std::string& o : others) pictures.push_back({o, Image(120, 40, 3, 200)});
+  std::vector<SheetPicture> pictures{{label, Image(120, 40, 3, 200), ""}};
+  for (const std::string& o : others) pictures.push_back({o, Image(120, 40, 3, 200), ""});
   const Image sheet = contact_sheet(pictures, 120, columns);
   std::vector<uint8_t> band;
   for (int y = 6 + 40; y < 6 + 40 + 24; ++y)

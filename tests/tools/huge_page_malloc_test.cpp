@@ -99,11 +99,12 @@ TEST_F(HugePageRestart, StartedThroughTheDynamicLoaderUmbraStaysUmbra) {
   const test::CommandResult version = run("--version", "env -u GLIBC_TUNABLES -u LD_PRELOAD " + loader + " ");
   ASSERT_EQ(version.status, 0) << version.err;
   EXPECT_EQ(version.out.rfind("umbra ", 0), 0u) << version.out;
-  if (!current_malloc_environment().sanitizer_allocator)
+  if (!current_malloc_environment().sanitizer_allocator) {
     EXPECT_NE(version.out.find("\nmemory: malloc as the C library starts it: umbra was started through the dynamic loader, which a "
                                "restart would run instead\n"),
               std::string::npos)
         << version.out;
+  }
   const test::CommandResult check = run("check " + write("t.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"), loader + " ");
   EXPECT_NE(check.status, 127) << check.err;
   EXPECT_NE(check.out.find("t.off"), std::string::npos) << check.out << check.err;

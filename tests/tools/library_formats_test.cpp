@@ -134,7 +134,9 @@ TEST_F(CadFiles, AStepFilesColoursAreItsFacesMaterials) {
   for (size_t f = 0; f < soup.polygon_count(); ++f) {
     const int m = soup.polygon_material(f);
     ++faces_of[m < 0 ? "none" : soup.materials[size_t(m)].name];
-    if (m >= 0) EXPECT_EQ(soup.materials[size_t(m)].diffuse, soup.materials[size_t(m)].name == "#ff0000" ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 0, 1));
+    if (m >= 0) {
+      EXPECT_EQ(soup.materials[size_t(m)].diffuse, soup.materials[size_t(m)].name == "#ff0000" ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 0, 1));
+    }
   }
   EXPECT_EQ(faces_of, (std::map<std::string, size_t>{{"#ff0000", 12}, {"#0000ff", 2}, {"none", 10}}));
 }
