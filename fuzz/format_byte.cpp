@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "mesh/file_extension.hpp"
@@ -37,31 +38,35 @@ std::array<int, 256> owners(const std::vector<std::string_view>& extensions) {
   return owner;
 }
 
+// A list of extensions, the byte each owns, and what each byte names: the
+// extension of the nearest owned byte at or above it (round past 255 to 0).
 struct Numbering {
   std::vector<std::string_view> extensions;
+  std::array<int, 256> owner;
   std::array<std::string_view, 256> meanings;
 };
 
+Numbering numbering_of(std::vector<std::string_view> extensions) {
+  Numbering n{std::move(extensions), {}, {}};
+  n.owner = owners(n.extensions);
+  int last = -1;
+  for (int pass = 0; pass < 2; ++pass)
+    for (int byte = 255; byte >= 0; --byte) {
+      if (n.owner[size_t(byte)] >= 0) last = n.owner[size_t(byte)];
+      if (last >= 0) n.meanings[size_t(byte)] = n.extensions[size_t(last)];
+    }
+  return n;
+}
+
 const Numbering& numbered(Readers readers) {
-  static const Numbering umbras{extensions_of(Readers::kUmbras), byte_meanings(extensions_of(Readers::kUmbras))},
-      every{extensions_of(Readers::kEvery), byte_meanings(extensions_of(Readers::kEvery))};
+  static const Numbering umbras = numbering_of(extensions_of(Readers::kUmbras)), every = numbering_of(extensions_of(Readers::kEvery));
   return readers == Readers::kUmbras ? umbras : every;
 }
 
 }  // namespace
 
 std::array<std::string_view, 256> byte_meanings(const std::vector<std::string_view>& extensions) {
-  const std::array<int, 256> owner = owners(extensions);
-  std::array<std::string_view, 256> meaning;
-  // Each byte names the extension that owns it or the nearest byte above it
-  // (round past 255 to 0).
-  int last = -1;
-  for (int pass = 0; pass < 2; ++pass)
-    for (int byte = 255; byte >= 0; --byte) {
-      if (owner[size_t(byte)] >= 0) last = owner[size_t(byte)];
-      if (last >= 0) meaning[size_t(byte)] = extensions[size_t(last)];
-    }
-  return meaning;
+  return numbering_of(extensions).meanings;
 }
 
 std::string mesh_format_name_of_byte(uint8_t byte, Readers readers) {
@@ -71,14 +76,15 @@ std::string mesh_format_name_of_byte(uint8_t byte, Readers readers) {
 }
 
 std::optional<uint8_t> mesh_format_byte_of(const std::string& path, Readers readers) {
-  const std::vector<std::string_view>& extensions = numbered(readers).extensions;
+  const Numbering& numbering = numbered(readers);
+  const std::vector<std::string_view>& extensions = numbering.extensions;
   // umbra's own readers are numbered by format: any of a format's extensions names it.
   const std::string id = mesh_format_of(path);
   const MeshFormat* format = mesh_format_by_id(id);
   const std::string extension = readers == Readers::kUmbras && format ? std::string(format->extensions.front()) : lowercase_extension(path);
   const auto found = std::find(extensions.begin(), extensions.end(), extension);
   if (found == extensions.end()) return std::nullopt;
-  const std::array<int, 256> owner = owners(extensions);
+  const std::array<int, 256>& owner = numbering.owner;
   return uint8_t(std::find(owner.begin(), owner.end(), int(found - extensions.begin())) - owner.begin());
 }
 

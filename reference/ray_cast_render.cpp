@@ -45,14 +45,15 @@ Terminators terminators_of(const Scene& scene) {
   return all;
 }
 
-// For a hit on a mesh's face that turns from the light, whether anything
+// For a hit on `mesh`'s face that turns from the light, whether anything
 // more than the mesh's own surface, where the ray to the light leaves it,
 // stands between it and the light: the GL's count past one volume.
-bool shadowed_past_own_surface(const Scene& scene, const RayCaster& caster, const RayHit& hit, const glm::dvec3& light) {
+bool shadowed_past_own_surface(const Scene& scene, const RayCaster& caster, const RayHit& hit, const Mesh* mesh,
+                               const glm::dvec3& light) {
   const double distance = glm::length(light - hit.point);
   const std::optional<RayHit> leaving = caster.nearest_hit(hit.point, (light - hit.point) / distance, hit.object);
   if (!leaving || leaving->t >= distance) return false;
-  if (surface_of(scene, leaving->object).mesh != surface_of(scene, hit.object).mesh) return true;
+  if (surface_of(scene, leaving->object).mesh != mesh) return true;
   return caster.shadow_ray_blocked(leaving->point, leaving->object, light);
 }
 
@@ -86,7 +87,7 @@ glm::dvec4 shade(const Scene& scene, const RayCaster& caster, const glm::dvec3& 
     // A smooth face on the terminator that turns from the light takes the
     // light its normals give it, unless more than its own surface shades it.
     const bool lit_by_normals = smooth && !faces && terminators[i][size_t(surface.mesh - scene.meshes.data())][surface.triangle] &&
-                                !shadowed_past_own_surface(scene, caster, hit, light.position);
+                                !shadowed_past_own_surface(scene, caster, hit, surface.mesh, light.position);
     // A face lit at a grazing angle may round to n . l just below 0: none.
     const double n_dot_l = std::max(glm::dot(n, l), 0.0);
     if (m.shadow_catcher && faces) caught += glm::dvec2(lit ? 1.0 : 0.0, 1.0) * (mean(light.color) * n_dot_l);

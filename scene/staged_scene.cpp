@@ -131,9 +131,12 @@ Scene stage_mesh(const std::string& path, const std::shared_ptr<const PolygonSou
     notes += "# seen from " + StageStatements::number(kLowModelElevationDeg) + " degrees up, not " +
              StageStatements::number(kCameraElevationDeg) + ": it lies low (its height under a tenth of its footprint's side), so its face reads\n";
   }
-  // A spindly model comes first in its frame, under the default light.
-  if (!view.light && !view.light_azimuth_deg && !view.light_elevation_deg && view.light_turn_deg == 0.0 &&
-      view.turning != Turning::kLight &&
+  // A spindly model comes first in its frame, under the default light: one
+  // the options neither place (outright or by its angles) nor turn.
+  const StageView& given = staging.view;
+  const bool light_given = given.light || given.light_azimuth_deg || given.light_elevation_deg || given.light_turn_deg != 0.0 ||
+                           given.turning == Turning::kLight;
+  if (!light_given &&
       silhouette_fill(mesh, toward(view.camera_azimuth_deg.value_or(kCameraAzimuthDeg), view.camera_elevation_deg.value_or(kCameraElevationDeg))) <
           kSpindly)
     view.shadow_room = kShadowRoom;

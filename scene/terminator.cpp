@@ -63,13 +63,12 @@ std::vector<uint8_t> terminator_triangles(const Mesh& mesh, const std::vector<in
     size_t end = first;
     while (end < corners.size() && corners[end].first == corners[first].first) ++end;
     for (size_t i = first; i < end; ++i)
-      for (size_t j = first; j < end; ++j) {
+      for (size_t j = first; j < end && !on_terminator[corners[i].second / 3]; ++j) {
         const uint32_t c = corners[i].second, d = corners[j].second;
         const uint32_t t = c / 3, u = d / 3;
         if ((sides[t] > 0) == (sides[u] > 0)) continue;
         if (glm::dot(mesh.triangle_normals[t][c % 3], mesh.triangle_normals[u][d % 3]) < kSameShading) continue;
         on_terminator[t] = 1;
-        break;
       }
     first = end;
   }

@@ -25,11 +25,17 @@ constexpr double kCoplanarCos = 0.9999999999847691;  // cos 0.001 degrees
 // Per triangle, the area of the flat face it is part of: the triangles
 // joined to it across edges (two triangles that share two points) in one
 // plane, found by union-find (Tarjan 1975) over the triangles round each
-// point (`first` and `round` of crease_normals). Twice the area, as `area`.
-std::vector<double> flat_face_areas(const std::vector<std::array<uint32_t, 3>>& triangles, const std::vector<glm::dvec3>& unit,
+// point (`first` and `round` of crease_normals). Twice the area, as `area`
+// (twice each triangle's; 0 for a degenerate one). The planes are compared
+// in double, worked out for the few pairs that share an edge.
+std::vector<double> flat_face_areas(const std::vector<glm::dvec3>& points, const std::vector<std::array<uint32_t, 3>>& triangles,
                                     const std::vector<double>& area, const std::vector<uint32_t>& first,
                                     const std::vector<uint32_t>& round) {
   const uint32_t count = uint32_t(triangles.size());
+  const auto unit = [&](uint32_t t) {
+    const auto& [a, b, c] = triangles[t];
+    return glm::cross(points[b] - points[a], points[c] - points[a]) / area[t];
+  };
   std::vector<uint32_t> parent(count);
   for (uint32_t t = 0; t < count; ++t) parent[t] = t;
   const auto root = [&](uint32_t t) {
@@ -42,8 +48,9 @@ std::vector<double> flat_face_areas(const std::vector<std::array<uint32_t, 3>>& 
       const uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
       for (uint32_t i = first[a]; i < first[a + 1]; ++i) {
         const uint32_t u = round[i] / 3;
-        if (u <= t || area[u] == 0.0 || glm::dot(unit[t], unit[u]) < kCoplanarCos) continue;
+        if (u <= t || area[u] == 0.0) continue;
         if (triangles[u][0] != b && triangles[u][1] != b && triangles[u][2] != b) continue;
+        if (glm::dot(unit(t), unit(u)) < kCoplanarCos) continue;
         const uint32_t p = root(t), q = root(u);
         if (p != q) parent[std::max(p, q)] = std::min(p, q);
       }
@@ -61,8 +68,10 @@ std::vector<double> flat_face_areas(const std::vector<std::array<uint32_t, 3>>& 
 std::vector<std::array<glm::vec3, 3>> crease_normals(const std::vector<glm::dvec3>& points,
                                                      const std::vector<std::array<uint32_t, 3>>& triangles, double crease_deg) {
   const size_t count = triangles.size();
-  // Each triangle's unit normal and twice its area, in double.
-  std::vector<glm::dvec3> unit(count, glm::dvec3(0.0));
+  // Each triangle's unit normal, kept in float: normals are read round every
+  // point, and the halved memory is most of what this costs; and twice its
+  // area, in double.
+  std::vector<glm::vec3> face(count, glm::vec3(0.0f));
   std::vector<double> area(count, 0.0);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 4096), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t t = r.begin(); t < r.end(); ++t) {
@@ -70,7 +79,7 @@ std::vector<std::array<glm::vec3, 3>> crease_normals(const std::vector<glm::dvec
       const glm::dvec3 n = glm::cross(points[b] - points[a], points[c] - points[a]);
       const double length = glm::length(n);
       if (!(length > 0.0) || !std::isfinite(length)) continue;  // degenerate: no normal, no weight
-      unit[t] = n / length;
+      face[t] = glm::vec3(n / length);
       area[t] = length;
     }
   });
@@ -83,27 +92,22 @@ std::vector<std::array<glm::vec3, 3>> crease_normals(const std::vector<glm::dvec
   std::vector<uint32_t> filled(first.begin(), first.end() - 1);
   for (uint32_t t = 0; t < count; ++t)
     for (uint32_t k = 0; k < 3; ++k) round[filled[triangles[t][k]]++] = 3 * t + k;
-  const std::vector<double> flat_area = flat_face_areas(triangles, unit, area, first, round);
+  const std::vector<double> flat_area = flat_face_areas(points, triangles, area, first, round);
   double mean = 0.0;
   for (const double a : area) mean += a / double(count);
-  // Each triangle's unit normal and its weight at each corner: its angle
-  // there times its flat face's area over the triangles' mean area (a
-  // ratio, which a float holds for any scale of coordinates). Kept in
-  // float: they are read round every point, and the halved memory is most
-  // of what this costs.
-  std::vector<glm::vec3> face(count, glm::vec3(0.0f));
+  // Each triangle's weight at each corner: its angle there times its flat
+  // face's area over the triangles' mean area (a ratio, which a float holds
+  // for any scale of coordinates).
   std::vector<std::array<float, 3>> angle(count, {0.0f, 0.0f, 0.0f});
   tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 4096), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t t = r.begin(); t < r.end(); ++t) {
       if (area[t] == 0.0) continue;
-      face[t] = glm::vec3(unit[t]);
       const double scale = flat_area[t] / mean;
       for (int k = 0; k < 3; ++k)
         angle[t][size_t(k)] = float(scale * corner_angle(points[triangles[t][size_t(k)]], points[triangles[t][size_t((k + 1) % 3)]],
                                                    points[triangles[t][size_t((k + 2) % 3)]]));
     }
   });
-  unit = {};
 
   const double min_cos = std::cos(glm::radians(crease_deg));
   // Within half the crease angle of the point's mean normal, every two
