@@ -37,10 +37,10 @@ std::optional<AnimationFormat> animation_format_of(const std::string& path) {
   return std::nullopt;
 }
 
-std::string animation_extensions() {
+std::string animation_extensions(bool dots) {
   std::string names;
   for (size_t i = 0; i < std::size(kAnimationFormats); ++i)
-    names += (i == 0 ? "" : i + 1 == std::size(kAnimationFormats) ? " or " : ", ") + std::string(kAnimationFormats[i].extension);
+    names += (i == 0 ? "" : i + 1 == std::size(kAnimationFormats) ? " or " : ", ") + std::string(kAnimationFormats[i].extension + (dots ? 0 : 1));
   return names;
 }
 

@@ -29,8 +29,8 @@ const AnimationFormatRow& animation_row(AnimationFormat format);
 
 // The format `path`'s extension names (case aside), or none.
 std::optional<AnimationFormat> animation_format_of(const std::string& path);
-// ".mp4, .webp or .gif": for messages.
-std::string animation_extensions();
+// ".mp4, .webp or .gif": for messages; "mp4, webp or gif" without `dots`.
+std::string animation_extensions(bool dots = true);
 
 struct AnimationSettings {
   int width = 0, height = 0;  // every frame's

@@ -20,7 +20,7 @@
 
 namespace umbra {
 
-const std::string kBenchUsage = usage_text(
+const std::string kBenchUsage =
     R"(usage: umbra bench [SCENES...] [options]
 
 Shows what accuracy costs in time. For each scene, method and sphere N, it
@@ -43,28 +43,11 @@ The reference is labelled "reference": it has no error of its own. A method
 whose first frame takes over 250 ms is timed over 3 frames after that one.
 
 options:
-  --size WxH          image size (default 400x400)
-  --frames K          timed frames per measurement (default 5; 21 with
-                      --full; 1 to 1000)
-  --segments LIST     the sphere N to try, comma-separated (default 16,64,256;
-                      8,16,32,64,128,256 with --full; each 3 to 4096)
-  --map-sizes LIST    the shadow map sizes to try, comma-separated (default
-                      512,2048; 256,512,1024,2048,4096 with --full; each 16 to
-                      8192)
-  --full              the whole sweep, with more frames each
-  --gl G              the headless OpenGL to draw with (default auto, or
-                      the UMBRA_GL environment variable's):
-{gl platforms}
-  --csv OUT.csv       also write the rows as CSV
-  --plot OUT.png      also plot error against frame time, a panel per scene
-                      and a curve per method (needs gnuplot); OUT.txt plots
-                      as text
-  -h, --help          show this help
-
+{options}
 A bad scene is reported as FILE:LINE:COL: message before anything is
 measured; nothing is written and the exit status is 1. A usage error exits
 with 2.
-)");
+)";
 
 namespace {
 
@@ -77,7 +60,6 @@ struct BenchOptions {
   std::vector<int> map_sizes = {512, 2048};
   std::optional<std::string> csv, plot;
   HeadlessGl gl = HeadlessGl::kAuto;
-  bool help = false;
 };
 
 constexpr int kWarmUpFrames = 3;
@@ -98,25 +80,52 @@ std::vector<int> parse_int_list(const std::string& option, const std::string& te
 BenchOptions parse_bench_options(const std::vector<std::string>& argv) {
   BenchOptions o;
   CommandOptions options;
-  add_help_option(options, o.help);
-  add_size_option(options, o.width, o.height);
+  // Each default said once: the few points of each curve, and --full's sweep.
+  BenchOptions full_sweep;
+  full_sweep.frames = 21, full_sweep.segments = {8, 16, 32, 64, 128, 256}, full_sweep.map_sizes = {256, 512, 1024, 2048, 4096};
+  const auto list = [](const std::vector<int>& numbers) {
+    std::string text;
+    for (const int n : numbers) text += (text.empty() ? "" : ",") + std::to_string(n);
+    return text;
+  };
+  constexpr ValueRange kFrames{1, 1000}, kSegments{3, 4096}, kMapSizes{16, 8192};
+  add_size_option(options, o.width, o.height, "image size (default " + std::to_string(o.width) + "x" + std::to_string(o.height) + ")");
   std::optional<int> frames;
   std::optional<std::vector<int>> segments, map_sizes;
   bool full = false;
-  options.flag("--full", full);
-  options.value("--frames", [&](const std::string& n, const std::string& t) { frames = parse_int_in(n, t, 1, 1000); });
-  options.value("--segments", [&](const std::string& n, const std::string& t) { segments = parse_int_list(n, t, 3, 4096); });
-  options.value("--map-sizes", [&](const std::string& n, const std::string& t) { map_sizes = parse_int_list(n, t, 16, 8192); });
+  options.value("--frames",
+                ranged({"K", "timed frames per measurement (default {default}; " + std::to_string(full_sweep.frames) +
+                                 " with --full; {range})"},
+                       kFrames, o.frames),
+                [&](const std::string& n, const std::string& t) { frames = parse_int_in(n, t, kFrames); });
+  options.value("--segments",
+                ranged({"LIST", "the sphere N to try, comma-separated (default " + list(o.segments) + "; " + list(full_sweep.segments) +
+                                    " with --full; each {range})"},
+                       kSegments, 0),
+                [&](const std::string& n, const std::string& t) {
+                  segments = parse_int_list(n, t, int(kSegments.lowest), int(kSegments.highest));
+                });
+  options.value("--map-sizes",
+                ranged({"LIST", "the shadow map sizes to try, comma-separated (default " + list(o.map_sizes) + "; " +
+                                    list(full_sweep.map_sizes) + " with --full; each {range})"},
+                       kMapSizes, 0),
+                [&](const std::string& n, const std::string& t) {
+                  map_sizes = parse_int_list(n, t, int(kMapSizes.lowest), int(kMapSizes.highest));
+                });
+  options.flag("--full", full, "the whole sweep, with more frames each");
   add_gl_option(options, o.gl);
-  options.value("--csv", [&](const std::string&, const std::string& t) { o.csv = t; });
-  options.value("--plot", [&](const std::string&, const std::string& t) { o.plot = t; });
+  options.value("--csv", {"OUT.csv", "also write the rows as CSV"}, [&](const std::string&, const std::string& t) { o.csv = t; });
+  options.value("--plot",
+                {"OUT.png", "also plot error against frame time, a panel per scene and a curve per method (needs gnuplot); OUT.txt "
+                            "plots as text"},
+                [&](const std::string&, const std::string& t) { o.plot = t; });
+  options.help_option();
   options.positionals(o.scenes);
   options.parse(argv);
-  if (full) o.frames = 21, o.segments = {8, 16, 32, 64, 128, 256}, o.map_sizes = {256, 512, 1024, 2048, 4096};
+  if (full) o.frames = full_sweep.frames, o.segments = full_sweep.segments, o.map_sizes = full_sweep.map_sizes;
   o.frames = frames.value_or(o.frames);
   o.segments = segments.value_or(o.segments);
   o.map_sizes = map_sizes.value_or(o.map_sizes);
-  if (o.help) return o;
   o.gl = gl_with_environment(o.gl);
   if (o.scenes.empty()) {
     // The source tree's, where umbra runs in one; else the installed ones.

@@ -29,6 +29,7 @@
 #include "mesh/check/mesh_repair.hpp"
 #include "tools/isolated_runs.hpp"
 #include "tools/check_report_page.hpp"
+#include "scene/scene_text.hpp"
 #include "tools/command_line.hpp"
 #include "tools/defect_picture.hpp"
 #include "tools/fault_injection.hpp"
@@ -39,7 +40,7 @@
 
 namespace umbra {
 
-const std::string kCheckUsage = usage_text(
+const std::string kCheckUsage =
     R"(usage: umbra check PATH... [--json] [--jobs N] [--shard K/N] [--time-limit SEC]
        umbra check MESH --repair OUT
        umbra check PATH... --repair OUTDIR
@@ -61,87 +62,14 @@ as soon as it and those before it are done; with more than one mesh, a
 summary line follows on stderr.
 
 options:
-  --json            one JSON object per mesh per line, JSON Lines (keys in
-                    docs/check.md)
-  --brief           one line per mesh on stdout, its path, what it holds and
-                    its verdict (an unreadable one, its path and why), for
-                    grep and sort
-  --solid           the exit status says whether every mesh is a solid, as a
-                    printer needs one (closed, manifold, oriented alike,
-                    facing outward, crossing no face of its own), not a
-                    closed 2-manifold: the report's "solid" line says why not
-  --jobs N          check N meshes at a time, using at most N threads in all
-                    (default: the number of cores)
-  --                end of options: every argument after it is a PATH
-  --shard K/N       check only part K (counting from 0) of N disjoint parts
-                    of the list: N machines with K = 0 ... N-1 check it all,
-                    and their outputs, concatenated in order of K, are this
-                    command's output without --shard (docs/batch-checks.md)
-  --repair OUT      write a repaired copy to OUT, a
-                    {repair extensions} file: merge repeated vertices,
-                    drop degenerate and duplicate faces, stitch borders,
-                    fill holes, orient consistently and outward, merge
-                    overlapping parts into their union; then check
-                    OUT and say what changed and what is still wrong. Never
-                    writes MESH. An .obj keeps the materials, texture
-                    coordinates, normals and colours, its library and maps
-                    beside it (STEM.mtl, STEM.NAME); a .3mf keeps a
-                    3MF's objects, build items, transforms, unit and
-                    colours; a .ply keeps the colours. With several meshes
-                    or a folder, OUT is a folder: each mesh's copy goes
-                    where umbra render puts a folder's pictures, in its own
-                    format (glTF and the rest as NAME.obj)
-  --max-hole-edges N
-                    (with --repair) fill only holes of at most N edges
-                    (default {max hole edges}; 0 fills none): a larger one is
-                    more often an opening the model means
-  --merge-tolerance D
-                    (with --repair) merge points at most D apart (in the
-                    model's units) before anything else; by default only
-                    equal ones are merged
-  --picture OUT.png also draw the mesh, staged as umbra render stages it,
-                    with its defects where they are: border edges red,
-                    non-manifold edges blue, non-manifold vertices magenta,
-                    self-intersecting faces orange, faces to flip teal
-                    (fainter where a surface hides them), and a legend with
-                    the counts; OUT's name says PNG or JPEG. With several
-                    meshes or a folder, OUT is a folder, and each mesh's
-                    picture is named as umbra render names a folder's
-                    (meshes are then checked one at a time)
-  --camera-azimuth DEG, --camera-elevation DEG, --camera-zoom F
-                    (with --picture or --report) the pictures' camera, as
-                    umbra render takes it: defects under a model show from
-                    below (--camera-elevation -30)
-  --report REPORT.html
-                    also write one web page of every mesh's report, a row
-                    each with its defect picture (--picture's, or small ones
-                    drawn into REPORT-pictures/), verdict and measures,
-                    sortable by any column and filtered by verdict; static,
-                    it opens from the disk with no server
-  --no-pictures     (with --report) rows without pictures: thousands of
-                    meshes are checked in seconds, and drawn in minutes
-  --time-limit SEC  stop the search for self-intersections after SEC seconds
-                    per mesh and report that it stopped (default 60; 0 skips
-                    it). A mesh whose search was skipped or stopped is "not
-                    known to be clean": no closed 2-manifold, exit status 1
-  --cad-deflection F, --cad-angle DEG
-                    how finely a STEP, IGES or BREP file's surfaces are cut
-                    into triangles: the farthest a triangle may stray, as a
-                    fraction of the model's size (default {cad deflection}),
-                    and the largest angle between neighbouring ones, in
-                    degrees (default {cad angle})
-  --timeout SEC     check the meshes in worker processes and stop one after
-                    SEC seconds: a mesh that hangs, crashes or runs out of
-                    memory is reported as unreadable (exit status 2), and
-                    the rest go on
-  -h, --help        show this help
+{options}  --                    end of options: every argument after it is a PATH
 
 exit status: 0 every mesh is a closed 2-manifold, its search for
-self-intersections complete and finding none (a solid, with --solid); 1
-one is not (after the repair, with --repair); 2 one could not be read (every other mesh is still
-reported), the repaired mesh or a defect picture could not be written, or a
-usage error.
-)");
+self-intersections complete and finding none (a solid, with --solid); 1 one
+is not (after the repair, with --repair); 2 one could not be read (every
+other mesh is still reported), the repaired mesh or a defect picture could
+not be written, or a usage error.
+)";
 
 namespace {
 
@@ -168,40 +96,84 @@ struct CheckCommandOptions {
   CheckOptions check;
   ReadOptions reading = ReadOptions::skip();  // --cad-deflection, --cad-angle; no texture maps
   double timeout_s = 0.0;  // >0: meshes checked in worker processes, each stopped after this long
-  bool help = false;
 };
 
 CheckCommandOptions parse_check_options(const std::vector<std::string>& argv) {
   CheckCommandOptions o;
   CommandOptions options;
-  add_help_option(options, o.help);
-  options.flag("--json", o.json);
-  options.flag("--brief", o.brief);
-  options.flag("--solid", o.solid);
-  options.value("--repair", [&](const std::string&, const std::string& t) { o.repair_output = t; });
-  options.value("--picture", [&](const std::string&, const std::string& t) { o.picture = t; });
-  options.value("--report", [&](const std::string&, const std::string& t) { o.report = t; });
-  options.flag("--no-pictures", o.no_pictures);
+  options.flag("--json", o.json, "one JSON object per mesh per line, JSON Lines (keys in docs/check.md)");
+  options.flag("--brief", o.brief,
+               "one line per mesh on stdout, its path, what it holds and its verdict (an unreadable one, its path and why), for grep "
+               "and sort");
+  options.flag("--solid", o.solid,
+               "the exit status says whether every mesh is a solid, as a printer needs one (closed, manifold, oriented alike, facing "
+               "outward, crossing no face of its own), not a closed 2-manifold: the report's \"solid\" line says why not");
+  options.value("--jobs", {"N", "check N meshes at a time, using at most N threads in all (default: the number of cores)"},
+                [&](const std::string& n, const std::string& t) { o.jobs = size_t(parse_int_in(n, t, 1, 4096)); });
+  options.value("--shard",
+                {"K/N", "check only part K (counting from 0) of N disjoint parts of the list: N machines with K = 0 ... N-1 check "
+                        "it all, and their outputs, concatenated in order of K, are this command's output without --shard "
+                        "(docs/batch-checks.md)"},
+                [&](const std::string& n, const std::string& t) { o.shard = parse_shard(n, t); });
+  options.value("--repair",
+                {"OUT", "write a repaired copy to OUT, a {repair extensions} file: merge repeated vertices, drop degenerate and "
+                        "duplicate faces, stitch borders, fill holes, orient consistently and outward, merge overlapping parts into "
+                        "their union; then check OUT and say what changed and what is still wrong. Never writes MESH. An .obj keeps "
+                        "the materials, texture coordinates, normals and colours, its library and maps beside it (STEM.mtl, "
+                        "STEM.NAME); a .3mf keeps a 3MF's objects, build items, transforms, unit and colours; a .ply keeps the "
+                        "colours. With several meshes or a folder, OUT is a folder: each mesh's copy goes where umbra render puts a "
+                        "folder's pictures, in its own format (glTF and the rest as NAME.obj)"},
+                [&](const std::string&, const std::string& t) { o.repair_output = t; });
+  options.value("--max-hole-edges",
+                {"N", "(with --repair) fill only holes of at most N edges (default " + std::to_string(kDefaultMaxHoleEdges) +
+                          "; 0 fills none): a larger one is more often an opening the model means"},
+                [&](const std::string& n, const std::string& t) { o.max_hole_edges = size_t(parse_int_in(n, t, 0, 1000000)); });
+  options.value("--merge-tolerance",
+                {"D", "(with --repair) merge points at most D apart (in the model's units) before anything else; by default only "
+                      "equal ones are merged"},
+                [&](const std::string& n, const std::string& t) {
+                  o.merge_tolerance = parse_finite_number(n, t);
+                  if (!(*o.merge_tolerance > 0.0)) throw UsageError(n + " must be a distance above 0, got \"" + t + "\"");
+                });
+  options.value("--picture",
+                {"OUT.png", "also draw the mesh, staged as umbra render stages it, with its defects where they are: border edges "
+                            "red, non-manifold edges blue, non-manifold vertices magenta, self-intersecting faces orange, faces to "
+                            "flip teal (fainter where a surface hides them), and a legend with the counts; OUT's name says PNG or "
+                            "JPEG. With several meshes or a folder, OUT is a folder, and each mesh's picture is named as umbra render "
+                            "names a folder's (meshes are then checked one at a time)"},
+                [&](const std::string&, const std::string& t) { o.picture = t; });
+  options.value("--report",
+                {"REPORT.html", "also write one web page of every mesh's report, a row each with its defect picture (--picture's, "
+                                "or small ones drawn into REPORT-pictures/), verdict and measures, sortable by any column and "
+                                "filtered by verdict; static, it opens from the disk with no server"},
+                [&](const std::string&, const std::string& t) { o.report = t; });
+  options.flag("--no-pictures", o.no_pictures,
+               "(with --report) rows without pictures: thousands of meshes are checked in seconds, and drawn in minutes");
+  options.paragraph(
+      "With --picture or --report, the pictures' camera, as umbra render takes it: angles in degrees round the model's centre, "
+      "azimuth 0 from its front; defects under a model show from below (--camera-elevation -30).");
   add_camera_orbit_options(options, o.view, o.view_given);
-  options.value("--max-hole-edges", [&](const std::string& n, const std::string& t) { o.max_hole_edges = size_t(parse_int_in(n, t, 0, 1000000)); });
-  options.value("--merge-tolerance", [&](const std::string& n, const std::string& t) {
-    o.merge_tolerance = parse_finite_number(n, t);
-    if (!(*o.merge_tolerance > 0.0)) throw UsageError(n + " must be a distance above 0, got \"" + t + "\"");
-  });
-  options.value("--jobs", [&](const std::string& n, const std::string& t) { o.jobs = size_t(parse_int_in(n, t, 1, 4096)); });
-  options.value("--shard", [&](const std::string& n, const std::string& t) { o.shard = parse_shard(n, t); });
-  options.value("--timeout", [&](const std::string& n, const std::string& t) {
-    o.timeout_s = parse_finite_number(n, t);
-    if (!(o.timeout_s > 0.0)) throw UsageError(n + " must be a number of seconds above 0, got \"" + t + "\"");
-  });
-  options.value("--time-limit", [&](const std::string& n, const std::string& t) {
-    o.check.self_intersection_seconds = parse_finite_number(n, t);
-    if (o.check.self_intersection_seconds < 0.0) throw UsageError("--time-limit must not be negative");
-  });
+  options.paragraph("");
+  options.value("--time-limit",
+                {"SEC", "stop the search for self-intersections after SEC seconds per mesh and report that it stopped (default " +
+                            number_text(o.check.self_intersection_seconds) +
+                            "; 0 skips it). A mesh whose search was skipped or stopped is \"not known to be clean\": no closed "
+                            "2-manifold, exit status 1"},
+                [&](const std::string& n, const std::string& t) {
+                  o.check.self_intersection_seconds = parse_finite_number(n, t);
+                  if (o.check.self_intersection_seconds < 0.0) throw UsageError("--time-limit must not be negative");
+                });
+  options.value("--timeout",
+                {"SEC", "check the meshes in worker processes and stop one after SEC seconds: a mesh that hangs, crashes or runs out "
+                        "of memory is reported as unreadable (exit status 2), and the rest go on"},
+                [&](const std::string& n, const std::string& t) {
+                  o.timeout_s = parse_finite_number(n, t);
+                  if (!(o.timeout_s > 0.0)) throw UsageError(n + " must be a number of seconds above 0, got \"" + t + "\"");
+                });
   add_reading_options(options, o.reading, false);
+  options.help_option();
   options.positionals(o.meshes);
   options.parse(argv);
-  if (o.help) return o;
   if (o.meshes.empty()) throw UsageError("no mesh file given");
   if (o.json && o.brief) throw UsageError("--json and --brief are two forms of the same report: give one");
   if (o.max_hole_edges && !o.repair_output) throw UsageError("--max-hole-edges says which holes --repair fills: give --repair OUT");

@@ -13,7 +13,9 @@ const std::string kFormatsUsage = R"(usage: umbra formats
 Lists every mesh format umbra reads: its extensions, whether a file is told
 to be in it by its content (whatever its name) or by its name, what reads
 it, and whether this build was built with that reader's library.
-)";
+
+options:
+{options})";
 
 constexpr size_t kNameWidth = 18, kExtensionsWidth = 30;
 
@@ -42,14 +44,12 @@ std::string formats_table() {
 
 int run_formats_command(const std::vector<std::string>& argv) {
   struct FormatsOptions {
-    bool help = false;
   } options;
   const auto parse = [](const std::vector<std::string>& words) {
-    FormatsOptions o;
     CommandOptions command;
-    add_help_option(command, o.help);
+    command.help_option();
     command.parse(words);
-    return o;
+    return FormatsOptions{};
   };
   if (const auto exit_status = parse_command_line("formats", kFormatsUsage, argv, parse, options)) return *exit_status;
   std::cout << formats_table();

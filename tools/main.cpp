@@ -61,8 +61,24 @@ commands:
   return umbra::usage_text(text) + R"(
   umbra help COMMAND (or umbra COMMAND --help) for a command's options
   umbra COMMAND --list-options: its options' names, one a line (for shell completion)
+  umbra --list-options=markdown: every command's options as docs/options.md has them
   umbra --help, umbra --version
 )";
+}
+
+// docs/options.md: every command's options as a Markdown table, each from
+// its own definition (`umbra --list-options=markdown > docs/options.md`).
+int print_options_doc() {
+  std::cout << "# Options\n\n"
+               "Every option of every command, as its `--help` gives it. This page is written by umbra itself from the "
+               "options' definitions\n(`umbra --list-options=markdown > docs/options.md`), and a test fails until it is "
+               "written again after an option changes.\n";
+  for (const Command& c : kCommands) {
+    std::cout << "\n## umbra " << c.name << (*c.arguments ? " " : "") << c.arguments << "\n\n" << std::flush;
+    if (const int status = c.run({"--list-options=markdown"}); status != 0) return status;
+    std::cout << std::flush;
+  }
+  return 0;
 }
 
 const Command* command_named(const std::string& name) {
@@ -86,6 +102,7 @@ int main(int argc, char** argv) {
     std::cout << usage();
     return args.empty() ? 2 : 0;
   }
+  if (args[0] == "--list-options=markdown") return print_options_doc();
   if (args[0] == "help") {
     const Command* command = command_named(args[1]);
     if (!command) {

@@ -7,10 +7,21 @@
 #include <sstream>
 
 #include "mesh/word_list.hpp"
+#include "scene/scene_text.hpp"
 #include "scene/up_axis.hpp"
 #include "tools/nearest_word.hpp"
 
 namespace umbra {
+
+OptionHelp ranged(OptionHelp help, ValueRange range, double value) {
+  const auto replace = [&help](const std::string& from, const std::string& to) {
+    const size_t at = help.does.find(from);
+    if (at != std::string::npos) help.does.replace(at, from.size(), to);
+  };
+  replace("{range}", number_text(range.lowest) + " to " + number_text(range.highest));
+  replace("{default}", number_text(value));
+  return help;
+}
 
 double parse_finite_number(const std::string& option, const std::string& text) {
   double value = 0.0;

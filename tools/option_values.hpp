@@ -12,10 +12,25 @@
 
 namespace umbra {
 
+// The numbers an option takes, said once: its parse checks them and its
+// help says them (ranged).
+struct ValueRange {
+  double lowest, highest;
+};
+// `help` with "{range}" in what it does written "LOWEST to HIGHEST", and
+// "{default}" as `value` (the field's value before parsing: its default).
+OptionHelp ranged(OptionHelp help, ValueRange range, double value);
+
 double parse_finite_number(const std::string& option, const std::string& text);
 int parse_int_in(const std::string& option, const std::string& text, int lowest, int highest);
 // A number of degrees from `lowest` to `highest`.
 double parse_degrees_in(const std::string& option, const std::string& text, double lowest, double highest);
+inline double parse_degrees_in(const std::string& option, const std::string& text, ValueRange range) {
+  return parse_degrees_in(option, text, range.lowest, range.highest);
+}
+inline int parse_int_in(const std::string& option, const std::string& text, ValueRange range) {
+  return parse_int_in(option, text, int(range.lowest), int(range.highest));
+}
 // "WxH", each between 1 and `largest`.
 void parse_size(const std::string& option, const std::string& text, int largest, int& width, int& height);
 // "X,Y,Z": three finite numbers.

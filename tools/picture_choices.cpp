@@ -5,15 +5,26 @@
 namespace umbra {
 
 void add_picture_choices(CommandOptions& options, PictureChoices& c) {
-  add_size_option(options, c.settings.width, c.settings.height, &c.size_given);
-  add_light_angle_option(options, c.light_angle_deg);
+  add_size_option(options, c.settings.width, c.settings.height,
+                  "image size in pixels (default: a scene's size statement, else " + std::to_string(c.settings.width) + "x" +
+                      std::to_string(c.settings.height) + ")",
+                  &c.size_given);
+  add_light_angle_option(options, c.light_angle_deg,
+                         "rotate every light about the z axis by DEG degrees (for a MESH, before the camera frames its shadow)");
   add_segments_option(options, c.settings.sphere_segments);
-  add_method_option(options, c.settings.method);
+  add_method_option(options, c.settings.method, "how shadows are made (default auto):\n{methods}\n");
   add_map_size_option(options, c.settings.shadow_map_size);
   add_gl_option(options, c.gl);
-  add_antialias_option(options, c.antialias);
-  options.flag("--antialias-all", c.antialias_all);
-  options.flag("--show-volumes", c.show_volumes);
+  add_antialias_option(options, c.antialias,
+                       "N x N samples per pixel, averaged ({range}), where the picture has an edge: the GL draws one sample a "
+                       "pixel, and each pixel that differs from a neighbour is drawn again from N x N exact rays. Default " +
+                           std::to_string(kStagedAntialias) +
+                           " for a MESH on its own, 1 for a SCENE, whose pictures stay as they were; masks are one sample at each "
+                           "pixel's centre");
+  options.flag("--antialias-all", c.antialias_all,
+               "take the N x N samples at every pixel, the GL's frame drawn N times larger, as it always is for {inexact methods},"
+               " --show-volumes, a scene with a sphere, or more triangles than the picture has pixels");
+  options.flag("--show-volumes", c.show_volumes, "draw the shadow volumes translucently over the image");
   add_staging_options(options, c.staging, c.staging_given);
 }
 

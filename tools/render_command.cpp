@@ -33,7 +33,7 @@
 
 namespace umbra {
 
-const std::string kRenderUsage = usage_text(
+const std::string kRenderUsage =
     R"(usage: umbra render MESH -o OUT.png [options]
        umbra render SCENE -o OUT.png [options]
        umbra render MESH|PATH... --views N [--passes LIST] -o OUTDIR [options]
@@ -62,180 +62,13 @@ on. Ctrl-C stops the workers, says how many files were not drawn and exits
 maps are read only from inside the folder named (see --any-texture-path).
 
 options:
-  -o, --output OUT      the image to write, or with several files the folder
-                        to write their pictures in (required): its name's
-                        ending says the format, {picture extensions}; - writes
-                        PNG to standard output
-  --quality N           for a .jpg output: 1 to 100 (default 90); for a .webp
-                        animation: lossy at that quality (default lossless);
-                        --jpeg-quality is its older name
-  --size WxH            image size in pixels (default: a scene's size
-                        statement, else 800x800)
-  --light-angle DEG     rotate every light about the z axis by DEG degrees (for
-                        a MESH, before the camera frames its shadow)
-  --segments N          sides of the N-gon that stands for a sphere's tangent
-                        circle in its shadow volume (default 64, 3 to 4096)
-  --method M            how shadows are made (default auto):
-{methods}
-  --map-size N          texels along a side of each shadow map cube face
-                        (default 1024, 16 to 8192; for --method shadowmap)
-  --gl G                the headless OpenGL to draw with (default auto, or
-                        the UMBRA_GL environment variable's):
-{gl platforms}
-  --antialias N         N x N samples per pixel, averaged (1 to 4), where the
-                        picture has an edge: the GL draws one sample a pixel,
-                        and each pixel that differs from a neighbour is drawn
-                        again from N x N exact rays. Default 3 for a MESH on
-                        its own, 1 for a SCENE, whose pictures stay as they
-                        were; masks are one sample at each pixel's centre
-  --antialias-all       take the N x N samples at every pixel, the GL's frame
-                        drawn N times larger, as it always is for shadowmap,
-                        planar and zpass, --show-volumes, a scene with a
-                        sphere, or more triangles than the picture has pixels
-  --show-volumes        draw the shadow volumes translucently over the image
-  --mask MASK.png       also write light 1's shadow mask: 8-bit grey, 128 where
-                        no surface is seen, 255 where the visible point faces
-                        light 1 and is outside its shadow, 0 elsewhere
-  --up AXIS             for a MESH: its axis that points up, +x, -x, +y, -y, +z
-                        or -z (default: its format's convention, +z for STL
-                        and 3MF, +y for the others)
-
-  For a MESH, where the camera and the light are: in the staged scene's
-  coordinates (the model fitted into the cube [-1,1]^3, +z up), angles in
-  degrees round the model's centre, azimuth 0 from its front (-y) growing
-  toward its right (+x), elevation 0 level. The frame keeps the model and its
-  shadow in view wherever they are, unless --eye or --target place the camera.
-  --camera-azimuth DEG  the camera's azimuth (default 35)
-  --camera-elevation DEG
-                        the camera's elevation, -89.9 to 89.9 (default 30)
-  --camera-zoom F       come F times closer than the framing (default 1; 0.01
-                        to 100; not with --eye, which places the camera)
-  --fov DEG             the lens's vertical field of view, 1 to 170 (default
-                        30)
-  --orthographic        parallel rays (an orthographic camera), framing the
-                        model and its shadow as the lens would; shadows as
-                        exact (its volumes stop past the last surface)
-  --eye X,Y,Z           put the camera there (aimed at the framing's target)
-  --target X,Y,Z        aim the camera there (from the framing's direction)
-  --light-azimuth DEG   the light's azimuth (default about -47.7: front left)
-  --light-elevation DEG the light's elevation, -90 to 90 (default about 60.2);
-                        it stands 4 half-sizes of the model from its centre
-  --light X,Y,Z         put the light there
-  --floor COLOR         the floor's colour; none: no floor; or shadow-catcher:
-                        the floor unseen but for its shadow, which darkens
-                        the background (with --background transparent, the
-                        shadow alone, as alpha) (default grey)
-  --color COLOR         the model's colour where its file gives it none
-                        (default light grey)
-  --plain               draw the model in --color alone: not its file's
-                        materials, texture maps or vertex colours
-  --flat                shade every face flat (default: smooth, in the file's
-                        normals, else across edges whose faces meet at no
-                        more than --crease-angle; flat for a mesh with as
-                        many triangles as the picture has pixels, whose
-                        facets do not show)
-  --crease-angle DEG    where the file gives no normals, faces that meet at
-                        more than DEG degrees keep a sharp edge (default 30);
-                        given, a mesh of any size is shaded smooth
-
-  --views N             draw N views of a MESH into the folder -o names, round
-                        the model at the camera's elevation from its azimuth
-                        on, evenly spaced; the light holds still. Writes
-                        NNN.png per view and transforms.json: each view's
-                        camera pose and intrinsics in the mesh file's own
-                        coordinates and units (docs/rendering.md, "Many views");
-                        with several files or a folder, each model's views
-                        into OUTDIR/its picture's name/, with --jobs,
-                        --timeout, --skip-existing, --json and --shard
-  --views-on SPREAD     ring (default) or sphere: views evenly over the whole
-                        sphere of directions (a Fibonacci lattice), each
-                        framing the model alone, without a floor unless
-                        --floor is given
-  --cameras FILE        instead of --views, draw the views a transforms.json
-                        names (its frames' umbra_camera, else their
-                        transform_matrix and the intrinsics: square pixels,
-                        centred), at its w x h unless --size is given; the
-                        file --views wrote redraws the same pictures
-  --passes LIST         with --views or --cameras, each view's data too,
-                        comma-separated: depth (NNN.depth.exr, float, along
-                        the view axis in the file's units, +inf off the
-                        model), normal (NNN.normal.exr, float RGB, the
-                        file's axes), object (NNN.object.png, 255 on the
-                        model), shadow (NNN.shadow.png, as --mask;
-                        NNN.shadowK.png per light where there are several)
-
-  --turntable N         N frames of a motion, the model turning 360/N degrees a
-                        frame about its up axis (counter-clockwise seen from
-                        above) under a studio that holds still, from the
-                        camera's azimuth on, framed to hold it all the way
-                        round; a SCENE turns its own camera and lights. -o
-                        names an animation, {animation formats}, or a
-                        folder (ending in /) for NNN.png frames and
-                        transforms.json, as --views writes them (with
-                        --passes); --cameras of it draws them again
-  --orbit WHAT          with --turntable: model (default), or light: the
-                        camera and model hold still and every light orbits
-                        the z axis, its shadow sweeping
-  --fps F               an animation's frames a second, 1 to 240 (default
-                        30; a GIF keeps whole hundredths of a second)
-  --format EXT          with --turntable and several files: each file's
-                        frames as one animation, OUTDIR/its name.EXT: mp4,
-                        webp or gif (without: each file's frames into
-                        OUTDIR/its name/)
-
-  --jobs N              with several files: draw N at a time, each in its own
-                        GL context, using at most N threads in all (default:
-                        one per core)
-  --shard K/N           with several files: draw only part K (counting from 0)
-                        of N disjoint parts, as umbra check --shard splits them
-  --sheet SHEET.png     with several files: also one picture of this run's
-                        pictures (with --views, each model's first view),
-                        each shrunk to at most 200 pixels wide and
-                        labelled with its file's name (.png or .jpg; never
-                        an input's or a picture's name)
-  --timeout SECONDS     with several files: stop a file's render after this
-                        long (its worker is stopped and replaced), report it
-                        as timed out and go on
-  --skip-existing       with several files: draw only the files whose picture
-                        is missing or older than the file, so that a run
-                        stopped part way resumes where it stopped
-  --json                with several files: one line of JSON per file on
-                        stdout: path, picture, status (drawn, skipped,
-                        failed, timed out, crashed, stopped or passed over),
-                        kind (of a failure: malformed, unreadable, timeout,
-                        out-of-memory, ...), seconds, triangles and error
-  --background COLOR    what shows where no surface is: a colour (#rrggbb or a
-                        name such as white), or transparent: alpha 0 there,
-                        in a PNG with an alpha channel (default: the scene's
-                        background statement, or black)
-  --any-texture-path    read texture maps from any folder: by default a model's
-                        maps are read only from inside the folder named on
-                        the command line (the model's own, for a file named
-                        on its own), so that a model from anywhere cannot
-                        put another image you can read into its picture
-  --cad-deflection F    how far a STEP, IGES or BREP file's triangles may
-                        stray from its surfaces, as a fraction of the
-                        model's size (its box's diagonal; default
-                        {cad deflection})
-  --cad-angle DEG       the largest angle between neighbouring triangles'
-                        normals on those surfaces (default {cad angle}):
-                        smaller is smoother, and more triangles
-  --save-scene FILE     for a MESH: also write the scene umbra stages for it,
-                        the options' camera, light, floor and background
-                        included, naming the mesh by its path from FILE's
-                        folder: umbra render FILE then draws the same picture
-  --explain             print the render plan (camera, lights, each caster's
-                        volume, how each light's volumes are counted and how
-                        far they reach, the GL, the pages malloc takes) to
-                        stdout, after the staged scene's text for a MESH
-  -h, --help            show this help
-
+{options}
 Errors in SCENE are printed as FILE:LINE:COL: message; nothing is written
 and the exit status is 1, as for a mesh file that cannot be read or has no
 faces. A usage error, or a file that is plainly neither a scene nor a mesh
 (an image, an archive, binary data), exits with 2. With several files, the
 exit status is 1 when any failed.
-)");
+)";
 
 namespace {
 
@@ -269,89 +102,150 @@ struct RenderOptions : PictureChoices {
   std::optional<ViewSetRequest> views;    // --views, --views-on, --passes, --turntable: many views into the folder -o names
   std::optional<AnimationRequest> animation;  // or into one animation, as -o's name asks
   ReadOptions reading;  // --any-texture-path, --cad-deflection, --cad-angle
-  bool help = false;
 };
 
 RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   RenderOptions o;
   std::vector<std::string> scenes;
   CommandOptions options;
-  add_help_option(options, o.help);
-  add_output_option(options, o.output);
-  options.value("--mask", [&](const std::string&, const std::string& t) { o.mask = t; });
+  add_output_option(options, o.output,
+                    {"OUT", "the image to write, or with several files the folder to write their pictures in (required): its name's "
+                            "ending says the format, {picture extensions}; - writes PNG to standard output"});
   std::optional<int> quality;
-  // --jpeg-quality: --quality's older name, for a JPEG alone.
-  for (const char* name : {"--quality", "--jpeg-quality"})
-    options.value(name, [&](const std::string& n, const std::string& t) {
-      quality = parse_int_in(n, t, 1, 100);
-      o.picture.jpeg_quality = *quality;
-      o.jpeg_quality_given = true;
-    });
+  constexpr ValueRange kQuality{1, 100};
+  options.value("--quality,--jpeg-quality",
+                ranged({"N", "for a .jpg output: {range} (default {default}); for a .webp animation: lossy at that quality (default "
+                             "lossless); --jpeg-quality is its older name"},
+                       kQuality, o.picture.jpeg_quality),
+                [&](const std::string& n, const std::string& t) {
+                  quality = parse_int_in(n, t, kQuality);
+                  o.picture.jpeg_quality = *quality;
+                  o.jpeg_quality_given = true;
+                });
   add_picture_choices(options, o);
-  options.flag("--explain", o.explain);
-  options.value("--save-scene", [&](const std::string&, const std::string& t) { o.save_scene = t; });
+  options.value("--mask", {"MASK.png", "also write light 1's shadow mask: 8-bit grey, 128 where no surface is seen, 255 where the visible "
+                                       "point faces light 1 and is outside its shadow, 0 elsewhere"},
+                [&](const std::string&, const std::string& t) { o.mask = t; });
   add_reading_options(options, o.reading, true);
+  options.value("--save-scene",
+                {"FILE", "for a MESH: also write the scene umbra stages for it, the options' camera, light, floor and background "
+                         "included, naming the mesh by its path from FILE's folder: umbra render FILE then draws the same picture"},
+                [&](const std::string&, const std::string& t) { o.save_scene = t; });
+  options.flag("--explain", o.explain,
+               "print the render plan (camera, lights, each caster's volume, how each light's volumes are counted and how far they "
+               "reach, the GL, the pages malloc takes) to stdout, after the staged scene's text for a MESH");
+
+  options.paragraph("");
+  std::vector<std::string> view_options;  // those named, for messages
+  ViewSetRequest views;
+  options.value("--views",
+                {"N", "draw N views of a MESH into the folder -o names, round the model at the camera's elevation from its azimuth "
+                      "on, evenly spaced; the light holds still. Writes NNN.png per view and transforms.json: each view's camera "
+                      "pose and intrinsics in the mesh file's own coordinates and units (docs/rendering.md, \"Many views\"); with "
+                      "several files or a folder, each model's views into OUTDIR/its picture's name/, with --jobs, --timeout, "
+                      "--skip-existing, --json and --shard"},
+                [&](const std::string& n, const std::string& t) {
+                  views.count = parse_int_in(n, t, 1, 100000);
+                  view_options.push_back(n);
+                });
+  options.value("--views-on",
+                {"SPREAD", "ring (default) or sphere: views evenly over the whole sphere of directions (a Fibonacci lattice), each "
+                           "framing the model alone, without a floor unless --floor is given"},
+                [&](const std::string& n, const std::string& t) {
+                  views.spread = parse_view_spread(n, t);
+                  view_options.push_back(n);
+                });
+  options.value("--cameras",
+                {"FILE", "instead of --views, draw the views a transforms.json names (its frames' umbra_camera, else their "
+                         "transform_matrix and the intrinsics: square pixels, centred), at its w x h unless --size is given; the file "
+                         "--views wrote redraws the same pictures"},
+                [&](const std::string& n, const std::string& t) {
+                  views.cameras = t;
+                  view_options.push_back(n);
+                });
+  options.value("--passes",
+                {"LIST", "with --views or --cameras, each view's data too, comma-separated: depth (NNN.depth.exr, float, along the "
+                         "view axis in the file's units, +inf off the model), normal (NNN.normal.exr, float RGB, the file's axes), "
+                         "object (NNN.object.png, 255 on the model), shadow (NNN.shadow.png, as --mask; NNN.shadowK.png per light "
+                         "where there are several)"},
+                [&](const std::string& n, const std::string& t) {
+                  views.passes = parse_data_passes(n, t);
+                  view_options.push_back(n);
+                });
+
+  options.paragraph("");
+  std::optional<Turning> orbit;
+  options.value("--turntable",
+                {"N", "N frames of a motion, the model turning 360/N degrees a frame about its up axis (counter-clockwise seen from "
+                      "above) under a studio that holds still, from the camera's azimuth on, framed to hold it all the way round; a "
+                      "SCENE turns its own camera and lights. -o names an animation, {animation formats}, or a folder (ending in /) "
+                      "for NNN.png frames and transforms.json, as --views writes them (with --passes); --cameras of it draws them "
+                      "again"},
+                [&](const std::string& n, const std::string& t) {
+                  views.count = parse_int_in(n, t, 1, 100000);
+                  views.turning = Turning::kModel;
+                  view_options.push_back(n);
+                });
+  options.value("--orbit",
+                {"WHAT", "with --turntable: model (default), or light: the camera and model hold still and every light orbits the z "
+                         "axis, its shadow sweeping"},
+                [&](const std::string& n, const std::string& t) {
+                  Turning turning = Turning::kNone;
+                  if (!parse_turning(t, turning)) throw UsageError(n + " takes model or light, got \"" + t + "\"");
+                  orbit = turning;
+                });
+  std::optional<double> fps;
+  add_fps_option(options, fps, "an animation's frames a second");
+  std::optional<AnimationFormat> format;  // several files' animations
+  options.value("--format",
+                {"EXT", "with --turntable and several files: each file's frames as one animation, OUTDIR/its name.EXT: "
+                        "{animation names} (without: each file's frames into OUTDIR/its name/)"},
+                [&](const std::string& n, const std::string& t) {
+                  format = animation_format_of("animation." + t);
+                  if (!format) throw UsageError(n + " takes " + animation_extensions(false) + ", got \"" + t + "\"");
+                });
+
+  options.paragraph("");
   std::optional<size_t> jobs;
   std::optional<Shard> shard;
   std::optional<std::string> sheet;
   double timeout_s = 0.0;
   bool skip_existing = false, json = false;
-  options.value("--sheet", [&](const std::string& n, const std::string& t) {
-    require_picture_name(n, t);
-    if (t == "-") throw UsageError(n + " needs a file: standard output holds --json's lines");
-    sheet = t;
-  });
-  options.value("--timeout", [&](const std::string& n, const std::string& t) {
-    timeout_s = parse_finite_number(n, t);
-    if (!(timeout_s > 0.0)) throw UsageError(n + " must be a number of seconds above 0, got \"" + t + "\"");
-  });
-  options.flag("--skip-existing", skip_existing);
-  options.flag("--json", json);
-  options.value("--jobs", [&](const std::string& n, const std::string& t) { jobs = size_t(parse_int_in(n, t, 1, 4096)); });
-  options.value("--shard", [&](const std::string& n, const std::string& t) { shard = parse_shard(n, t); });
-  std::vector<std::string> view_options;  // those named, for messages
-  ViewSetRequest views;
-  options.value("--views", [&](const std::string& n, const std::string& t) {
-    views.count = parse_int_in(n, t, 1, 100000);
-    view_options.push_back(n);
-  });
-  options.value("--views-on", [&](const std::string& n, const std::string& t) {
-    views.spread = parse_view_spread(n, t);
-    view_options.push_back(n);
-  });
-  options.value("--cameras", [&](const std::string& n, const std::string& t) {
-    views.cameras = t;
-    view_options.push_back(n);
-  });
-  options.value("--passes", [&](const std::string& n, const std::string& t) {
-    views.passes = parse_data_passes(n, t);
-    view_options.push_back(n);
-  });
-  std::optional<Turning> orbit;
-  options.value("--turntable", [&](const std::string& n, const std::string& t) {
-    views.count = parse_int_in(n, t, 1, 100000);
-    views.turning = Turning::kModel;
-    view_options.push_back(n);
-  });
-  options.value("--orbit", [&](const std::string& n, const std::string& t) {
-    Turning turning = Turning::kNone;
-    if (!parse_turning(t, turning)) throw UsageError(n + " takes model or light, got \"" + t + "\"");
-    orbit = turning;
-  });
-  std::optional<AnimationFormat> format;  // several files' animations
-  options.value("--format", [&](const std::string& n, const std::string& t) {
-    format = animation_format_of("animation." + t);
-    if (!format) throw UsageError(n + " takes mp4, webp or gif, got \"" + t + "\"");
-  });
-  std::optional<double> fps;
-  options.value("--fps", [&](const std::string& n, const std::string& t) {
-    fps = parse_finite_number(n, t);
-    if (!(*fps >= 1.0 && *fps <= 240.0)) throw UsageError(n + " must be from 1 to 240 frames a second, got \"" + t + "\"");
-  });
+  options.value("--jobs",
+                {"N", "with several files: draw N at a time, each in its own GL context, using at most N threads in all (default: "
+                      "one per core)"},
+                [&](const std::string& n, const std::string& t) { jobs = size_t(parse_int_in(n, t, 1, 4096)); });
+  options.value("--shard",
+                {"K/N", "with several files: draw only part K (counting from 0) of N disjoint parts, as umbra check --shard splits "
+                        "them"},
+                [&](const std::string& n, const std::string& t) { shard = parse_shard(n, t); });
+  options.value("--sheet",
+                {"SHEET.png", "with several files: also one picture of this run's pictures (with --views, each model's first view), "
+                              "each shrunk to at most 200 pixels wide and labelled with its file's name (.png or .jpg; never an "
+                              "input's or a picture's name)"},
+                [&](const std::string& n, const std::string& t) {
+                  require_picture_name(n, t);
+                  if (t == "-") throw UsageError(n + " needs a file: standard output holds --json's lines");
+                  sheet = t;
+                });
+  options.value("--timeout",
+                {"SECONDS", "with several files: stop a file's render after this long (its worker is stopped and replaced), report "
+                            "it as timed out and go on"},
+                [&](const std::string& n, const std::string& t) {
+                  timeout_s = parse_finite_number(n, t);
+                  if (!(timeout_s > 0.0)) throw UsageError(n + " must be a number of seconds above 0, got \"" + t + "\"");
+                });
+  options.flag("--skip-existing", skip_existing,
+               "with several files: draw only the files whose picture is missing or older than the file, so that a run stopped part "
+               "way resumes where it stopped");
+  options.flag("--json", json,
+               "with several files: one line of JSON per file on stdout: path, picture, status (drawn, skipped, failed, timed out, "
+               "crashed, stopped or passed over), kind (of a failure: malformed, unreadable, timeout, out-of-memory, ...), seconds, "
+               "triangles and error");
+  options.help_option();
   options.positionals(scenes);
   options.parse(argv);
   if (!scenes.empty()) o.scene_path = scenes[0];
-  if (o.help) return o;
   settle_picture_choices(o);
   if (o.scene_path.empty()) throw UsageError("no scene or mesh file given");
   std::error_code ec;

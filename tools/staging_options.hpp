@@ -23,6 +23,8 @@ constexpr double kLeastCameraZoom = 0.01, kMostCameraZoom = 100.0;  // --camera-
 // a command to refuse them where nothing is staged. Also
 // --background COLOR|transparent, which a scene file takes too.
 void add_staging_options(CommandOptions& options, StagingOptions& staging, std::vector<std::string>& given);
+// Of those, --up AXIS alone (umbra volume takes it), its name noted in `given`.
+void add_up_option(CommandOptions& options, std::string& up, std::vector<std::string>& given);
 // Of those, the camera's orbit alone: --camera-azimuth, --camera-elevation
 // and --camera-zoom (umbra check --picture takes them).
 void add_camera_orbit_options(CommandOptions& options, StageView& view, std::vector<std::string>& given);

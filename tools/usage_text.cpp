@@ -1,14 +1,8 @@
 #include "tools/usage_text.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <sstream>
-
-#include <glm/trigonometric.hpp>
-
 #include "image/animation_file.hpp"
 #include "image/picture_file.hpp"
-#include "mesh/check/mesh_repair.hpp"
 #include "mesh/io/mesh_format.hpp"
 #include "mesh/word_list.hpp"
 #include "render/headless_context.hpp"
@@ -16,28 +10,6 @@
 
 namespace umbra {
 namespace {
-
-// `words` wrapped to lines of at most `width` columns, every line after the
-// first indented by `indent` spaces.
-std::string wrapped(const std::string& words, size_t first_column, size_t indent, size_t width) {
-  std::string out;
-  size_t column = first_column;
-  for (size_t at = 0; at < words.size();) {
-    const size_t end = std::min(words.find(' ', at), words.size());
-    const std::string word = words.substr(at, end - at);
-    if (column > first_column && column + 1 + word.size() > width) {
-      out += "\n" + std::string(indent, ' ');
-      column = indent;
-    } else if (column > first_column) {
-      out += ' ';
-      ++column;
-    }
-    out += word;
-    column += word.size();
-    at = end + 1;
-  }
-  return out;
-}
 
 void replace_all(std::string& text, const std::string& from, const std::string& to) {
   for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) text.replace(at, from.size(), to);
@@ -68,6 +40,26 @@ std::string bench_sweeps() {
 
 }  // namespace
 
+std::string wrapped_words(const std::string& words, size_t first_column, size_t indent, size_t width) {
+  std::string out;
+  size_t column = first_column;
+  for (size_t at = 0; at < words.size();) {
+    const size_t end = std::min(words.find(' ', at), words.size());
+    const std::string word = words.substr(at, end - at);
+    if (column > first_column && column + 1 + word.size() > width) {
+      out += "\n" + std::string(indent, ' ');
+      column = indent;
+    } else if (column > first_column) {
+      out += ' ';
+      ++column;
+    }
+    out += word;
+    column += word.size();
+    at = end + 1;
+  }
+  return out;
+}
+
 std::string value_rows(const std::vector<std::pair<std::string, std::string>>& rows) {
   constexpr size_t kNameColumn = 26, kWidth = 79;
   size_t longest = 0;
@@ -76,12 +68,12 @@ std::string value_rows(const std::vector<std::pair<std::string, std::string>>& r
   std::string text;
   for (auto [name, help] : rows) {
     name.resize(longest + 2, ' ');
-    text += std::string(kNameColumn, ' ') + name + wrapped(help, help_column, help_column, kWidth) + "\n";
+    text += std::string(kNameColumn, ' ') + name + wrapped_words(help, help_column, help_column, kWidth) + "\n";
   }
   return text;
 }
 
-std::string usage_text(std::string text) {
+std::string usage_text(std::string text, UsageStyle style) {
   constexpr size_t kWidth = 79;
   std::vector<std::pair<std::string, std::string>> methods, platforms;
   std::vector<std::string> interactive;
@@ -89,20 +81,26 @@ std::string usage_text(std::string text) {
     if (is_interactive(m)) interactive.push_back(method_name(m));
     methods.emplace_back(method_name(m), method_help(m));
   }
-  replace_all(text, "{methods}\n", value_rows(methods));
+  // A value list, as --help lays it out or as one line of Markdown.
+  const auto rows = [style](const std::vector<std::pair<std::string, std::string>>& list) {
+    if (style == UsageStyle::kTerminal) return value_rows(list);
+    std::string lines;
+    for (const auto& [name, help] : list) lines += (lines.empty() ? "" : "\n") + ("`" + name + "`: " + help);
+    return lines;
+  };
+  replace_all(text, "{methods}\n", rows(methods));
   for (const HeadlessGlRow& row : kHeadlessGlTable) platforms.emplace_back(row.name, row.help);
-  replace_all(text, "{gl platforms}\n", value_rows(platforms));
-  replace_all(text, "{bench methods}", wrapped(bench_sweeps(), 0, 0, kWidth));
+  replace_all(text, "{gl platforms}\n", rows(platforms));
+  replace_all(text, "{bench methods}", style == UsageStyle::kTerminal ? wrapped_words(bench_sweeps(), 0, 0, kWidth) : bench_sweeps());
   replace_all(text, "{interactive methods}", word_list(interactive));
+  std::vector<std::string> inexact;  // whose frame antialiasing always draws whole
+  for (const RenderMethod m : all_methods())
+    if (!draws_exact_shadows(m)) inexact.push_back(method_name(m));
+  replace_all(text, "{inexact methods}", word_list(inexact, "and"));
   replace_all(text, "{picture extensions}", picture_extensions());
   replace_all(text, "{animation formats}", animation_extensions());
+  replace_all(text, "{animation names}", animation_extensions(false));
   replace_all(text, "{repair extensions}", mesh_format_extensions(true));
-  replace_all(text, "{max hole edges}", std::to_string(kDefaultMaxHoleEdges));
-  std::ostringstream deflection, angle;
-  deflection << CadTessellation{}.relative_deflection;
-  angle << std::round(glm::degrees(CadTessellation{}.angle) * 10.0) / 10.0;
-  replace_all(text, "{cad deflection}", deflection.str());
-  replace_all(text, "{cad angle}", angle.str());
   return text;
 }
 

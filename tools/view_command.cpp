@@ -26,6 +26,7 @@
 #include "render/shadow_renderer.hpp"
 #include "render/text_overlay.hpp"
 #include "render/window_context.hpp"
+#include "scene/scene_text.hpp"
 #include "tools/command_line.hpp"
 #include "tools/encoding_thread.hpp"
 #include "tools/freed_memory_reuse.hpp"
@@ -33,7 +34,7 @@
 
 namespace umbra {
 
-const std::string kViewUsage = usage_text(
+const std::string kViewUsage =
     R"(usage: umbra view SCENE [options]
        umbra view MESH [options]
 
@@ -64,52 +65,7 @@ keys:
 mouse: drag to orbit the camera around its target, scroll to zoom
 
 options:
-  --size WxH           window size (default 800x800)
-  --method M           {interactive methods}
-                       (default auto)
-  --map-size N         shadow map texels a side (default 1024)
-  --light-angle DEG    start with the lights rotated by DEG (default 0)
-  --speed DEG          degrees per second the light turns (default 30)
-  --paused             start with the light paused
-  --segments N         sphere segments (default 64)
-  --antialias N        N x N samples per pixel (1 to 4) for a view that
-                       stands still: while the light or the camera moves,
-                       each frame is one sample a pixel; once the view has
-                       not changed for a quarter of a second (in a --frames
-                       run, from the next frame), it is drawn once more with
-                       N x N samples at every pixel, averaged (as umbra
-                       render --antialias-all draws it), then shown as it is
-                       until something changes (--frames draws every frame).
-                       Default as umbra render's: 3 for a MESH, the scene's
-                       antialias statement (else 1) for a SCENE
-  --up AXIS            for a MESH: its axis that points up (see umbra render
-                       --help)
-  --camera-azimuth DEG, --camera-elevation DEG, --camera-zoom F, --fov DEG,
-  --orthographic, --eye X,Y,Z, --target X,Y,Z, --light-azimuth DEG,
-  --light-elevation DEG, --light X,Y,Z, --floor COLOR, --color COLOR,
-  --plain, --flat,
-  --crease-angle DEG   for a MESH: where the camera and light start, the
-                       floor's and the model's colours, its shading (see
-                       umbra render --help)
-  --background COLOR   the colour where no surface is (see umbra render --help)
-  --any-texture-path   read texture maps from any folder, not only the
-                       model's own (see umbra render --help)
-  --cad-deflection F, --cad-angle DEG
-                       how finely a STEP, IGES or BREP file's surfaces are
-                       cut into triangles (see umbra render --help)
-  --frames N           draw N frames, then exit, printing the median and the
-                       worst time a frame took; the light then advances by
-                       SPEED/60 degrees per frame, so a run is reproducible
-  --screenshot OUT.png with --frames: write the last frame to OUT.png (without
-                       the overlay, so that it is the headless render's frame)
-  --overlay-in-screenshot  include the overlay in the screenshot
-  --record OUT         record from the first frame into OUT: {animation formats},
-                       as umbra render --turntable writes them, at --fps
-                       frames a second by the clock (with --frames, every
-                       frame drawn, until the last); c stops it
-  --fps F              a recording's frames a second, 1 to 240 (default 30)
-  -h, --help           show this help
-)");
+{options})";
 
 namespace {
 
@@ -127,43 +83,55 @@ struct ViewOptions {
   std::optional<std::string> screenshot;
   bool overlay_in_screenshot = false;
   std::optional<std::string> record;  // where recordings go, the first from the first frame
-  double fps = 30.0;
-  bool help = false;
+  std::optional<double> fps;  // a recording's; unset: AnimationSettings' default
 };
 
 ViewOptions parse_view_options(const std::vector<std::string>& argv) {
   ViewOptions o;
   std::vector<std::string> scenes;
   CommandOptions options;
-  add_help_option(options, o.help);
-  add_size_option(options, o.settings.width, o.settings.height);
-  add_light_angle_option(options, o.light_angle_deg);
-  options.value("--speed", [&](const std::string& n, const std::string& t) { o.speed_deg_per_s = parse_finite_number(n, t); });
-  options.flag("--paused", o.paused);
-  add_segments_option(options, o.settings.sphere_segments);
-  add_method_option(options, o.settings.method);
+  add_size_option(options, o.settings.width, o.settings.height,
+                  "window size (default " + std::to_string(o.settings.width) + "x" + std::to_string(o.settings.height) + ")");
+  add_method_option(options, o.settings.method, "{interactive methods} (default auto; see umbra render --help)");
   add_map_size_option(options, o.settings.shadow_map_size);
-  add_antialias_option(options, o.antialias);
-  options.value("--frames", [&](const std::string& n, const std::string& t) { o.frames = parse_int_in(n, t, 1, 1 << 30); });
-  options.value("--screenshot", [&](const std::string&, const std::string& t) { o.screenshot = t; });
-  options.flag("--overlay-in-screenshot", o.overlay_in_screenshot);
-  options.value("--record", [&](const std::string& n, const std::string& t) {
-    const std::optional<AnimationFormat> format = animation_format_of(t);
-    if (!format) throw UsageError(n + " records into " + animation_extensions() + ", got \"" + t + "\"");
-    if (const std::string why = animation_unavailable(*format); !why.empty()) throw UsageError(why);
-    o.record = t;
-  });
-  options.value("--fps", [&](const std::string& n, const std::string& t) {
-    o.fps = parse_finite_number(n, t);
-    if (!(o.fps >= 1.0 && o.fps <= 240.0)) throw UsageError(n + " must be from 1 to 240 frames a second, got \"" + t + "\"");
-  });
+  add_light_angle_option(options, o.light_angle_deg, "start with the lights rotated by DEG (default 0)");
+  options.value("--speed", {"DEG", "degrees per second the light turns (default " + number_text(o.speed_deg_per_s) + ")"},
+                [&](const std::string& n, const std::string& t) { o.speed_deg_per_s = parse_finite_number(n, t); });
+  options.flag("--paused", o.paused, "start with the light paused");
+  add_segments_option(options, o.settings.sphere_segments);
+  add_antialias_option(options, o.antialias,
+                       "N x N samples per pixel ({range}) for a view that stands still: while the light or the camera moves, each "
+                       "frame is one sample a pixel; once the view has not changed for a quarter of a second (in a --frames run, "
+                       "from the next frame), it is drawn once more with N x N samples at every pixel, averaged (as umbra render "
+                       "--antialias-all draws it), then shown as it is until something changes (--frames draws every frame). "
+                       "Default as umbra render's: " +
+                           std::to_string(kStagedAntialias) + " for a MESH, the scene's antialias statement (else 1) for a SCENE");
+  options.value("--frames",
+                {"N", "draw N frames, then exit, printing the median and the worst time a frame took; the light then advances by "
+                      "SPEED/60 degrees per frame, so a run is reproducible"},
+                [&](const std::string& n, const std::string& t) { o.frames = parse_int_in(n, t, 1, 1 << 30); });
+  options.value("--screenshot",
+                {"OUT.png", "with --frames: write the last frame to OUT.png (without the overlay, so that it is the headless "
+                            "render's frame)"},
+                [&](const std::string&, const std::string& t) { o.screenshot = t; });
+  options.flag("--overlay-in-screenshot", o.overlay_in_screenshot, "include the overlay in the screenshot");
+  options.value("--record",
+                {"OUT", "record from the first frame into OUT: {animation formats}, as umbra render --turntable writes them, at "
+                        "--fps frames a second by the clock (with --frames, every frame drawn, until the last); c stops it"},
+                [&](const std::string& n, const std::string& t) {
+                  const std::optional<AnimationFormat> format = animation_format_of(t);
+                  if (!format) throw UsageError(n + " records into " + animation_extensions() + ", got \"" + t + "\"");
+                  if (const std::string why = animation_unavailable(*format); !why.empty()) throw UsageError(why);
+                  o.record = t;
+                });
+  add_fps_option(options, o.fps, "a recording's frames a second");
   add_staging_options(options, o.staging, o.staging_given);
   add_reading_options(options, o.reading, true);
+  options.help_option();
   options.positionals(scenes);
   options.parse(argv);
   if (scenes.size() > 1) throw UsageError("one scene at a time (got \"" + scenes[0] + "\" and \"" + scenes[1] + "\")");
   if (!scenes.empty()) o.scene_path = scenes[0];
-  if (o.help) return o;
   if (o.scene_path.empty()) throw UsageError("no scene or mesh file given");
   if (o.screenshot && o.frames == 0) throw UsageError("--screenshot needs --frames N");
   if (o.screenshot) require_picture_name("--screenshot", *o.screenshot);
@@ -407,7 +375,7 @@ int run_view_command(const std::vector<std::string>& argv) {
       case Key::kS: orbited = spec_camera(); scene.frame.camera = *orbited; break;
       case Key::kC: toggle_recording = true; break;
       case Key::kO: show_overlay = !show_overlay; break;
-      case Key::kH: std::cout << kViewUsage; break;
+      case Key::kH: std::cout << help_of(kViewUsage, parse_view_options); break;
       case Key::kQ: case Key::kEscape: window->close(); break;
       case Key::kOther: break;
     }
@@ -514,7 +482,7 @@ int run_view_command(const std::vector<std::string>& argv) {
         stop_recording();
       } else {
         try {
-          recording.emplace(recording_path(record_base, ++recordings), width, height, options.fps, now);
+          recording.emplace(recording_path(record_base, ++recordings), width, height, options.fps.value_or(AnimationSettings{}.fps), now);
           std::cout << "recording to " << recording->path() << " (c stops)\n";
         } catch (const std::exception& e) {
           std::cerr << "umbra view: cannot record: " << e.what() << "\n";

@@ -17,11 +17,12 @@
 #include "scene/scene_parser.hpp"
 #include "scene/staged_scene.hpp"
 #include "render/render_plan.hpp"
+#include "scene/scene_text.hpp"
 #include "tools/command_line.hpp"
 
 namespace umbra {
 
-const std::string kVolumeUsage = usage_text(
+const std::string kVolumeUsage =
     R"(usage: umbra volume SCENE -o OUT.obj [options]
        umbra volume MESH -o OUT.obj [options]
 
@@ -34,16 +35,7 @@ the floor's). A volume reaches infinity; here its vertices at infinity
 the caster.
 
 options:
-  -o, --output OUT.obj  the file to write (required)
-  --light N             which light, counting from 1 (default 1)
-  --light-angle DEG     rotate every light about the z axis by DEG degrees
-  --segments N          sides of a sphere's tangent-circle N-gon (default 64)
-  --far D               distance of the far vertices beyond the caster
-                        (default 3)
-  --up AXIS             for a MESH: its axis that points up (see umbra render
-                        --help)
-  -h, --help            show this help
-)");
+{options})";
 
 namespace {
 
@@ -54,30 +46,31 @@ struct VolumeOptions {
   double far = 3.0;
   std::string up;  // for a mesh file: "" for its format's own
   RenderSettings settings;
-  bool help = false;
 };
 
 VolumeOptions parse_volume_options(const std::vector<std::string>& argv) {
   VolumeOptions o;
   std::vector<std::string> scenes;
   CommandOptions options;
-  add_help_option(options, o.help);
-  add_output_option(options, o.output);
-  options.value("--light", [&](const std::string& n, const std::string& t) { o.light = parse_int_in(n, t, 1, 1 << 20); });
-  add_light_angle_option(options, o.light_angle_deg);
+  add_output_option(options, o.output, {"OUT.obj", "the file to write (required)"});
+  options.value("--light", {"N", "which light, counting from 1 (default " + std::to_string(o.light) + ")"},
+                [&](const std::string& n, const std::string& t) { o.light = parse_int_in(n, t, 1, 1 << 20); });
+  add_light_angle_option(options, o.light_angle_deg, "rotate every light about the z axis by DEG degrees");
   add_segments_option(options, o.settings.sphere_segments);
-  options.value("--far", [&](const std::string& n, const std::string& t) {
-    o.far = parse_finite_number(n, t);
-    if (o.far <= 0) throw UsageError("--far must be positive");
-  });
-  options.value("--up", [&](const std::string& n, const std::string& t) { o.up = parse_up_axis(n, t); });
+  options.value("--far", {"D", "distance of the far vertices beyond the caster (default " + number_text(o.far) + ")"},
+                [&](const std::string& n, const std::string& t) {
+                  o.far = parse_finite_number(n, t);
+                  if (o.far <= 0) throw UsageError("--far must be positive");
+                });
+  std::vector<std::string> up_given;
+  add_up_option(options, o.up, up_given);
+  options.help_option();
   options.positionals(scenes);
   options.parse(argv);
   if (scenes.size() > 1) throw UsageError("one scene at a time (got \"" + scenes[0] + "\" and \"" + scenes[1] + "\")");
   if (!scenes.empty()) o.scene_path = scenes[0];
-  if (o.help) return o;
   if (o.scene_path.empty()) throw UsageError("no scene or mesh file given");
-  if (!o.up.empty()) require_staged({"--up"}, o.scene_path);
+  require_staged(up_given, o.scene_path);
   if (o.output.empty()) throw UsageError("no output file given (-o OUT.obj)");
   require_other_than_input("-o", o.output, o.scene_path);
   // An OBJ file under another format's name (x.png, x.stl) would mislead
