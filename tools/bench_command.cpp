@@ -88,7 +88,7 @@ BenchOptions parse_bench_options(const std::vector<std::string>& argv) {
     for (const int n : numbers) text += (text.empty() ? "" : ",") + std::to_string(n);
     return text;
   };
-  constexpr ValueRange kFrames{1, 1000}, kSegments{3, 4096}, kMapSizes{16, 8192};
+  static constexpr ValueRange kFrames{1, 1000}, kSegments{3, 4096}, kMapSizes{16, 8192};
   add_size_option(options, o.width, o.height, "image size (default " + std::to_string(o.width) + "x" + std::to_string(o.height) + ")");
   std::optional<int> frames;
   std::optional<std::vector<int>> segments, map_sizes;

@@ -112,7 +112,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
                     {"OUT", "the image to write, or with several files the folder to write their pictures in (required): its name's "
                             "ending says the format, {picture extensions}; - writes PNG to standard output"});
   std::optional<int> quality;
-  constexpr ValueRange kQuality{1, 100};
+  static constexpr ValueRange kQuality{1, 100};
   options.value("--quality,--jpeg-quality",
                 ranged({"N", "for a .jpg output: {range} (default {default}); for a .webp animation: lossy at that quality (default "
                              "lossless); --jpeg-quality is its older name"},
