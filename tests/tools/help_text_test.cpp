@@ -75,46 +75,16 @@ TEST(HelpText, TheNearestWordIsASlipOfTheFingersAway) {
   EXPECT_EQ(did_you_mean("--frobnicate", {"--antialias", "--size"}), "");
 }
 
-// The lists of methods and formats a reader meets in the README and the
-// docs are the tables' (render_method.hpp, mesh_format.hpp), checked here
-// where they are written out: a method or a format added to its table
-// fails this test until the docs name it too.
+// The lists of formats a reader meets in docs/check.md are the table's
+// (mesh_format.hpp), checked here where they are written out: a format
+// added to the table fails this test until check.md names it too. (The
+// methods' lists are all written from their table: --help, docs/options.md.)
 std::string doc(const std::string& name) {
   std::ifstream in(std::string(UMBRA_SOURCE_DIR) + "/" + name);
   std::stringstream text;
   text << in.rdbuf();
   EXPECT_FALSE(text.str().empty()) << name;
   return text.str();
-}
-
-// The words a regex's first group holds in `text`, split at `separators`,
-// each kept without its backquotes, and but for the prose between them
-// ("or", "(default)").
-std::set<std::string> listed(const std::string& text, const std::string& pattern, const std::string& separators) {
-  std::smatch match;
-  EXPECT_TRUE(std::regex_search(text, match, std::regex(pattern))) << pattern;
-  std::set<std::string> words;
-  std::string word;
-  const auto keep = [&] {
-    if (!word.empty() && word != "or" && word != "(default)") words.insert(word);
-    word.clear();
-  };
-  for (const char c : match.size() > 1 ? match[1].str() : std::string()) {
-    if (separators.find(c) != std::string::npos) keep();
-    else if (c != '`') word += c;
-  }
-  keep();
-  return words;
-}
-
-TEST(DocLists, EveryMethodListIsTheTable) {
-  std::set<std::string> all, interactive;
-  for (const RenderMethod m : all_methods()) {
-    all.insert(method_name(m));
-    if (is_interactive(m)) interactive.insert(method_name(m));
-  }
-  EXPECT_EQ(listed(doc("README.md"), "`--method ([a-z|]+)`", "|"), all);
-  EXPECT_EQ(listed(doc("docs/rendering.md"), "`m`: switch method \\(([a-z, ]+):", ", "), interactive);
 }
 
 // Where the docs say which formats umbra reads itself (the rows the mesh
@@ -133,9 +103,7 @@ TEST(DocLists, TheFormatsUmbraReadsItselfAreTheTables) {
     return found;
   };
   std::smatch match;
-  const std::string readme = doc("README.md"), check = doc("docs/check.md");
-  ASSERT_TRUE(std::regex_search(readme, match, std::regex("umbra reads ([A-Za-z0-9., \\n]*?) itself")));
-  EXPECT_EQ(names(match[1]), own);
+  const std::string check = doc("docs/check.md");
   ASSERT_TRUE(std::regex_search(check, match, std::regex("Reads each mesh \\(([A-Za-z0-9., \\n]*);")));
   EXPECT_EQ(names(match[1]), own);
   ASSERT_TRUE(std::regex_search(check, match, std::regex("umbra reads ([A-Za-z0-9., \\n]*?) itself")));
