@@ -4,13 +4,11 @@
 
 #include <fstream>
 #include <regex>
-#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "mesh/io/mesh_format.hpp"
-#include "render/render_method.hpp"
 #include "tools/command_line.hpp"
 #include "tools/nearest_word.hpp"
 
