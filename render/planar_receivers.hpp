@@ -8,6 +8,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
 
+#include "render/render_plan.hpp"
 #include "scene/scene.hpp"
 
 namespace umbra {
@@ -25,5 +26,11 @@ std::vector<ReceiverPlane> receiver_planes(const Scene& scene);
 // The matrix that projects a point along the ray from `light` onto `plane`
 // (Blinn's projection matrix, for any plane): S x = (p . l) x - (p . x) l.
 glm::dmat4 planar_shadow_matrix(const glm::dvec4& plane, const glm::dvec3& light);
+
+// A light's plan for planar projection (--method planar): which of
+// `receivers` take its shadow (not those whose plane holds the light), and
+// every caster as the triangles projected onto them.
+void plan_planar_light(const Scene& scene, const std::vector<ReceiverPlane>& receivers, int segments, const Light& light,
+                       LightPlan& lp);
 
 }  // namespace umbra

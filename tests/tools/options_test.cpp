@@ -152,7 +152,16 @@ TEST_F(Options, DocsOptionsMdIsWhatTheDefinitionsSay) {
   const std::string page(std::istreambuf_iterator<char>(in), {});
   const CommandResult written = run("--list-options=markdown");
   ASSERT_EQ(written.status, 0) << written.err;
-  EXPECT_EQ(page, written.out) << "docs/options.md is out of date: ./build/umbra --list-options=markdown > docs/options.md";
+  // The first line that differs, rather than two pages.
+  std::istringstream was(page), now(written.out);
+  std::string old_line, new_line;
+  for (int line = 1; std::getline(now, new_line); ++line)
+    if (!std::getline(was, old_line) || old_line != new_line) {
+      ADD_FAILURE() << "docs/options.md is out of date at line " << line << ": it says\n  " << old_line << "\nand the options say\n  "
+                    << new_line << "\n(write it again: ./build/umbra --list-options=markdown > docs/options.md)";
+      break;
+    }
+  EXPECT_EQ(page.size(), written.out.size()) << "docs/options.md is out of date: ./build/umbra --list-options=markdown > docs/options.md";
   // Each command's section holds every name its parser takes, --help's
   // first spelling of each.
   for (const char* command : {"render", "check", "view", "volume", "bench", "formats"}) {
