@@ -74,8 +74,8 @@ void decide_facing(const std::vector<glm::dvec3>& positions, const FaceTriangles
                                                                comps.size(), shells, tangled, &flipped);
   for (size_t i = 0; i < comps.size(); ++i) {
     if (!shells[i]) continue;
-    comps[i].volume = shell_facing.volume[i];
-    report.volume = report.volume.value_or(0.0) + shell_facing.volume[i];
+    comps[i].enclosed_volume = shell_facing.volume[i];
+    report.enclosed_volume = report.enclosed_volume.value_or(0.0) + shell_facing.volume[i];
     const Facing facing = shell_facing.facing[i];
     const bool turned = facing == Facing::kWrong;  // the renderer turns it round
     comps[i].hides_back_faces = !crosses_itself[i] && (shell_facing.volume[i] > 0.0) != turned;

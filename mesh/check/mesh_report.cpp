@@ -236,7 +236,7 @@ void MeshReport::print_text(std::ostream& out) const {
   out << "  size               " << number(size.x) << " x " << number(size.y) << " x " << number(size.z) << "\n";
   out << "  area               " << number(area) << "\n";
   out << "  volume             "
-      << (volume ? number(*volume) + " (its closed components', negative where they face in)" : std::string("none: no closed component"))
+      << (enclosed_volume ? number(*enclosed_volume) + " (its closed components', negative where they face in)" : std::string("none: no closed component"))
       << "\n";
   constexpr size_t kListed = 10;
   for (size_t i = 0; i < components.size() && i < kListed; ++i) {
@@ -251,7 +251,7 @@ void MeshReport::print_text(std::ostream& out) const {
       out << ", " << plural(c.overlapping_diagonals, "diagonal", "diagonals") << " along another edge once triangulated";
     if (!c.orientable) out << ", non-orientable";
     if (c.outward) out << (*c.outward ? ", outward" : ", inward");
-    if (c.volume) out << ", encloses " << number(*c.volume);
+    if (c.enclosed_volume) out << ", encloses " << number(*c.enclosed_volume);
     else if (c.closed && c.orientable) out << ", facing undecided";
     out << "; " << (c.casts_from_silhouette() ? "silhouette" : "edge-multiplicity") << " volume\n";
   }
@@ -300,7 +300,7 @@ void MeshReport::print_json(std::ostream& out) const {
                               {"consistently_oriented", c.consistently_oriented},
                               {"genus", c.genus ? Json(*c.genus) : Json(nullptr)},
                               {"outward", c.outward ? Json(*c.outward) : Json(nullptr)},
-                              {"volume", c.volume ? Json(*c.volume) : Json(nullptr)},
+                              {"volume", c.enclosed_volume ? Json(*c.enclosed_volume) : Json(nullptr)},
                               {"hides_back_faces", c.hides_back_faces},
                               {"shadow_method", volume_kind_name(c.casts_from_silhouette() ? VolumeKind::kSilhouette
                                                                                               : VolumeKind::kEdgeMultiplicity)}});
@@ -338,7 +338,7 @@ void MeshReport::print_json(std::ostream& out) const {
       {"bbox", {{"min", {bbox_min.x, bbox_min.y, bbox_min.z}}, {"max", {bbox_max.x, bbox_max.y, bbox_max.z}}}},
       {"size", {bbox_max.x - bbox_min.x, bbox_max.y - bbox_min.y, bbox_max.z - bbox_min.z}},
       {"area", area},
-      {"volume", volume ? Json(*volume) : Json(nullptr)},
+      {"volume", enclosed_volume ? Json(*enclosed_volume) : Json(nullptr)},
       {"component_list", component_list},
       {"examples",
        {{"border_edges", pairs("vertex", examples.border_edges)},

@@ -51,8 +51,8 @@ struct ComponentReport {
   std::optional<bool> outward;
   // Closed and orientable: the volume its triangles enclose once their faces
   // agree, negative where they face into it (an inverted solid, or the inner
-  // shell of a hollow one).
-  std::optional<double> volume;
+  // shell of a hollow one). (The JSON's "volume": not a shadow volume.)
+  std::optional<double> enclosed_volume;
   // Closed and orientable, crossing none of its own faces, and enclosing
   // positive volume once turned as the renderer turns it (only where
   // `outward` is false): from outside its box its back faces are hidden
@@ -115,7 +115,7 @@ struct MeshReport {
   double area = 0.0;  // of the triangles
   // The sum of the closed, orientable components' volumes (a hollow solid's
   // cavity takes its own away); none when no component is closed.
-  std::optional<double> volume;
+  std::optional<double> enclosed_volume;
   std::vector<ComponentReport> components;
   std::vector<ReadWarning> warnings;  // the reader's, for quirks it read past
 

@@ -123,8 +123,8 @@ TEST(RepairToTriangles, AnOpenCubeComesBackClosedWithItsEightCorners) {
   for (const auto& t : repaired.triangles) faces.push_back({t[0], t[1], t[2]});
   const MeshReport report = check_mesh(make_soup(repaired.points, faces));
   EXPECT_TRUE(report.is_closed_manifold()) << report.verdict();
-  ASSERT_TRUE(report.volume);
-  EXPECT_NEAR(*report.volume, 1.0, 1e-12);
+  ASSERT_TRUE(report.enclosed_volume);
+  EXPECT_NEAR(*report.enclosed_volume, 1.0, 1e-12);
 }
 
 }  // namespace

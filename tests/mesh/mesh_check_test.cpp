@@ -60,21 +60,21 @@ TEST(MeshCheck, TetrahedronIsAClosedGenusZeroManifoldFacingOutward) {
 // its inner shell -1; an open box encloses nothing, though it has an area.
 TEST(MeshCheck, VolumeAndAreaAreWhatTheShapesEnclose) {
   const MeshReport cube = check_mesh(box_triangles(glm::dvec3(-1.0), glm::dvec3(1.0)));
-  ASSERT_TRUE(cube.volume.has_value());
-  EXPECT_NEAR(*cube.volume, 8.0, 1e-12);
+  ASSERT_TRUE(cube.enclosed_volume.has_value());
+  EXPECT_NEAR(*cube.enclosed_volume, 8.0, 1e-12);
   EXPECT_NEAR(cube.area, 24.0, 1e-12);
-  EXPECT_NEAR(*cube.components[0].volume, 8.0, 1e-12);
+  EXPECT_NEAR(*cube.components[0].enclosed_volume, 8.0, 1e-12);
   const MeshReport inward = check_mesh(all_reversed(box_triangles(glm::dvec3(-1.0), glm::dvec3(1.0))));
-  EXPECT_NEAR(*inward.volume, -8.0, 1e-12);
+  EXPECT_NEAR(*inward.enclosed_volume, -8.0, 1e-12);
   EXPECT_EQ(inward.inward_components, 1u);
   const MeshReport hollow = check_mesh(hollow_cube());
-  EXPECT_NEAR(*hollow.volume, 26.0, 1e-12);
+  EXPECT_NEAR(*hollow.enclosed_volume, 26.0, 1e-12);
   ASSERT_EQ(hollow.components.size(), 2u);
-  EXPECT_NEAR(*hollow.components[1].volume, -1.0, 1e-12);
+  EXPECT_NEAR(*hollow.components[1].enclosed_volume, -1.0, 1e-12);
   EXPECT_NEAR(hollow.area, 6.0 * 9.0 + 6.0, 1e-12);
   const MeshReport open = check_mesh(without_faces(unit_cube(), {0, 1}));
-  EXPECT_FALSE(open.volume.has_value());
-  EXPECT_FALSE(open.components[0].volume.has_value());
+  EXPECT_FALSE(open.enclosed_volume.has_value());
+  EXPECT_FALSE(open.components[0].enclosed_volume.has_value());
   EXPECT_NEAR(open.area, 5.0, 1e-12);
 }
 
@@ -100,8 +100,8 @@ TEST(MeshCheck, VolumeEqualsAdmeshsOnItsExampleBlock) {
   const double admesh_volume = volume_by_admesh(block);
   ASSERT_GT(admesh_volume, 0.0);
   const MeshReport r = check_mesh(read_polygon_soup(block));
-  ASSERT_TRUE(r.volume.has_value());
-  EXPECT_NEAR(*r.volume / admesh_volume, 1.0, 1e-6);
+  ASSERT_TRUE(r.enclosed_volume.has_value());
+  EXPECT_NEAR(*r.enclosed_volume / admesh_volume, 1.0, 1e-6);
 }
 
 // The closed STLs in Debian's packages: the check's volume against a sum
@@ -137,10 +137,10 @@ TEST(MeshCheck, VolumeOfEveryClosedPackagedStlIsExactAndAgreesWithAdmesh) {
       sum = next;
     }
     const double exact = double(sum + compensation);
-    ASSERT_TRUE(r.volume.has_value()) << file;
-    EXPECT_NEAR(*r.volume / exact, 1.0, 1e-12) << file;
+    ASSERT_TRUE(r.enclosed_volume.has_value()) << file;
+    EXPECT_NEAR(*r.enclosed_volume / exact, 1.0, 1e-12) << file;
 
-    EXPECT_NEAR(*r.volume / volume_by_admesh(file), 1.0, 1e-5) << file;
+    EXPECT_NEAR(*r.enclosed_volume / volume_by_admesh(file), 1.0, 1e-5) << file;
   }
 }
 
