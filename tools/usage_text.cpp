@@ -1,6 +1,7 @@
 #include "tools/usage_text.hpp"
 
 #include <algorithm>
+
 #include "image/animation_file.hpp"
 #include "image/picture_file.hpp"
 #include "mesh/io/mesh_format.hpp"
