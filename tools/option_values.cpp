@@ -102,6 +102,12 @@ constexpr NamedColor kColorNames[] = {
 
 }  // namespace
 
+std::vector<std::string> color_names() {
+  std::vector<std::string> names;
+  for (const NamedColor& c : kColorNames) names.push_back(c.name);
+  return names;
+}
+
 glm::dvec3 parse_color(const std::string& option, const std::string& text) {
   for (const NamedColor& c : kColorNames)
     if (text == c.name) return glm::dvec3(c.r, c.g, c.b) / 255.0;
@@ -111,8 +117,7 @@ glm::dvec3 parse_color(const std::string& option, const std::string& text) {
     for (int k = 0; k < 3; ++k) rgb[k] = double(std::stoi(text.substr(1 + 2 * size_t(k), 2), nullptr, 16)) / 255.0;
     return rgb;
   }
-  std::vector<std::string> names;
-  for (const NamedColor& c : kColorNames) names.push_back(c.name);
+  const std::vector<std::string> names = color_names();
   throw UsageError(option + " expects a colour, #rrggbb or a name (" + word_list(names) + "), got \"" + text + "\"" +
                    did_you_mean(text, names));
 }

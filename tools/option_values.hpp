@@ -4,6 +4,7 @@
 // method, a colour. Each throws UsageError naming the option and the text.
 
 #include <string>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -41,5 +42,7 @@ std::string parse_up_axis(const std::string& option, const std::string& text);
 RenderMethod parse_method(const std::string& option, const std::string& text);
 // A colour as the options take it: #rrggbb, or a name (black, white, red, ...).
 glm::dvec3 parse_color(const std::string& option, const std::string& text);
+// The names parse_color takes, in its table's order.
+std::vector<std::string> color_names();
 
 }  // namespace umbra

@@ -108,6 +108,18 @@ TEST(DocLists, TheFormatsUmbraReadsItselfAreTheTables) {
   EXPECT_EQ(names(match[1]), own);
 }
 
+// rendering.md's colour names are parse_color's table, in its order.
+TEST(DocLists, RenderingMdNamesTheColoursTheOptionsTake) {
+  std::smatch match;
+  const std::string rendering = doc("docs/rendering.md");
+  ASSERT_TRUE(std::regex_search(rendering, match, std::regex("one of the names ([a-z, \\n]+?) \\(CSS")));
+  std::vector<std::string> names;
+  std::istringstream words(std::regex_replace(match[1].str(), std::regex("[,\\n]"), " "));
+  for (std::string word; words >> word;)
+    if (word != "and") names.push_back(word);
+  EXPECT_EQ(names, color_names());
+}
+
 // The message check.md shows for a file of no mesh format names the
 // formats as the program does (mesh_format_names()).
 TEST(DocLists, CheckMdNamesTheFormatsAsTheMessageDoes) {
