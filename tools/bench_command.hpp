@@ -6,7 +6,6 @@
 
 namespace umbra {
 
-extern const std::string kBenchUsage;
 int run_bench_command(const std::vector<std::string>& argv);
 
 }  // namespace umbra

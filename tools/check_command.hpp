@@ -5,7 +5,6 @@
 
 namespace umbra {
 
-extern const std::string kCheckUsage;
 
 // `umbra check`: 0 when every mesh is a closed, consistently oriented
 // 2-manifold without self-intersections, 1 when one is not (or its repair

@@ -5,7 +5,6 @@
 
 namespace umbra {
 
-extern const std::string kRenderUsage;
 
 // `umbra render`: returns the process exit status (0 written, 1 bad input or
 // failure, 2 usage error). Messages go to stderr, the plan to stdout.

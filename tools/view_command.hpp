@@ -5,7 +5,6 @@
 
 namespace umbra {
 
-extern const std::string kViewUsage;
 
 // `umbra view`: the interactive program in a window. Exit 0 when the
 // window is closed (or after --frames), 1 when the first scene is bad or no

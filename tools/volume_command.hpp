@@ -5,7 +5,6 @@
 
 namespace umbra {
 
-extern const std::string kVolumeUsage;
 
 // `umbra volume`: writes one light's shadow volumes as an OBJ file with the
 // vertices at infinity brought to a finite distance. Exit 0 written, 1 bad
