@@ -157,6 +157,14 @@ void add_output_option(CommandOptions& options, std::string& path, const OptionH
   options.value("-o,--output", help, [&](const std::string&, const std::string& t) { path = t; });
 }
 
+void add_noted_value(CommandOptions& options, std::vector<std::string>& given, const std::string& names, const OptionHelp& help,
+                     std::function<void(const std::string&, const std::string&)> take) {
+  options.value(names, help, [&given, take = std::move(take)](const std::string& o, const std::string& t) {
+    take(o, t);
+    given.push_back(o);
+  });
+}
+
 std::string command_help(const std::string& usage, const std::string& options) {
   std::string text = usage;
   const size_t at = text.find("{options}");

@@ -136,5 +136,10 @@ std::optional<int> parse_command_line(const char* command, const std::string& us
 }
 
 void add_output_option(CommandOptions& options, std::string& path, const OptionHelp& help);  // -o, --output
+// An option whose value `take` checks and keeps, its name then noted in
+// `given`, for messages that name the options given (the first of them, or
+// whether one was).
+void add_noted_value(CommandOptions& options, std::vector<std::string>& given, const std::string& names, const OptionHelp& help,
+                     std::function<void(const std::string& option, const std::string& text)> take);
 
 }  // namespace umbra

@@ -138,7 +138,7 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
   options.paragraph("");
   std::vector<std::string> view_options;  // those named, for messages
   ViewSetRequest views;
-  options.value("--views",
+  add_noted_value(options, view_options, "--views",
                 {"N", "draw N views of a MESH into the folder -o names, round the model at the camera's elevation from its azimuth "
                       "on, evenly spaced; the light holds still. Writes NNN.png per view and transforms.json: each view's camera "
                       "pose and intrinsics in the mesh file's own coordinates and units (docs/rendering.md, \"Many views\"); with "
@@ -146,36 +146,30 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
                       "--skip-existing, --json and --shard"},
                 [&](const std::string& n, const std::string& t) {
                   views.count = parse_int_in(n, t, 1, 100000);
-                  view_options.push_back(n);
                 });
-  options.value("--views-on",
+  add_noted_value(options, view_options, "--views-on",
                 {"SPREAD", "ring (default) or sphere: views evenly over the whole sphere of directions (a Fibonacci lattice), each "
                            "framing the model alone, without a floor unless --floor is given"},
                 [&](const std::string& n, const std::string& t) {
                   views.spread = parse_view_spread(n, t);
-                  view_options.push_back(n);
                 });
-  options.value("--cameras",
+  add_noted_value(options, view_options, "--cameras",
                 {"FILE", "instead of --views, draw the views a transforms.json names (its frames' umbra_camera, else their "
                          "transform_matrix and the intrinsics: square pixels, centred), at its w x h unless --size is given; the file "
                          "--views wrote redraws the same pictures"},
-                [&](const std::string& n, const std::string& t) {
-                  views.cameras = t;
-                  view_options.push_back(n);
-                });
-  options.value("--passes",
+                [&](const std::string&, const std::string& t) { views.cameras = t; });
+  add_noted_value(options, view_options, "--passes",
                 {"LIST", "with --views or --cameras, each view's data too, comma-separated: depth (NNN.depth.exr, float, along the "
                          "view axis in the file's units, +inf off the model), normal (NNN.normal.exr, float RGB, the file's axes), "
                          "object (NNN.object.png, 255 on the model), shadow (NNN.shadow.png, as --mask; NNN.shadowK.png per light "
                          "where there are several)"},
                 [&](const std::string& n, const std::string& t) {
                   views.passes = parse_data_passes(n, t);
-                  view_options.push_back(n);
                 });
 
   options.paragraph("");
   std::optional<Turning> orbit;
-  options.value("--turntable",
+  add_noted_value(options, view_options, "--turntable",
                 {"N", "N frames of a motion, the model turning 360/N degrees a frame about its up axis (counter-clockwise seen from "
                       "above) under a studio that holds still, from the camera's azimuth on, framed to hold it all the way round; a "
                       "SCENE turns its own camera and lights. -o names an animation, {animation formats}, or a folder (ending in /) "
@@ -184,7 +178,6 @@ RenderOptions parse_render_options(const std::vector<std::string>& argv) {
                 [&](const std::string& n, const std::string& t) {
                   views.count = parse_int_in(n, t, 1, 100000);
                   views.turning = Turning::kModel;
-                  view_options.push_back(n);
                 });
   options.value("--orbit",
                 {"WHAT", "with --turntable: model (default), or light: the camera and model hold still and every light orbits the z "

@@ -13,15 +13,6 @@
 namespace umbra {
 namespace {
 
-// An option whose value `take` checks and keeps, its name then noted in `given`.
-void add_noted(CommandOptions& options, std::vector<std::string>& given, const std::string& name, const OptionHelp& help,
-               std::function<void(const std::string&, const std::string&)> take) {
-  options.value(name, help, [&given, take = std::move(take)](const std::string& o, const std::string& t) {
-    take(o, t);
-    given.push_back(o);
-  });
-}
-
 // Short of the poles, where the floor's up would be the view's direction.
 constexpr ValueRange kCameraElevation{-89.9, 89.9};
 // Past these the eye meets the model's middle, or the model is a speck.
@@ -38,7 +29,7 @@ double to_tenths(double degrees) { return std::round(degrees * 10.0) / 10.0; }
 }  // namespace
 
 void add_up_option(CommandOptions& options, std::string& up, std::vector<std::string>& given) {
-  add_noted(options, given, "--up",
+  add_noted_value(options, given, "--up",
             {"AXIS", "for a MESH: its axis that points up, +x, -x, +y, -y, +z or -z (default: its format's convention, +z for STL "
                      "and 3MF, +y for the others)"},
             [&](const std::string& o, const std::string& t) { up = parse_up_axis(o, t); });
@@ -46,7 +37,7 @@ void add_up_option(CommandOptions& options, std::string& up, std::vector<std::st
 
 void add_camera_orbit_options(CommandOptions& options, StageView& v, std::vector<std::string>& given) {
   const auto add = [&](const std::string& name, const OptionHelp& help, std::function<void(const std::string&, const std::string&)> take) {
-    add_noted(options, given, name, help, std::move(take));
+    add_noted_value(options, given, name, help, std::move(take));
   };
   add("--camera-azimuth", {"DEG", "the camera's azimuth (default " + number_text(stage_defaults::kCameraAzimuthDeg) + ")"},
       [&](const std::string& o, const std::string& t) { v.camera_azimuth_deg = parse_finite_number(o, t); });
@@ -67,7 +58,7 @@ void add_camera_orbit_options(CommandOptions& options, StageView& v, std::vector
 void add_staging_options(CommandOptions& options, StagingOptions& staging, std::vector<std::string>& given) {
   StageView& v = staging.view;
   const auto add = [&](const std::string& name, const OptionHelp& help, std::function<void(const std::string&, const std::string&)> take) {
-    add_noted(options, given, name, help, std::move(take));
+    add_noted_value(options, given, name, help, std::move(take));
   };
   add_up_option(options, staging.up, given);
   options.paragraph(
